@@ -1,0 +1,33 @@
+#pragma once
+// A candidate or accepted collision, and the one total order that encodes
+// every tie rule: (time, kind, i, j), walls before pairs (rules.md "Order").
+
+#include <cstdint>
+#include <tuple>
+
+namespace particlesim {
+
+enum class CollisionKind : std::uint8_t { wall = 0, pair = 1 };
+
+struct Collision {
+    double time = 0.0;  // within the step (or micro-step), from its start
+    CollisionKind kind = CollisionKind::wall;
+    std::uint32_t i = 0;  // the particle (wall) or the lower index (pair)
+    std::uint32_t j = 0;  // the higher index of a pair; 0 for a wall
+
+    static Collision wall(double time, std::uint32_t particle) {
+        return {time, CollisionKind::wall, particle, 0};
+    }
+    static Collision pair(double time, std::uint32_t lower, std::uint32_t higher) {
+        return {time, CollisionKind::pair, lower, higher};
+    }
+
+    friend bool operator<(const Collision& a, const Collision& b) {
+        return std::tie(a.time, a.kind, a.i, a.j) < std::tie(b.time, b.kind, b.i, b.j);
+    }
+    friend bool operator==(const Collision& a, const Collision& b) {
+        return std::tie(a.time, a.kind, a.i, a.j) == std::tie(b.time, b.kind, b.i, b.j);
+    }
+};
+
+}  // namespace particlesim

@@ -1,0 +1,70 @@
+#pragma once
+// The fast pair search: exact for any speeds. It never assumes a speed limit:
+// the step is cut into time slices, and in each slice every particle's swept
+// box (its path in that slice, widened by r and a rounding margin) is binned
+// by its lower corner into a uniform grid. Two boxes that fit a cell can only
+// overlap when their cells are neighbours, so a half stencil finds each such
+// pair once; a box larger than a cell is scanned against the cells it covers
+// and against every other large box. Every pair whose boxes overlap in some
+// slice gets the shared pair test, a superset of the pairs that can collide,
+// so the result is exactly the brute-force candidate set.
+
+#include "particlesim/pair_search.hpp"
+
+#include <cstdint>
+#include <span>
+#include <vector>
+
+namespace particlesim {
+
+// The shape of the search in one step; chosen per step from the scene.
+struct GridLayout {
+    int cells_per_side = 1;
+    int slices = 1;
+    double cell_size = 0.0;
+    double reach = 0.0;  // r plus the rounding margin added around each path
+};
+
+// A particle's path within one time slice, widened by the layout's reach.
+struct SweptBox {
+    double min_x, min_y, max_x, max_y;
+
+    [[nodiscard]] bool overlaps(const SweptBox& other) const {
+        return min_x <= other.max_x && other.min_x <= max_x && min_y <= other.max_y && other.min_y <= max_y;
+    }
+};
+
+class GridSearch {
+public:
+    // forced_cells > 0 imposes a G x G grid (still exact); 0 sizes it from the
+    // particles' motion in this step and r.
+    void find_pairs(const PairSearchInput& in, int forced_cells, std::span<ThreadCandidates> buffers);
+
+    [[nodiscard]] const GridLayout& last_layout() const { return layout_; }
+
+private:
+    // Per-slice buffers; one per thread when slices run in parallel.
+    struct SliceWorkspace {
+        std::vector<SweptBox> boxes;         // by particle
+        std::vector<std::uint32_t> cell_of;  // by particle: its cell, or absent / large
+        std::vector<std::uint32_t> cell_start;
+        std::vector<std::uint32_t> cell_fill;
+        std::vector<std::uint32_t> by_cell;  // particles sorted by cell
+        std::vector<std::uint32_t> large;    // particles whose box exceeds a cell
+    };
+
+    GridLayout choose_layout(const PairSearchInput& in, int forced_cells, int threads);
+    void process_slice(const PairSearchInput& in, int slice, SliceWorkspace& ws, std::span<ThreadCandidates> out,
+                       int threads) const;
+    void bin_slice(const PairSearchInput& in, int slice, SliceWorkspace& ws, int threads) const;
+    void test_small_pairs(const PairSearchInput& in, const SliceWorkspace& ws, std::span<ThreadCandidates> out,
+                          int threads) const;
+    void test_large_pairs(const PairSearchInput& in, const SliceWorkspace& ws, std::span<ThreadCandidates> out,
+                          int threads) const;
+
+    GridLayout layout_;
+    std::vector<double> sweep_end_;  // by particle: min(duration, wall time)
+    std::vector<SliceWorkspace> workspaces_;
+};
+
+}  // namespace particlesim

@@ -1,0 +1,19 @@
+#pragma once
+// Number formatting for output and messages, without iostreams or printf.
+
+#include <cstddef>
+#include <string>
+
+namespace particlesim {
+
+// Room that write_fixed8 may need: sign, 151 integer digits (|x| <= 1e150), point, 8 decimals.
+inline constexpr std::size_t max_fixed8_length = 168;
+
+// Writes `value` exactly as printf("%.8f") would, except that a result of
+// -0.00000000 is written as 0.00000000 (io.md). Returns the end.
+char* write_fixed8(char* out, double value);
+
+// The shortest text that reads back as `value` (for messages).
+std::string format_short(double value);
+
+}  // namespace particlesim

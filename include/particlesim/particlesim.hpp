@@ -1,0 +1,20 @@
+#pragma once
+// Everything of the library in one include.
+
+#include "particlesim/box.hpp"
+#include "particlesim/brute_force_search.hpp"
+#include "particlesim/collision.hpp"
+#include "particlesim/grid_search.hpp"
+#include "particlesim/number_format.hpp"
+#include "particlesim/pair_search.hpp"
+#include "particlesim/particle.hpp"
+#include "particlesim/physics.hpp"
+#include "particlesim/random.hpp"
+#include "particlesim/random_scene.hpp"
+#include "particlesim/scene.hpp"
+#include "particlesim/scene_reader.hpp"
+#include "particlesim/sim_params.hpp"
+#include "particlesim/simulation.hpp"
+#include "particlesim/state_writer.hpp"
+#include "particlesim/step_pipeline.hpp"
+#include "particlesim/version.hpp"

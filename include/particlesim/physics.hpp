@@ -1,0 +1,113 @@
+#pragma once
+// The pure physics of the step rules: time to a wall, time to contact, the
+// wall bounce, the elastic exchange and the "stop at the wall" motion. Every
+// engine calls these and nothing else, so engines cannot disagree on physics.
+
+#include "particlesim/box.hpp"
+#include "particlesim/particle.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+namespace particlesim {
+
+inline constexpr double never = std::numeric_limits<double>::infinity();
+
+// Time for one coordinate to reach its wall; `never` without motion on it.
+inline double time_to_wall_on_axis(double position, double velocity, double lower, double upper) {
+    // "+ 0.0" turns the -0.0 of a particle resting on the wall into +0.0.
+    if (velocity < 0.0) return (lower - position) / velocity + 0.0;
+    if (velocity > 0.0) return (upper - position) / velocity + 0.0;
+    return never;
+}
+
+struct WallHit {
+    double time = never;
+    bool on_x = false;  // reaches x = r or x = L - r at `time`
+    bool on_y = false;  // both: a corner hit
+};
+
+inline WallHit time_to_wall(const Vec2& position, const Vec2& velocity, const Box& box) {
+    const double tx = time_to_wall_on_axis(position.x(), velocity.x(), box.lower, box.upper);
+    const double ty = time_to_wall_on_axis(position.y(), velocity.y(), box.lower, box.upper);
+    const double t = std::min(tx, ty);
+    return {t, tx == t && t != never, ty == t && t != never};
+}
+
+// First contact time of a pair from relative position dp = p_j - p_i and
+// relative velocity dv = v_j - v_i; `never` when they do not collide. A
+// touching or overlapping pair collides at t = 0 when it approaches.
+inline double contact_time(const Vec2& dp, const Vec2& dv, double contact_dist_sq) {
+    const double a = dv.dot(dv);
+    if (a == 0.0) return never;
+    const double half_b = dp.dot(dv);
+    const double c = dp.dot(dp) - contact_dist_sq;
+    if (c <= 0.0) return half_b < 0.0 ? 0.0 : never;
+    if (half_b >= 0.0) return never;
+    // (B^2 - 4AC) / 4 rewritten with Lagrange's identity as (2r)^2 A - (dp x dv)^2:
+    // it avoids the cancellation of B^2 against 4AC for distant pairs.
+    const double cross = dp.x() * dv.y() - dp.y() * dv.x();
+    const double quarter_disc = contact_dist_sq * a - cross * cross;
+    if (!(quarter_disc > 0.0)) return never;  // a miss or a graze
+    return c / (std::sqrt(quarter_disc) - half_b);  // the smaller root, without cancellation
+}
+
+inline void clamp_into_box(Vec2& position, const Box& box) {
+    position.x() = std::clamp(position.x(), box.lower, box.upper);
+    position.y() = std::clamp(position.y(), box.lower, box.upper);
+}
+
+// Puts every coordinate named by `hit` exactly on its wall (the side the
+// velocity points to) and keeps the other inside the box despite rounding.
+inline void place_on_wall(Vec2& position, const Vec2& velocity, const WallHit& hit, const Box& box) {
+    clamp_into_box(position, box);
+    if (hit.on_x) position.x() = velocity.x() < 0.0 ? box.lower : box.upper;
+    if (hit.on_y) position.y() = velocity.y() < 0.0 ? box.lower : box.upper;
+}
+
+// Wall collision at `time`: move there, sit exactly on the wall, reflect.
+inline void bounce_off_wall(Particle& particle, const WallHit& hit, const Box& box) {
+    particle.position += particle.velocity * hit.time;
+    place_on_wall(particle.position, particle.velocity, hit, box);
+    if (hit.on_x) particle.velocity.x() = -particle.velocity.x();
+    if (hit.on_y) particle.velocity.y() = -particle.velocity.y();
+    ++particle.wall_collisions;
+}
+
+// Elastic collision of equal masses at contact positions pi, pj: exchange the
+// velocity components along the line of centres, keep the tangential ones.
+inline void exchange_normal_velocities(const Vec2& pi, const Vec2& pj, Vec2& vi, Vec2& vj) {
+    const Vec2 d = pj - pi;
+    const double dist_sq = d.dot(d);
+    if (!(dist_sq > 0.0)) return;  // unreachable for valid radii; never divide by zero
+    const Vec2 normal = d / std::sqrt(dist_sq);
+    const double exchanged = (vj - vi).dot(normal);
+    vi += exchanged * normal;
+    vj -= exchanged * normal;
+}
+
+// The rest of a step after a collision: move for `remaining`, but stop on a
+// wall reached on the way (its collision happens at t = 0 of the next step).
+inline void move_stopping_at_wall(Particle& particle, double remaining, const Box& box) {
+    const WallHit hit = time_to_wall(particle.position, particle.velocity, box);
+    if (hit.time <= remaining) {
+        particle.position += particle.velocity * hit.time;
+        place_on_wall(particle.position, particle.velocity, hit, box);
+    } else {
+        particle.position += particle.velocity * remaining;
+        clamp_into_box(particle.position, box);
+    }
+}
+
+// Free flight for a particle that has no wall within `duration`.
+inline void move_freely(Particle& particle, double duration, const Box& box) {
+    particle.position += particle.velocity * duration;
+    clamp_into_box(particle.position, box);
+}
+
+inline double kinetic_energy(const Particle& particle) {
+    return 0.5 * particle.velocity.squaredNorm();
+}
+
+}  // namespace particlesim

@@ -1,0 +1,41 @@
+#pragma once
+// Writes states in the output format of io.md through a large buffer, with
+// hand-rolled number formatting (no iostreams, no printf per number).
+
+#include "particlesim/particle.hpp"
+
+#include <cstdint>
+#include <cstdio>
+#include <span>
+#include <stdexcept>
+#include <vector>
+
+namespace particlesim {
+
+// The output could not be written (a full disk, a closed pipe, ...).
+class OutputError : public std::runtime_error {
+public:
+    using std::runtime_error::runtime_error;
+};
+
+class StateWriter {
+public:
+    explicit StateWriter(std::FILE* out);  // not owned; not closed
+
+    // "s i x y vx vy" for every particle.
+    void write_state(std::int64_t step, std::span<const Particle> particles);
+    // "s i x y vx vy pc wc" for every particle: the final block.
+    void write_final(std::int64_t step, std::span<const Particle> particles);
+    // Hands everything buffered to the FILE and flushes it; throws OutputError.
+    void flush();
+
+private:
+    void write_block(std::int64_t step, std::span<const Particle> particles, bool with_counters);
+    void drain();
+
+    std::FILE* out_;
+    std::vector<char> buffer_;
+    std::size_t used_ = 0;
+};
+
+}  // namespace particlesim

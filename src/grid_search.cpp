@@ -1,0 +1,256 @@
+#include "particlesim/grid_search.hpp"
+
+#include "parallel.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <numeric>
+
+namespace particlesim {
+
+namespace {
+
+constexpr std::uint32_t absent_marker = std::numeric_limits<std::uint32_t>::max();
+constexpr std::uint32_t large_marker = absent_marker - 1;
+
+constexpr int max_slices = 64;
+// Auto grids hold at most ~4 cells per particle (memory O(N)); forced grids
+// are capped so that G x G cells fit comfortably in memory.
+constexpr int max_forced_cells = 4096;
+
+// Generous against rounding: the contact time and the swept boxes carry
+// errors of a few ulps of the coordinates and velocities; 1e-8 relative is
+// ten million times that, and still far below any cell size it could disturb.
+constexpr double relative_margin = 1e-8;
+
+// A box that fits a cell with this slack keeps its neighbours within one cell
+// even after the rounding of the cell index computation.
+constexpr double cell_fit_slack = 1.0 - 1e-6;
+
+struct CellMapper {
+    double inverse_size;
+    int per_side;
+
+    [[nodiscard]] int operator()(double coordinate) const {
+        const double scaled = coordinate * inverse_size;
+        if (!(scaled > 0.0)) return 0;
+        if (scaled >= per_side) return per_side - 1;
+        return static_cast<int>(scaled);
+    }
+};
+
+}  // namespace
+
+GridLayout GridSearch::choose_layout(const PairSearchInput& in, int forced_cells, int threads) {
+    const auto count = static_cast<std::int64_t>(in.particles.size());
+    sweep_end_.resize(in.particles.size());
+    double length_sum = 0.0;
+    double max_speed = 0.0;
+    std::int64_t present = 0;
+    const int workers = worker_count(static_cast<std::size_t>(threads), count, min_particles_per_thread);
+#pragma omp parallel for schedule(static) num_threads(workers) if (workers > 1) \
+    reduction(+ : length_sum, present) reduction(max : max_speed)
+    for (std::int64_t i = 0; i < count; ++i) {
+        const double end = std::min(in.duration, in.wall_time[i]);
+        sweep_end_[i] = end;
+        const double speed = in.particles[i].velocity.norm();
+        max_speed = std::max(max_speed, speed);
+        if (end > 0.0) {
+            ++present;
+            length_sum += speed * end;
+        }
+    }
+
+    const double box_size = in.box.upper + in.box.lower;
+    GridLayout layout;
+    layout.reach = in.box.lower + relative_margin * (box_size + max_speed * in.duration);
+    const double mean_sweep = length_sum / static_cast<double>(std::max<std::int64_t>(present, 1));
+    const double diameter = 2.0 * layout.reach;
+    const auto slices_for = [&](double slice_sweep) {
+        if (!(slice_sweep > 0.0)) return 1;
+        return static_cast<int>(std::clamp(std::ceil(2.0 * mean_sweep / slice_sweep), 1.0, double{max_slices}));
+    };
+
+    if (forced_cells > 0) {
+        layout.cells_per_side = forced_cells;
+        layout.cell_size = box_size / forced_cells;
+        layout.slices = slices_for(layout.cell_size - diameter);
+    } else {
+        // About one particle per cell, and slices short enough that a typical
+        // swept box fits a cell.
+        const double spacing = box_size / std::sqrt(static_cast<double>(std::max<std::int64_t>(present, 1)));
+        layout.slices = slices_for(spacing);
+        const double wanted = std::max(spacing, diameter + 2.0 * mean_sweep / layout.slices);
+        const double max_side = std::floor(std::sqrt(4.0 * static_cast<double>(present))) + 1.0;
+        layout.cells_per_side = static_cast<int>(std::clamp(std::floor(box_size / wanted), 1.0, max_side));
+        layout.cell_size = box_size / layout.cells_per_side;
+    }
+    return layout;
+}
+
+void GridSearch::find_pairs(const PairSearchInput& in, int forced_cells, std::span<ThreadCandidates> buffers) {
+    forced_cells = std::min(forced_cells, max_forced_cells);
+    const int threads = static_cast<int>(buffers.size());
+    layout_ = choose_layout(in, forced_cells, threads);
+
+    const std::size_t count = in.particles.size();
+    const auto cells = static_cast<std::size_t>(layout_.cells_per_side) * static_cast<std::size_t>(layout_.cells_per_side);
+    const auto total_work = static_cast<std::int64_t>(count) * layout_.slices;
+    // Many slices: one thread a slice, each with its own buffers. Few: all
+    // threads share each slice.
+    const bool parallel_slices = layout_.slices >= 2 && threads >= 2 && total_work >= 2 * min_particles_per_thread / 8;
+    workspaces_.resize(parallel_slices ? static_cast<std::size_t>(threads) : 1);
+    for (SliceWorkspace& ws : workspaces_) {
+        ws.boxes.resize(count);
+        ws.cell_of.resize(count);
+        ws.by_cell.resize(count);
+        ws.cell_start.resize(cells + 1);
+        ws.cell_fill.resize(cells);
+        ws.large.reserve(count);
+    }
+
+    if (parallel_slices) {
+#pragma omp parallel for schedule(dynamic, 1) num_threads(threads)
+        for (int slice = 0; slice < layout_.slices; ++slice) {
+            const std::size_t thread = current_thread();
+            process_slice(in, slice, workspaces_[thread], buffers.subspan(thread, 1), 1);
+        }
+    } else {
+        const int workers = worker_count(buffers.size(), static_cast<std::int64_t>(count), min_particles_per_thread);
+        for (int slice = 0; slice < layout_.slices; ++slice) {
+            process_slice(in, slice, workspaces_[0], buffers, workers);
+        }
+    }
+}
+
+void GridSearch::process_slice(const PairSearchInput& in, int slice, SliceWorkspace& ws,
+                               std::span<ThreadCandidates> out, int threads) const {
+    bin_slice(in, slice, ws, threads);
+    test_small_pairs(in, ws, out, threads);
+    test_large_pairs(in, ws, out, threads);
+}
+
+void GridSearch::bin_slice(const PairSearchInput& in, int slice, SliceWorkspace& ws, int threads) const {
+    const double begin = in.duration * slice / layout_.slices;
+    const double end = slice + 1 == layout_.slices ? in.duration : in.duration * (slice + 1) / layout_.slices;
+    const CellMapper cell_of{1.0 / layout_.cell_size, layout_.cells_per_side};
+    const double fit = layout_.cell_size * cell_fit_slack;
+    const double reach = layout_.reach;
+    const auto count = static_cast<std::int64_t>(in.particles.size());
+
+#pragma omp parallel for schedule(static) num_threads(threads) if (threads > 1)
+    for (std::int64_t i = 0; i < count; ++i) {
+        const double sweep_end = sweep_end_[i];
+        if (!(sweep_end > 0.0) || sweep_end < begin) {
+            ws.cell_of[i] = absent_marker;
+            continue;
+        }
+        const Particle& p = in.particles[i];
+        const Vec2 from = p.position + p.velocity * begin;
+        const Vec2 to = p.position + p.velocity * std::min(end, sweep_end);
+        const SweptBox box{std::min(from.x(), to.x()) - reach, std::min(from.y(), to.y()) - reach,
+                           std::max(from.x(), to.x()) + reach, std::max(from.y(), to.y()) + reach};
+        ws.boxes[i] = box;
+        const bool fits = box.max_x - box.min_x <= fit && box.max_y - box.min_y <= fit;
+        ws.cell_of[i] = fits ? static_cast<std::uint32_t>(cell_of(box.min_y) * layout_.cells_per_side + cell_of(box.min_x))
+                             : large_marker;
+    }
+
+    // Counting sort of the fitting boxes by cell; the large ones aside.
+    std::fill(ws.cell_start.begin(), ws.cell_start.end(), 0U);
+    ws.large.clear();
+    for (std::int64_t i = 0; i < count; ++i) {
+        const std::uint32_t cell = ws.cell_of[i];
+        if (cell < large_marker) {
+            ++ws.cell_start[cell + 1];
+        } else if (cell == large_marker) {
+            ws.large.push_back(static_cast<std::uint32_t>(i));
+        }
+    }
+    std::partial_sum(ws.cell_start.begin(), ws.cell_start.end(), ws.cell_start.begin());
+    std::copy_n(ws.cell_start.begin(), ws.cell_fill.size(), ws.cell_fill.begin());
+    for (std::int64_t i = 0; i < count; ++i) {
+        const std::uint32_t cell = ws.cell_of[i];
+        if (cell < large_marker) ws.by_cell[ws.cell_fill[cell]++] = static_cast<std::uint32_t>(i);
+    }
+}
+
+namespace {
+
+// The shared pair test, behind the cheap check that the two swept boxes meet.
+inline void test_if_boxes_meet(const PairSearchInput& in, std::span<const SweptBox> boxes, std::uint32_t a,
+                               std::uint32_t b, ThreadCandidates& out) {
+    if (!boxes[a].overlaps(boxes[b])) return;
+    test_pair(in, std::min(a, b), std::max(a, b), out);
+}
+
+}  // namespace
+
+void GridSearch::test_small_pairs(const PairSearchInput& in, const SliceWorkspace& ws,
+                                  std::span<ThreadCandidates> out, int threads) const {
+    const int side = layout_.cells_per_side;
+    const std::int64_t cells = std::int64_t{side} * side;
+    const std::span<const SweptBox> boxes = ws.boxes;
+    // Half stencil: the cell itself, then east, and the three cells above.
+    constexpr int neighbour_dx[] = {1, -1, 0, 1};
+    constexpr int neighbour_dy[] = {0, 1, 1, 1};
+
+#pragma omp parallel for schedule(dynamic, 64) num_threads(threads) if (threads > 1)
+    for (std::int64_t cell = 0; cell < cells; ++cell) {
+        const std::uint32_t first = ws.cell_start[cell];
+        const std::uint32_t last = ws.cell_start[cell + 1];
+        if (first == last) continue;
+        ThreadCandidates& found = out[current_thread()];
+        const int cx = static_cast<int>(cell % side);
+        const int cy = static_cast<int>(cell / side);
+        for (std::uint32_t k = first; k < last; ++k) {
+            for (std::uint32_t m = k + 1; m < last; ++m) test_if_boxes_meet(in, boxes, ws.by_cell[k], ws.by_cell[m], found);
+        }
+        for (int n = 0; n < 4; ++n) {
+            const int nx = cx + neighbour_dx[n];
+            const int ny = cy + neighbour_dy[n];
+            if (nx < 0 || nx >= side || ny >= side) continue;
+            const auto neighbour = static_cast<std::size_t>(ny) * side + nx;
+            const std::uint32_t other_first = ws.cell_start[neighbour];
+            const std::uint32_t other_last = ws.cell_start[neighbour + 1];
+            for (std::uint32_t k = first; k < last; ++k) {
+                for (std::uint32_t m = other_first; m < other_last; ++m) {
+                    test_if_boxes_meet(in, boxes, ws.by_cell[k], ws.by_cell[m], found);
+                }
+            }
+        }
+    }
+}
+
+void GridSearch::test_large_pairs(const PairSearchInput& in, const SliceWorkspace& ws,
+                                  std::span<ThreadCandidates> out, int threads) const {
+    const CellMapper cell_of{1.0 / layout_.cell_size, layout_.cells_per_side};
+    const int side = layout_.cells_per_side;
+    const std::span<const SweptBox> boxes = ws.boxes;
+    const auto large_count = static_cast<std::int64_t>(ws.large.size());
+
+#pragma omp parallel for schedule(dynamic, 1) num_threads(threads) if (threads > 1 && large_count > 1)
+    for (std::int64_t k = 0; k < large_count; ++k) {
+        ThreadCandidates& found = out[current_thread()];
+        const std::uint32_t a = ws.large[k];
+        const SweptBox& box = boxes[a];
+        // A fitting box that meets this one has its lower corner at most one
+        // cell below or left of this box's lower corner.
+        const int x_first = std::max(cell_of(box.min_x) - 1, 0);
+        const int y_first = std::max(cell_of(box.min_y) - 1, 0);
+        const int x_last = cell_of(box.max_x);
+        const int y_last = cell_of(box.max_y);
+        for (int cy = y_first; cy <= y_last; ++cy) {
+            const auto row = static_cast<std::size_t>(cy) * side;
+            for (std::uint32_t m = ws.cell_start[row + x_first]; m < ws.cell_start[row + x_last + 1]; ++m) {
+                test_if_boxes_meet(in, boxes, a, ws.by_cell[m], found);
+            }
+        }
+        for (std::int64_t other = k + 1; other < large_count; ++other) {
+            test_if_boxes_meet(in, boxes, a, ws.large[other], found);
+        }
+    }
+}
+
+}  // namespace particlesim

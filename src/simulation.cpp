@@ -1,0 +1,103 @@
+#include "particlesim/simulation.hpp"
+
+#include "particlesim/brute_force_search.hpp"
+#include "particlesim/grid_search.hpp"
+#include "particlesim/step_pipeline.hpp"
+
+#include <omp.h>
+
+#include <cmath>
+#include <stdexcept>
+#include <string>
+
+namespace particlesim {
+
+StepCounts& StepCounts::operator+=(const StepCounts& other) {
+    pair_tests += other.pair_tests;
+    candidates += other.candidates;
+    particle_collisions += other.particle_collisions;
+    wall_collisions += other.wall_collisions;
+    return *this;
+}
+
+namespace {
+
+void require_valid_scene(const SimParams& params, std::span<const Particle> particles) {
+    const auto fail = [](const std::string& what) { throw std::invalid_argument("particlesim::Simulation: " + what); };
+    if (!(std::isfinite(params.box_size) && params.box_size > 0.0)) fail("box size must be finite and > 0");
+    if (!(std::isfinite(params.radius) && params.radius > 0.0)) fail("radius must be finite and > 0");
+    if (!(2.0 * params.radius <= params.box_size)) fail("2 * radius must be <= box size");
+    if (particles.size() >= std::size_t{0xffffffffU}) fail("too many particles");
+    for (std::size_t i = 0; i < particles.size(); ++i) {
+        const Particle& p = particles[i];
+        const bool inside = p.position.x() >= params.lower() && p.position.x() <= params.upper() &&
+                            p.position.y() >= params.lower() && p.position.y() <= params.upper();
+        if (!inside) fail("particle " + std::to_string(i) + " is outside [r, L - r]");
+        if (!p.velocity.allFinite()) fail("particle " + std::to_string(i) + " has a non-finite velocity");
+    }
+}
+
+// Below this many particles the brute-force search is the faster one.
+constexpr std::size_t brute_force_is_faster_below = 48;
+
+}  // namespace
+
+Simulation::Simulation(const SimParams& params, std::vector<Particle> particles, const SimOptions& options)
+    : params_(params), box_(Box::of(params)), options_(options), particles_(std::move(particles)) {
+    require_valid_scene(params_, particles_);
+    if (options_.threads < 0) throw std::invalid_argument("particlesim::Simulation: threads must be >= 0");
+    if (options_.grid_cells < 0) throw std::invalid_argument("particlesim::Simulation: grid_cells must be >= 0");
+    threads_ = options_.threads > 0 ? options_.threads : omp_get_max_threads();
+    wall_time_.resize(particles_.size());
+    busy_.resize(particles_.size());
+    thread_candidates_.resize(static_cast<std::size_t>(threads_));
+    grid_ = std::make_unique<GridSearch>();
+}
+
+Simulation::~Simulation() = default;
+Simulation::Simulation(Simulation&&) noexcept = default;
+Simulation& Simulation::operator=(Simulation&&) noexcept = default;
+
+void Simulation::find_pair_candidates(const PairSearchInput& input) {
+    Broadphase search = options_.broadphase;
+    if (options_.grid_cells > 0) search = Broadphase::grid;
+    if (search == Broadphase::automatic) {
+        search = particles_.size() < brute_force_is_faster_below ? Broadphase::brute : Broadphase::grid;
+    }
+    last_broadphase_ = search;
+    if (search == Broadphase::brute) {
+        find_pairs_brute_force(input, thread_candidates_);
+    } else {
+        grid_->find_pairs(input, options_.grid_cells, thread_candidates_);
+    }
+}
+
+void Simulation::step() {
+    constexpr double duration = 1.0;
+    candidates_.clear();
+    for (ThreadCandidates& thread : thread_candidates_) {
+        thread.found.clear();
+        thread.pair_tests = 0;
+    }
+    detect_wall_candidates(particles_, box_, duration, wall_time_, candidates_, threads_);
+    find_pair_candidates({particles_, wall_time_, box_, duration});
+    order_candidates(candidates_, thread_candidates_);
+    select_collisions(candidates_, busy_, accepted_);
+    resolve_collisions(particles_, accepted_, box_, duration, threads_);
+    advance_free_particles(particles_, busy_, accepted_, box_, duration, threads_);
+
+    last_step_ = {};
+    for (const ThreadCandidates& thread : thread_candidates_) last_step_.pair_tests += thread.pair_tests;
+    last_step_.candidates = candidates_.size();
+    for (const Collision& c : accepted_) {
+        if (c.kind == CollisionKind::pair) {
+            ++last_step_.particle_collisions;
+        } else {
+            ++last_step_.wall_collisions;
+        }
+    }
+    totals_ += last_step_;
+    ++steps_done_;
+}
+
+}  // namespace particlesim

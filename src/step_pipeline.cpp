@@ -1,0 +1,98 @@
+#include "particlesim/step_pipeline.hpp"
+
+#include "parallel.hpp"
+#include "particlesim/physics.hpp"
+
+#include <algorithm>
+
+namespace particlesim {
+
+void detect_wall_candidates(std::span<const Particle> particles, const Box& box, double duration,
+                            std::span<double> wall_time, std::vector<Collision>& candidates, int threads) {
+    const auto count = static_cast<std::int64_t>(particles.size());
+    const int workers = worker_count(static_cast<std::size_t>(threads), count, min_particles_per_thread);
+#pragma omp parallel for schedule(static) num_threads(workers) if (workers > 1)
+    for (std::int64_t i = 0; i < count; ++i) {
+        wall_time[i] = time_to_wall(particles[i].position, particles[i].velocity, box).time;
+    }
+    for (std::int64_t i = 0; i < count; ++i) {
+        if (wall_time[i] <= duration) candidates.push_back(Collision::wall(wall_time[i], static_cast<std::uint32_t>(i)));
+    }
+}
+
+void order_candidates(std::vector<Collision>& candidates, std::span<ThreadCandidates> found) {
+    for (ThreadCandidates& thread : found) {
+        candidates.insert(candidates.end(), thread.found.begin(), thread.found.end());
+    }
+    if (candidates.size() < 2) return;
+    std::sort(candidates.begin(), candidates.end());
+    candidates.erase(std::unique(candidates.begin(), candidates.end()), candidates.end());
+}
+
+void select_collisions(std::span<const Collision> ordered, std::span<std::uint8_t> busy,
+                       std::vector<Collision>& accepted) {
+    accepted.clear();
+    for (const Collision& c : ordered) {
+        if (busy[c.i]) continue;
+        if (c.kind == CollisionKind::pair) {
+            if (busy[c.j]) continue;
+            busy[c.j] = 1;
+        }
+        busy[c.i] = 1;
+        accepted.push_back(c);
+    }
+}
+
+namespace {
+
+void resolve_wall(Particle& particle, double time, const Box& box, double duration) {
+    // Recomputed from the unchanged start state, so it equals the candidate.
+    const WallHit hit = time_to_wall(particle.position, particle.velocity, box);
+    bounce_off_wall(particle, hit, box);
+    move_stopping_at_wall(particle, duration - time, box);
+}
+
+void resolve_pair(Particle& a, Particle& b, double time, const Box& box, double duration) {
+    a.position += a.velocity * time;
+    b.position += b.velocity * time;
+    exchange_normal_velocities(a.position, b.position, a.velocity, b.velocity);
+    for (Particle* p : {&a, &b}) {
+        ++p->particle_collisions;
+        clamp_into_box(p->position, box);
+        move_stopping_at_wall(*p, duration - time, box);
+    }
+}
+
+}  // namespace
+
+void resolve_collisions(std::span<Particle> particles, std::span<const Collision> accepted, const Box& box,
+                        double duration, int threads) {
+    const auto count = static_cast<std::int64_t>(accepted.size());
+    const int workers = worker_count(static_cast<std::size_t>(threads), count, min_particles_per_thread);
+    // Accepted collisions share no particle, so they resolve independently.
+#pragma omp parallel for schedule(static) num_threads(workers) if (workers > 1)
+    for (std::int64_t k = 0; k < count; ++k) {
+        const Collision& c = accepted[k];
+        if (c.kind == CollisionKind::wall) {
+            resolve_wall(particles[c.i], c.time, box, duration);
+        } else {
+            resolve_pair(particles[c.i], particles[c.j], c.time, box, duration);
+        }
+    }
+}
+
+void advance_free_particles(std::span<Particle> particles, std::span<std::uint8_t> busy,
+                            std::span<const Collision> accepted, const Box& box, double duration, int threads) {
+    const auto count = static_cast<std::int64_t>(particles.size());
+    const int workers = worker_count(static_cast<std::size_t>(threads), count, min_particles_per_thread);
+#pragma omp parallel for schedule(static) num_threads(workers) if (workers > 1)
+    for (std::int64_t i = 0; i < count; ++i) {
+        if (!busy[i]) move_freely(particles[i], duration, box);
+    }
+    for (const Collision& c : accepted) {
+        busy[c.i] = 0;
+        if (c.kind == CollisionKind::pair) busy[c.j] = 0;
+    }
+}
+
+}  // namespace particlesim
