@@ -105,6 +105,7 @@ void GridSearch::find_pairs(const PairSearchInput& in, int forced_cells, std::sp
         ws.boxes.resize(count);
         ws.cell_of.resize(count);
         ws.by_cell.resize(count);
+        ws.boxes_by_cell.resize(count);
         ws.cell_start.resize(cells + 1);
         ws.cell_fill.resize(cells);
         ws.large.reserve(count);
@@ -172,17 +173,26 @@ void GridSearch::bin_slice(const PairSearchInput& in, int slice, SliceWorkspace&
     std::copy_n(ws.cell_start.begin(), ws.cell_fill.size(), ws.cell_fill.begin());
     for (std::int64_t i = 0; i < count; ++i) {
         const std::uint32_t cell = ws.cell_of[i];
-        if (cell < large_marker) ws.by_cell[ws.cell_fill[cell]++] = static_cast<std::uint32_t>(i);
+        if (cell < large_marker) {
+            const std::uint32_t at = ws.cell_fill[cell]++;
+            ws.by_cell[at] = static_cast<std::uint32_t>(i);
+            ws.boxes_by_cell[at] = ws.boxes[i];
+        }
     }
 }
 
 namespace {
 
-// The shared pair test, behind the cheap check that the two swept boxes meet.
-inline void test_if_boxes_meet(const PairSearchInput& in, std::span<const SweptBox> boxes, std::uint32_t a,
-                               std::uint32_t b, ThreadCandidates& out) {
-    if (!boxes[a].overlaps(boxes[b])) return;
-    test_pair(in, std::min(a, b), std::max(a, b), out);
+// Tests particle `a` (box `box`) against the fitting particles stored at
+// positions [first, last) of the cell order.
+inline void test_against_range(const PairSearchInput& in, const std::uint32_t* ids, const SweptBox* boxes,
+                               std::uint32_t a, const SweptBox& box, std::uint32_t first, std::uint32_t last,
+                               ThreadCandidates& out) {
+    for (std::uint32_t m = first; m < last; ++m) {
+        if (!box.overlaps(boxes[m])) continue;
+        const std::uint32_t b = ids[m];
+        test_pair(in, std::min(a, b), std::max(a, b), out);
+    }
 }
 
 }  // namespace
@@ -191,34 +201,33 @@ void GridSearch::test_small_pairs(const PairSearchInput& in, const SliceWorkspac
                                   std::span<ThreadCandidates> out, int threads) const {
     const int side = layout_.cells_per_side;
     const std::int64_t cells = std::int64_t{side} * side;
-    const std::span<const SweptBox> boxes = ws.boxes;
-    // Half stencil: the cell itself, then east, and the three cells above.
-    constexpr int neighbour_dx[] = {1, -1, 0, 1};
-    constexpr int neighbour_dy[] = {0, 1, 1, 1};
+    const std::uint32_t* start = ws.cell_start.data();
+    const std::uint32_t* ids = ws.by_cell.data();
+    const SweptBox* boxes = ws.boxes_by_cell.data();
 
+    // Half stencil: the rest of the cell and the cell to the east (adjacent in
+    // the cell order, so one range), then the three cells above (one range).
 #pragma omp parallel for schedule(dynamic, 64) num_threads(threads) if (threads > 1)
     for (std::int64_t cell = 0; cell < cells; ++cell) {
-        const std::uint32_t first = ws.cell_start[cell];
-        const std::uint32_t last = ws.cell_start[cell + 1];
+        const std::uint32_t first = start[cell];
+        const std::uint32_t last = start[cell + 1];
         if (first == last) continue;
         ThreadCandidates& found = out[current_thread()];
         const int cx = static_cast<int>(cell % side);
         const int cy = static_cast<int>(cell / side);
-        for (std::uint32_t k = first; k < last; ++k) {
-            for (std::uint32_t m = k + 1; m < last; ++m) test_if_boxes_meet(in, boxes, ws.by_cell[k], ws.by_cell[m], found);
+        const std::uint32_t east_last = start[cell + (cx + 1 < side ? 2 : 1)];
+        std::uint32_t above_first = 0;
+        std::uint32_t above_last = 0;
+        if (cy + 1 < side) {
+            const std::int64_t row_above = std::int64_t{cy + 1} * side;
+            above_first = start[row_above + std::max(cx - 1, 0)];
+            above_last = start[row_above + std::min(cx + 1, side - 1) + 1];
         }
-        for (int n = 0; n < 4; ++n) {
-            const int nx = cx + neighbour_dx[n];
-            const int ny = cy + neighbour_dy[n];
-            if (nx < 0 || nx >= side || ny >= side) continue;
-            const auto neighbour = static_cast<std::size_t>(ny) * side + nx;
-            const std::uint32_t other_first = ws.cell_start[neighbour];
-            const std::uint32_t other_last = ws.cell_start[neighbour + 1];
-            for (std::uint32_t k = first; k < last; ++k) {
-                for (std::uint32_t m = other_first; m < other_last; ++m) {
-                    test_if_boxes_meet(in, boxes, ws.by_cell[k], ws.by_cell[m], found);
-                }
-            }
+        for (std::uint32_t k = first; k < last; ++k) {
+            const std::uint32_t a = ids[k];
+            const SweptBox box = boxes[k];
+            test_against_range(in, ids, boxes, a, box, k + 1, east_last, found);
+            test_against_range(in, ids, boxes, a, box, above_first, above_last, found);
         }
     }
 }
@@ -243,12 +252,12 @@ void GridSearch::test_large_pairs(const PairSearchInput& in, const SliceWorkspac
         const int y_last = cell_of(box.max_y);
         for (int cy = y_first; cy <= y_last; ++cy) {
             const auto row = static_cast<std::size_t>(cy) * side;
-            for (std::uint32_t m = ws.cell_start[row + x_first]; m < ws.cell_start[row + x_last + 1]; ++m) {
-                test_if_boxes_meet(in, boxes, a, ws.by_cell[m], found);
-            }
+            test_against_range(in, ws.by_cell.data(), ws.boxes_by_cell.data(), a, box, ws.cell_start[row + x_first],
+                               ws.cell_start[row + x_last + 1], found);
         }
         for (std::int64_t other = k + 1; other < large_count; ++other) {
-            test_if_boxes_meet(in, boxes, a, ws.large[other], found);
+            const std::uint32_t b = ws.large[other];
+            if (box.overlaps(boxes[b])) test_pair(in, std::min(a, b), std::max(a, b), found);
         }
     }
 }
