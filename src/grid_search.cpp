@@ -18,6 +18,8 @@ constexpr int max_slices = 64;
 // Auto grids hold at most ~4 cells per particle (memory O(N)); forced grids
 // are capped so that G x G cells fit comfortably in memory.
 constexpr int max_forced_cells = 4096;
+// Below this many particles, threads take whole slices.
+constexpr std::size_t slice_parallel_below = 50000;
 
 // Generous against rounding: the contact time and the swept boxes carry
 // errors of a few ulps of the coordinates and velocities; 1e-8 relative is
@@ -96,23 +98,23 @@ void GridSearch::find_pairs(const PairSearchInput& in, int forced_cells, std::sp
 
     const std::size_t count = in.particles.size();
     const auto cells = static_cast<std::size_t>(layout_.cells_per_side) * static_cast<std::size_t>(layout_.cells_per_side);
-    const auto total_work = static_cast<std::int64_t>(count) * layout_.slices;
-    // Many slices: one thread a slice, each with its own buffers. Few: all
-    // threads share each slice.
-    const bool parallel_slices = layout_.slices >= 2 && threads >= 2 && total_work >= 2 * min_particles_per_thread / 8;
+    // Small scenes: one thread a slice, each with buffers of its own (fixed by
+    // the scene, so they are allocated once). Large scenes: all threads share
+    // each slice, and one set of buffers keeps the memory per particle low.
+    const bool parallel_slices = threads >= 2 && count < slice_parallel_below;
     workspaces_.resize(parallel_slices ? static_cast<std::size_t>(threads) : 1);
     for (SliceWorkspace& ws : workspaces_) {
-        ws.boxes.resize(count);
         ws.cell_of.resize(count);
         ws.by_cell.resize(count);
         ws.boxes_by_cell.resize(count);
         ws.cell_start.resize(cells + 1);
         ws.cell_fill.resize(cells);
         ws.large.reserve(count);
+        ws.large_boxes.reserve(count);
     }
 
     if (parallel_slices) {
-#pragma omp parallel for schedule(dynamic, 1) num_threads(threads)
+#pragma omp parallel for schedule(dynamic, 1) num_threads(threads) if (layout_.slices > 1)
         for (int slice = 0; slice < layout_.slices; ++slice) {
             const std::size_t thread = current_thread();
             process_slice(in, slice, workspaces_[thread], buffers.subspan(thread, 1), 1);
@@ -132,13 +134,22 @@ void GridSearch::process_slice(const PairSearchInput& in, int slice, SliceWorksp
     test_large_pairs(in, ws, out, threads);
 }
 
+SweptBox GridSearch::swept_box(const Particle& particle, double begin, double end) const {
+    const Vec2 from = particle.position + particle.velocity * begin;
+    const Vec2 to = particle.position + particle.velocity * end;
+    const double reach = layout_.reach;
+    return {std::min(from.x(), to.x()) - reach, std::min(from.y(), to.y()) - reach, std::max(from.x(), to.x()) + reach,
+            std::max(from.y(), to.y()) + reach};
+}
+
 void GridSearch::bin_slice(const PairSearchInput& in, int slice, SliceWorkspace& ws, int threads) const {
     const double begin = in.duration * slice / layout_.slices;
     const double end = slice + 1 == layout_.slices ? in.duration : in.duration * (slice + 1) / layout_.slices;
     const CellMapper cell_of{1.0 / layout_.cell_size, layout_.cells_per_side};
     const double fit = layout_.cell_size * cell_fit_slack;
-    const double reach = layout_.reach;
     const auto count = static_cast<std::int64_t>(in.particles.size());
+    // The path of particle i in this slice ends at its sweep end, if earlier.
+    const auto slice_end = [&](std::int64_t i) { return std::min(end, sweep_end_[i]); };
 
 #pragma omp parallel for schedule(static) num_threads(threads) if (threads > 1)
     for (std::int64_t i = 0; i < count; ++i) {
@@ -147,12 +158,7 @@ void GridSearch::bin_slice(const PairSearchInput& in, int slice, SliceWorkspace&
             ws.cell_of[i] = absent_marker;
             continue;
         }
-        const Particle& p = in.particles[i];
-        const Vec2 from = p.position + p.velocity * begin;
-        const Vec2 to = p.position + p.velocity * std::min(end, sweep_end);
-        const SweptBox box{std::min(from.x(), to.x()) - reach, std::min(from.y(), to.y()) - reach,
-                           std::max(from.x(), to.x()) + reach, std::max(from.y(), to.y()) + reach};
-        ws.boxes[i] = box;
+        const SweptBox box = swept_box(in.particles[i], begin, slice_end(i));
         const bool fits = box.max_x - box.min_x <= fit && box.max_y - box.min_y <= fit;
         ws.cell_of[i] = fits ? static_cast<std::uint32_t>(cell_of(box.min_y) * layout_.cells_per_side + cell_of(box.min_x))
                              : large_marker;
@@ -161,12 +167,14 @@ void GridSearch::bin_slice(const PairSearchInput& in, int slice, SliceWorkspace&
     // Counting sort of the fitting boxes by cell; the large ones aside.
     std::fill(ws.cell_start.begin(), ws.cell_start.end(), 0U);
     ws.large.clear();
+    ws.large_boxes.clear();
     for (std::int64_t i = 0; i < count; ++i) {
         const std::uint32_t cell = ws.cell_of[i];
         if (cell < large_marker) {
             ++ws.cell_start[cell + 1];
         } else if (cell == large_marker) {
             ws.large.push_back(static_cast<std::uint32_t>(i));
+            ws.large_boxes.push_back(swept_box(in.particles[i], begin, slice_end(i)));
         }
     }
     std::partial_sum(ws.cell_start.begin(), ws.cell_start.end(), ws.cell_start.begin());
@@ -176,7 +184,7 @@ void GridSearch::bin_slice(const PairSearchInput& in, int slice, SliceWorkspace&
         if (cell < large_marker) {
             const std::uint32_t at = ws.cell_fill[cell]++;
             ws.by_cell[at] = static_cast<std::uint32_t>(i);
-            ws.boxes_by_cell[at] = ws.boxes[i];
+            ws.boxes_by_cell[at] = swept_box(in.particles[i], begin, slice_end(i));
         }
     }
 }
@@ -236,14 +244,13 @@ void GridSearch::test_large_pairs(const PairSearchInput& in, const SliceWorkspac
                                   std::span<ThreadCandidates> out, int threads) const {
     const CellMapper cell_of{1.0 / layout_.cell_size, layout_.cells_per_side};
     const int side = layout_.cells_per_side;
-    const std::span<const SweptBox> boxes = ws.boxes;
     const auto large_count = static_cast<std::int64_t>(ws.large.size());
 
 #pragma omp parallel for schedule(dynamic, 1) num_threads(threads) if (threads > 1 && large_count > 1)
     for (std::int64_t k = 0; k < large_count; ++k) {
         ThreadCandidates& found = out[current_thread()];
         const std::uint32_t a = ws.large[k];
-        const SweptBox& box = boxes[a];
+        const SweptBox& box = ws.large_boxes[k];
         // A fitting box that meets this one has its lower corner at most one
         // cell below or left of this box's lower corner.
         const int x_first = std::max(cell_of(box.min_x) - 1, 0);
@@ -257,7 +264,7 @@ void GridSearch::test_large_pairs(const PairSearchInput& in, const SliceWorkspac
         }
         for (std::int64_t other = k + 1; other < large_count; ++other) {
             const std::uint32_t b = ws.large[other];
-            if (box.overlaps(boxes[b])) test_pair(in, std::min(a, b), std::max(a, b), found);
+            if (box.overlaps(ws.large_boxes[other])) test_pair(in, std::min(a, b), std::max(a, b), found);
         }
     }
 }

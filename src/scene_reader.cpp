@@ -137,7 +137,8 @@ double parse_real(std::string_view token, std::string_view what, long line) {
 
 SimParams read_header(HeaderTokens& header, Scene& scene) {
     SimParams params;
-    const std::uint64_t count = parse_count(header.take("N (number of particles)"), "N", header.line());
+    const std::string_view count_text = header.take("N (number of particles)");
+    const std::uint64_t count = parse_count(count_text, "N", header.line());
     scene.particle_count_line = header.line();
     if (count > max_particle_count()) {
         throw InputError(header.line(), "N = " + std::to_string(count) + " is more particles than this machine can hold (at most " +
@@ -145,17 +146,20 @@ SimParams read_header(HeaderTokens& header, Scene& scene) {
     }
     scene.particle_count = static_cast<std::size_t>(count);
 
-    params.box_size = parse_real(header.take("L (box side)"), "L", header.line());
+    const std::string_view box_text = header.take("L (box side)");
+    params.box_size = parse_real(box_text, "L", header.line());
     if (!(params.box_size > 0.0)) throw InputError(header.line(), "L = " + format_short(params.box_size) + " must be > 0");
 
-    params.radius = parse_real(header.take("r (radius)"), "r", header.line());
+    const std::string_view radius_text = header.take("r (radius)");
+    params.radius = parse_real(radius_text, "r", header.line());
     if (!(params.radius > 0.0)) throw InputError(header.line(), "r = " + format_short(params.radius) + " must be > 0");
     if (!(2.0 * params.radius <= params.box_size)) {
         throw InputError(header.line(), "r = " + format_short(params.radius) + " is too large: 2r must be <= L = " +
                                             format_short(params.box_size));
     }
 
-    const std::uint64_t steps = parse_count(header.take("S (number of steps)"), "S", header.line());
+    const std::string_view steps_text = header.take("S (number of steps)");
+    const std::uint64_t steps = parse_count(steps_text, "S", header.line());
     if (steps > static_cast<std::uint64_t>(INT64_MAX)) throw InputError(header.line(), "S = " + std::to_string(steps) + " is too large");
     params.steps = static_cast<std::int64_t>(steps);
 

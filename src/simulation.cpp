@@ -50,7 +50,12 @@ Simulation::Simulation(const SimParams& params, std::vector<Particle> particles,
     threads_ = options_.threads > 0 ? options_.threads : omp_get_max_threads();
     wall_time_.resize(particles_.size());
     busy_.resize(particles_.size());
+    // Room for a busy step from the start, so that steps rarely need to grow it.
+    const std::size_t count = particles_.size();
+    candidates_.reserve(2 * count + 64);
+    accepted_.reserve(count);
     thread_candidates_.resize(static_cast<std::size_t>(threads_));
+    for (ThreadCandidates& thread : thread_candidates_) thread.found.reserve(count / static_cast<std::size_t>(threads_) + 64);
     grid_ = std::make_unique<GridSearch>();
 }
 

@@ -45,16 +45,17 @@ public:
 
     // Per-slice buffers; one per thread when slices run in parallel.
     struct SliceWorkspace {
-        std::vector<SweptBox> boxes;         // by particle
         std::vector<std::uint32_t> cell_of;  // by particle: its cell, or absent / large
         std::vector<std::uint32_t> cell_start;
         std::vector<std::uint32_t> cell_fill;
         std::vector<std::uint32_t> by_cell;  // particles sorted by cell
         std::vector<SweptBox> boxes_by_cell;  // their boxes, in the same order
         std::vector<std::uint32_t> large;    // particles whose box exceeds a cell
+        std::vector<SweptBox> large_boxes;   // their boxes, in the same order
     };
 
 private:
+    [[nodiscard]] SweptBox swept_box(const Particle& particle, double begin, double end) const;
     GridLayout choose_layout(const PairSearchInput& in, int forced_cells, int threads);
     void process_slice(const PairSearchInput& in, int slice, SliceWorkspace& ws, std::span<ThreadCandidates> out,
                        int threads) const;

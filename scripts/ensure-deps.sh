@@ -1,0 +1,28 @@
+#!/usr/bin/env bash
+# Makes sure the build dependencies are present on a Debian machine: installs
+# the missing Debian packages when run as root, otherwise names them and the
+# command that installs them. Usage: scripts/ensure-deps.sh [extra-package...]
+set -euo pipefail
+
+missing=()
+command -v cmake >/dev/null 2>&1 || missing+=(cmake)
+command -v g++ >/dev/null 2>&1 || missing+=(g++)
+[ -f /usr/include/eigen3/Eigen/Core ] || missing+=(libeigen3-dev)
+for extra in "$@"; do
+  case "$extra" in
+    gnuplot-nox) command -v gnuplot >/dev/null 2>&1 || missing+=(gnuplot-nox) ;;
+    *) dpkg -s "$extra" >/dev/null 2>&1 || missing+=("$extra") ;;
+  esac
+done
+[ ${#missing[@]} -eq 0 ] && exit 0
+
+if [ "$(id -u)" -eq 0 ] && command -v apt-get >/dev/null 2>&1; then
+  echo "Installing missing Debian packages: ${missing[*]}" >&2
+  export DEBIAN_FRONTEND=noninteractive
+  apt-get update -qq
+  apt-get install -y -qq --no-install-recommends "${missing[@]}" >/dev/null
+else
+  echo "particlesim needs these Debian packages: ${missing[*]}" >&2
+  echo "Install them with: sudo apt-get install ${missing[*]}" >&2
+  exit 1
+fi

@@ -1,0 +1,10 @@
+#!/usr/bin/env bash
+# Quick start 1: installs what is missing, builds simcli (Release) and runs it
+# on a bundled scene (default: examples/default.in). Extra arguments go to simcli.
+set -euo pipefail
+cd "$(dirname "$0")/.."
+scripts/ensure-deps.sh
+cmake -S . -B build -DCMAKE_BUILD_TYPE=Release >/dev/null
+cmake --build build --target simcli -j "$(nproc)" >/dev/null
+if [ $# -eq 0 ]; then set -- examples/default.in; fi
+exec build/apps/simcli "$@"

@@ -1,0 +1,79 @@
+#pragma once
+// Runs a program with arguments and standard input, capturing its exit
+// status, standard output and standard error (for tests of simcli).
+
+#include <fcntl.h>
+#include <spawn.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <cstdio>
+#include <fstream>
+#include <sstream>
+#include <string>
+#include <vector>
+
+namespace run_process {
+
+struct Result {
+    int status = -1;  // exit status, or 128 + signal
+    std::string out;
+    std::string err;
+};
+
+inline std::string slurp(const std::string& path) {
+    std::ifstream file(path, std::ios::binary);
+    std::ostringstream text;
+    text << file.rdbuf();
+    return text.str();
+}
+
+// `stdout_path` empty: captured; otherwise the child's stdout goes there
+// (e.g. /dev/full). `close_stdout_pipe`: stdout is a pipe nobody reads.
+inline Result run(const std::string& program, const std::vector<std::string>& args, const std::string& input = "",
+                  const std::string& stdout_path = "", bool close_stdout_pipe = false) {
+    char dir_template[] = "/tmp/particlesim-test-XXXXXX";
+    const std::string dir = mkdtemp(dir_template);
+    const std::string in_path = dir + "/in", out_path = dir + "/out", err_path = dir + "/err";
+    std::ofstream(in_path, std::ios::binary) << input;
+
+    posix_spawn_file_actions_t actions;
+    posix_spawn_file_actions_init(&actions);
+    posix_spawn_file_actions_addopen(&actions, 0, in_path.c_str(), O_RDONLY, 0);
+    int pipe_fds[2] = {-1, -1};
+    if (close_stdout_pipe) {
+        if (pipe(pipe_fds) != 0) return {};
+        posix_spawn_file_actions_adddup2(&actions, pipe_fds[1], 1);
+        posix_spawn_file_actions_addclose(&actions, pipe_fds[0]);
+        posix_spawn_file_actions_addclose(&actions, pipe_fds[1]);
+    } else {
+        const std::string target = stdout_path.empty() ? out_path : stdout_path;
+        posix_spawn_file_actions_addopen(&actions, 1, target.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
+    }
+    posix_spawn_file_actions_addopen(&actions, 2, err_path.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
+
+    std::vector<char*> argv{const_cast<char*>(program.c_str())};
+    for (const std::string& a : args) argv.push_back(const_cast<char*>(a.c_str()));
+    argv.push_back(nullptr);
+    pid_t pid = 0;
+    Result result;
+    if (posix_spawn(&pid, program.c_str(), &actions, nullptr, argv.data(), environ) == 0) {
+        if (close_stdout_pipe) {
+            close(pipe_fds[0]);  // nobody will read: the child's writes fail with EPIPE
+            close(pipe_fds[1]);
+        }
+        int status = 0;
+        waitpid(pid, &status, 0);
+        result.status = WIFEXITED(status) ? WEXITSTATUS(status) : 128 + WTERMSIG(status);
+    }
+    posix_spawn_file_actions_destroy(&actions);
+    result.out = slurp(out_path);
+    result.err = slurp(err_path);
+    std::remove(in_path.c_str());
+    std::remove(out_path.c_str());
+    std::remove(err_path.c_str());
+    rmdir(dir.c_str());
+    return result;
+}
+
+}  // namespace run_process

@@ -1,0 +1,216 @@
+// simcli as a user meets it: output byte for byte as io.md says, print and
+// perf agreeing, options, and every class of bad input and failure with its
+// exit status, nothing on stdout and one line on stderr.
+
+#include "check.hpp"
+#include "example_scenes.hpp"
+#include "run_process.hpp"
+
+#include "particlesim/random_scene.hpp"
+
+
+#include <algorithm>
+#include <cstdio>
+#include <string>
+#include <vector>
+
+using namespace particlesim;
+using run_process::Result;
+
+namespace {
+
+const std::string simcli = SIMCLI_PATH;
+const std::string examples = PARTICLESIM_EXAMPLES_DIR;
+
+Result simcli_run(const std::vector<std::string>& args, const std::string& input = "") {
+    return run_process::run(simcli, args, input);
+}
+
+bool one_line(const std::string& text) {
+    return !text.empty() && text.back() == '\n' && std::count(text.begin(), text.end(), '\n') == 1;
+}
+
+// A bad input or usage: exit 2, empty stdout, one line on stderr that starts
+// with `prefix` and mentions `fragment`.
+void expect_rejected(const std::vector<std::string>& args, const std::string& input, const std::string& prefix,
+                     const std::string& fragment) {
+    const Result r = simcli_run(args, input);
+    CHECK_EQ(r.status, 2);
+    CHECK(r.out.empty());
+    CHECK(one_line(r.err));
+    const bool ok = r.err.rfind(prefix, 0) == 0 && r.err.find(fragment) != std::string::npos;
+    CHECK(ok);
+    if (!ok) std::fprintf(stderr, "  stderr was: %s", r.err.c_str());
+}
+
+// The expected output, formatted independently of the library's writer.
+std::string expected_output(const Scene& scene) {
+    const auto states = example_scenes::run(scene);
+    std::string text;
+    char line[512];
+    const auto number = [](double v) {
+        char t[64];
+        std::snprintf(t, sizeof t, "%.8f", v);
+        return std::string(t) == "-0.00000000" ? std::string("0.00000000") : std::string(t);
+    };
+    const auto add_block = [&](std::int64_t step, const std::vector<Particle>& ps, bool counters) {
+        for (std::size_t i = 0; i < ps.size(); ++i) {
+            std::snprintf(line, sizeof line, "%lld %zu %s %s %s %s", static_cast<long long>(step), i,
+                          number(ps[i].position.x()).c_str(), number(ps[i].position.y()).c_str(),
+                          number(ps[i].velocity.x()).c_str(), number(ps[i].velocity.y()).c_str());
+            text += line;
+            if (counters) {
+                std::snprintf(line, sizeof line, " %llu %llu", static_cast<unsigned long long>(ps[i].particle_collisions),
+                              static_cast<unsigned long long>(ps[i].wall_collisions));
+                text += line;
+            }
+            text += "\n";
+        }
+    };
+    const std::int64_t steps = scene.params.steps;
+    add_block(0, states[0], false);
+    if (scene.params.mode == OutputMode::print) {
+        for (std::int64_t s = 1; s < steps; ++s) add_block(s, states[static_cast<std::size_t>(s)], false);
+    }
+    add_block(steps, states[static_cast<std::size_t>(steps)], true);
+    return text;
+}
+
+std::string last_lines(const std::string& text, std::size_t count) {
+    std::size_t at = text.size();
+    for (std::size_t k = 0; k <= count && at > 0; ++k) at = text.rfind('\n', at - 1);
+    return at == std::string::npos ? text : text.substr(at + 1);
+}
+
+std::string with_mode(std::string scene_text, const std::string& from, const std::string& to) {
+    scene_text.replace(scene_text.find(from), from.size(), to);
+    return scene_text;
+}
+
+void examples_byte_for_byte() {
+    for (const char* name : {"head_on.in", "crossing.in", "newtons_cradle.in", "glancing_line.in", "square.in",
+                             "triangle.in", "corner.in", "faster_than_box.in"}) {
+        const Result r = simcli_run({examples + "/" + name});
+        CHECK_EQ(r.status, 0);
+        CHECK(r.err.empty());
+        CHECK(r.out == expected_output(example_scenes::load(name)));
+        // perf gives the same final block as print.
+        const std::string scene_text = run_process::slurp(examples + "/" + name);
+        const Result perf = simcli_run({}, with_mode(scene_text, "print", "perf"));
+        const std::size_t n = example_scenes::load(name).particle_count;
+        CHECK_EQ(perf.status, 0);
+        CHECK(last_lines(perf.out, n) == last_lines(r.out, n));
+        CHECK_EQ(std::count(perf.out.begin(), perf.out.end(), '\n'), static_cast<long>(2 * n));
+    }
+}
+
+void random_scenes_and_options() {
+    const std::string scene = "300\n20000\n1\n20\nprint\n";
+    const Result a = simcli_run({"-"}, scene);
+    const Result b = simcli_run({"--seed", "3210", "--threads", "2"}, scene);
+    const Result c = simcli_run({"--seed", "7"}, scene);
+    CHECK_EQ(a.status, 0);
+    CHECK(a.out == b.out);
+    CHECK(a.out != c.out);
+    CHECK_EQ(std::count(a.out.begin(), a.out.end(), '\n'), 300L * 21);
+    // The library's random scene is what simcli printed as the initial state.
+    Scene expected;
+    expected.params = SimParams{20000.0, 1.0, 20, OutputMode::print};
+    expected.particles = make_random_particles(300, expected.params);
+    expected.particle_count = 300;
+    CHECK(a.out == expected_output(expected));
+    for (const std::string broadphase : {"brute", "grid", "auto"}) {
+        for (const std::string threads : {"1", "2", "3"}) {
+            CHECK(simcli_run({"--broadphase", broadphase, "-t", threads}, scene).out == a.out);
+        }
+    }
+    CHECK(simcli_run({"--grid", "4", "--engine", "step", "--substeps", "1"}, scene).out == a.out);
+
+    // -o writes the file and nothing to stdout.
+    const std::string path = "/tmp/particlesim-test-output.txt";
+    const Result to_file = simcli_run({"-o", path}, scene);
+    CHECK_EQ(to_file.status, 0);
+    CHECK(to_file.out.empty());
+    CHECK(run_process::slurp(path) == a.out);
+    std::remove(path.c_str());
+
+    // S = 0: the initial state, then the same with zero counters.
+    const Result zero = simcli_run({}, "2 20 1 0 print\n0 5 5 1 0\n1 9 9 0 -1\n");
+    CHECK(zero.out == "0 0 5.00000000 5.00000000 1.00000000 0.00000000\n0 1 9.00000000 9.00000000 0.00000000 -1.00000000\n"
+                      "0 0 5.00000000 5.00000000 1.00000000 0.00000000 0 0\n"
+                      "0 1 9.00000000 9.00000000 0.00000000 -1.00000000 0 0\n");
+    CHECK(simcli_run({}, "0 20 1 5 print\n").out.empty());
+}
+
+void help_and_version() {
+    const Result help = simcli_run({"--help"});
+    CHECK_EQ(help.status, 0);
+    CHECK(help.out.find("usage: simcli") != std::string::npos);
+    CHECK(help.out.find("--broadphase") != std::string::npos);
+    const Result version = simcli_run({"--version"});
+    CHECK_EQ(version.status, 0);
+    CHECK(version.out.rfind("simcli ", 0) == 0);
+}
+
+void bad_usage() {
+    const std::string scene = "1 20 1 1 perf\n";
+    expect_rejected({"--frobnicate"}, scene, "simcli: unknown option --frobnicate", "--help");
+    expect_rejected({"--threads", "0"}, scene, "simcli: --threads", "expected an integer in [1, 1024]");
+    expect_rejected({"-t", "two"}, scene, "simcli: --threads", "\"two\"");
+    expect_rejected({"--seed", "-1"}, scene, "simcli: --seed", "expected an integer");
+    expect_rejected({"--broadphase", "octree"}, scene, "simcli: --broadphase", "expected auto, brute or grid");
+    expect_rejected({"--grid", "0"}, scene, "simcli: --grid", "[1, 4096]");
+    expect_rejected({"--substeps", "4"}, scene, "simcli: --substeps", "not implemented");
+    expect_rejected({"--engine", "exact"}, scene, "simcli: --engine exact", "not implemented");
+    expect_rejected({"--engine", "magic"}, scene, "simcli: --engine", "expected step or exact");
+    expect_rejected({"--output"}, scene, "simcli: option --output needs a value", "");
+    expect_rejected({"a.in", "b.in"}, scene, "simcli: expected at most one scene file", "");
+    expect_rejected({"/nonexistent/scene.in"}, "", "simcli: /nonexistent/scene.in: cannot open", "No such file");
+    expect_rejected({"/tmp"}, "", "simcli: /tmp: is a directory", "");
+}
+
+void bad_input() {
+    // One of each class of io.md; the reader test covers every message.
+    expect_rejected({}, "", "simcli: <stdin>:1: ", "missing N");
+    expect_rejected({}, "x\n", "simcli: <stdin>:1: ", "N: expected a non-negative integer");
+    expect_rejected({}, "5\n-20\n", "simcli: <stdin>:2: ", "L = -20 must be > 0");
+    expect_rejected({}, "5\n20\n11\n", "simcli: <stdin>:3: ", "2r must be <= L");
+    expect_rejected({}, "5\n20\n1\n1.5\n", "simcli: <stdin>:4: ", "S: expected a non-negative integer");
+    expect_rejected({}, "5\n20\n1\n1\nfast\n", "simcli: <stdin>:5: ", "expected print or perf");
+    expect_rejected({}, "2\n20000\n1\n1000\nperf\n0 -2 5 0 0\n", "simcli: <stdin>:6: ",
+                    "particle 0: x = -2 is outside [1, 19999]");
+    expect_rejected({}, "2 20 1 1 perf\n0 5 5 0 0\n0 6 6 0 0\n", "simcli: <stdin>:3: ", "listed twice");
+    expect_rejected({}, "2 20 1 1 perf\n0 5 5 0 0\n", "simcli: <stdin>:2: ", "found 1");
+    expect_rejected({}, "2 20 1 1 perf\n0 5 5 inf 0\n", "simcli: <stdin>:2: ", "finite");
+    expect_rejected({}, "4000000000\n20\n1\n1\nperf\n", "simcli: <stdin>:1: ", "more particles than this machine can hold");
+    expect_rejected({}, "500\n20\n1\n1\nperf\n", "simcli: <stdin>:1: ", "cannot place 500 non-overlapping disks");
+    expect_rejected({}, std::string(100000, '7'), "simcli: <stdin>:1: ", "longer than");
+    // Binary garbage is just bad input.
+    expect_rejected({}, std::string("\x01\x02\xff\xfe\n", 5), "simcli: <stdin>:1: ", "expected a non-negative integer");
+}
+
+void write_failures() {
+    const std::string scene = "50 20000 1 100 print\n";
+    const Result full = run_process::run(simcli, {}, scene, "/dev/full");
+    CHECK_EQ(full.status, 1);
+    CHECK(one_line(full.err));
+    CHECK(full.err.find("cannot write") != std::string::npos);
+    const Result closed = run_process::run(simcli, {}, scene, "", true);
+    CHECK_EQ(closed.status, 1);
+    CHECK(one_line(closed.err));
+    const Result bad_path = simcli_run({"-o", "/nonexistent/dir/out.txt"}, scene);
+    CHECK_EQ(bad_path.status, 1);
+    CHECK(one_line(bad_path.err));
+}
+
+}  // namespace
+
+int main() {
+    examples_byte_for_byte();
+    random_scenes_and_options();
+    help_and_version();
+    bad_usage();
+    bad_input();
+    write_failures();
+    return check::summary("test_cli");
+}

@@ -1,0 +1,39 @@
+// Once its buffers have their working size, a step allocates nothing: every
+// operator new after the warm-up steps is counted.
+
+#include "check.hpp"
+
+#include "particlesim/random_scene.hpp"
+#include "particlesim/simulation.hpp"
+
+#include <atomic>
+#include <cstdlib>
+#include <new>
+
+namespace {
+std::atomic<long> allocations{0};
+}
+
+void* operator new(std::size_t size) {
+    ++allocations;
+    if (void* p = std::malloc(size == 0 ? 1 : size)) return p;
+    throw std::bad_alloc();
+}
+void operator delete(void* p) noexcept { std::free(p); }
+void operator delete(void* p, std::size_t) noexcept { std::free(p); }
+
+using namespace particlesim;
+
+int main() {
+    const SimParams params{20000.0, 1.0, 100, OutputMode::perf};
+    for (const Broadphase search : {Broadphase::brute, Broadphase::grid}) {
+        for (const int threads : {1, 2}) {
+            Simulation sim(params, make_random_particles(1000, params), {search, 0, threads});
+            sim.run(20);  // warm-up: buffers grow to their working size
+            const long before = allocations.load();
+            sim.run(200);
+            CHECK_EQ(allocations.load() - before, 0L);
+        }
+    }
+    return check::summary("test_no_allocation");
+}

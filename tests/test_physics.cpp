@@ -1,0 +1,122 @@
+// The pure physics functions against values worked out by hand.
+
+#include "check.hpp"
+
+#include "particlesim/physics.hpp"
+
+#include <cmath>
+
+using namespace particlesim;
+
+namespace {
+
+const Box box = Box::of(SimParams{20.0, 1.0, 1, OutputMode::perf});  // centres in [1, 19]
+
+void wall_times() {
+    // x = 10 moving +2: reaches 19 at t = 4.5; y = 5 moving -1: reaches 1 at t = 4.
+    const WallHit hit = time_to_wall(Vec2(10, 5), Vec2(2, -1), box);
+    CHECK_EQ(hit.time, 4.0);
+    CHECK(!hit.on_x);
+    CHECK(hit.on_y);
+    // No motion: never.
+    CHECK_EQ(time_to_wall(Vec2(10, 10), Vec2(0, 0), box).time, never);
+    // Corner: both axes at t = 2.
+    const WallHit corner = time_to_wall(Vec2(17, 17), Vec2(1, 1), box);
+    CHECK_EQ(corner.time, 2.0);
+    CHECK(corner.on_x && corner.on_y);
+    // Resting on the wall and moving into it: t = +0 (not -0).
+    const double t = time_to_wall(Vec2(1, 10), Vec2(-3, 0), box).time;
+    CHECK_EQ(t, 0.0);
+    CHECK(!std::signbit(t));
+}
+
+void contact_times() {
+    const double d2 = box.contact_dist_sq;  // 4
+    // Head-on: gap 8 - 2 = 6 closing at 2 per step: t = 3.
+    CHECK_EQ(contact_time(Vec2(8, 0), Vec2(-2, 0), d2), 3.0);
+    // Overlapping (distance 1) and approaching: t = 0.
+    CHECK_EQ(contact_time(Vec2(1, 0), Vec2(-1, 0), d2), 0.0);
+    // Touching exactly (C == 0) and approaching: t = 0.
+    CHECK_EQ(contact_time(Vec2(2, 0), Vec2(-1, 0), d2), 0.0);
+    // Overlapping and receding: none.
+    CHECK_EQ(contact_time(Vec2(1, 0), Vec2(1, 0), d2), never);
+    // Overlapping, moving sideways (B == 0): none.
+    CHECK_EQ(contact_time(Vec2(1, 0), Vec2(0, 1), d2), never);
+    // Graze: passing at exactly 2r (offset 2, moving along x): discriminant 0, none.
+    CHECK_EQ(contact_time(Vec2(10, 2), Vec2(-1, 0), d2), never);
+    // Just inside the graze: a collision, later than head-on.
+    const double near_graze = contact_time(Vec2(10, 1.999), Vec2(-1, 0), d2);
+    CHECK(near_graze > 8.0 && near_graze < 10.0);
+    // Miss: offset 3.
+    CHECK_EQ(contact_time(Vec2(10, 3), Vec2(-1, 0), d2), never);
+    // No relative motion, even when overlapping: none.
+    CHECK_EQ(contact_time(Vec2(1, 0), Vec2(0, 0), d2), never);
+    CHECK_EQ(contact_time(Vec2(5, 0), Vec2(0, 0), d2), never);
+    // Coincident centres: B == 0, so none, and no normal is ever needed.
+    CHECK_EQ(contact_time(Vec2(0, 0), Vec2(1, 1), d2), never);
+    // Glancing: offset 1.5, contact when dx = sqrt(4 - 2.25) = sqrt(1.75).
+    CHECK_NEAR(contact_time(Vec2(6, 1.5), Vec2(-1, 0), d2), 6.0 - std::sqrt(1.75), 1e-14);
+    // Receding from far away: none.
+    CHECK_EQ(contact_time(Vec2(8, 0), Vec2(1, 0), d2), never);
+}
+
+void exchange_conserves_energy_and_momentum() {
+    // Head-on, equal speeds: velocities swap.
+    Vec2 va(1, 0), vb(-1, 0);
+    exchange_normal_velocities(Vec2(0, 0), Vec2(2, 0), va, vb);
+    CHECK_EQ(va.x(), -1.0);
+    CHECK_EQ(vb.x(), 1.0);
+    CHECK_EQ(va.y(), 0.0);
+    // Glancing (normal (sqrt(1.75), 1.5) / 2): hand values 0.45 / 0.35 along x.
+    Vec2 v0(0.8, 0), v1(0, 0);
+    exchange_normal_velocities(Vec2(0, 0), Vec2(std::sqrt(1.75), 1.5), v0, v1);
+    CHECK_NEAR(v0.x(), 0.45, 1e-15);
+    CHECK_NEAR(v1.x(), 0.35, 1e-15);
+    CHECK_NEAR(v0.y(), -v1.y(), 1e-15);
+    // Arbitrary: momentum and energy conserved to rounding.
+    Vec2 a(3.7, -1.2), b(-0.4, 2.9);
+    const Vec2 momentum = a + b;
+    const double energy = a.squaredNorm() + b.squaredNorm();
+    exchange_normal_velocities(Vec2(1.3, 2.2), Vec2(2.1, 3.9), a, b);
+    CHECK_NEAR((a + b - momentum).norm(), 0.0, 1e-14);
+    CHECK_NEAR(a.squaredNorm() + b.squaredNorm(), energy, 1e-13);
+    // Coincident centres leave velocities alone instead of dividing by zero.
+    Vec2 c(1, 0), d(0, 1);
+    exchange_normal_velocities(Vec2(5, 5), Vec2(5, 5), c, d);
+    CHECK(c.allFinite() && d.allFinite());
+}
+
+void bounce_and_stop_at_wall() {
+    // Bounce at t = 0.5 on x = 19: x is set exactly, vx negated, wc counted.
+    Particle p;
+    p.position = Vec2(18, 10);
+    p.velocity = Vec2(2, 0.5);
+    bounce_off_wall(p, time_to_wall(p.position, p.velocity, box), box);
+    CHECK_EQ(p.position.x(), 19.0);
+    CHECK_EQ(p.position.y(), 10.25);
+    CHECK_EQ(p.velocity.x(), -2.0);
+    CHECK_EQ(p.wall_collisions, 1U);
+    // After a collision, the rest of the step stops at the wall it reaches.
+    Particle q;
+    q.position = Vec2(17, 10);
+    q.velocity = Vec2(4, 0);
+    move_stopping_at_wall(q, 1.0, box);
+    CHECK_EQ(q.position.x(), 19.0);
+    CHECK_EQ(q.velocity.x(), 4.0);  // unchanged: the bounce comes next step
+    // Free flight stays inside even when rounding would push it out.
+    Particle r;
+    r.position = Vec2(19.0 - 1e-16, 10);
+    r.velocity = Vec2(1e-15, 0);
+    move_freely(r, 1.0, box);
+    CHECK(r.position.x() <= box.upper);
+}
+
+}  // namespace
+
+int main() {
+    wall_times();
+    contact_times();
+    exchange_conserves_energy_and_momentum();
+    bounce_and_stop_at_wall();
+    return check::summary("test_physics");
+}

@@ -1,0 +1,115 @@
+// The scene reader: valid scenes and every class of bad input, each with the
+// line that names the problem.
+
+#include "check.hpp"
+
+#include "particlesim/scene_reader.hpp"
+
+#include <sstream>
+#include <string>
+
+using namespace particlesim;
+
+namespace {
+
+struct Outcome {
+    bool ok = false;
+    long line = 0;
+    std::string message;
+    Scene scene;
+};
+
+Outcome read(const std::string& text) {
+    std::istringstream in(text);
+    Outcome outcome;
+    try {
+        outcome.scene = read_scene(in);
+        outcome.ok = true;
+    } catch (const InputError& e) {
+        outcome.line = e.line();
+        outcome.message = e.what();
+    }
+    return outcome;
+}
+
+void expect_error(const std::string& text, long line, const std::string& fragment) {
+    const Outcome o = read(text);
+    CHECK(!o.ok);
+    CHECK_EQ(o.line, line);
+    const bool mentions = o.message.find(fragment) != std::string::npos;
+    CHECK(mentions);
+    if (!mentions) std::fprintf(stderr, "  message was: %s\n", o.message.c_str());
+}
+
+void valid_scenes() {
+    const Outcome random = read("1000\n20000\n1\n1000\nperf\n");
+    CHECK(random.ok);
+    CHECK(random.scene.is_random());
+    CHECK_EQ(random.scene.particle_count, 1000U);
+    CHECK_EQ(random.scene.params.steps, 1000);
+    CHECK(random.scene.params.mode == OutputMode::perf);
+
+    // Particles in any order, blank lines, tabs, CRLF, header on one line.
+    const Outcome listed = read("2 20 1 5 print\n\n1\t15 12 -0.5 0\r\n0 5 5 1e-1 -0\n\n");
+    CHECK(listed.ok);
+    CHECK(!listed.scene.is_random());
+    CHECK_EQ(listed.scene.particles[0].position.x(), 5.0);
+    CHECK_EQ(listed.scene.particles[0].velocity.x(), 0.1);
+    CHECK(!std::signbit(listed.scene.particles[0].velocity.y()));
+    CHECK_EQ(listed.scene.particles[1].position.y(), 12.0);
+    CHECK(listed.scene.params.mode == OutputMode::print);
+
+    // Boundaries are valid: x = r, x = L - r, 2r = L, N = 0, S = 0.
+    CHECK(read("1 2 1 0 perf\n0 1 1 0 0\n").ok);
+    CHECK(read("1 20 1 3 perf\n0 1 19 0 0\n").ok);
+    CHECK(read("0 20 1 3 perf\n").ok);
+}
+
+void bad_headers() {
+    expect_error("", 1, "missing N");
+    expect_error("abc\n", 1, "expected a non-negative integer, found \"abc\"");
+    expect_error("-5\n", 1, "expected a non-negative integer");
+    expect_error("1.5\n", 1, "expected a non-negative integer");
+    expect_error("99999999999999999999999\n", 1, "too large");
+    expect_error("99999999999\n20000\n1\n1\nperf\n", 1, "more particles than this machine can hold");
+    expect_error("10\n", 1, "missing L");
+    expect_error("10\n-5\n", 2, "L = -5 must be > 0");
+    expect_error("10\n0\n", 2, "L = 0 must be > 0");
+    expect_error("10\nnan\n", 2, "expected a finite number");
+    expect_error("10\ninf\n", 2, "expected a finite number");
+    expect_error("10\n1e999\n", 2, "out of range");
+    expect_error("10\n1e200\n", 2, "exceeds the limit");
+    expect_error("10\n20\n0\n", 3, "r = 0 must be > 0");
+    expect_error("10\n20\n10.5\n", 3, "2r must be <= L = 20");
+    expect_error("10\n20\n1\n-1\n", 4, "S: expected a non-negative integer");
+    expect_error("10\n20\n1\n5\n", 4, "missing the output mode");
+    expect_error("10\n20\n1\n5\npint\n", 5, "expected print or perf, found \"pint\"");
+    expect_error("1 20 1 5 perf 0 5 5 0 0\n", 1, "unexpected text after the output mode");
+}
+
+void bad_particles() {
+    const std::string header = "3\n20\n1\n5\nperf\n";
+    expect_error(header + "0 5 5 0\n", 6, "5 fields");
+    expect_error(header + "0 5 5 0 0 7\n", 6, "this one has 6");
+    expect_error(header + "3 5 5 0 0\n", 6, "particle index 3 is outside [0, 2]");
+    expect_error(header + "x 5 5 0 0\n", 6, "particle index: expected a non-negative integer");
+    expect_error(header + "0 5 5 0 0\n1 6 6 0 0\n0 7 7 0 0\n", 8, "particle 0 is listed twice (first on line 6)");
+    expect_error(header + "0 -2 5 0 0\n", 6, "particle 0: x = -2 is outside [1, 19]");
+    expect_error(header + "0 5 19.5 0 0\n", 6, "particle 0: y = 19.5 is outside [1, 19]");
+    expect_error(header + "0 5 5 nan 0\n", 6, "particle 0: vx: expected a finite number");
+    expect_error(header + "0 5 5 0 -inf\n", 6, "particle 0: vy: expected a finite number");
+    expect_error(header + "0 5 5 0 0x10\n", 6, "particle 0: vy: expected a finite number");
+    expect_error(header + "0 5 5 0 0\n1 6 6 0 0\n", 7, "expected N = 3 particle lines or none, found 2");
+    expect_error(header + "0 5 5 0 0\n1 6 6 0 0\n2 7 7 0 0\n2 8 8 0 0\n", 9, "more than N = 3");
+    expect_error("0 20 1 5 perf\n0 5 5 0 0\n", 2, "N = 0, but a particle line follows");
+    expect_error(header + std::string(5000, '1') + "\n", 6, "longer than");
+}
+
+}  // namespace
+
+int main() {
+    valid_scenes();
+    bad_headers();
+    bad_particles();
+    return check::summary("test_scene_reader");
+}
