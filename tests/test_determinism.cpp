@@ -1,0 +1,50 @@
+// In the spirit of Box2D's determinism test: one hash of the final state, the
+// same for every thread count and every candidate search.
+
+#include "check.hpp"
+#include "state_hash.hpp"
+
+#include "particlesim/random_scene.hpp"
+#include "particlesim/simulation.hpp"
+
+#include <cstdio>
+
+using namespace particlesim;
+
+namespace {
+
+std::uint64_t final_hash(const SimParams& params, const std::vector<Particle>& particles, const SimOptions& options) {
+    Simulation sim(params, particles, options);
+    sim.run(params.steps);
+    return state_hash::hash(sim.particles());
+}
+
+// `forced_grid`: a G x G grid to impose besides the automatic one.
+void same_hash_everywhere(const char* name, const SimParams& params, const std::vector<Particle>& particles,
+                          int forced_grid, bool with_brute) {
+    const std::uint64_t reference = final_hash(params, particles, {Broadphase::grid, 0, 1});
+    int differing = 0;
+    for (const int threads : {1, 2, 3, 4, 8}) {
+        differing += final_hash(params, particles, {Broadphase::grid, 0, threads}) != reference;
+        differing += final_hash(params, particles, {Broadphase::automatic, 0, threads}) != reference;
+        differing += final_hash(params, particles, {Broadphase::grid, forced_grid, threads}) != reference;
+        if (with_brute) differing += final_hash(params, particles, {Broadphase::brute, 0, threads}) != reference;
+    }
+    std::printf("%s: final state hash %016llx\n", name, static_cast<unsigned long long>(reference));
+    CHECK_EQ(differing, 0);
+}
+
+}  // namespace
+
+int main() {
+    // The paper's scene (fast particles, sparse box), 200 steps.
+    const SimParams paper{20000.0, 1.0, 200, OutputMode::perf};
+    same_hash_everywhere("default scene", paper, make_random_particles(1000, paper), 4, true);
+    // A crowded box of slow particles (area fraction 0.3): many collisions.
+    const SimParams crowded{160.0, 1.0, 100, OutputMode::perf};
+    same_hash_everywhere("crowded box", crowded, make_random_particles(2400, crowded, {5, SpeedRange{0.1, 1.0}}), 16, false);
+    // Large enough for the grid to share each slice between threads.
+    const SimParams large{1000.0, 1.0, 10, OutputMode::perf};
+    same_hash_everywhere("60000 particles", large, make_random_particles(60000, large, {9, SpeedRange{0.1, 1.0}}), 256, false);
+    return check::summary("test_determinism");
+}
