@@ -26,6 +26,10 @@ constexpr std::size_t slice_parallel_below = 50000;
 // ten million times that, and still far below any cell size it could disturb.
 constexpr double relative_margin = 1e-8;
 
+// Slices are cut so that a typical path in a slice covers at most half a cell
+// (measured best on the paper's scene; see docs/benchmarks.md).
+constexpr double sweeps_per_cell = 2.0;
+
 // A box that fits a cell with this slack keeps its neighbours within one cell
 // even after the rounding of the cell index computation.
 constexpr double cell_fit_slack = 1.0 - 1e-6;
@@ -51,17 +55,28 @@ GridLayout GridSearch::choose_layout(const PairSearchInput& in, int forced_cells
     double max_speed = 0.0;
     std::int64_t present = 0;
     const int workers = worker_count(static_cast<std::size_t>(threads), count, min_particles_per_thread);
-#pragma omp parallel for schedule(static) num_threads(workers) if (workers > 1) \
-    reduction(+ : length_sum, present) reduction(max : max_speed)
-    for (std::int64_t i = 0; i < count; ++i) {
-        const double end = std::min(in.duration, in.wall_time[i]);
-        sweep_end_[i] = end;
-        const double speed = in.particles[i].velocity.norm();
-        max_speed = std::max(max_speed, speed);
-        if (end > 0.0) {
-            ++present;
-            length_sum += speed * end;
+    // Sums per block of particles, added in block order: the layout (and so
+    // the pair tests counted) does not depend on the thread count.
+    constexpr std::int64_t block = 4096;
+    const std::int64_t blocks = (count + block - 1) / block;
+    block_sums_.assign(static_cast<std::size_t>(blocks), BlockSums{});
+    parallel_for(workers, blocks, [&](std::int64_t b, std::size_t) {
+        BlockSums& sums = block_sums_[b];
+        for (std::int64_t i = b * block; i < std::min(count, (b + 1) * block); ++i) {
+            const double end = std::min(in.duration, in.wall_time[i]);
+            sweep_end_[i] = end;
+            const double speed = in.particles[i].velocity.norm();
+            sums.max_speed = std::max(sums.max_speed, speed);
+            if (end > 0.0) {
+                ++sums.present;
+                sums.length_sum += speed * end;
+            }
         }
+    });
+    for (const BlockSums& sums : block_sums_) {
+        length_sum += sums.length_sum;
+        present += sums.present;
+        max_speed = std::max(max_speed, sums.max_speed);
     }
 
     const double box_size = in.box.upper + in.box.lower;
@@ -71,7 +86,7 @@ GridLayout GridSearch::choose_layout(const PairSearchInput& in, int forced_cells
     const double diameter = 2.0 * layout.reach;
     const auto slices_for = [&](double slice_sweep) {
         if (!(slice_sweep > 0.0)) return 1;
-        return static_cast<int>(std::clamp(std::ceil(2.0 * mean_sweep / slice_sweep), 1.0, double{max_slices}));
+        return static_cast<int>(std::clamp(std::ceil(sweeps_per_cell * mean_sweep / slice_sweep), 1.0, double{max_slices}));
     };
 
     if (forced_cells > 0) {
@@ -107,6 +122,7 @@ void GridSearch::find_pairs(const PairSearchInput& in, int forced_cells, std::sp
         ws.cell_of.resize(count);
         ws.by_cell.resize(count);
         ws.boxes_by_cell.resize(count);
+        ws.states_by_cell.resize(count);
         ws.cell_start.resize(cells + 1);
         ws.cell_fill.resize(cells);
         ws.large.reserve(count);
@@ -114,11 +130,9 @@ void GridSearch::find_pairs(const PairSearchInput& in, int forced_cells, std::sp
     }
 
     if (parallel_slices) {
-#pragma omp parallel for schedule(dynamic, 1) num_threads(threads) if (layout_.slices > 1)
-        for (int slice = 0; slice < layout_.slices; ++slice) {
-            const std::size_t thread = current_thread();
-            process_slice(in, slice, workspaces_[thread], buffers.subspan(thread, 1), 1);
-        }
+        parallel_for_dynamic(std::min(threads, layout_.slices), layout_.slices, 1, [&](std::int64_t slice, std::size_t thread) {
+            process_slice(in, static_cast<int>(slice), workspaces_[thread], buffers.subspan(thread, 1), 1);
+        });
     } else {
         const int workers = worker_count(buffers.size(), static_cast<std::int64_t>(count), min_particles_per_thread);
         for (int slice = 0; slice < layout_.slices; ++slice) {
@@ -151,18 +165,17 @@ void GridSearch::bin_slice(const PairSearchInput& in, int slice, SliceWorkspace&
     // The path of particle i in this slice ends at its sweep end, if earlier.
     const auto slice_end = [&](std::int64_t i) { return std::min(end, sweep_end_[i]); };
 
-#pragma omp parallel for schedule(static) num_threads(threads) if (threads > 1)
-    for (std::int64_t i = 0; i < count; ++i) {
+    parallel_for(threads, count, [&](std::int64_t i, std::size_t) {
         const double sweep_end = sweep_end_[i];
         if (!(sweep_end > 0.0) || sweep_end < begin) {
             ws.cell_of[i] = absent_marker;
-            continue;
+            return;
         }
         const SweptBox box = swept_box(in.particles[i], begin, slice_end(i));
         const bool fits = box.max_x - box.min_x <= fit && box.max_y - box.min_y <= fit;
         ws.cell_of[i] = fits ? static_cast<std::uint32_t>(cell_of(box.min_y) * layout_.cells_per_side + cell_of(box.min_x))
                              : large_marker;
-    }
+    });
 
     // Counting sort of the fitting boxes by cell; the large ones aside.
     std::fill(ws.cell_start.begin(), ws.cell_start.end(), 0U);
@@ -185,6 +198,7 @@ void GridSearch::bin_slice(const PairSearchInput& in, int slice, SliceWorkspace&
             const std::uint32_t at = ws.cell_fill[cell]++;
             ws.by_cell[at] = static_cast<std::uint32_t>(i);
             ws.boxes_by_cell[at] = swept_box(in.particles[i], begin, slice_end(i));
+            ws.states_by_cell[at] = pair_test_state(in, static_cast<std::uint32_t>(i));
         }
     }
 }
@@ -193,13 +207,32 @@ namespace {
 
 // Tests particle `a` (box `box`) against the fitting particles stored at
 // positions [first, last) of the cell order.
-inline void test_against_range(const PairSearchInput& in, const std::uint32_t* ids, const SweptBox* boxes,
-                               std::uint32_t a, const SweptBox& box, std::uint32_t first, std::uint32_t last,
-                               ThreadCandidates& out) {
-    for (std::uint32_t m = first; m < last; ++m) {
-        if (!box.overlaps(boxes[m])) continue;
-        const std::uint32_t b = ids[m];
-        test_pair(in, std::min(a, b), std::max(a, b), out);
+// Tests particle `a` (box `box`, state `state`) against the fitting
+// particles at positions [first, last) of the cell order. Overlaps are rare
+// and unpredictable, so the scan writes every position and advances only on
+// a hit (no branch), then tests the few hits.
+inline void test_against_range(const PairSearchInput& in, const GridSearch::SliceWorkspace& ws, std::uint32_t a,
+                               const SweptBox& box, const PairTestState& state, std::uint32_t first,
+                               std::uint32_t last, ThreadCandidates& out) {
+    constexpr std::uint32_t chunk = 64;
+    std::uint32_t hits[chunk];
+    const SweptBox* boxes = ws.boxes_by_cell.data();
+    for (std::uint32_t from = first; from < last; from += chunk) {
+        const std::uint32_t to = std::min(last, from + chunk);
+        std::uint32_t found = 0;
+        for (std::uint32_t m = from; m < to; ++m) {
+            hits[found] = m;
+            found += box.overlaps(boxes[m]) ? 1U : 0U;
+        }
+        for (std::uint32_t h = 0; h < found; ++h) {
+            const std::uint32_t b = ws.by_cell[hits[h]];
+            const PairTestState& other = ws.states_by_cell[hits[h]];
+            if (a < b) {
+                test_pair(state, other, a, b, in, out);
+            } else {
+                test_pair(other, state, b, a, in, out);
+            }
+        }
     }
 }
 
@@ -208,36 +241,34 @@ inline void test_against_range(const PairSearchInput& in, const std::uint32_t* i
 void GridSearch::test_small_pairs(const PairSearchInput& in, const SliceWorkspace& ws,
                                   std::span<ThreadCandidates> out, int threads) const {
     const int side = layout_.cells_per_side;
-    const std::int64_t cells = std::int64_t{side} * side;
     const std::uint32_t* start = ws.cell_start.data();
     const std::uint32_t* ids = ws.by_cell.data();
     const SweptBox* boxes = ws.boxes_by_cell.data();
+    const PairTestState* states = ws.states_by_cell.data();
 
     // Half stencil: the rest of the cell and the cell to the east (adjacent in
     // the cell order, so one range), then the three cells above (one range).
-#pragma omp parallel for schedule(dynamic, 64) num_threads(threads) if (threads > 1)
-    for (std::int64_t cell = 0; cell < cells; ++cell) {
-        const std::uint32_t first = start[cell];
-        const std::uint32_t last = start[cell + 1];
-        if (first == last) continue;
-        ThreadCandidates& found = out[current_thread()];
-        const int cx = static_cast<int>(cell % side);
-        const int cy = static_cast<int>(cell / side);
-        const std::uint32_t east_last = start[cell + (cx + 1 < side ? 2 : 1)];
-        std::uint32_t above_first = 0;
-        std::uint32_t above_last = 0;
-        if (cy + 1 < side) {
-            const std::int64_t row_above = std::int64_t{cy + 1} * side;
-            above_first = start[row_above + std::max(cx - 1, 0)];
-            above_last = start[row_above + std::min(cx + 1, side - 1) + 1];
+    parallel_for_dynamic(threads, side, 4, [&](std::int64_t cy, std::size_t thread) {
+        ThreadCandidates& found = out[thread];
+        const std::int64_t row = cy * side;
+        for (int cx = 0; cx < side; ++cx) {
+            const std::int64_t cell = row + cx;
+            const std::uint32_t first = start[cell];
+            const std::uint32_t last = start[cell + 1];
+            if (first == last) continue;
+            const std::uint32_t east_last = start[cell + (cx + 1 < side ? 2 : 1)];
+            std::uint32_t above_first = 0;
+            std::uint32_t above_last = 0;
+            if (cy + 1 < side) {
+                above_first = start[row + side + std::max(cx - 1, 0)];
+                above_last = start[row + side + std::min(cx + 1, side - 1) + 1];
+            }
+            for (std::uint32_t k = first; k < last; ++k) {
+                test_against_range(in, ws, ids[k], boxes[k], states[k], k + 1, east_last, found);
+                test_against_range(in, ws, ids[k], boxes[k], states[k], above_first, above_last, found);
+            }
         }
-        for (std::uint32_t k = first; k < last; ++k) {
-            const std::uint32_t a = ids[k];
-            const SweptBox box = boxes[k];
-            test_against_range(in, ids, boxes, a, box, k + 1, east_last, found);
-            test_against_range(in, ids, boxes, a, box, above_first, above_last, found);
-        }
-    }
+    });
 }
 
 void GridSearch::test_large_pairs(const PairSearchInput& in, const SliceWorkspace& ws,
@@ -246,11 +277,11 @@ void GridSearch::test_large_pairs(const PairSearchInput& in, const SliceWorkspac
     const int side = layout_.cells_per_side;
     const auto large_count = static_cast<std::int64_t>(ws.large.size());
 
-#pragma omp parallel for schedule(dynamic, 1) num_threads(threads) if (threads > 1 && large_count > 1)
-    for (std::int64_t k = 0; k < large_count; ++k) {
-        ThreadCandidates& found = out[current_thread()];
+    parallel_for_dynamic(large_count > 1 ? threads : 1, large_count, 1, [&](std::int64_t k, std::size_t thread) {
+        ThreadCandidates& found = out[thread];
         const std::uint32_t a = ws.large[k];
         const SweptBox& box = ws.large_boxes[k];
+        const PairTestState state = pair_test_state(in, a);
         // A fitting box that meets this one has its lower corner at most one
         // cell below or left of this box's lower corner.
         const int x_first = std::max(cell_of(box.min_x) - 1, 0);
@@ -259,14 +290,13 @@ void GridSearch::test_large_pairs(const PairSearchInput& in, const SliceWorkspac
         const int y_last = cell_of(box.max_y);
         for (int cy = y_first; cy <= y_last; ++cy) {
             const auto row = static_cast<std::size_t>(cy) * side;
-            test_against_range(in, ws.by_cell.data(), ws.boxes_by_cell.data(), a, box, ws.cell_start[row + x_first],
-                               ws.cell_start[row + x_last + 1], found);
+            test_against_range(in, ws, a, box, state, ws.cell_start[row + x_first], ws.cell_start[row + x_last + 1], found);
         }
         for (std::int64_t other = k + 1; other < large_count; ++other) {
             const std::uint32_t b = ws.large[other];
             if (box.overlaps(ws.large_boxes[other])) test_pair(in, std::min(a, b), std::max(a, b), found);
         }
-    }
+    });
 }
 
 }  // namespace particlesim

@@ -11,10 +11,9 @@ void detect_wall_candidates(std::span<const Particle> particles, const Box& box,
                             std::span<double> wall_time, std::vector<Collision>& candidates, int threads) {
     const auto count = static_cast<std::int64_t>(particles.size());
     const int workers = worker_count(static_cast<std::size_t>(threads), count, min_particles_per_thread);
-#pragma omp parallel for schedule(static) num_threads(workers) if (workers > 1)
-    for (std::int64_t i = 0; i < count; ++i) {
+    parallel_for(workers, count, [&](std::int64_t i, std::size_t) {
         wall_time[i] = time_to_wall(particles[i].position, particles[i].velocity, box).time;
-    }
+    });
     for (std::int64_t i = 0; i < count; ++i) {
         if (wall_time[i] <= duration) candidates.push_back(Collision::wall(wall_time[i], static_cast<std::uint32_t>(i)));
     }
@@ -70,25 +69,23 @@ void resolve_collisions(std::span<Particle> particles, std::span<const Collision
     const auto count = static_cast<std::int64_t>(accepted.size());
     const int workers = worker_count(static_cast<std::size_t>(threads), count, min_particles_per_thread);
     // Accepted collisions share no particle, so they resolve independently.
-#pragma omp parallel for schedule(static) num_threads(workers) if (workers > 1)
-    for (std::int64_t k = 0; k < count; ++k) {
+    parallel_for(workers, count, [&](std::int64_t k, std::size_t) {
         const Collision& c = accepted[k];
         if (c.kind == CollisionKind::wall) {
             resolve_wall(particles[c.i], c.time, box, duration);
         } else {
             resolve_pair(particles[c.i], particles[c.j], c.time, box, duration);
         }
-    }
+    });
 }
 
 void advance_free_particles(std::span<Particle> particles, std::span<std::uint8_t> busy,
                             std::span<const Collision> accepted, const Box& box, double duration, int threads) {
     const auto count = static_cast<std::int64_t>(particles.size());
     const int workers = worker_count(static_cast<std::size_t>(threads), count, min_particles_per_thread);
-#pragma omp parallel for schedule(static) num_threads(workers) if (workers > 1)
-    for (std::int64_t i = 0; i < count; ++i) {
+    parallel_for(workers, count, [&](std::int64_t i, std::size_t) {
         if (!busy[i]) move_freely(particles[i], duration, box);
-    }
+    });
     for (const Collision& c : accepted) {
         busy[c.i] = 0;
         if (c.kind == CollisionKind::pair) busy[c.j] = 0;

@@ -50,6 +50,7 @@ public:
         std::vector<std::uint32_t> cell_fill;
         std::vector<std::uint32_t> by_cell;  // particles sorted by cell
         std::vector<SweptBox> boxes_by_cell;  // their boxes, in the same order
+        std::vector<PairTestState> states_by_cell;  // their motion, in the same order
         std::vector<std::uint32_t> large;    // particles whose box exceeds a cell
         std::vector<SweptBox> large_boxes;   // their boxes, in the same order
     };
@@ -65,7 +66,14 @@ private:
     void test_large_pairs(const PairSearchInput& in, const SliceWorkspace& ws, std::span<ThreadCandidates> out,
                           int threads) const;
 
+    struct BlockSums {
+        double length_sum = 0.0;
+        double max_speed = 0.0;
+        std::int64_t present = 0;
+    };
+
     GridLayout layout_;
+    std::vector<BlockSums> block_sums_;
     std::vector<double> sweep_end_;  // by particle: min(duration, wall time)
     std::vector<SliceWorkspace> workspaces_;
 };

@@ -1,0 +1,225 @@
+// The benchmark harness: times the step loop over a range of scenes, searches
+// and thread counts, each case in a child process of its own so that its peak
+// memory is its own, and prints CSV (one row per case) on stdout.
+//
+//   particlesim_bench steps   [--quick]   time per step against N, dense gas
+//   particlesim_bench simcli  [--quick]   whole simcli runs of the target scenes
+//
+// Every time is the median of repeated runs measured in the same invocation.
+
+#include "particlesim/random_scene.hpp"
+#include "particlesim/simulation.hpp"
+
+#include <spawn.h>
+#include <sys/resource.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <cstring>
+#include <fcntl.h>
+#include <numbers>
+#include <optional>
+#include <string>
+#include <vector>
+
+using namespace particlesim;
+
+namespace {
+
+struct Case {
+    std::string name;
+    std::size_t count;
+    double box_size;
+    double radius;
+    std::int64_t steps;
+    std::optional<SpeedRange> speeds;
+    Broadphase search;
+    int threads;
+    int repeats;
+};
+
+struct Measurement {
+    double median_seconds = 0.0;
+    double min_seconds = 0.0;
+    double max_seconds = 0.0;
+    double pair_tests_per_step = 0.0;
+    double collisions_per_step = 0.0;
+};
+
+double median(std::vector<double> values) {
+    std::sort(values.begin(), values.end());
+    const std::size_t n = values.size();
+    return n % 2 == 1 ? values[n / 2] : 0.5 * (values[n / 2 - 1] + values[n / 2]);
+}
+
+// Runs in the child: builds the scene (untimed), then times the steps.
+Measurement measure(const Case& c) {
+    const SimParams params{c.box_size, c.radius, c.steps, OutputMode::perf};
+    RandomSceneOptions scene;
+    scene.speeds = c.speeds;
+    const std::vector<Particle> particles = make_random_particles(c.count, params, scene);
+    std::vector<double> seconds;
+    Measurement m;
+    for (int r = 0; r < c.repeats; ++r) {
+        Simulation sim(params, particles, {c.search, 0, c.threads});
+        const auto start = std::chrono::steady_clock::now();
+        sim.run(c.steps);
+        seconds.push_back(std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
+        m.pair_tests_per_step = static_cast<double>(sim.totals().pair_tests) / static_cast<double>(c.steps);
+        m.collisions_per_step = static_cast<double>(sim.totals().particle_collisions) / static_cast<double>(c.steps);
+    }
+    m.median_seconds = median(seconds);
+    m.min_seconds = *std::min_element(seconds.begin(), seconds.end());
+    m.max_seconds = *std::max_element(seconds.begin(), seconds.end());
+    return m;
+}
+
+const char* search_name(Broadphase search) {
+    switch (search) {
+    case Broadphase::brute: return "brute";
+    case Broadphase::grid: return "grid";
+    case Broadphase::automatic: return "auto";
+    }
+    return "?";
+}
+
+void run_step_case(const Case& c) {
+    int channel[2];
+    if (pipe(channel) != 0) return;
+    const pid_t child = fork();
+    if (child == 0) {
+        close(channel[0]);
+        const Measurement m = measure(c);
+        if (write(channel[1], &m, sizeof m) != static_cast<ssize_t>(sizeof m)) _exit(1);
+        _exit(0);
+    }
+    close(channel[1]);
+    Measurement m;
+    const bool got = read(channel[0], &m, sizeof m) == static_cast<ssize_t>(sizeof m);
+    close(channel[0]);
+    int status = 0;
+    rusage usage{};
+    wait4(child, &status, 0, &usage);
+    if (!got) {
+        std::fprintf(stderr, "case %s failed\n", c.name.c_str());
+        return;
+    }
+    const double peak_bytes = static_cast<double>(usage.ru_maxrss) * 1024.0;
+    const double per_step = m.median_seconds / static_cast<double>(c.steps);
+    std::printf("%s,%zu,%g,%g,%lld,%s,%d,%d,%.9g,%.9g,%.9g,%.6g,%.1f,%.4g,%.0f,%.1f\n", c.name.c_str(), c.count, c.box_size,
+                c.radius, static_cast<long long>(c.steps), search_name(c.search), c.threads, c.repeats, per_step,
+                m.min_seconds / static_cast<double>(c.steps), m.max_seconds / static_cast<double>(c.steps),
+                static_cast<double>(c.count) / per_step, m.pair_tests_per_step, m.collisions_per_step, peak_bytes,
+                peak_bytes / static_cast<double>(c.count));
+    std::fflush(stdout);
+}
+
+// Steps so that one run lasts roughly `target` seconds at `per_step` seconds.
+std::int64_t steps_for(double per_step_guess, double target, std::int64_t most) {
+    return std::clamp<std::int64_t>(static_cast<std::int64_t>(target / per_step_guess), 3, most);
+}
+
+void steps_benchmark(bool quick) {
+    std::printf("case,n,box_size,radius,steps,search,threads,repeats,median_s_per_step,min_s_per_step,max_s_per_step,"
+                "particle_steps_per_s,pair_tests_per_step,particle_collisions_per_step,peak_rss_bytes,peak_bytes_per_particle\n");
+    const int repeats = quick ? 3 : 5;
+    const double target = quick ? 0.1 : 0.5;
+    for (const std::size_t n : {4, 16, 64, 256, 1024, 4096, 16384, 32000}) {
+        if (quick && n > 4096) break;
+        const double nd = static_cast<double>(n);
+        for (const Broadphase search : {Broadphase::brute, Broadphase::grid}) {
+            if (search == Broadphase::brute && n > 16384) continue;  // hours at N = 32000
+            for (const int threads : {1, 2}) {
+                const double guess = search == Broadphase::brute ? 4e-9 * nd * nd + 1e-6 : 4e-7 * nd + 2e-6;
+                const Case c{"sparse", n, 20000.0, 1.0, steps_for(guess, target, 1000000), {}, search, threads, repeats};
+                run_step_case(c);
+            }
+        }
+    }
+    // Dense gas: area fraction 0.3, speeds 0.1 to 1 r per step.
+    const std::size_t dense_n = quick ? 100000 : 1000000;
+    const double dense_box = std::sqrt(static_cast<double>(dense_n) * std::numbers::pi / 0.3);
+    for (const int threads : {1, 2}) {
+        run_step_case({"dense", dense_n, dense_box, 1.0, quick ? 5 : 20, SpeedRange{0.1, 1.0}, Broadphase::grid, threads,
+                       quick ? 1 : 3});
+    }
+}
+
+double time_command(const std::vector<std::string>& args) {
+    std::vector<char*> argv;
+    for (const std::string& a : args) argv.push_back(const_cast<char*>(a.c_str()));
+    argv.push_back(nullptr);
+    posix_spawn_file_actions_t actions;
+    posix_spawn_file_actions_init(&actions);
+    posix_spawn_file_actions_addopen(&actions, 1, "/dev/null", O_WRONLY, 0);
+    const auto start = std::chrono::steady_clock::now();
+    pid_t pid = 0;
+    int status = 1;
+    if (posix_spawn(&pid, argv[0], &actions, nullptr, argv.data(), environ) == 0) waitpid(pid, &status, 0);
+    const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    posix_spawn_file_actions_destroy(&actions);
+    return status == 0 ? seconds : -1.0;
+}
+
+void simcli_benchmark(bool quick) {
+    std::printf("scene,options,runs,median_s,min_s,max_s\n");
+    const std::string simcli = SIMCLI_PATH;
+    const std::string examples = PARTICLESIM_EXAMPLES_DIR;
+    char dir_template[] = "/tmp/particlesim-bench-XXXXXX";
+    const std::string dir = mkdtemp(dir_template);
+    const auto write_scene = [&](const std::string& name, const std::string& text) {
+        const std::string path = dir + "/" + name;
+        std::FILE* f = std::fopen(path.c_str(), "w");
+        std::fputs(text.c_str(), f);
+        std::fclose(f);
+        return path;
+    };
+    struct Run {
+        std::string scene;
+        std::string path;
+        std::vector<std::string> options;
+        int runs;
+    };
+    const std::string default_path = examples + "/default.in";
+    const std::string default_print = write_scene("default_print.in", "1000 20000 1 1000 print\n");
+    const std::string tiny = write_scene("four_1e6.in", quick ? "4 20000 1 100000 perf\n" : "4 20000 1 1000000 perf\n");
+    const std::string n32000 = write_scene("n32000.in", "32000 20000 1 1000 perf\n");
+    std::vector<Run> runs{{"default", default_path, {"-t", "2"}, quick ? 5 : 11},
+                          {"default", default_path, {"-t", "1"}, quick ? 5 : 11},
+                          {"default", default_path, {"-t", "2", "--broadphase", "brute"}, 3},
+                          {"default print", default_print, {"-t", "2"}, quick ? 3 : 7},
+                          {quick ? "4 particles 1e5 steps" : "4 particles 1e6 steps", tiny, {"-t", "2"}, quick ? 3 : 7}};
+    if (!quick) runs.push_back({"N=32000 S=1000", n32000, {"-t", "2"}, 3});
+    for (const Run& run : runs) {
+        std::vector<std::string> args{simcli};
+        args.insert(args.end(), run.options.begin(), run.options.end());
+        args.push_back(run.path);
+        std::vector<double> seconds;
+        for (int k = 0; k < run.runs; ++k) seconds.push_back(time_command(args));
+        std::string options;
+        for (const std::string& o : run.options) options += (options.empty() ? "" : " ") + o;
+        std::printf("%s,%s,%d,%.6f,%.6f,%.6f\n", run.scene.c_str(), options.c_str(), run.runs, median(seconds),
+                    *std::min_element(seconds.begin(), seconds.end()), *std::max_element(seconds.begin(), seconds.end()));
+        std::fflush(stdout);
+    }
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+    const std::string mode = argc > 1 ? argv[1] : "";
+    const bool quick = argc > 2 && std::strcmp(argv[2], "--quick") == 0;
+    if (mode == "steps") {
+        steps_benchmark(quick);
+    } else if (mode == "simcli") {
+        simcli_benchmark(quick);
+    } else {
+        std::fprintf(stderr, "usage: particlesim_bench steps|simcli [--quick]\n");
+        return 2;
+    }
+    return 0;
+}
