@@ -1,6 +1,7 @@
 // simcli: reads a scene, runs it, writes the states (io.md). Thin by design:
 // arguments -> scene -> simulation -> output; the library does the work.
 
+#include "particlesim/grid_search.hpp"
 #include "particlesim/random_scene.hpp"
 #include "particlesim/scene_reader.hpp"
 #include "particlesim/simulation.hpp"
@@ -100,7 +101,7 @@ std::optional<CliOptions> parse_arguments(int argc, char** argv) {
                 throw BadInput("--broadphase: expected auto, brute or grid, found \"" + std::string(value) + "\"");
             }
             break;
-        case opt_grid: options.sim.grid_cells = static_cast<int>(parse_unsigned("--grid", value, 1, 4096)); break;
+        case opt_grid: options.sim.grid_cells = static_cast<int>(parse_unsigned("--grid", value, 1, max_forced_grid_cells)); break;
         case opt_substeps:
             if (parse_unsigned("--substeps", value, 1, 1u << 20) != 1) {
                 throw BadInput("--substeps: only 1 is available in this version (substeps are not implemented yet)");
@@ -184,10 +185,7 @@ int main(int argc, char** argv) {
     } catch (const BadInput& e) {
         std::fprintf(stderr, "simcli: %s\n", e.what());
         return exit_bad_input;
-    } catch (const OutputError& e) {
-        std::fprintf(stderr, "simcli: %s\n", e.what());
-        return exit_failure;
-    } catch (const std::exception& e) {
+    } catch (const std::exception& e) {  // OutputError and any other failure while running
         std::fprintf(stderr, "simcli: %s\n", e.what());
         return exit_failure;
     }

@@ -15,9 +15,7 @@ constexpr std::uint32_t absent_marker = std::numeric_limits<std::uint32_t>::max(
 constexpr std::uint32_t large_marker = absent_marker - 1;
 
 constexpr int max_slices = 64;
-// Auto grids hold at most ~4 cells per particle (memory O(N)); forced grids
-// are capped so that G x G cells fit comfortably in memory.
-constexpr int max_forced_cells = 4096;
+// Auto grids hold at most ~4 cells per particle (memory O(N)).
 // Below this many particles, threads take whole slices.
 constexpr std::size_t slice_parallel_below = 50000;
 
@@ -107,7 +105,7 @@ GridLayout GridSearch::choose_layout(const PairSearchInput& in, int forced_cells
 }
 
 void GridSearch::find_pairs(const PairSearchInput& in, int forced_cells, std::span<ThreadCandidates> buffers) {
-    forced_cells = std::min(forced_cells, max_forced_cells);
+    forced_cells = std::min(forced_cells, max_forced_grid_cells);
     const int threads = static_cast<int>(buffers.size());
     layout_ = choose_layout(in, forced_cells, threads);
 

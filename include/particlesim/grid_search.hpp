@@ -17,6 +17,10 @@
 
 namespace particlesim {
 
+// The largest forced grid (G x G cells); larger requests are clamped to it,
+// so that the cell arrays stay a modest size.
+inline constexpr int max_forced_grid_cells = 4096;
+
 // The shape of the search in one step; chosen per step from the scene.
 struct GridLayout {
     int cells_per_side = 1;
