@@ -1,6 +1,8 @@
 // simcli: reads a scene, runs it, writes the states (io.md). Thin by design:
 // arguments -> scene -> simulation -> output; the library does the work.
 
+#include "particlesim/energy.hpp"
+#include "particlesim/exact_simulation.hpp"
 #include "particlesim/grid_search.hpp"
 #include "particlesim/random_scene.hpp"
 #include "particlesim/scene_reader.hpp"
@@ -12,6 +14,7 @@
 
 #include <cerrno>
 #include <charconv>
+#include <chrono>
 #include <csignal>
 #include <cstdio>
 #include <cstring>
@@ -29,6 +32,7 @@ using namespace particlesim;
 
 constexpr int exit_failure = 1;
 constexpr int exit_bad_input = 2;
+constexpr std::uint64_t max_substeps = 1u << 20;
 
 constexpr const char* usage_text =
     R"(usage: simcli [OPTIONS] [SCENE]           SCENE: a scene file; '-' or absent: stdin
@@ -42,6 +46,9 @@ Simulates N hard disks bouncing elastically in a square box, in discrete steps.
       --grid G                     force a G x G grid (4 = the 4 x 4 grid of L/4 cells)
       --substeps K                 K micro-steps per step (default 1)
       --engine step|exact          exact = continuous-time event-driven engine
+                                   (one thread; needs a start without overlaps)
+      --stats                      a summary on stderr after the run: steps per
+                                   second, collisions, energy drift, pair tests
   -h, --help                       this text, exit 0
       --version                    the version, exit 0
 
@@ -55,12 +62,21 @@ public:
     using std::runtime_error::runtime_error;
 };
 
+enum class EngineChoice { step, exact };
+
 struct CliOptions {
     std::string scene_path = "-";
     std::optional<std::string> output_path;
+    EngineChoice engine = EngineChoice::step;
+    bool stats = false;
+    bool step_engine_options = false;  // --broadphase, --grid or --substeps given
     SimOptions sim;
     RandomSceneOptions random;
 };
+
+// Beyond this many estimated events the exact engine would run for hours (or
+// forever: a disk that fills the box, speeds far above the box per step).
+constexpr double exact_event_limit = 2e9;
 
 std::uint64_t parse_unsigned(std::string_view option, std::string_view text, std::uint64_t min, std::uint64_t max) {
     std::uint64_t value = 0;
@@ -72,7 +88,7 @@ std::uint64_t parse_unsigned(std::string_view option, std::string_view text, std
     return value;
 }
 
-enum LongOnly { opt_seed = 256, opt_broadphase, opt_grid, opt_substeps, opt_engine, opt_version };
+enum LongOnly { opt_seed = 256, opt_broadphase, opt_grid, opt_substeps, opt_engine, opt_stats, opt_version };
 
 // Returns nothing when --help or --version has been answered.
 std::optional<CliOptions> parse_arguments(int argc, char** argv) {
@@ -80,8 +96,9 @@ std::optional<CliOptions> parse_arguments(int argc, char** argv) {
         {"output", required_argument, nullptr, 'o'},      {"threads", required_argument, nullptr, 't'},
         {"seed", required_argument, nullptr, opt_seed},   {"broadphase", required_argument, nullptr, opt_broadphase},
         {"grid", required_argument, nullptr, opt_grid},   {"substeps", required_argument, nullptr, opt_substeps},
-        {"engine", required_argument, nullptr, opt_engine}, {"help", no_argument, nullptr, 'h'},
-        {"version", no_argument, nullptr, opt_version},   {nullptr, 0, nullptr, 0}};
+        {"engine", required_argument, nullptr, opt_engine}, {"stats", no_argument, nullptr, opt_stats},
+        {"help", no_argument, nullptr, 'h'},              {"version", no_argument, nullptr, opt_version},
+        {nullptr, 0, nullptr, 0}};
     CliOptions options;
     opterr = 0;  // our own one-line messages
     for (int c; (c = getopt_long(argc, argv, ":o:t:h", long_options, nullptr)) != -1;) {
@@ -91,6 +108,7 @@ std::optional<CliOptions> parse_arguments(int argc, char** argv) {
         case 't': options.sim.threads = static_cast<int>(parse_unsigned("--threads", value, 1, 1024)); break;
         case opt_seed: options.random.seed = parse_unsigned("--seed", value, 0, UINT64_MAX); break;
         case opt_broadphase:
+            options.step_engine_options = true;
             if (value == "auto") {
                 options.sim.broadphase = Broadphase::automatic;
             } else if (value == "brute") {
@@ -101,16 +119,23 @@ std::optional<CliOptions> parse_arguments(int argc, char** argv) {
                 throw BadInput("--broadphase: expected auto, brute or grid, found \"" + std::string(value) + "\"");
             }
             break;
-        case opt_grid: options.sim.grid_cells = static_cast<int>(parse_unsigned("--grid", value, 1, max_forced_grid_cells)); break;
+        case opt_grid:
+            options.step_engine_options = true;
+            options.sim.grid_cells = static_cast<int>(parse_unsigned("--grid", value, 1, max_forced_grid_cells)); break;
         case opt_substeps:
-            if (parse_unsigned("--substeps", value, 1, 1u << 20) != 1) {
-                throw BadInput("--substeps: only 1 is available in this version (substeps are not implemented yet)");
-            }
+            options.step_engine_options = true;
+            options.sim.substeps = static_cast<int>(parse_unsigned("--substeps", value, 1, max_substeps));
             break;
         case opt_engine:
-            if (value == "exact") throw BadInput("--engine exact: the exact engine is not implemented in this version");
-            if (value != "step") throw BadInput("--engine: expected step or exact, found \"" + std::string(value) + "\"");
+            if (value == "step") {
+                options.engine = EngineChoice::step;
+            } else if (value == "exact") {
+                options.engine = EngineChoice::exact;
+            } else {
+                throw BadInput("--engine: expected step or exact, found \"" + std::string(value) + "\"");
+            }
             break;
+        case opt_stats: options.stats = true; break;
         case 'h': std::fputs(usage_text, stdout); return std::nullopt;
         case opt_version: std::printf("simcli %s\n", particlesim::version); return std::nullopt;
         case ':': throw BadInput(std::string("option ") + argv[optind - 1] + " needs a value (see simcli --help)");
@@ -119,6 +144,9 @@ std::optional<CliOptions> parse_arguments(int argc, char** argv) {
     }
     if (argc - optind > 1) throw BadInput("expected at most one scene file, found " + std::to_string(argc - optind) + " (see simcli --help)");
     if (argc - optind == 1) options.scene_path = argv[optind];
+    if (options.engine == EngineChoice::exact && options.step_engine_options) {
+        throw BadInput("--broadphase, --grid and --substeps belong to the step engine, not to --engine exact");
+    }
     return options;
 }
 
@@ -131,15 +159,76 @@ Scene read_input(const std::string& path, const std::string& name) {
     return read_scene(file);
 }
 
-void write_run(std::FILE* out, Simulation& simulation, const SimParams& params) {
+// Writes the run of `engine` (either engine) and returns its run time in seconds.
+template <typename Engine>
+double write_run(std::FILE* out, Engine& engine, const SimParams& params) {
     StateWriter writer(out);
-    writer.write_state(0, simulation.particles());
+    writer.write_state(0, engine.particles());
     const bool print_mode = params.mode == OutputMode::print;
-    simulation.run(params.steps, [&](std::int64_t step, std::span<const Particle> particles) {
+    const auto start = std::chrono::steady_clock::now();
+    engine.run(params.steps, [&](std::int64_t step, std::span<const Particle> particles) {
         if (print_mode && step < params.steps) writer.write_state(step, particles);
     });
-    writer.write_final(params.steps, simulation.particles());
+    writer.write_final(params.steps, engine.particles());
     writer.flush();
+    return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
+
+struct RunStats {
+    double seconds = 0.0;
+    StepCounts totals;
+    double initial_energy = 0.0;
+    double final_energy = 0.0;
+};
+
+void print_stats(const char* engine, const RunStats& stats, std::int64_t steps) {
+    const double per_step = steps > 0 ? 1.0 / static_cast<double>(steps) : 0.0;
+    std::fprintf(stderr, "stats: engine %s, %lld steps in %.6f s (%.6g steps/s)\n", engine, static_cast<long long>(steps),
+                 stats.seconds, stats.seconds > 0.0 ? static_cast<double>(steps) / stats.seconds : 0.0);
+    std::fprintf(stderr, "stats: %llu particle collisions, %llu wall collisions\n",
+                 static_cast<unsigned long long>(stats.totals.particle_collisions),
+                 static_cast<unsigned long long>(stats.totals.wall_collisions));
+    std::fprintf(stderr, "stats: relative energy drift %.17g\n", relative_energy_drift(stats.initial_energy, stats.final_energy));
+    std::fprintf(stderr, "stats: %.6g candidate pairs tested per step\n", static_cast<double>(stats.totals.pair_tests) * per_step);
+}
+
+// Runs the scene with `engine` into `output_path` (stdout when absent).
+template <typename Engine>
+RunStats run_to_output(Engine& engine, const SimParams& params, const std::optional<std::string>& output_path) {
+    RunStats stats;
+    stats.initial_energy = total_kinetic_energy(engine.particles());
+    if (!output_path) {
+        stats.seconds = write_run(stdout, engine, params);
+    } else {
+        std::FILE* out = std::fopen(output_path->c_str(), "wb");
+        if (out == nullptr) throw OutputError(*output_path + ": cannot open for writing: " + std::strerror(errno));
+        try {
+            stats.seconds = write_run(out, engine, params);
+        } catch (...) {
+            std::fclose(out);
+            throw;
+        }
+        if (std::fclose(out) != 0) throw OutputError(*output_path + ": cannot write: " + std::strerror(errno));
+    }
+    stats.totals = engine.totals();
+    stats.final_energy = total_kinetic_energy(engine.particles());
+    return stats;
+}
+
+ExactSimulation make_exact_engine(const Scene& scene, std::vector<Particle> particles, const std::string& name) {
+    const double events = estimated_events_per_step(scene.params, particles) * static_cast<double>(scene.params.steps);
+    if (!(events <= exact_event_limit)) {
+        char message[200];
+        std::snprintf(message, sizeof message,
+                      "the exact engine would need about %.3g events for this scene (limit %.3g); "
+                      "use fewer steps or the step engine", events, exact_event_limit);
+        throw BadInput(name + ": " + message);
+    }
+    try {
+        return ExactSimulation(scene.params, std::move(particles));
+    } catch (const OverlappingStart& e) {
+        throw BadInput(name + ": " + e.what());
+    }
 }
 
 int run(int argc, char** argv) {
@@ -158,21 +247,16 @@ int run(int argc, char** argv) {
     } catch (const SceneTooFull& e) {
         throw BadInput(name + ":" + std::to_string(scene.particle_count_line) + ": " + e.what());
     }
-    Simulation simulation(scene.params, std::move(particles), options->sim);
 
-    if (!options->output_path) {
-        write_run(stdout, simulation, scene.params);
-        return 0;
+    if (options->engine == EngineChoice::exact) {
+        ExactSimulation engine = make_exact_engine(scene, std::move(particles), name);
+        const RunStats stats = run_to_output(engine, scene.params, options->output_path);
+        if (options->stats) print_stats("exact", stats, scene.params.steps);
+    } else {
+        Simulation engine(scene.params, std::move(particles), options->sim);
+        const RunStats stats = run_to_output(engine, scene.params, options->output_path);
+        if (options->stats) print_stats("step", stats, scene.params.steps);
     }
-    std::FILE* out = std::fopen(options->output_path->c_str(), "wb");
-    if (out == nullptr) throw OutputError(*options->output_path + ": cannot open for writing: " + std::strerror(errno));
-    try {
-        write_run(out, simulation, scene.params);
-    } catch (...) {
-        std::fclose(out);
-        throw;
-    }
-    if (std::fclose(out) != 0) throw OutputError(*options->output_path + ": cannot write: " + std::strerror(errno));
     return 0;
 }
 

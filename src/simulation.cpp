@@ -3,6 +3,7 @@
 #include "particlesim/brute_force_search.hpp"
 #include "particlesim/grid_search.hpp"
 #include "particlesim/step_pipeline.hpp"
+#include "scene_checks.hpp"
 
 #include <omp.h>
 
@@ -12,30 +13,7 @@
 
 namespace particlesim {
 
-StepCounts& StepCounts::operator+=(const StepCounts& other) {
-    pair_tests += other.pair_tests;
-    candidates += other.candidates;
-    particle_collisions += other.particle_collisions;
-    wall_collisions += other.wall_collisions;
-    return *this;
-}
-
 namespace {
-
-void require_valid_scene(const SimParams& params, std::span<const Particle> particles) {
-    const auto fail = [](const std::string& what) { throw std::invalid_argument("particlesim::Simulation: " + what); };
-    if (!(std::isfinite(params.box_size) && params.box_size > 0.0)) fail("box size must be finite and > 0");
-    if (!(std::isfinite(params.radius) && params.radius > 0.0)) fail("radius must be finite and > 0");
-    if (!(2.0 * params.radius <= params.box_size)) fail("2 * radius must be <= box size");
-    if (particles.size() >= std::size_t{0xffffffffU}) fail("too many particles");
-    for (std::size_t i = 0; i < particles.size(); ++i) {
-        const Particle& p = particles[i];
-        const bool inside = p.position.x() >= params.lower() && p.position.x() <= params.upper() &&
-                            p.position.y() >= params.lower() && p.position.y() <= params.upper();
-        if (!inside) fail("particle " + std::to_string(i) + " is outside [r, L - r]");
-        if (!p.velocity.allFinite()) fail("particle " + std::to_string(i) + " has a non-finite velocity");
-    }
-}
 
 // Below this many particles the brute-force search is the faster one.
 constexpr std::size_t brute_force_is_faster_below = 48;
@@ -44,9 +22,10 @@ constexpr std::size_t brute_force_is_faster_below = 48;
 
 Simulation::Simulation(const SimParams& params, std::vector<Particle> particles, const SimOptions& options)
     : params_(params), box_(Box::of(params)), options_(options), particles_(std::move(particles)) {
-    require_valid_scene(params_, particles_);
+    require_valid_scene("particlesim::Simulation", params_, particles_);
     if (options_.threads < 0) throw std::invalid_argument("particlesim::Simulation: threads must be >= 0");
     if (options_.grid_cells < 0) throw std::invalid_argument("particlesim::Simulation: grid_cells must be >= 0");
+    if (options_.substeps < 1) throw std::invalid_argument("particlesim::Simulation: substeps must be >= 1");
     threads_ = options_.threads > 0 ? options_.threads : omp_get_max_threads();
     wall_time_.resize(particles_.size());
     busy_.resize(particles_.size());
@@ -78,7 +57,15 @@ void Simulation::find_pair_candidates(const PairSearchInput& input) {
 }
 
 void Simulation::step() {
-    constexpr double duration = 1.0;
+    last_step_ = {};
+    // 1.0 / 1 is exactly 1.0: one substep is the plain step rules, bit for bit.
+    const double duration = 1.0 / options_.substeps;
+    for (int micro = 0; micro < options_.substeps; ++micro) micro_step(duration);
+    totals_ += last_step_;
+    ++steps_done_;
+}
+
+void Simulation::micro_step(double duration) {
     candidates_.clear();
     for (ThreadCandidates& thread : thread_candidates_) {
         thread.found.clear();
@@ -91,9 +78,8 @@ void Simulation::step() {
     resolve_collisions(particles_, accepted_, box_, duration, threads_);
     advance_free_particles(particles_, busy_, accepted_, box_, duration, threads_);
 
-    last_step_ = {};
     for (const ThreadCandidates& thread : thread_candidates_) last_step_.pair_tests += thread.pair_tests;
-    last_step_.candidates = candidates_.size();
+    last_step_.candidates += candidates_.size();
     for (const Collision& c : accepted_) {
         if (c.kind == CollisionKind::pair) {
             ++last_step_.particle_collisions;
@@ -101,8 +87,6 @@ void Simulation::step() {
             ++last_step_.wall_collisions;
         }
     }
-    totals_ += last_step_;
-    ++steps_done_;
 }
 
 }  // namespace particlesim

@@ -7,8 +7,9 @@
 #include "particlesim/pair_search.hpp"
 #include "particlesim/particle.hpp"
 #include "particlesim/sim_params.hpp"
+#include "particlesim/step_counts.hpp"
+#include "particlesim/whole_step_runner.hpp"
 
-#include <concepts>
 #include <cstdint>
 #include <memory>
 #include <span>
@@ -28,19 +29,10 @@ struct SimOptions {
     Broadphase broadphase = Broadphase::automatic;
     int grid_cells = 0;  // > 0 forces a G x G grid (implies the grid search)
     int threads = 0;     // 0: OpenMP's default
+    int substeps = 1;    // micro-steps of length 1/substeps per step (rules.md "Substeps")
 };
 
-// What one step (or a whole run, summed) did.
-struct StepCounts {
-    std::uint64_t pair_tests = 0;  // contact-time evaluations by the pair search
-    std::uint64_t candidates = 0;  // distinct wall and pair candidates
-    std::uint64_t particle_collisions = 0;
-    std::uint64_t wall_collisions = 0;
-
-    StepCounts& operator+=(const StepCounts& other);
-};
-
-class Simulation {
+class Simulation : public WholeStepRunner<Simulation> {
 public:
     // Throws std::invalid_argument for a scene that breaks rules.md "World".
     Simulation(const SimParams& params, std::vector<Particle> particles, const SimOptions& options = {});
@@ -48,31 +40,21 @@ public:
     Simulation(Simulation&&) noexcept;
     Simulation& operator=(Simulation&&) noexcept;
 
+    // One whole step: `substeps` micro-steps under the step rules.
     void step();
-
-    // Runs `steps` steps; after each, calls observe(step number, particles).
-    template <typename Observer>
-        requires std::invocable<Observer&, std::int64_t, std::span<const Particle>>
-    void run(std::int64_t steps, Observer&& observe) {
-        for (std::int64_t s = 0; s < steps; ++s) {
-            step();
-            observe(steps_done_, particles());
-        }
-    }
-    void run(std::int64_t steps) {
-        run(steps, [](std::int64_t, std::span<const Particle>) {});
-    }
 
     [[nodiscard]] std::span<const Particle> particles() const { return particles_; }
     [[nodiscard]] const SimParams& params() const { return params_; }
     [[nodiscard]] std::int64_t steps_done() const { return steps_done_; }
     [[nodiscard]] int threads() const { return threads_; }
+    // Summed over the micro-steps of the last step.
     [[nodiscard]] const StepCounts& last_step() const { return last_step_; }
     [[nodiscard]] const StepCounts& totals() const { return totals_; }
     // The search the last step used (automatic resolves to brute or grid).
     [[nodiscard]] Broadphase last_broadphase() const { return last_broadphase_; }
 
 private:
+    void micro_step(double duration);
     void find_pair_candidates(const PairSearchInput& input);
 
     SimParams params_;
