@@ -1,7 +1,7 @@
 #include "particlesim/exact_simulation.hpp"
 
 #include "cell_list.hpp"
-#include "event_queue.hpp"
+#include "event_heap.hpp"
 #include "particlesim/box.hpp"
 #include "particlesim/physics.hpp"
 #include "scene_checks.hpp"
@@ -20,12 +20,17 @@ OverlappingStart::OverlappingStart(std::uint32_t first, std::uint32_t second)
 namespace {
 
 // Cells a little wider than a diameter, so that rounding at a cell border
-// cannot hide a contact; and no more cells than about 4 per particle, so
-// that memory stays O(N) in a huge box.
+// cannot hide a contact. Wider cells mean fewer crossing events but more pair
+// tests per event, so: about 4 particles per cell in a sparse box, and no
+// wider than half a mean free path (1 / (4 r N / L^2)) in a dense one. Either
+// way the cell count stays O(N). Measured on the default scene and the dense
+// gas (docs/accuracy.md).
 int cells_per_side_for(const SimParams& params, std::size_t particle_count) {
+    const double count = static_cast<double>(particle_count);
     const double by_diameter = std::floor(params.box_size / (2.0 * params.radius * (1.0 + 1e-6)));
-    const double by_count = 2.0 * std::ceil(std::sqrt(static_cast<double>(particle_count)));
-    return static_cast<int>(std::max(1.0, std::min(by_diameter, by_count)));
+    const double by_count = std::ceil(0.5 * std::sqrt(count));
+    const double by_free_path = std::ceil(8.0 * params.radius * count / params.box_size);
+    return static_cast<int>(std::max(1.0, std::min(by_diameter, std::max(by_count, by_free_path))));
 }
 
 }  // namespace
@@ -33,25 +38,34 @@ int cells_per_side_for(const SimParams& params, std::size_t particle_count) {
 // The engine's state. A particle's stored position is where it was at its
 // own time stamp, the time of its last collision (or 0); it is moved only by
 // its own collisions, so that every prediction reads an unchanged state.
+//
+// Each particle keeps three predictions: its wall event, its next cell
+// crossing, and the earliest pair event found for it; its heap entry is the
+// first of the three. A pair prediction goes stale when the partner collides
+// elsewhere first; that is noticed when the entry comes up, and the particle
+// then predicts its pairs afresh. No collision is missed: a particle's pair
+// prediction is never later than any valid pair event with a neighbour, and a
+// collision partner is always a neighbour (cells are wider than a diameter).
 class ExactSimulation::Engine {
 public:
     Engine(const SimParams& params, std::vector<Particle> particles, const ExactOptions& options)
         : params_(params), box_(Box::of(params)), particles_(std::move(particles)),
           cells_(options.cells_per_side > 0 ? options.cells_per_side : cells_per_side_for(params, particles_.size()),
                  params.box_size, particles_.size()),
-          stamp_(particles_.size(), 0.0), wall_time_(particles_.size(), never),
-          last_event_step_(particles_.size(), -1), last_repeat_step_(particles_.size(), -1), snapshot_(particles_) {
+          stamp_(particles_.size(), 0.0), wall_time_(particles_.size(), never), crossing_(particles_.size()),
+          pair_(particles_.size()), last_event_step_(particles_.size(), -1), last_repeat_step_(particles_.size(), -1),
+          snapshot_(particles_), heap_(count(), Event{never, EventKind::cell_crossing, 0, 0}) {
         for (std::uint32_t i = 0; i < count(); ++i) {
             const Vec2& p = particles_[i].position;
             cells_.insert(i, cells_.cell_at(cells_.column_of(p.x()), cells_.column_of(p.y())));
         }
         reject_overlaps();
+        // Every wall time first: the pair predictions read them.
         for (std::uint32_t i = 0; i < count(); ++i) predict_wall(i);
         for (std::uint32_t i = 0; i < count(); ++i) {
             predict_crossing(i);
-            for_each_neighbour(i, [&](std::uint32_t j) {
-                if (j > i) predict_pair(i, j);
-            });
+            predict_pairs(i);
+            reschedule(i);
         }
     }
 
@@ -59,16 +73,20 @@ public:
         const double end = static_cast<double>(steps_done_ + 1);
         last_step_ = {};
         several_events_ = 0;
-        while (!queue_.empty() && queue_.earliest().time <= end) {
-            const Event event = queue_.pop();
-            if (is_stale(event)) continue;
+        while (!heap_.empty() && heap_.earliest().time <= end) {
+            const std::uint32_t owner = heap_.earliest_owner();
+            const Event event = heap_.earliest();
+            if (event.kind == EventKind::pair && pair_partner_moved(owner)) {
+                predict_pairs(owner);
+                reschedule(owner);
+                continue;
+            }
             now_ = event.time;
             switch (event.kind) {
             case EventKind::wall: collide_with_wall(event.i); break;
             case EventKind::pair: collide_pair(event.i, event.j); break;
             case EventKind::cell_crossing: cross_cell(event.i, event.j); break;
             }
-            queue_.sweep_if_grown([this](const Event& e) { return is_stale(e); });
         }
         now_ = end;
         ++steps_done_;
@@ -77,6 +95,7 @@ public:
     }
 
     const std::vector<Particle>& snapshot() const { return snapshot_; }
+    const SimParams& params() const { return params_; }
     std::int64_t steps_done() const { return steps_done_; }
     const StepCounts& last_step() const { return last_step_; }
     const StepCounts& totals() const { return totals_; }
@@ -84,14 +103,24 @@ public:
     int cells_per_side() const { return cells_.side(); }
 
 private:
+    struct Crossing {
+        double time = never;
+        std::uint32_t cell = 0;  // the cell entered
+    };
+    struct PairPrediction {
+        Event event{never, EventKind::pair, 0, 0};
+        std::uint32_t partner = 0;
+        std::uint32_t partner_version = 0;  // the partner's version when predicted
+    };
+
     std::uint32_t count() const { return static_cast<std::uint32_t>(particles_.size()); }
 
     // Changes exactly when the velocity does: at each of the particle's collisions.
     std::uint32_t version(std::uint32_t i) const {
         return static_cast<std::uint32_t>(particles_[i].particle_collisions + particles_[i].wall_collisions);
     }
-    bool is_stale(const Event& e) const {
-        return e.version_i != version(e.i) || (e.kind == EventKind::pair && e.version_j != version(e.j));
+    bool pair_partner_moved(std::uint32_t i) const {
+        return pair_[i].partner_version != version(pair_[i].partner);
     }
 
     Vec2 position_at(std::uint32_t i, double time) const {
@@ -121,33 +150,14 @@ private:
         }
     }
 
-    void push(EventKind kind, double time, std::uint32_t i, std::uint32_t j) {
-        // Rounding may put a prediction a hair before the present; the queue
-        // must never go back in time.
-        const double at = std::max(time, now_);
-        const std::uint32_t version_j = kind == EventKind::pair ? version(j) : 0;
-        queue_.push({at, kind, i, j, version(i), version_j});
-        ++last_step_.candidates;
-    }
+    // Rounding may put a prediction a hair before the present; time must
+    // never go back.
+    double not_before_now(double time) const { return std::max(time, now_); }
 
     void predict_wall(std::uint32_t i) {
         const WallHit hit = time_to_wall(particles_[i].position, particles_[i].velocity, box_);
-        wall_time_[i] = hit.time == never ? never : std::max(stamp_[i] + hit.time, now_);
-        if (hit.time != never) push(EventKind::wall, wall_time_[i], i, 0);
-    }
-
-    // Pair events at or after either particle's next wall event can never
-    // happen: the wall event comes first in the order and changes a velocity.
-    void predict_pair(std::uint32_t a, std::uint32_t b) {
-        const std::uint32_t i = std::min(a, b);
-        const std::uint32_t j = std::max(a, b);
-        ++last_step_.pair_tests;
-        const double reference = std::max(stamp_[i], stamp_[j]);
-        const double delay = contact_time(position_at(j, reference) - position_at(i, reference),
-                                          particles_[j].velocity - particles_[i].velocity, box_.contact_dist_sq);
-        if (delay == never) return;
-        const double time = std::max(reference + delay, now_);
-        if (time < wall_time_[i] && time < wall_time_[j]) push(EventKind::pair, time, i, j);
+        wall_time_[i] = hit.time == never ? never : not_before_now(stamp_[i] + hit.time);
+        ++last_step_.candidates;
     }
 
     // The next time the particle leaves its cell, and the cell it enters.
@@ -164,20 +174,47 @@ private:
         const double along_x = exit_delay(p.position.x(), p.velocity.x(), column);
         const double along_y = exit_delay(p.position.y(), p.velocity.y(), row);
         const double delay = std::min(along_x, along_y);
-        if (delay == never) return;
+        if (delay == never) {
+            crossing_[i] = {};
+            return;
+        }
         if (along_x <= along_y) {
             column += p.velocity.x() > 0.0 ? 1 : -1;
         } else {
             row += p.velocity.y() > 0.0 ? 1 : -1;
         }
-        push(EventKind::cell_crossing, stamp_[i] + delay, i, cells_.cell_at(column, row));
+        crossing_[i] = {not_before_now(stamp_[i] + delay), cells_.cell_at(column, row)};
     }
 
-    // Everything about a particle whose velocity has just changed.
-    void predict_after_collision(std::uint32_t i) {
-        predict_wall(i);
-        predict_crossing(i);
-        for_each_neighbour(i, [&](std::uint32_t j) { predict_pair(i, j); });
+    // Keeps the pair event of (i, j) as i's pair prediction if it comes first.
+    // Pair events at or after either particle's wall event can never happen:
+    // the wall event comes first in the order and changes a velocity.
+    void consider_pair(std::uint32_t i, std::uint32_t j) {
+        ++last_step_.pair_tests;
+        const std::uint32_t lower = std::min(i, j);
+        const std::uint32_t higher = std::max(i, j);
+        const double reference = std::max(stamp_[lower], stamp_[higher]);
+        const double delay = contact_time(position_at(higher, reference) - position_at(lower, reference),
+                                          particles_[higher].velocity - particles_[lower].velocity, box_.contact_dist_sq);
+        if (delay == never) return;
+        const Event event{not_before_now(reference + delay), EventKind::pair, lower, higher};
+        if (!(event.time < wall_time_[i] && event.time < wall_time_[j] && event < pair_[i].event)) return;
+        pair_[i] = {event, j, version(j)};
+        ++last_step_.candidates;
+    }
+
+    void predict_pairs(std::uint32_t i) {
+        pair_[i] = {};
+        for_each_neighbour(i, [&](std::uint32_t j) { consider_pair(i, j); });
+    }
+
+    // Puts the first of the particle's three predictions in the heap.
+    void reschedule(std::uint32_t i) {
+        Event next{wall_time_[i], EventKind::wall, i, 0};
+        const Event crossing{crossing_[i].time, EventKind::cell_crossing, i, crossing_[i].cell};
+        if (crossing < next) next = crossing;
+        if (pair_[i].event < next) next = pair_[i].event;
+        heap_.replace(i, next);
     }
 
     void note_event(std::uint32_t i) {
@@ -198,7 +235,10 @@ private:
         stamp_[i] = now_;
         ++last_step_.wall_collisions;
         note_event(i);
-        predict_after_collision(i);
+        predict_wall(i);
+        predict_crossing(i);
+        predict_pairs(i);
+        reschedule(i);
     }
 
     void collide_pair(std::uint32_t i, std::uint32_t j) {
@@ -216,14 +256,14 @@ private:
         ++last_step_.particle_collisions;
         note_event(i);
         note_event(j);
-        // j's old wall event is stale, so j's new one must be known before i
-        // predicts its pairs (the pruning reads it).
+        // Both wall times before any pair prediction: the pruning reads them.
+        predict_wall(i);
         predict_wall(j);
-        predict_after_collision(i);
-        predict_crossing(j);
-        for_each_neighbour(j, [&](std::uint32_t k) {
-            if (k != i) predict_pair(j, k);
-        });
+        for (const std::uint32_t k : {i, j}) {
+            predict_crossing(k);
+            predict_pairs(k);
+            reschedule(k);
+        }
     }
 
     // Only the cells that have just become neighbours need new predictions.
@@ -237,11 +277,10 @@ private:
         for (int k = -1; k <= 1; ++k) {
             const int new_column = step_x != 0 ? column + step_x : column + k;
             const int new_row = step_x != 0 ? row + k : row + step_y;
-            cells_.for_each_in(new_column, new_row, [&](std::uint32_t j) {
-                if (j != i) predict_pair(i, j);
-            });
+            cells_.for_each_in(new_column, new_row, [&](std::uint32_t j) { consider_pair(i, j); });
         }
         predict_crossing(i);
+        reschedule(i);
     }
 
     void take_snapshot() {
@@ -259,10 +298,12 @@ private:
     CellList cells_;
     std::vector<double> stamp_;
     std::vector<double> wall_time_;  // absolute time of the particle's next wall event
+    std::vector<Crossing> crossing_;
+    std::vector<PairPrediction> pair_;
     std::vector<std::int64_t> last_event_step_;
     std::vector<std::int64_t> last_repeat_step_;
     std::vector<Particle> snapshot_;  // the state at the last whole step
-    EventQueue queue_;
+    EventHeap heap_;
     double now_ = 0.0;
     std::int64_t steps_done_ = 0;
     StepCounts last_step_;
@@ -290,6 +331,7 @@ ExactSimulation& ExactSimulation::operator=(ExactSimulation&&) noexcept = defaul
 
 void ExactSimulation::step() { engine_->step(); }
 std::span<const Particle> ExactSimulation::particles() const { return engine_->snapshot(); }
+const SimParams& ExactSimulation::params() const { return engine_->params(); }
 std::int64_t ExactSimulation::steps_done() const { return engine_->steps_done(); }
 const StepCounts& ExactSimulation::last_step() const { return engine_->last_step(); }
 const StepCounts& ExactSimulation::totals() const { return engine_->totals(); }
@@ -303,9 +345,9 @@ double estimated_events_per_step(const SimParams& params, std::span<const Partic
     const double span = params.upper() - params.lower();
     if (!(span > 0.0)) return never;  // a moving disk that fills the box bounces forever
     const double walls = speed_sum / span;
-    // Ideal gas: collision length 4r per unit path, density N / L^2,
+    // Ideal gas: collision length 4r per unit path, density of the others (N - 1) / L^2,
     // relative speeds about sqrt(2) times the speeds.
-    const double density = static_cast<double>(particles.size()) / (params.box_size * params.box_size);
+    const double density = static_cast<double>(particles.size() - 1) / (params.box_size * params.box_size);
     const double pairs = 0.5 * speed_sum * 4.0 * params.radius * density * std::sqrt(2.0);
     return walls + pairs;
 }

@@ -1,6 +1,8 @@
 #pragma once
-// Loads a scene from examples/ and runs it, keeping every state on the way.
+// Loads a scene from examples/ and runs it with either engine, keeping every
+// state on the way.
 
+#include "particlesim/exact_simulation.hpp"
 #include "particlesim/scene_reader.hpp"
 #include "particlesim/simulation.hpp"
 
@@ -11,6 +13,8 @@
 
 namespace example_scenes {
 
+using States = std::vector<std::vector<particlesim::Particle>>;
+
 inline particlesim::Scene load(const std::string& name) {
     std::ifstream file(std::string(PARTICLESIM_EXAMPLES_DIR) + "/" + name);
     if (!file) throw std::runtime_error("cannot open example " + name);
@@ -18,14 +22,23 @@ inline particlesim::Scene load(const std::string& name) {
 }
 
 // states[s] is the state after step s (states[0]: the initial state).
-inline std::vector<std::vector<particlesim::Particle>> run(const particlesim::Scene& scene,
-                                                           const particlesim::SimOptions& options = {}) {
-    particlesim::Simulation sim(scene.params, scene.particles, options);
-    std::vector<std::vector<particlesim::Particle>> states{scene.particles};
-    sim.run(scene.params.steps, [&](std::int64_t, std::span<const particlesim::Particle> particles) {
+template <typename Engine>
+States states_of(Engine& engine, std::int64_t steps) {
+    States states{{engine.particles().begin(), engine.particles().end()}};
+    engine.run(steps, [&](std::int64_t, std::span<const particlesim::Particle> particles) {
         states.emplace_back(particles.begin(), particles.end());
     });
     return states;
+}
+
+inline States run(const particlesim::Scene& scene, const particlesim::SimOptions& options = {}) {
+    particlesim::Simulation sim(scene.params, scene.particles, options);
+    return states_of(sim, scene.params.steps);
+}
+
+inline States run_exact(const particlesim::Scene& scene) {
+    particlesim::ExactSimulation sim(scene.params, scene.particles);
+    return states_of(sim, scene.params.steps);
 }
 
 }  // namespace example_scenes

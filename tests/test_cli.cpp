@@ -10,6 +10,7 @@
 
 
 #include <algorithm>
+#include <cctype>
 #include <cstdio>
 #include <string>
 #include <vector>
@@ -43,9 +44,9 @@ void expect_rejected(const std::vector<std::string>& args, const std::string& in
     if (!ok) std::fprintf(stderr, "  stderr was: %s", r.err.c_str());
 }
 
-// The expected output, formatted independently of the library's writer.
-std::string expected_output(const Scene& scene) {
-    const auto states = example_scenes::run(scene);
+// The expected output of `states` (the states of a run of `scene`), formatted
+// independently of the library's writer.
+std::string expected_output(const Scene& scene, const example_scenes::States& states) {
     std::string text;
     char line[512];
     const auto number = [](double v) {
@@ -76,6 +77,8 @@ std::string expected_output(const Scene& scene) {
     return text;
 }
 
+std::string expected_output(const Scene& scene) { return expected_output(scene, example_scenes::run(scene)); }
+
 std::string last_lines(const std::string& text, std::size_t count) {
     std::size_t at = text.size();
     for (std::size_t k = 0; k <= count && at > 0; ++k) at = text.rfind('\n', at - 1);
@@ -89,7 +92,7 @@ std::string with_mode(std::string scene_text, const std::string& from, const std
 
 void examples_byte_for_byte() {
     for (const char* name : {"head_on.in", "crossing.in", "newtons_cradle.in", "glancing_line.in", "square.in",
-                             "triangle.in", "corner.in", "faster_than_box.in"}) {
+                             "triangle.in", "corner.in", "faster_than_box.in", "wall_then_pair.in"}) {
         const Result r = simcli_run({examples + "/" + name});
         CHECK_EQ(r.status, 0);
         CHECK(r.err.empty());
@@ -126,6 +129,16 @@ void random_scenes_and_options() {
     }
     CHECK(simcli_run({"--grid", "4", "--engine", "step", "--substeps", "1"}, scene).out == a.out);
 
+    // Substeps and the exact engine print what the library computes.
+    const Result substeps = simcli_run({"--substeps", "3", "-t", "2"}, scene);
+    CHECK_EQ(substeps.status, 0);
+    CHECK(substeps.out == expected_output(expected, example_scenes::run(expected, {Broadphase::automatic, 0, 1, 3})));
+    CHECK(substeps.out != a.out);
+    const Result exact = simcli_run({"--engine", "exact"}, scene);
+    CHECK_EQ(exact.status, 0);
+    CHECK(exact.out == expected_output(expected, example_scenes::run_exact(expected)));
+    CHECK(exact.out != a.out);
+
     // -o writes the file and nothing to stdout.
     const std::string path = "/tmp/particlesim-test-output.txt";
     const Result to_file = simcli_run({"-o", path}, scene);
@@ -160,8 +173,10 @@ void bad_usage() {
     expect_rejected({"--seed", "-1"}, scene, "simcli: --seed", "expected an integer");
     expect_rejected({"--broadphase", "octree"}, scene, "simcli: --broadphase", "expected auto, brute or grid");
     expect_rejected({"--grid", "0"}, scene, "simcli: --grid", "[1, 4096]");
-    expect_rejected({"--substeps", "4"}, scene, "simcli: --substeps", "not implemented");
-    expect_rejected({"--engine", "exact"}, scene, "simcli: --engine exact", "not implemented");
+    expect_rejected({"--substeps", "0"}, scene, "simcli: --substeps", "expected an integer in [1, 1048576]");
+    expect_rejected({"--engine", "exact", "--substeps", "2"}, scene, "simcli: --broadphase, --grid and --substeps",
+                    "not to --engine exact");
+    expect_rejected({"--grid", "4", "--engine", "exact"}, scene, "simcli: --broadphase", "step engine");
     expect_rejected({"--engine", "magic"}, scene, "simcli: --engine", "expected step or exact");
     expect_rejected({"--output"}, scene, "simcli: option --output needs a value", "");
     expect_rejected({"a.in", "b.in"}, scene, "simcli: expected at most one scene file", "");
@@ -189,6 +204,64 @@ void bad_input() {
     expect_rejected({}, std::string("\x01\x02\xff\xfe\n", 5), "simcli: <stdin>:1: ", "expected a non-negative integer");
 }
 
+void exact_engine() {
+    // The hand-built wall-then-pair scene (test_exact_engine works it out).
+    const Scene scene = example_scenes::load("wall_then_pair.in");
+    const Result r = simcli_run({"--engine", "exact", examples + "/wall_then_pair.in"});
+    CHECK_EQ(r.status, 0);
+    CHECK(r.out == expected_output(scene, example_scenes::run_exact(scene)));
+    CHECK(r.out.find("1 0 95.00000000 50.00000000 0.00000000 0.00000000\n") != std::string::npos);
+    // Overlapping disks have no exact ground truth; touching ones do.
+    expect_rejected({"--engine", "exact"}, "2 20 1 1 perf\n0 5 5 0 0\n1 6 5 0 0\n", "simcli: <stdin>: particles 0 and 1 overlap",
+                    "no two disks overlap");
+    CHECK_EQ(simcli_run({"--engine", "exact"}, "2 20 1 1 perf\n0 5 5 0 0\n1 7 5 0 0\n").status, 0);
+    // A disk far faster than the box bounces ~1e9 times a step: refused, not hung.
+    expect_rejected({"--engine", "exact"}, "1 20 1 100 perf\n0 5 5 1e10 3\n", "simcli: <stdin>: the exact engine would need",
+                    "use fewer steps or the step engine");
+    // A moving disk that fills the box would bounce forever at one instant.
+    expect_rejected({"--engine", "exact"}, "1 2 1 1 perf\n0 1 1 1 0\n", "simcli: <stdin>: the exact engine would need", "inf");
+    CHECK_EQ(simcli_run({"--engine", "step"}, "1 2 1 3 perf\n0 1 1 1 0\n").status, 0);
+}
+
+unsigned long long field_sum(const std::string& final_block, int field) {
+    unsigned long long sum = 0;
+    std::size_t at = 0;
+    while (at < final_block.size()) {
+        const std::size_t end = final_block.find('\n', at);
+        std::size_t begin = at;
+        for (int k = 0; k < field; ++k) begin = final_block.find(' ', begin) + 1;
+        sum += std::stoull(final_block.substr(begin, final_block.find(' ', begin) - begin));
+        at = end + 1;
+    }
+    return sum;
+}
+
+void stats() {
+    const std::string scene = "200 2000 1 50 perf\n";
+    for (const std::string engine : {"step", "exact"}) {
+        const Result plain = simcli_run({"--engine", engine}, scene);
+        const Result r = simcli_run({"--engine", engine, "--stats"}, scene);
+        CHECK_EQ(r.status, 0);
+        CHECK(r.out == plain.out);  // stdout untouched
+        CHECK_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 4L);
+        CHECK(r.err.find("stats: engine " + engine + ", 50 steps in ") == 0);
+        CHECK(r.err.find(" steps/s)") != std::string::npos);
+        CHECK(r.err.find("relative energy drift ") != std::string::npos);
+        CHECK(r.err.find(" candidate pairs tested per step") != std::string::npos);
+        // The collision counts are the output's counters: sum pc / 2 and sum wc.
+        const std::string final_block = last_lines(r.out, 200);
+        const unsigned long long pc = field_sum(final_block, 6) / 2;
+        const unsigned long long wc = field_sum(final_block, 7);
+        CHECK(pc > 0 && wc > 0);
+        CHECK(r.err.find("stats: " + std::to_string(pc) + " particle collisions, " + std::to_string(wc) + " wall collisions") !=
+              std::string::npos);
+        unsigned drift_digits = 0;
+        const std::size_t drift = r.err.find("drift ");
+        for (std::size_t k = drift + 6; k < r.err.size() && r.err[k] != '\n'; ++k) drift_digits += std::isdigit(r.err[k]) ? 1 : 0;
+        CHECK(drift_digits >= 15);  // full precision
+    }
+}
+
 void write_failures() {
     const std::string scene = "50 20000 1 100 print\n";
     const Result full = run_process::run(simcli, {}, scene, "/dev/full");
@@ -211,6 +284,8 @@ int main() {
     help_and_version();
     bad_usage();
     bad_input();
+    exact_engine();
+    stats();
     write_failures();
     return check::summary("test_cli");
 }

@@ -21,16 +21,16 @@ std::uint64_t final_hash(const SimParams& params, const std::vector<Particle>& p
 
 // `forced_grid`: a G x G grid to impose besides the automatic one.
 void same_hash_everywhere(const char* name, const SimParams& params, const std::vector<Particle>& particles,
-                          int forced_grid, bool with_brute) {
-    const std::uint64_t reference = final_hash(params, particles, {Broadphase::grid, 0, 1});
+                          int forced_grid, bool with_brute, int substeps = 1) {
+    const std::uint64_t reference = final_hash(params, particles, {Broadphase::grid, 0, 1, substeps});
     int differing = 0;
     for (const int threads : {1, 2, 3, 4, 8}) {
-        differing += final_hash(params, particles, {Broadphase::grid, 0, threads}) != reference;
-        differing += final_hash(params, particles, {Broadphase::automatic, 0, threads}) != reference;
-        differing += final_hash(params, particles, {Broadphase::grid, forced_grid, threads}) != reference;
-        if (with_brute) differing += final_hash(params, particles, {Broadphase::brute, 0, threads}) != reference;
+        differing += final_hash(params, particles, {Broadphase::grid, 0, threads, substeps}) != reference;
+        differing += final_hash(params, particles, {Broadphase::automatic, 0, threads, substeps}) != reference;
+        differing += final_hash(params, particles, {Broadphase::grid, forced_grid, threads, substeps}) != reference;
+        if (with_brute) differing += final_hash(params, particles, {Broadphase::brute, 0, threads, substeps}) != reference;
     }
-    std::printf("%s: final state hash %016llx\n", name, static_cast<unsigned long long>(reference));
+    std::printf("%s, %d substep(s): final state hash %016llx\n", name, substeps, static_cast<unsigned long long>(reference));
     CHECK_EQ(differing, 0);
 }
 
@@ -40,6 +40,13 @@ int main() {
     // The paper's scene (fast particles, sparse box), 200 steps.
     const SimParams paper{20000.0, 1.0, 200, OutputMode::perf};
     same_hash_everywhere("default scene", paper, make_random_particles(1000, paper), 4, true);
+    // Substeps: micro-steps of 1/K under the same rules, the same everywhere too.
+    const SimParams short_paper{20000.0, 1.0, 20, OutputMode::perf};
+    for (const int substeps : {2, 3, 8}) {
+        same_hash_everywhere("default scene", short_paper, make_random_particles(1000, short_paper), 4, true, substeps);
+    }
+    const std::vector<Particle> start = make_random_particles(1000, short_paper);
+    CHECK(final_hash(short_paper, start, {Broadphase::automatic, 0, 1, 1}) != final_hash(short_paper, start, {Broadphase::automatic, 0, 1, 2}));
     // A crowded box of slow particles (area fraction 0.3): many collisions.
     const SimParams crowded{160.0, 1.0, 100, OutputMode::perf};
     same_hash_everywhere("crowded box", crowded, make_random_particles(2400, crowded, {5, SpeedRange{0.1, 1.0}}), 16, false);

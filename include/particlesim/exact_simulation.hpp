@@ -52,6 +52,7 @@ public:
 
     // The state at the last whole step; positions clamped into [r, L - r].
     [[nodiscard]] std::span<const Particle> particles() const;
+    [[nodiscard]] const SimParams& params() const;
     [[nodiscard]] std::int64_t steps_done() const;
     [[nodiscard]] const StepCounts& last_step() const;
     [[nodiscard]] const StepCounts& totals() const;

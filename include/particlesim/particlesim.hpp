@@ -1,11 +1,15 @@
 #pragma once
 // Everything of the library in one include.
 
+#include "particlesim/accuracy.hpp"
 #include "particlesim/box.hpp"
 #include "particlesim/brute_force_search.hpp"
 #include "particlesim/collision.hpp"
+#include "particlesim/energy.hpp"
+#include "particlesim/exact_simulation.hpp"
 #include "particlesim/grid_search.hpp"
 #include "particlesim/number_format.hpp"
+#include "particlesim/overlap_counter.hpp"
 #include "particlesim/pair_search.hpp"
 #include "particlesim/particle.hpp"
 #include "particlesim/physics.hpp"
@@ -16,5 +20,7 @@
 #include "particlesim/sim_params.hpp"
 #include "particlesim/simulation.hpp"
 #include "particlesim/state_writer.hpp"
+#include "particlesim/step_counts.hpp"
 #include "particlesim/step_pipeline.hpp"
 #include "particlesim/version.hpp"
+#include "particlesim/whole_step_runner.hpp"

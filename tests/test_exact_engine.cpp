@@ -1,0 +1,196 @@
+// The exact engine: hand-built scenes worked out on paper, the same events
+// for every cell size, the stepped engine's agreement where the step rules
+// are exact, and what it refuses.
+
+#include "check.hpp"
+#include "example_scenes.hpp"
+#include "random_scenes.hpp"
+#include "state_hash.hpp"
+
+#include "particlesim/energy.hpp"
+#include "particlesim/exact_simulation.hpp"
+#include "particlesim/random_scene.hpp"
+#include "particlesim/simulation.hpp"
+
+#include <cmath>
+
+using namespace particlesim;
+
+namespace {
+
+// The states agree to well within printing precision (1e-8), with the same
+// counters. (Bits differ: one engine adds v each step, the other v t once.)
+bool agree(std::span<const Particle> a, std::span<const Particle> b) {
+    bool same = a.size() == b.size();
+    for (std::size_t i = 0; same && i < a.size(); ++i) {
+        same = (a[i].position - b[i].position).lpNorm<Eigen::Infinity>() <= 1e-9 &&
+               (a[i].velocity - b[i].velocity).lpNorm<Eigen::Infinity>() <= 1e-9 &&
+               a[i].particle_collisions == b[i].particle_collisions && a[i].wall_collisions == b[i].wall_collisions;
+    }
+    return same;
+}
+
+void wall_then_pair() {
+    // A at x = 95 moving +8, B at 93 at rest (touching, A receding), L = 100.
+    // Exact: A reaches x = 99 at t = 0.5 and turns; it is back at 95, touching
+    // B, at t = 1: head-on exchange, A stops, B leaves at -8. Step 2: B to 85.
+    const Scene scene = example_scenes::load("wall_then_pair.in");
+    const auto exact = example_scenes::run_exact(scene);
+    CHECK_EQ(exact[1][0].position.x(), 95.0);
+    CHECK_EQ(exact[1][0].velocity.x(), 0.0);
+    CHECK_EQ(exact[1][1].position.x(), 93.0);
+    CHECK_EQ(exact[1][1].velocity.x(), -8.0);
+    CHECK_EQ(exact[1][0].wall_collisions, 1U);
+    CHECK_EQ(exact[1][0].particle_collisions, 1U);
+    CHECK_EQ(exact[2][1].position.x(), 85.0);
+    // The step rules allow one collision per step: A bounces and ends the step
+    // at 95 touching B, still moving at -8; they collide at t = 0 of step 2,
+    // which gives the same state after step 2.
+    const auto stepped = example_scenes::run(scene);
+    CHECK_EQ(stepped[1][0].velocity.x(), -8.0);
+    CHECK_EQ(stepped[1][0].particle_collisions, 0U);
+    CHECK_EQ(stepped[1][1].velocity.x(), 0.0);
+    CHECK_EQ(state_hash::hash(stepped[2]), state_hash::hash(exact[2]));
+    // Two substeps of 0.5 catch both events in step 1, as the exact engine does.
+    const auto substeps = example_scenes::run(scene, {Broadphase::automatic, 0, 1, 2});
+    CHECK_EQ(state_hash::hash(substeps[1]), state_hash::hash(exact[1]));
+}
+
+void hand_built_examples() {
+    // Scenes with at most one event per particle per step give the same
+    // states in both engines (test_examples works them out on paper).
+    for (const char* name : {"head_on.in", "crossing.in", "glancing_line.in", "corner.in"}) {
+        const Scene scene = example_scenes::load(name);
+        const auto exact = example_scenes::run_exact(scene);
+        const auto stepped = example_scenes::run(scene);
+        for (std::size_t s = 0; s < exact.size(); ++s) CHECK(agree(exact[s], stepped[s]));
+    }
+    // Newton's cradle: the exact engine passes the momentum down the whole
+    // line at once (t = 1 of step 4); the stepped one takes a step per disk.
+    const Scene cradle = example_scenes::load("newtons_cradle.in");
+    const auto exact = example_scenes::run_exact(cradle);
+    CHECK_EQ(exact[4][0].velocity.x(), 0.0);
+    CHECK_EQ(exact[4][4].velocity.x(), 0.5);
+    CHECK_EQ(exact[4][4].position.x(), 14.0);
+    CHECK_EQ(exact[12][4].position.x(), 18.0);  // 14 + 0.5 x 8; the wall at 19 comes at t = 14
+    CHECK_EQ(exact[12][4].wall_collisions, 0U);
+    for (int i = 0; i < 4; ++i) CHECK_EQ(exact[12][static_cast<std::size_t>(i)].velocity.x(), 0.0);
+}
+
+void same_events_for_every_cell_size() {
+    int compared = 0;
+    for (std::uint64_t k = 0; k < 60; ++k) {
+        // The family's non-overlapping regimes: 0 (default speeds) and 3 (slow).
+        const random_scenes::TestScene scene = random_scenes::make(k * 5 + (k % 2 == 0 ? 0 : 3));
+        ExactSimulation automatic(scene.params, scene.particles);
+        ExactSimulation one_cell(scene.params, scene.particles, {1});
+        ExactSimulation seven(scene.params, scene.particles, {7});
+        for (std::int64_t s = 0; s < scene.params.steps; ++s) {
+            automatic.step();
+            one_cell.step();
+            seven.step();
+            const std::uint64_t h = state_hash::hash(automatic.particles());
+            CHECK_EQ(state_hash::hash(one_cell.particles()), h);
+            CHECK_EQ(state_hash::hash(seven.particles()), h);
+        }
+        CHECK_EQ(automatic.totals().particle_collisions, one_cell.totals().particle_collisions);
+        compared += automatic.totals().particle_collisions > 0 ? 1 : 0;
+    }
+    CHECK(compared >= 20);  // the comparison saw collisions
+}
+
+// rules.md: where no two events share a particle within a step, the step
+// rules are exact; the engines agree to printing precision (1e-8).
+void agrees_with_stepped_engine_when_events_do_not_share_a_particle() {
+    std::uint64_t compared_steps = 0;
+    std::uint64_t compared_collisions = 0;
+    for (std::uint64_t seed = 0; seed < 200; ++seed) {
+        const SimParams params{60.0, 1.0, 12, OutputMode::perf};
+        const std::vector<Particle> start = make_random_particles(12, params, {seed, SpeedRange{0.5, 4.0}});
+        ExactSimulation exact(params, start);
+        Simulation stepped(params, start);
+        for (std::int64_t s = 0; s < params.steps; ++s) {
+            exact.step();
+            stepped.step();
+            if (exact.last_step_particles_with_several_events() != 0) break;
+            const bool same = agree(exact.particles(), stepped.particles());
+            CHECK(same);
+            if (!same) std::fprintf(stderr, "  seed %llu, step %lld\n", static_cast<unsigned long long>(seed), static_cast<long long>(s + 1));
+            ++compared_steps;
+            compared_collisions += exact.last_step().particle_collisions + exact.last_step().wall_collisions;
+        }
+    }
+    CHECK(compared_steps >= 500);
+    CHECK(compared_collisions >= 500);
+}
+
+void conserves_and_stays_inside() {
+    for (std::uint64_t k = 0; k < 30; ++k) {
+        const random_scenes::TestScene scene = random_scenes::make(k * 5 + (k % 2 == 0 ? 0 : 3));
+        ExactSimulation exact(scene.params, scene.particles);
+        const double e0 = total_kinetic_energy(exact.particles());
+        Vec2 momentum0 = Vec2::Zero();
+        for (const Particle& p : exact.particles()) momentum0 += p.velocity;
+        exact.run(scene.params.steps, [&](std::int64_t, std::span<const Particle> particles) {
+            bool inside = true;
+            for (const Particle& p : particles) {
+                inside = inside && p.position.allFinite() && p.position.minCoeff() >= scene.params.lower() &&
+                         p.position.maxCoeff() <= scene.params.upper();
+            }
+            CHECK(inside);
+            CHECK(std::abs(relative_energy_drift(e0, total_kinetic_energy(particles))) <= 1e-12);
+        });
+    }
+}
+
+void refuses_overlaps_and_bad_scenes() {
+    const SimParams params{20.0, 1.0, 1, OutputMode::perf};
+    std::vector<Particle> pair(2);
+    pair[0].position = Vec2(5, 5);
+    pair[1].position = Vec2(6.5, 5);
+    bool thrown = false;
+    try {
+        ExactSimulation exact(params, pair);
+    } catch (const OverlappingStart& e) {
+        thrown = e.first() == 0 && e.second() == 1;
+    }
+    CHECK(thrown);
+    pair[1].position = Vec2(7, 5);  // touching is allowed
+    ExactSimulation touching(params, pair);
+    CHECK_EQ(touching.particles().size(), 2U);
+    pair[1].position = Vec2(25, 5);
+    bool outside = false;
+    try {
+        ExactSimulation exact(params, pair);
+    } catch (const std::invalid_argument&) {
+        outside = true;
+    }
+    CHECK(outside);
+}
+
+void estimates_events() {
+    // One disk crossing a box of span 8 at speed 4 per step: 0.5 wall hits a step.
+    const SimParams params{10.0, 1.0, 1, OutputMode::perf};
+    std::vector<Particle> one(1);
+    one[0].position = Vec2(5, 5);
+    one[0].velocity = Vec2(4, 0);
+    CHECK_NEAR(estimated_events_per_step(params, one), 0.5, 1e-15);
+    one[0].velocity = Vec2::Zero();
+    CHECK_EQ(estimated_events_per_step(params, one), 0.0);
+    one[0].velocity = Vec2(1, 0);
+    one[0].position = Vec2(1, 1);
+    CHECK(std::isinf(estimated_events_per_step(SimParams{2.0, 1.0, 1, OutputMode::perf}, one)));
+}
+
+}  // namespace
+
+int main() {
+    wall_then_pair();
+    hand_built_examples();
+    same_events_for_every_cell_size();
+    agrees_with_stepped_engine_when_events_do_not_share_a_particle();
+    conserves_and_stays_inside();
+    refuses_overlaps_and_bad_scenes();
+    estimates_events();
+    return check::summary("test_exact_engine");
+}
