@@ -188,7 +188,7 @@ void print_stats(const char* engine, const RunStats& stats, std::int64_t steps) 
     std::fprintf(stderr, "stats: %llu particle collisions, %llu wall collisions\n",
                  static_cast<unsigned long long>(stats.totals.particle_collisions),
                  static_cast<unsigned long long>(stats.totals.wall_collisions));
-    std::fprintf(stderr, "stats: relative energy drift %.17g\n", relative_energy_drift(stats.initial_energy, stats.final_energy));
+    std::fprintf(stderr, "stats: relative energy drift %+.16e\n", relative_energy_drift(stats.initial_energy, stats.final_energy));
     std::fprintf(stderr, "stats: %.6g candidate pairs tested per step\n", static_cast<double>(stats.totals.pair_tests) * per_step);
 }
 

@@ -2,10 +2,16 @@
 // and thread counts, each case in a child process of its own so that its peak
 // memory is its own, and prints CSV (one row per case) on stdout.
 //
-//   particlesim_bench steps   [--quick]   time per step against N, dense gas
-//   particlesim_bench simcli  [--quick]   whole simcli runs of the target scenes
+//   particlesim_bench steps    [--quick]   time per step against N, dense gas
+//   particlesim_bench simcli   [--quick]   whole simcli runs of the target scenes
+//   particlesim_bench accuracy [--quick]   run time against error (accuracy_benchmark.cpp)
+//   particlesim_bench exact    [--quick]   the exact engine's speed (accuracy_benchmark.cpp)
+//   particlesim_bench stress   [--quick]   1e6 steps of a crowded box (stress_benchmark.cpp)
 //
 // Every time is the median of repeated runs measured in the same invocation.
+
+#include "benchmarks.hpp"
+#include "statistics.hpp"
 
 #include "particlesim/random_scene.hpp"
 #include "particlesim/simulation.hpp"
@@ -28,6 +34,8 @@
 
 using namespace particlesim;
 
+namespace bench {
+
 namespace {
 
 struct Case {
@@ -49,12 +57,6 @@ struct Measurement {
     double pair_tests_per_step = 0.0;
     double collisions_per_step = 0.0;
 };
-
-double median(std::vector<double> values) {
-    std::sort(values.begin(), values.end());
-    const std::size_t n = values.size();
-    return n % 2 == 1 ? values[n / 2] : 0.5 * (values[n / 2 - 1] + values[n / 2]);
-}
 
 // Runs in the child: builds the scene (untimed), then times the steps.
 Measurement measure(const Case& c) {
@@ -123,6 +125,8 @@ std::int64_t steps_for(double per_step_guess, double target, std::int64_t most) 
     return std::clamp<std::int64_t>(static_cast<std::int64_t>(target / per_step_guess), 3, most);
 }
 
+}  // namespace
+
 void steps_benchmark(bool quick) {
     std::printf("case,n,box_size,radius,steps,search,threads,repeats,median_s_per_step,min_s_per_step,max_s_per_step,"
                 "particle_steps_per_s,pair_tests_per_step,particle_collisions_per_step,peak_rss_bytes,peak_bytes_per_particle\n");
@@ -149,6 +153,8 @@ void steps_benchmark(bool quick) {
     }
 }
 
+namespace {
+
 double time_command(const std::vector<std::string>& args) {
     std::vector<char*> argv;
     for (const std::string& a : args) argv.push_back(const_cast<char*>(a.c_str()));
@@ -164,6 +170,8 @@ double time_command(const std::vector<std::string>& args) {
     posix_spawn_file_actions_destroy(&actions);
     return status == 0 ? seconds : -1.0;
 }
+
+}  // namespace
 
 void simcli_benchmark(bool quick) {
     std::printf("scene,options,runs,median_s,min_s,max_s\n");
@@ -191,6 +199,7 @@ void simcli_benchmark(bool quick) {
     std::vector<Run> runs{{"default", default_path, {"-t", "2"}, quick ? 5 : 11},
                           {"default", default_path, {"-t", "1"}, quick ? 5 : 11},
                           {"default", default_path, {"-t", "2", "--broadphase", "brute"}, 3},
+                          {"default", default_path, {"--engine", "exact"}, quick ? 3 : 5},
                           {"default print", default_print, {"-t", "2"}, quick ? 3 : 7},
                           {quick ? "4 particles 1e5 steps" : "4 particles 1e6 steps", tiny, {"-t", "2"}, quick ? 3 : 7}};
     if (!quick) runs.push_back({"N=32000 S=1000", n32000, {"-t", "2"}, 3});
@@ -208,17 +217,23 @@ void simcli_benchmark(bool quick) {
     }
 }
 
-}  // namespace
+}  // namespace bench
 
 int main(int argc, char** argv) {
     const std::string mode = argc > 1 ? argv[1] : "";
     const bool quick = argc > 2 && std::strcmp(argv[2], "--quick") == 0;
     if (mode == "steps") {
-        steps_benchmark(quick);
+        bench::steps_benchmark(quick);
     } else if (mode == "simcli") {
-        simcli_benchmark(quick);
+        bench::simcli_benchmark(quick);
+    } else if (mode == "accuracy") {
+        bench::accuracy_benchmark(quick);
+    } else if (mode == "exact") {
+        bench::exact_benchmark(quick);
+    } else if (mode == "stress") {
+        bench::stress_benchmark(quick);
     } else {
-        std::fprintf(stderr, "usage: particlesim_bench steps|simcli [--quick]\n");
+        std::fprintf(stderr, "usage: particlesim_bench steps|simcli|accuracy|exact|stress [--quick]\n");
         return 2;
     }
     return 0;

@@ -77,14 +77,16 @@ inline void bounce_off_wall(Particle& particle, const WallHit& hit, const Box& b
 
 // Elastic collision of equal masses at contact positions pi, pj: exchange the
 // velocity components along the line of centres, keep the tangential ones.
+// ((vj - vi).n) n is computed as ((vj - vi).d / d.d) d, with no unit normal:
+// a rounded n has |n|^2 = 1 + e, which changes the energy by e (vj - vi).n^2
+// at every collision, a bias that adds up to ~1e-12 over 1e6 collisions.
 inline void exchange_normal_velocities(const Vec2& pi, const Vec2& pj, Vec2& vi, Vec2& vj) {
     const Vec2 d = pj - pi;
     const double dist_sq = d.dot(d);
     if (!(dist_sq > 0.0)) return;  // unreachable for valid radii; never divide by zero
-    const Vec2 normal = d / std::sqrt(dist_sq);
-    const double exchanged = (vj - vi).dot(normal);
-    vi += exchanged * normal;
-    vj -= exchanged * normal;
+    const Vec2 exchanged = ((vj - vi).dot(d) / dist_sq) * d;
+    vi += exchanged;
+    vj -= exchanged;
 }
 
 // The rest of a step after a collision: move for `remaining`, but stop on a
