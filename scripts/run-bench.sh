@@ -2,11 +2,16 @@
 # Builds the benchmark harness (Release), runs it, and writes the CSVs and the
 # plots under bench/results/<machine>/ (machine: first argument, or hostname).
 # --quick runs a short version (smaller N, fewer repeats) for a smoke check.
+# Further arguments pick modes (default: all): steps simcli accuracy exact stress.
+#   scripts/run-bench.sh cpp-2core                  # everything (about an hour)
+#   scripts/run-bench.sh cpp-2core "" accuracy      # just run time against error
 set -euo pipefail
 cd "$(dirname "$0")/.."
 scripts/ensure-deps.sh gnuplot-nox
 machine=${1:-$(hostname)}
 quick=${2:-}
+shift $(( $# < 2 ? $# : 2 ))
+modes=${*:-steps simcli accuracy exact stress}
 out=bench/results/$machine
 mkdir -p "$out"
 
@@ -15,14 +20,16 @@ cmake --build build --target particlesim_bench simcli -j "$(nproc)" >/dev/null
 
 {
   echo "machine: $machine"
-  echo "date: $(date -u +%Y-%m-%dT%H:%MZ)"
   echo "cpu: $(lscpu | sed -n 's/^Model name: *//p') ($(nproc) cores)"
   echo "memory: $(free -h | awk '/^Mem:/ {print $2}')"
   echo "compiler: $(g++ --version | head -1)"
-  echo "commit: $(git rev-parse --short HEAD 2>/dev/null || echo unknown)"
 } > "$out/machine.txt"
+# Which commit wrote which CSVs: one line per run.
+echo "$(date -u +%Y-%m-%dT%H:%MZ) commit $(git rev-parse --short HEAD 2>/dev/null || echo unknown): $modes" >> "$out/runs.txt"
 
-build/bench/particlesim_bench steps $quick | tee "$out/steps.csv"
-build/bench/particlesim_bench simcli $quick | tee "$out/simcli.csv"
-gnuplot -e "results='$out'" bench/plot_steps.gp
-echo "wrote $out/steps.csv, $out/simcli.csv, $out/time_per_step.png"
+for mode in $modes; do
+  build/bench/particlesim_bench "$mode" $quick | tee "$out/$mode.csv"
+done
+[[ " $modes " == *" steps "* ]] && gnuplot -e "results='$out'" bench/plot_steps.gp
+[[ " $modes " == *" accuracy "* ]] && gnuplot -e "results='$out'" bench/plot_accuracy.gp
+echo "wrote $(for mode in $modes; do printf '%s ' "$out/$mode.csv"; done)and the plots"

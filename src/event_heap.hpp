@@ -1,9 +1,12 @@
 #pragma once
 // The exact engine's event queue: one entry per particle, holding the earliest
-// event predicted for it, in an indexed binary heap. A particle's entry is
+// event predicted for it, in an indexed 4-ary heap. A particle's entry is
 // replaced in place (O(log N)) whenever its prediction changes, so the heap
-// never holds more than N entries and never fills with stale events.
+// never holds more than N entries and never fills with stale events. Four
+// children per node halve the depth of a binary heap and sit on adjacent
+// cache lines: with 1e6 particles the heap is memory-bound.
 
+#include <algorithm>
 #include <cstdint>
 #include <tuple>
 #include <vector>
@@ -56,6 +59,8 @@ public:
     }
 
 private:
+    static constexpr std::size_t arity = 4;
+
     struct Entry {
         Event event;
         std::uint32_t owner;
@@ -68,7 +73,7 @@ private:
     void sift_up(std::size_t at) {
         const Entry moving = heap_[at];
         while (at > 0) {
-            const std::size_t parent = (at - 1) / 2;
+            const std::size_t parent = (at - 1) / arity;
             if (!(moving.event < heap_[parent].event)) break;
             place(at, heap_[parent]);
             at = parent;
@@ -79,9 +84,13 @@ private:
         const Entry moving = heap_[at];
         const std::size_t size = heap_.size();
         for (;;) {
-            std::size_t child = 2 * at + 1;
-            if (child >= size) break;
-            if (child + 1 < size && heap_[child + 1].event < heap_[child].event) ++child;
+            const std::size_t first = arity * at + 1;
+            if (first >= size) break;
+            std::size_t child = first;
+            const std::size_t last = std::min(first + arity, size);
+            for (std::size_t other = first + 1; other < last; ++other) {
+                if (heap_[other].event < heap_[child].event) child = other;
+            }
             if (!(heap_[child].event < moving.event)) break;
             place(at, heap_[child]);
             at = child;
