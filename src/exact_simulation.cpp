@@ -1,7 +1,7 @@
 #include "particlesim/exact_simulation.hpp"
 
 #include "cell_list.hpp"
-#include "event_heap.hpp"
+#include "event_calendar.hpp"
 #include "particlesim/box.hpp"
 #include "particlesim/physics.hpp"
 #include "scene_checks.hpp"
@@ -40,7 +40,7 @@ int cells_per_side_for(const SimParams& params, std::size_t particle_count) {
 // its own collisions, so that every prediction reads an unchanged state.
 //
 // Each particle keeps three predictions: its wall event, its next cell
-// crossing, and the earliest pair event found for it; its heap entry is the
+// crossing, and the earliest pair event found for it; its queue entry is the
 // first of the three. A pair prediction goes stale when the partner collides
 // elsewhere first; that is noticed when the entry comes up, and the particle
 // then predicts its pairs afresh. No collision is missed: a particle's pair
@@ -54,7 +54,7 @@ public:
                  params.box_size, particles_.size()),
           stamp_(particles_.size(), 0.0), wall_time_(particles_.size(), never), crossing_(particles_.size()),
           pair_(particles_.size()), last_event_step_(particles_.size(), -1), last_repeat_step_(particles_.size(), -1),
-          snapshot_(particles_), heap_(count(), Event{never, EventKind::cell_crossing, 0, 0}) {
+          snapshot_(particles_), queue_(count(), Event{never, EventKind::cell_crossing, 0, 0}) {
         for (std::uint32_t i = 0; i < count(); ++i) {
             const Vec2& p = particles_[i].position;
             cells_.insert(i, cells_.cell_at(cells_.column_of(p.x()), cells_.column_of(p.y())));
@@ -73,9 +73,9 @@ public:
         const double end = static_cast<double>(steps_done_ + 1);
         last_step_ = {};
         several_events_ = 0;
-        while (!heap_.empty() && heap_.earliest().time <= end) {
-            const std::uint32_t owner = heap_.earliest_owner();
-            const Event event = heap_.earliest();
+        while (!queue_.empty() && queue_.earliest().time <= end) {
+            const std::uint32_t owner = queue_.earliest_owner();
+            const Event event = queue_.earliest();
             if (event.kind == EventKind::pair && pair_partner_moved(owner)) {
                 predict_pairs(owner);
                 reschedule(owner);
@@ -208,13 +208,13 @@ private:
         for_each_neighbour(i, [&](std::uint32_t j) { consider_pair(i, j); });
     }
 
-    // Puts the first of the particle's three predictions in the heap.
+    // Puts the first of the particle's three predictions in the queue.
     void reschedule(std::uint32_t i) {
         Event next{wall_time_[i], EventKind::wall, i, 0};
         const Event crossing{crossing_[i].time, EventKind::cell_crossing, i, crossing_[i].cell};
         if (crossing < next) next = crossing;
         if (pair_[i].event < next) next = pair_[i].event;
-        heap_.replace(i, next);
+        queue_.replace(i, next);
     }
 
     void note_event(std::uint32_t i) {
@@ -303,7 +303,7 @@ private:
     std::vector<std::int64_t> last_event_step_;
     std::vector<std::int64_t> last_repeat_step_;
     std::vector<Particle> snapshot_;  // the state at the last whole step
-    EventHeap heap_;
+    EventCalendar queue_;
     double now_ = 0.0;
     std::int64_t steps_done_ = 0;
     StepCounts last_step_;

@@ -1,0 +1,154 @@
+#pragma once
+// The exact engine's event queue: one entry per particle, holding the earliest
+// event predicted for it, in a calendar queue (R. Brown, CACM 1988). Entries
+// sit in time buckets of width `width_`, each a doubly linked list; entries
+// beyond the buckets' window wait in an overflow list. Replacing an entry is
+// O(1), and finding the earliest scans the first non-empty bucket, which
+// holds about one entry. Unlike a heap, the work per event stays in a few
+// cache lines however many particles there are. When the window is used up,
+// it is rebuilt from the overflow, its width chosen so that the next N / 2
+// events fill about half of it.
+
+#include <algorithm>
+#include <cstdint>
+#include <limits>
+#include <tuple>
+#include <vector>
+
+namespace particlesim {
+
+enum class EventKind : std::uint8_t {
+    wall = 0,           // the same kinds and order as Collision: walls first
+    pair = 1,
+    cell_crossing = 2,  // bookkeeping only, changes no motion
+};
+
+struct Event {
+    double time = 0.0;  // absolute, in steps since the start
+    EventKind kind = EventKind::wall;
+    std::uint32_t i = 0;  // the particle, or the lower index of a pair
+    std::uint32_t j = 0;  // pair: the higher index; crossing: the cell entered
+
+    // The total order of rules.md, (t, kind, i, j).
+    friend bool operator<(const Event& a, const Event& b) {
+        if (a.time != b.time) return a.time < b.time;
+        return std::tie(a.kind, a.i, a.j) < std::tie(b.kind, b.i, b.j);
+    }
+};
+
+class EventCalendar {
+public:
+    // Every owner starts with `initial`; replace() sets each.
+    EventCalendar(std::uint32_t owners, const Event& initial)
+        : buckets_(bucket_count_for(owners)), head_(buckets_ + 1, none), next_(owners, none), previous_(owners, none),
+          where_(owners, overflow()), events_(owners, initial) {
+        for (std::uint32_t owner = 0; owner < owners; ++owner) link(owner, overflow());
+        current_ = buckets_;  // the window is empty: the first earliest() builds it
+    }
+
+    [[nodiscard]] bool empty() const { return events_.empty(); }
+
+    [[nodiscard]] std::uint32_t earliest_owner() {
+        if (earliest_ == none) find_earliest();
+        return earliest_;
+    }
+    [[nodiscard]] const Event& earliest() { return events_[earliest_owner()]; }
+
+    void replace(std::uint32_t owner, const Event& event) {
+        unlink(owner);
+        events_[owner] = event;
+        link(owner, bucket_of(event.time));
+        if (owner == earliest_) {
+            earliest_ = none;
+        } else if (earliest_ != none && event < events_[earliest_]) {
+            earliest_ = owner;
+        }
+    }
+
+private:
+    static constexpr std::uint32_t none = std::numeric_limits<std::uint32_t>::max();
+
+    static std::uint32_t bucket_count_for(std::uint32_t owners) {
+        std::uint32_t count = 16;
+        while (count < owners && count < (1U << 30)) count *= 2;
+        return count;
+    }
+    [[nodiscard]] std::uint32_t overflow() const { return buckets_; }
+
+    // Never before the current bucket: time does not go back. Everything
+    // waits in the overflow while the window is used up.
+    [[nodiscard]] std::uint32_t bucket_of(double time) const {
+        if (current_ == buckets_) return overflow();
+        const double offset = (time - base_) / width_;
+        if (!(offset < static_cast<double>(buckets_))) return overflow();  // also `never` and NaN-free infinities
+        return std::max(current_, static_cast<std::uint32_t>(std::max(offset, 0.0)));
+    }
+
+    void link(std::uint32_t owner, std::uint32_t bucket) {
+        where_[owner] = bucket;
+        previous_[owner] = none;
+        next_[owner] = head_[bucket];
+        if (head_[bucket] != none) previous_[head_[bucket]] = owner;
+        head_[bucket] = owner;
+    }
+    void unlink(std::uint32_t owner) {
+        const std::uint32_t before = previous_[owner];
+        const std::uint32_t after = next_[owner];
+        if (before != none) {
+            next_[before] = after;
+        } else {
+            head_[where_[owner]] = after;
+        }
+        if (after != none) previous_[after] = before;
+    }
+
+    void find_earliest() {
+        while (current_ < buckets_ && head_[current_] == none) ++current_;
+        if (current_ == buckets_) rebuild_window();
+        const std::uint32_t bucket = current_ < buckets_ ? current_ : overflow();
+        std::uint32_t best = head_[bucket];
+        for (std::uint32_t k = next_[best]; k != none; k = next_[k]) {
+            if (events_[k] < events_[best]) best = k;
+        }
+        earliest_ = best;
+    }
+
+    // Moves the overflow's earliest events into a fresh window of buckets.
+    void rebuild_window() {
+        times_.clear();
+        for (std::uint32_t k = head_[overflow()]; k != none; k = next_[k]) {
+            if (events_[k].time < std::numeric_limits<double>::infinity()) times_.push_back(events_[k].time);
+        }
+        if (times_.empty()) return;  // nothing will ever happen: earliest is any entry, at `never`
+        const auto first = std::min_element(times_.begin(), times_.end());
+        base_ = *first;
+        const std::size_t sample = std::min<std::size_t>(times_.size() - 1, buckets_ / 2);
+        std::nth_element(times_.begin(), times_.begin() + static_cast<std::ptrdiff_t>(sample), times_.end());
+        const double spread = times_[sample] - base_;
+        // About one entry a bucket over the first half of the window; a
+        // positive width even when many events share one instant.
+        width_ = spread > 0.0 ? spread / static_cast<double>(buckets_ / 2) : std::max(std::abs(base_) * 1e-12, 1e-300);
+        current_ = 0;
+        std::uint32_t k = head_[overflow()];
+        head_[overflow()] = none;
+        while (k != none) {
+            const std::uint32_t following = next_[k];
+            link(k, bucket_of(events_[k].time));
+            k = following;
+        }
+    }
+
+    std::uint32_t buckets_;
+    std::vector<std::uint32_t> head_;  // by bucket; the last is the overflow
+    std::vector<std::uint32_t> next_;
+    std::vector<std::uint32_t> previous_;
+    std::vector<std::uint32_t> where_;  // each owner's bucket
+    std::vector<Event> events_;         // by owner
+    std::vector<double> times_;         // scratch of rebuild_window()
+    double base_ = 0.0;                 // start time of bucket 0
+    double width_ = 1.0;
+    std::uint32_t current_ = 0;         // no entry lies in an earlier bucket
+    std::uint32_t earliest_ = none;     // cached; none when unknown
+};
+
+}  // namespace particlesim

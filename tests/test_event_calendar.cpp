@@ -1,0 +1,81 @@
+// The exact engine's calendar queue against a brute-force minimum, over
+// random schedules like the engine's: times never go back, many ties, events
+// that never happen, bursts far in the future, and a window rebuilt often.
+
+#include "check.hpp"
+
+#include "../src/event_calendar.hpp"
+#include "particlesim/random.hpp"
+
+#include <algorithm>
+#include <limits>
+#include <vector>
+
+using particlesim::Event;
+using particlesim::EventCalendar;
+using particlesim::EventKind;
+
+namespace {
+
+constexpr double never = std::numeric_limits<double>::infinity();
+
+double delay(particlesim::SplitMix64& rng) {
+    switch (rng.next() % 6) {
+    case 0: return 0.0;                         // a tie with the present
+    case 1: return never;                       // nothing predicted
+    case 2: return 1e6 * rng.uniform();         // far in the future
+    case 3: return static_cast<double>(rng.next() % 4);  // ties on a coarse grid
+    default: return rng.uniform();
+    }
+}
+
+void matches_brute_force(std::uint32_t owners, std::uint64_t seed, int operations) {
+    particlesim::SplitMix64 rng(seed);
+    std::vector<Event> events(owners, Event{never, EventKind::cell_crossing, 0, 0});
+    EventCalendar calendar(owners, events[0]);
+    const auto random_event = [&](double now) {
+        const auto kind = static_cast<EventKind>(rng.next() % 3);
+        return Event{now + delay(rng), kind, static_cast<std::uint32_t>(rng.next() % 8), static_cast<std::uint32_t>(rng.next() % 8)};
+    };
+    for (std::uint32_t owner = 0; owner < owners; ++owner) {
+        events[owner] = random_event(0.0);
+        calendar.replace(owner, events[owner]);
+    }
+    int mismatches = 0;
+    for (int k = 0; k < operations; ++k) {
+        const Event expected = *std::min_element(events.begin(), events.end());
+        const std::uint32_t owner = calendar.earliest_owner();
+        const Event got = calendar.earliest();
+        const bool same = !(got < expected) && !(expected < got) && !(events[owner] < got) && !(got < events[owner]);
+        mismatches += same ? 0 : 1;
+        const double now = got.time == never ? 0.0 : got.time;
+        // The engine replaces the earliest entry and, sometimes, a partner's.
+        events[owner] = random_event(now);
+        calendar.replace(owner, events[owner]);
+        if (rng.next() % 2 == 0) {
+            const auto other = static_cast<std::uint32_t>(rng.next() % owners);
+            events[other] = random_event(now);
+            calendar.replace(other, events[other]);
+        }
+    }
+    CHECK_EQ(mismatches, 0);
+}
+
+void all_never() {
+    EventCalendar calendar(5, Event{never, EventKind::wall, 0, 0});
+    CHECK(calendar.earliest().time == never);
+    calendar.replace(3, Event{2.5, EventKind::pair, 1, 3});
+    CHECK_EQ(calendar.earliest_owner(), 3U);
+    calendar.replace(3, Event{never, EventKind::wall, 3, 0});
+    CHECK(calendar.earliest().time == never);
+}
+
+}  // namespace
+
+int main() {
+    all_never();
+    for (const std::uint32_t owners : {1U, 2U, 7U, 100U, 5000U}) {
+        for (std::uint64_t seed = 0; seed < 4; ++seed) matches_brute_force(owners, seed, owners < 1000 ? 20000 : 4000);
+    }
+    return check::summary("test_event_calendar");
+}
