@@ -1,13 +1,15 @@
 #pragma once
 // The exact engine's event queue: one entry per particle, holding the earliest
 // event predicted for it, in a calendar queue (R. Brown, CACM 1988). Entries
-// sit in time buckets of width `width_`, each a doubly linked list; entries
+// sit in time buckets of width `width_`, each a linked list; entries
 // beyond the buckets' window wait in an overflow list. Replacing an entry is
 // O(1), and finding the earliest scans the first non-empty bucket, which
 // holds about one entry. Unlike a heap, the work per event stays in a few
 // cache lines however many particles there are. When the window is used up,
 // it is rebuilt from the overflow, its width chosen so that the next N / 2
 // events fill about half of it.
+
+#include "bucket_lists.hpp"
 
 #include <algorithm>
 #include <cstdint>
@@ -40,9 +42,8 @@ class EventCalendar {
 public:
     // Every owner starts with `initial`; replace() sets each.
     EventCalendar(std::uint32_t owners, const Event& initial)
-        : buckets_(bucket_count_for(owners)), head_(buckets_ + 1, none), next_(owners, none), previous_(owners, none),
-          where_(owners, overflow()), events_(owners, initial) {
-        for (std::uint32_t owner = 0; owner < owners; ++owner) link(owner, overflow());
+        : buckets_(bucket_count_for(owners)), lists_(buckets_ + 1, owners), events_(owners, initial) {
+        for (std::uint32_t owner = 0; owner < owners; ++owner) lists_.insert(owner, overflow());
         current_ = buckets_;  // the window is empty: the first earliest() builds it
     }
 
@@ -55,9 +56,8 @@ public:
     [[nodiscard]] const Event& earliest() { return events_[earliest_owner()]; }
 
     void replace(std::uint32_t owner, const Event& event) {
-        unlink(owner);
         events_[owner] = event;
-        link(owner, bucket_of(event.time));
+        lists_.move(owner, bucket_of(event.time));
         if (owner == earliest_) {
             earliest_ = none;
         } else if (earliest_ != none && event < events_[earliest_]) {
@@ -66,7 +66,7 @@ public:
     }
 
 private:
-    static constexpr std::uint32_t none = std::numeric_limits<std::uint32_t>::max();
+    static constexpr std::uint32_t none = BucketLists::none;
 
     static std::uint32_t bucket_count_for(std::uint32_t owners) {
         std::uint32_t count = 16;
@@ -84,41 +84,23 @@ private:
         return std::max(current_, static_cast<std::uint32_t>(std::max(offset, 0.0)));
     }
 
-    void link(std::uint32_t owner, std::uint32_t bucket) {
-        where_[owner] = bucket;
-        previous_[owner] = none;
-        next_[owner] = head_[bucket];
-        if (head_[bucket] != none) previous_[head_[bucket]] = owner;
-        head_[bucket] = owner;
-    }
-    void unlink(std::uint32_t owner) {
-        const std::uint32_t before = previous_[owner];
-        const std::uint32_t after = next_[owner];
-        if (before != none) {
-            next_[before] = after;
-        } else {
-            head_[where_[owner]] = after;
-        }
-        if (after != none) previous_[after] = before;
-    }
-
     void find_earliest() {
-        while (current_ < buckets_ && head_[current_] == none) ++current_;
+        while (current_ < buckets_ && lists_.first(current_) == none) ++current_;
         if (current_ == buckets_) rebuild_window();
         const std::uint32_t bucket = current_ < buckets_ ? current_ : overflow();
-        std::uint32_t best = head_[bucket];
-        for (std::uint32_t k = next_[best]; k != none; k = next_[k]) {
+        std::uint32_t best = lists_.first(bucket);
+        lists_.for_each_in(bucket, [&](std::uint32_t k) {
             if (events_[k] < events_[best]) best = k;
-        }
+        });
         earliest_ = best;
     }
 
     // Moves the overflow's earliest events into a fresh window of buckets.
     void rebuild_window() {
         times_.clear();
-        for (std::uint32_t k = head_[overflow()]; k != none; k = next_[k]) {
+        lists_.for_each_in(overflow(), [&](std::uint32_t k) {
             if (events_[k].time < std::numeric_limits<double>::infinity()) times_.push_back(events_[k].time);
-        }
+        });
         if (times_.empty()) return;  // nothing will ever happen: earliest is any entry, at `never`
         const auto first = std::min_element(times_.begin(), times_.end());
         base_ = *first;
@@ -129,20 +111,17 @@ private:
         // positive width even when many events share one instant.
         width_ = spread > 0.0 ? spread / static_cast<double>(buckets_ / 2) : std::max(std::abs(base_) * 1e-12, 1e-300);
         current_ = 0;
-        std::uint32_t k = head_[overflow()];
-        head_[overflow()] = none;
-        while (k != none) {
-            const std::uint32_t following = next_[k];
-            link(k, bucket_of(events_[k].time));
+        // An entry that stays in the overflow goes back to its head, behind
+        // the walk: each entry is visited once.
+        for (std::uint32_t k = lists_.first(overflow()); k != none;) {
+            const std::uint32_t following = lists_.next(k);
+            lists_.move(k, bucket_of(events_[k].time));
             k = following;
         }
     }
 
     std::uint32_t buckets_;
-    std::vector<std::uint32_t> head_;  // by bucket; the last is the overflow
-    std::vector<std::uint32_t> next_;
-    std::vector<std::uint32_t> previous_;
-    std::vector<std::uint32_t> where_;  // each owner's bucket
+    BucketLists lists_;                 // owners by bucket; the last bucket is the overflow
     std::vector<Event> events_;         // by owner
     std::vector<double> times_;         // scratch of rebuild_window()
     double base_ = 0.0;                 // start time of bucket 0

@@ -1,0 +1,60 @@
+#pragma once
+// Items 0 .. n-1, each in one of a fixed number of buckets, every bucket a
+// doubly linked list threaded through per-item arrays: O(1) insert, remove
+// and move, no allocation after construction. The exact engine's cell lists
+// (particles by cell) and its calendar queue (particles by time bucket) are
+// both this.
+
+#include <cstdint>
+#include <vector>
+
+namespace particlesim {
+
+class BucketLists {
+public:
+    static constexpr std::uint32_t none = 0xffffffffU;  // below any particle count the engines accept
+
+    // Every item starts in no bucket; insert() places it.
+    BucketLists(std::size_t buckets, std::size_t items)
+        : head_(buckets, none), next_(items, none), previous_(items, none), bucket_(items, 0) {}
+
+    [[nodiscard]] std::uint32_t bucket_of(std::uint32_t item) const { return bucket_[item]; }
+    [[nodiscard]] std::uint32_t first(std::uint32_t bucket) const { return head_[bucket]; }
+    [[nodiscard]] std::uint32_t next(std::uint32_t item) const { return next_[item]; }
+
+    void insert(std::uint32_t item, std::uint32_t bucket) {
+        bucket_[item] = bucket;
+        previous_[item] = none;
+        next_[item] = head_[bucket];
+        if (head_[bucket] != none) previous_[head_[bucket]] = item;
+        head_[bucket] = item;
+    }
+    void remove(std::uint32_t item) {
+        const std::uint32_t before = previous_[item];
+        const std::uint32_t after = next_[item];
+        if (before != none) {
+            next_[before] = after;
+        } else {
+            head_[bucket_[item]] = after;
+        }
+        if (after != none) previous_[after] = before;
+    }
+    void move(std::uint32_t item, std::uint32_t bucket) {
+        remove(item);
+        insert(item, bucket);
+    }
+
+    // visit(item) for every item in the bucket.
+    template <typename Visit>
+    void for_each_in(std::uint32_t bucket, Visit&& visit) const {
+        for (std::uint32_t item = head_[bucket]; item != none; item = next_[item]) visit(item);
+    }
+
+private:
+    std::vector<std::uint32_t> head_;
+    std::vector<std::uint32_t> next_;
+    std::vector<std::uint32_t> previous_;
+    std::vector<std::uint32_t> bucket_;
+};
+
+}  // namespace particlesim
