@@ -1,6 +1,7 @@
 #include "particlesim/grid_search.hpp"
 
 #include "parallel.hpp"
+#include "slot_grid.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -15,6 +16,8 @@ constexpr std::uint32_t absent_marker = std::numeric_limits<std::uint32_t>::max(
 constexpr std::uint32_t large_marker = absent_marker - 1;
 
 constexpr int max_slices = 64;
+// Slot grids store float bounds; boxes up to this size stay far inside float's range.
+constexpr double max_slot_box_size = 1e30;
 // Auto grids hold at most ~4 cells per particle (memory O(N)).
 // Below this many particles, threads take whole slices.
 constexpr std::size_t slice_parallel_below = 50000;
@@ -44,7 +47,23 @@ struct CellMapper {
     }
 };
 
+// The part of a box that can meet boxes binned in the grid (which lie within
+// a cell of the walls), so that a huge box still has float bounds.
+SweptBox within_grid(const SweptBox& box, double box_size) {
+    const auto clip = [&](double value) { return std::clamp(value, -box_size, 2.0 * box_size); };
+    return {clip(box.min_x), clip(box.min_y), clip(box.max_x), clip(box.max_y)};
+}
+
+FloatBox float_bounds(const SweptBox& box) {
+    return {float_at_most(box.min_x), float_at_most(box.min_y), float_at_least(box.max_x), float_at_least(box.max_y)};
+}
+
 }  // namespace
+
+GridSearch::GridSearch() = default;
+GridSearch::~GridSearch() = default;
+GridSearch::GridSearch(GridSearch&&) noexcept = default;
+GridSearch& GridSearch::operator=(GridSearch&&) noexcept = default;
 
 GridLayout GridSearch::choose_layout(const PairSearchInput& in, int forced_cells, int threads) {
     const auto count = static_cast<std::int64_t>(in.particles.size());
@@ -108,24 +127,35 @@ void GridSearch::find_pairs(const PairSearchInput& in, int forced_cells, std::sp
     forced_cells = std::min(forced_cells, max_forced_grid_cells);
     const int threads = static_cast<int>(buffers.size());
     layout_ = choose_layout(in, forced_cells, threads);
+    box_size_ = in.box.upper + in.box.lower;
 
     const std::size_t count = in.particles.size();
-    const auto cells = static_cast<std::size_t>(layout_.cells_per_side) * static_cast<std::size_t>(layout_.cells_per_side);
+    if (use_slots(count)) {
+        // Every thread takes whole slices, each into a slot grid of its own.
+        const int workers = std::min(threads, layout_.slices);
+        slot_workspaces_.resize(static_cast<std::size_t>(workers));
+        for (SlotWorkspace& ws : slot_workspaces_) {
+            if (!ws.grid) ws.grid = std::make_unique<SlotGrid>();
+            ws.grid->reset(layout_.cells_per_side);
+            ws.aside.reserve(count);
+            ws.aside_boxes.reserve(count);
+        }
+        workspaces_.resize(static_cast<std::size_t>(workers));
+        parallel_for_dynamic(workers, layout_.slices, 1, [&](std::int64_t slice, std::size_t thread) {
+            if (process_slice_in_slots(in, static_cast<int>(slice), slot_workspaces_[thread], buffers[thread])) return;
+            // Crowded cells: this slice goes through the sorted cell lists.
+            prepare(workspaces_[thread], count);
+            process_slice(in, static_cast<int>(slice), workspaces_[thread], buffers.subspan(thread, 1), 1);
+        });
+        return;
+    }
+
     // Small scenes: one thread a slice, each with buffers of its own (fixed by
     // the scene, so they are allocated once). Large scenes: all threads share
     // each slice, and one set of buffers keeps the memory per particle low.
     const bool parallel_slices = threads >= 2 && count < slice_parallel_below;
     workspaces_.resize(parallel_slices ? static_cast<std::size_t>(threads) : 1);
-    for (SliceWorkspace& ws : workspaces_) {
-        ws.cell_of.resize(count);
-        ws.by_cell.resize(count);
-        ws.boxes_by_cell.resize(count);
-        ws.states_by_cell.resize(count);
-        ws.cell_start.resize(cells + 1);
-        ws.cell_fill.resize(cells);
-        ws.large.reserve(count);
-        ws.large_boxes.reserve(count);
-    }
+    for (SliceWorkspace& ws : workspaces_) prepare(ws, count);
 
     if (parallel_slices) {
         parallel_for_dynamic(std::min(threads, layout_.slices), layout_.slices, 1, [&](std::int64_t slice, std::size_t thread) {
@@ -137,6 +167,77 @@ void GridSearch::find_pairs(const PairSearchInput& in, int forced_cells, std::sp
             process_slice(in, slice, workspaces_[0], buffers, workers);
         }
     }
+}
+
+void GridSearch::prepare(SliceWorkspace& ws, std::size_t count) const {
+    const auto cells = static_cast<std::size_t>(layout_.cells_per_side) * static_cast<std::size_t>(layout_.cells_per_side);
+    ws.cell_of.resize(count);
+    ws.by_cell.resize(count);
+    ws.boxes_by_cell.resize(count);
+    ws.states_by_cell.resize(count);
+    ws.cell_start.resize(cells + 1);
+    ws.cell_fill.resize(cells);
+    ws.large.reserve(count);
+    ws.large_boxes.reserve(count);
+}
+
+bool GridSearch::use_slots(std::size_t count) const {
+    // Slots pay where each particle is binned several times a step; their
+    // grid costs memory per cell, so only grids of at most ~4 cells per
+    // particle use them (automatic grids always are; large forced ones not).
+    // Their float bounds need coordinates well inside float's range.
+    const auto cells = static_cast<double>(layout_.cells_per_side) * layout_.cells_per_side;
+    return layout_.slices > 1 && cells <= 4.0 * static_cast<double>(count) + 64.0 && box_size_ <= max_slot_box_size;
+}
+
+bool GridSearch::process_slice_in_slots(const PairSearchInput& in, int slice, SlotWorkspace& ws,
+                                        ThreadCandidates& out) const {
+    const double begin = in.duration * slice / layout_.slices;
+    const double end = slice + 1 == layout_.slices ? in.duration : in.duration * (slice + 1) / layout_.slices;
+    const CellMapper cell_of{1.0 / layout_.cell_size, layout_.cells_per_side};
+    const double fit = layout_.cell_size * cell_fit_slack;
+    const auto count = static_cast<std::uint32_t>(in.particles.size());
+    SlotGrid& grid = *ws.grid;
+    ws.aside.clear();
+    ws.aside_boxes.clear();
+
+    // Boxes that fit a cell but find it full are tested against every other
+    // box set aside; beyond this many, sorted cell lists are cheaper.
+    const std::size_t overflow_limit = 32 + static_cast<std::size_t>(std::sqrt(8.0 * count));
+    std::size_t overflow = 0;
+    for (std::uint32_t i = 0; i < count; ++i) {
+        const double sweep_end = sweep_end_[i];
+        if (!(sweep_end > 0.0) || sweep_end < begin) continue;
+        const SweptBox box = swept_box(in.particles[i], begin, std::min(end, sweep_end));
+        const bool fits = box.max_x - box.min_x <= fit && box.max_y - box.min_y <= fit;
+        if (fits) {
+            if (grid.insert(cell_of(box.min_x), cell_of(box.min_y), float_bounds(box), i)) continue;
+            if (++overflow > overflow_limit) {
+                grid.clear();
+                return false;
+            }
+        }
+        ws.aside.push_back(i);
+        ws.aside_boxes.push_back(box);
+    }
+
+    const auto test = [&](std::uint32_t a, std::uint32_t b) { test_pair(in, std::min(a, b), std::max(a, b), out); };
+    grid.for_each_overlap(test);
+    // Boxes set aside: against the cells whose boxes can reach them (as in
+    // test_large_pairs), then against each other.
+    const std::size_t aside_count = ws.aside.size();
+    for (std::size_t k = 0; k < aside_count; ++k) {
+        const std::uint32_t a = ws.aside[k];
+        const SweptBox& box = ws.aside_boxes[k];
+        grid.for_each_in_region(std::max(cell_of(box.min_x) - 1, 0), std::max(cell_of(box.min_y) - 1, 0),
+                                cell_of(box.max_x), cell_of(box.max_y), float_bounds(within_grid(box, box_size_)),
+                                [&](std::uint32_t b) { test(a, b); });
+        for (std::size_t other = k + 1; other < aside_count; ++other) {
+            if (box.overlaps(ws.aside_boxes[other])) test(a, ws.aside[other]);
+        }
+    }
+    grid.clear();
+    return true;
 }
 
 void GridSearch::process_slice(const PairSearchInput& in, int slice, SliceWorkspace& ws,

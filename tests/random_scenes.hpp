@@ -50,4 +50,30 @@ inline TestScene make(std::uint64_t k) {
     return scene;
 }
 
+// Scene number `k` of a family where a cluster of particles shares a few
+// grid cells, fast enough to be binned over many time slices: small
+// clusters overflow a few cells, large ones crowd them.
+inline TestScene make_clustered(std::uint64_t k) {
+    using namespace particlesim;
+    SplitMix64 rng(5000 + k);
+    TestScene scene;
+    const double box_size = 20000.0;
+    scene.params = SimParams{box_size, 1.0, 20, OutputMode::perf};
+    const std::size_t spread = 100 + rng.next() % 400;
+    const std::size_t clustered = k % 2 == 0 ? 20 + rng.next() % 60 : 300 + rng.next() % 300;
+    const double patch = 5.0 + 200.0 * rng.uniform();
+    const double corner = 1.0 + rng.uniform() * (box_size - patch - 2.0);
+    for (std::size_t i = 0; i < spread + clustered; ++i) {
+        Particle p;
+        const double extent = i < spread ? box_size - 2.0 : patch;
+        const double origin = i < spread ? 1.0 : corner;
+        p.position = Vec2(origin + rng.uniform() * extent, origin + rng.uniform() * extent);
+        const double speed = box_size / 8.0 * (1.0 + rng.uniform());
+        const double angle = 6.283185307179586 * rng.uniform();
+        p.velocity = Vec2(speed * std::cos(angle), speed * std::sin(angle));
+        scene.particles.push_back(p);
+    }
+    return scene;
+}
+
 }  // namespace random_scenes

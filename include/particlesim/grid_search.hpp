@@ -12,10 +12,13 @@
 #include "particlesim/pair_search.hpp"
 
 #include <cstdint>
+#include <memory>
 #include <span>
 #include <vector>
 
 namespace particlesim {
+
+class SlotGrid;
 
 // The largest forced grid (G x G cells); larger requests are clamped to it,
 // so that the cell arrays stay a modest size.
@@ -41,6 +44,11 @@ struct SweptBox {
 
 class GridSearch {
 public:
+    GridSearch();
+    ~GridSearch();
+    GridSearch(GridSearch&&) noexcept;
+    GridSearch& operator=(GridSearch&&) noexcept;
+
     // forced_cells > 0 imposes a G x G grid (still exact); 0 sizes it from the
     // particles' motion in this step and r.
     void find_pairs(const PairSearchInput& in, int forced_cells, std::span<ThreadCandidates> buffers);
@@ -59,11 +67,22 @@ public:
         std::vector<SweptBox> large_boxes;   // their boxes, in the same order
     };
 
+    // Per-thread buffers of a slice binned into slots (fast, sparse scenes).
+    struct SlotWorkspace {
+        std::unique_ptr<SlotGrid> grid;
+        std::vector<std::uint32_t> aside;  // particles whose box exceeds a cell or found it full
+        std::vector<SweptBox> aside_boxes;  // their boxes, in the same order
+    };
+
 private:
     [[nodiscard]] SweptBox swept_box(const Particle& particle, double begin, double end) const;
     GridLayout choose_layout(const PairSearchInput& in, int forced_cells, int threads);
+    [[nodiscard]] bool use_slots(std::size_t count) const;
     void process_slice(const PairSearchInput& in, int slice, SliceWorkspace& ws, std::span<ThreadCandidates> out,
                        int threads) const;
+    // False (and nothing tested) when too many cells overflow.
+    bool process_slice_in_slots(const PairSearchInput& in, int slice, SlotWorkspace& ws, ThreadCandidates& out) const;
+    void prepare(SliceWorkspace& ws, std::size_t count) const;
     void bin_slice(const PairSearchInput& in, int slice, SliceWorkspace& ws, int threads) const;
     void test_small_pairs(const PairSearchInput& in, const SliceWorkspace& ws, std::span<ThreadCandidates> out,
                           int threads) const;
@@ -77,9 +96,11 @@ private:
     };
 
     GridLayout layout_;
+    double box_size_ = 0.0;  // L of the current step
     std::vector<BlockSums> block_sums_;
     std::vector<double> sweep_end_;  // by particle: min(duration, wall time)
     std::vector<SliceWorkspace> workspaces_;
+    std::vector<SlotWorkspace> slot_workspaces_;
 };
 
 }  // namespace particlesim
