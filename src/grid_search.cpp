@@ -6,7 +6,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
-#include <numeric>
+#include <utility>
 
 namespace particlesim {
 
@@ -144,7 +144,7 @@ void GridSearch::find_pairs(const PairSearchInput& in, int forced_cells, std::sp
         parallel_for_dynamic(workers, layout_.slices, 1, [&](std::int64_t slice, std::size_t thread) {
             if (process_slice_in_slots(in, static_cast<int>(slice), slot_workspaces_[thread], buffers[thread])) return;
             // Crowded cells: this slice goes through the sorted cell lists.
-            prepare(workspaces_[thread], count);
+            prepare(workspaces_[thread], count, 1);
             process_slice(in, static_cast<int>(slice), workspaces_[thread], buffers.subspan(thread, 1), 1);
         });
         return;
@@ -154,29 +154,29 @@ void GridSearch::find_pairs(const PairSearchInput& in, int forced_cells, std::sp
     // the scene, so they are allocated once). Large scenes: all threads share
     // each slice, and one set of buffers keeps the memory per particle low.
     const bool parallel_slices = threads >= 2 && count < slice_parallel_below;
+    const int workers = worker_count(buffers.size(), static_cast<std::int64_t>(count), min_particles_per_thread);
     workspaces_.resize(parallel_slices ? static_cast<std::size_t>(threads) : 1);
-    for (SliceWorkspace& ws : workspaces_) prepare(ws, count);
+    for (SliceWorkspace& ws : workspaces_) prepare(ws, count, parallel_slices ? 1 : workers);
 
     if (parallel_slices) {
         parallel_for_dynamic(std::min(threads, layout_.slices), layout_.slices, 1, [&](std::int64_t slice, std::size_t thread) {
             process_slice(in, static_cast<int>(slice), workspaces_[thread], buffers.subspan(thread, 1), 1);
         });
     } else {
-        const int workers = worker_count(buffers.size(), static_cast<std::int64_t>(count), min_particles_per_thread);
         for (int slice = 0; slice < layout_.slices; ++slice) {
             process_slice(in, slice, workspaces_[0], buffers, workers);
         }
     }
 }
 
-void GridSearch::prepare(SliceWorkspace& ws, std::size_t count) const {
+void GridSearch::prepare(SliceWorkspace& ws, std::size_t count, int workers) const {
     const auto cells = static_cast<std::size_t>(layout_.cells_per_side) * static_cast<std::size_t>(layout_.cells_per_side);
     ws.cell_of.resize(count);
     ws.by_cell.resize(count);
     ws.boxes_by_cell.resize(count);
     ws.states_by_cell.resize(count);
     ws.cell_start.resize(cells + 1);
-    ws.cell_fill.resize(cells);
+    ws.cell_fill.resize(cells * static_cast<std::size_t>(workers));  // a count per cell and worker
     ws.large.reserve(count);
     ws.large_boxes.reserve(count);
 }
@@ -247,14 +247,6 @@ void GridSearch::process_slice(const PairSearchInput& in, int slice, SliceWorksp
     test_large_pairs(in, ws, out, threads);
 }
 
-SweptBox GridSearch::swept_box(const Particle& particle, double begin, double end) const {
-    const Vec2 from = particle.position + particle.velocity * begin;
-    const Vec2 to = particle.position + particle.velocity * end;
-    const double reach = layout_.reach;
-    return {std::min(from.x(), to.x()) - reach, std::min(from.y(), to.y()) - reach, std::max(from.x(), to.x()) + reach,
-            std::max(from.y(), to.y()) + reach};
-}
-
 void GridSearch::bin_slice(const PairSearchInput& in, int slice, SliceWorkspace& ws, int threads) const {
     const double begin = in.duration * slice / layout_.slices;
     const double end = slice + 1 == layout_.slices ? in.duration : in.duration * (slice + 1) / layout_.slices;
@@ -264,41 +256,62 @@ void GridSearch::bin_slice(const PairSearchInput& in, int slice, SliceWorkspace&
     // The path of particle i in this slice ends at its sweep end, if earlier.
     const auto slice_end = [&](std::int64_t i) { return std::min(end, sweep_end_[i]); };
 
-    parallel_for(threads, count, [&](std::int64_t i, std::size_t) {
-        const double sweep_end = sweep_end_[i];
-        if (!(sweep_end > 0.0) || sweep_end < begin) {
-            ws.cell_of[i] = absent_marker;
-            return;
+    // Counting sort of the fitting boxes by cell, the large ones aside. Each
+    // worker counts and then places a contiguous block of particles, so every
+    // cell lists its particles in index order whatever the worker count.
+    const auto cells = static_cast<std::int64_t>(ws.cell_start.size()) - 1;
+    const std::int64_t block = (count + threads - 1) / threads;
+    const auto block_of = [&](std::int64_t worker) {
+        return std::pair{worker * block, std::min(count, (worker + 1) * block)};
+    };
+    parallel_for(threads, threads, [&](std::int64_t worker, std::size_t) {
+        std::uint32_t* counts = ws.cell_fill.data() + worker * cells;
+        std::fill(counts, counts + cells, 0U);
+        const auto [first, last] = block_of(worker);
+        for (std::int64_t i = first; i < last; ++i) {
+            const double sweep_end = sweep_end_[i];
+            if (!(sweep_end > 0.0) || sweep_end < begin) {
+                ws.cell_of[i] = absent_marker;
+                continue;
+            }
+            const SweptBox box = swept_box(in.particles[i], begin, slice_end(i));
+            const bool fits = box.max_x - box.min_x <= fit && box.max_y - box.min_y <= fit;
+            const auto cell = static_cast<std::uint32_t>(cell_of(box.min_y) * layout_.cells_per_side + cell_of(box.min_x));
+            ws.cell_of[i] = fits ? cell : large_marker;
+            if (fits) ++counts[cell];
         }
-        const SweptBox box = swept_box(in.particles[i], begin, slice_end(i));
-        const bool fits = box.max_x - box.min_x <= fit && box.max_y - box.min_y <= fit;
-        ws.cell_of[i] = fits ? static_cast<std::uint32_t>(cell_of(box.min_y) * layout_.cells_per_side + cell_of(box.min_x))
-                             : large_marker;
     });
 
-    // Counting sort of the fitting boxes by cell; the large ones aside.
-    std::fill(ws.cell_start.begin(), ws.cell_start.end(), 0U);
-    ws.large.clear();
-    ws.large_boxes.clear();
-    for (std::int64_t i = 0; i < count; ++i) {
-        const std::uint32_t cell = ws.cell_of[i];
-        if (cell < large_marker) {
-            ++ws.cell_start[cell + 1];
-        } else if (cell == large_marker) {
-            ws.large.push_back(static_cast<std::uint32_t>(i));
-            ws.large_boxes.push_back(swept_box(in.particles[i], begin, slice_end(i)));
+    // Each worker's first place in each cell, cell by cell.
+    std::uint32_t placed = 0;
+    for (std::int64_t cell = 0; cell < cells; ++cell) {
+        ws.cell_start[cell] = placed;
+        for (std::int64_t worker = 0; worker < threads; ++worker) {
+            std::uint32_t& fill = ws.cell_fill[worker * cells + cell];
+            placed += std::exchange(fill, placed);
         }
     }
-    std::partial_sum(ws.cell_start.begin(), ws.cell_start.end(), ws.cell_start.begin());
-    std::copy_n(ws.cell_start.begin(), ws.cell_fill.size(), ws.cell_fill.begin());
-    for (std::int64_t i = 0; i < count; ++i) {
-        const std::uint32_t cell = ws.cell_of[i];
-        if (cell < large_marker) {
-            const std::uint32_t at = ws.cell_fill[cell]++;
+    ws.cell_start[cells] = placed;
+
+    parallel_for(threads, threads, [&](std::int64_t worker, std::size_t) {
+        std::uint32_t* fill = ws.cell_fill.data() + worker * cells;
+        const auto [first, last] = block_of(worker);
+        for (std::int64_t i = first; i < last; ++i) {
+            const std::uint32_t cell = ws.cell_of[i];
+            if (cell >= large_marker) continue;
+            const std::uint32_t at = fill[cell]++;
             ws.by_cell[at] = static_cast<std::uint32_t>(i);
             ws.boxes_by_cell[at] = swept_box(in.particles[i], begin, slice_end(i));
             ws.states_by_cell[at] = pair_test_state(in, static_cast<std::uint32_t>(i));
         }
+    });
+
+    ws.large.clear();
+    ws.large_boxes.clear();
+    for (std::int64_t i = 0; i < count; ++i) {
+        if (ws.cell_of[i] != large_marker) continue;
+        ws.large.push_back(static_cast<std::uint32_t>(i));
+        ws.large_boxes.push_back(swept_box(in.particles[i], begin, slice_end(i)));
     }
 }
 

@@ -14,6 +14,7 @@ namespace particlesim {
 // Below these amounts a parallel region costs more than it saves.
 inline constexpr std::int64_t min_particles_per_thread = 2048;
 inline constexpr std::int64_t min_pair_work_per_thread = 4096;
+inline constexpr std::int64_t min_candidates_per_thread = 16384;
 
 inline int worker_count(std::size_t available, std::int64_t work, std::int64_t min_work_per_thread) {
     const std::int64_t useful = std::max<std::int64_t>(1, work / min_work_per_thread);

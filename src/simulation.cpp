@@ -73,7 +73,7 @@ void Simulation::micro_step(double duration) {
     }
     detect_wall_candidates(particles_, box_, duration, wall_time_, candidates_, threads_);
     find_pair_candidates({particles_, wall_time_, box_, duration});
-    order_candidates(candidates_, thread_candidates_);
+    order_candidates(candidates_, thread_candidates_, merge_scratch_, threads_);
     select_collisions(candidates_, busy_, accepted_);
     resolve_collisions(particles_, accepted_, box_, duration, threads_);
     advance_free_particles(particles_, busy_, accepted_, box_, duration, threads_);

@@ -19,12 +19,30 @@ void detect_wall_candidates(std::span<const Particle> particles, const Box& box,
     }
 }
 
-void order_candidates(std::vector<Collision>& candidates, std::span<ThreadCandidates> found) {
+void order_candidates(std::vector<Collision>& candidates, std::span<ThreadCandidates> found,
+                      std::vector<Collision>& scratch, int threads) {
     for (ThreadCandidates& thread : found) {
         candidates.insert(candidates.end(), thread.found.begin(), thread.found.end());
     }
-    if (candidates.size() < 2) return;
-    std::sort(candidates.begin(), candidates.end());
+    const auto count = static_cast<std::int64_t>(candidates.size());
+    if (count < 2) return;
+    // Busy steps: each worker sorts a part, then the parts are merged in
+    // pairs. The total order makes the result the same as one sort.
+    const int workers = worker_count(static_cast<std::size_t>(threads), count, min_candidates_per_thread);
+    const auto part_start = [&](std::int64_t part) { return candidates.begin() + part * count / workers; };
+    parallel_for(workers, workers, [&](std::int64_t part, std::size_t) {
+        std::sort(part_start(part), part_start(part + 1));
+    });
+    for (int width = 1; width < workers; width *= 2) {
+        scratch.resize(candidates.size());
+        for (int first = 0; first < workers; first += 2 * width) {
+            const int middle = std::min(first + width, workers);
+            const int last = std::min(first + 2 * width, workers);
+            std::merge(part_start(first), part_start(middle), part_start(middle), part_start(last),
+                       scratch.begin() + (part_start(first) - candidates.begin()));
+        }
+        candidates.swap(scratch);
+    }
     candidates.erase(std::unique(candidates.begin(), candidates.end()), candidates.end());
 }
 

@@ -30,7 +30,8 @@ std::vector<Collision> pair_candidates(const PairSearchInput& in, int grid_cells
         grid.find_pairs(in, grid_cells, buffers);
     }
     std::vector<Collision> all;
-    order_candidates(all, buffers);
+    std::vector<Collision> scratch;
+    order_candidates(all, buffers, scratch, threads);
     return all;
 }
 

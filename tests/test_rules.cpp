@@ -3,6 +3,7 @@
 
 #include "check.hpp"
 
+#include "particlesim/random.hpp"
 #include "particlesim/simulation.hpp"
 #include "particlesim/step_pipeline.hpp"
 
@@ -26,7 +27,8 @@ void order_encodes_the_tie_rules() {
     std::vector<Collision> candidates{Collision::pair(0.5, 1, 2), Collision::wall(0.5, 1), Collision::pair(0.5, 0, 2),
                                       Collision::pair(0.3, 3, 4), Collision::pair(0.5, 0, 2)};
     std::vector<ThreadCandidates> none(1);
-    order_candidates(candidates, none);
+    std::vector<Collision> scratch;
+    order_candidates(candidates, none, scratch, 1);
     // Sorted by time, walls before pairs at equal time, then by indices; the
     // duplicate (0, 2) found twice by a search is kept once.
     const std::vector<Collision> expected{Collision::pair(0.3, 3, 4), Collision::wall(0.5, 1), Collision::pair(0.5, 0, 2),
@@ -125,8 +127,35 @@ void invalid_scenes_are_refused() {
 
 }  // namespace
 
+// Busy steps sort in parallel parts and merge them: the result must be the
+// one sorted, duplicate-free list, whatever the thread count. Times are drawn
+// from few values, so ties and duplicates straddle the parts.
+void parallel_order_equals_one_sort() {
+    SplitMix64 rng(11);
+    std::vector<Collision> drawn;
+    for (int k = 0; k < 150000; ++k) {
+        const double time = static_cast<double>(rng.next() % 64) / 64.0;
+        const auto i = static_cast<std::uint32_t>(rng.next() % 500);
+        drawn.push_back(rng.next() % 3 == 0 ? Collision::wall(time, i)
+                                            : Collision::pair(time, i, i + 1 + static_cast<std::uint32_t>(rng.next() % 3)));
+    }
+    std::vector<Collision> expected = drawn;
+    std::sort(expected.begin(), expected.end());
+    expected.erase(std::unique(expected.begin(), expected.end()), expected.end());
+    for (const int threads : {1, 2, 3, 8}) {
+        // Half as walls already in the list, half as found by the threads.
+        std::vector<Collision> candidates(drawn.begin(), drawn.begin() + 75000);
+        std::vector<ThreadCandidates> found(static_cast<std::size_t>(threads));
+        for (std::size_t k = 75000; k < drawn.size(); ++k) found[k % found.size()].found.push_back(drawn[k]);
+        std::vector<Collision> scratch;
+        order_candidates(candidates, found, scratch, threads);
+        CHECK(candidates == expected);
+    }
+}
+
 int main() {
     order_encodes_the_tie_rules();
+    parallel_order_equals_one_sort();
     wall_beats_pair_at_equal_time();
     lowest_indices_win_among_equal_pairs();
     collision_near_wall_stops_at_wall_then_passes_through();

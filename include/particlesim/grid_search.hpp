@@ -11,6 +11,7 @@
 
 #include "particlesim/pair_search.hpp"
 
+#include <algorithm>
 #include <cstdint>
 #include <memory>
 #include <span>
@@ -59,7 +60,7 @@ public:
     struct SliceWorkspace {
         std::vector<std::uint32_t> cell_of;  // by particle: its cell, or absent / large
         std::vector<std::uint32_t> cell_start;
-        std::vector<std::uint32_t> cell_fill;
+        std::vector<std::uint32_t> cell_fill;  // per worker: its count, then its next place, in each cell
         std::vector<std::uint32_t> by_cell;  // particles sorted by cell
         std::vector<SweptBox> boxes_by_cell;  // their boxes, in the same order
         std::vector<PairTestState> states_by_cell;  // their motion, in the same order
@@ -75,14 +76,21 @@ public:
     };
 
 private:
-    [[nodiscard]] SweptBox swept_box(const Particle& particle, double begin, double end) const;
+    // Inline: it runs once per particle and slice.
+    [[nodiscard]] SweptBox swept_box(const Particle& particle, double begin, double end) const {
+        const Vec2 from = particle.position + particle.velocity * begin;
+        const Vec2 to = particle.position + particle.velocity * end;
+        const double reach = layout_.reach;
+        return {std::min(from.x(), to.x()) - reach, std::min(from.y(), to.y()) - reach,
+                std::max(from.x(), to.x()) + reach, std::max(from.y(), to.y()) + reach};
+    }
     GridLayout choose_layout(const PairSearchInput& in, int forced_cells, int threads);
     [[nodiscard]] bool use_slots(std::size_t count) const;
     void process_slice(const PairSearchInput& in, int slice, SliceWorkspace& ws, std::span<ThreadCandidates> out,
                        int threads) const;
     // False (and nothing tested) when too many cells overflow.
     bool process_slice_in_slots(const PairSearchInput& in, int slice, SlotWorkspace& ws, ThreadCandidates& out) const;
-    void prepare(SliceWorkspace& ws, std::size_t count) const;
+    void prepare(SliceWorkspace& ws, std::size_t count, int workers) const;
     void bin_slice(const PairSearchInput& in, int slice, SliceWorkspace& ws, int threads) const;
     void test_small_pairs(const PairSearchInput& in, const SliceWorkspace& ws, std::span<ThreadCandidates> out,
                           int threads) const;

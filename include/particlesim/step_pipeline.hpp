@@ -24,8 +24,10 @@ void detect_wall_candidates(std::span<const Particle> particles, const Box& box,
                             std::span<double> wall_time, std::vector<Collision>& candidates, int threads);
 
 // Appends the pair candidates found by each thread to `candidates`, sorts all
-// by the total order and removes the duplicates a pair search may produce.
-void order_candidates(std::vector<Collision>& candidates, std::span<ThreadCandidates> found);
+// by the total order (on up to `threads` threads, merging through `scratch`)
+// and removes the duplicates a pair search may produce.
+void order_candidates(std::vector<Collision>& candidates, std::span<ThreadCandidates> found,
+                      std::vector<Collision>& scratch, int threads);
 
 // Accepts, in order, each candidate whose particles are still free and marks
 // them `busy`.
