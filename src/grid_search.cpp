@@ -176,7 +176,7 @@ void GridSearch::prepare(SliceWorkspace& ws, std::size_t count, int workers) con
     ws.boxes_by_cell.resize(count);
     ws.states_by_cell.resize(count);
     ws.cell_start.resize(cells + 1);
-    ws.cell_fill.resize(cells * static_cast<std::size_t>(workers));  // a count per cell and worker
+    ws.cell_fill.resize(cells * static_cast<std::size_t>(workers - 1));  // counts of workers 1, 2, ...
     ws.large.reserve(count);
     ws.large_boxes.reserve(count);
 }
@@ -259,13 +259,17 @@ void GridSearch::bin_slice(const PairSearchInput& in, int slice, SliceWorkspace&
     // Counting sort of the fitting boxes by cell, the large ones aside. Each
     // worker counts and then places a contiguous block of particles, so every
     // cell lists its particles in index order whatever the worker count.
+    // Worker 0 counts in cell_start itself, the others in cell_fill.
     const auto cells = static_cast<std::int64_t>(ws.cell_start.size()) - 1;
     const std::int64_t block = (count + threads - 1) / threads;
     const auto block_of = [&](std::int64_t worker) {
         return std::pair{worker * block, std::min(count, (worker + 1) * block)};
     };
+    const auto counts_of = [&](std::int64_t worker) {
+        return worker == 0 ? ws.cell_start.data() : ws.cell_fill.data() + (worker - 1) * cells;
+    };
     parallel_for(threads, threads, [&](std::int64_t worker, std::size_t) {
-        std::uint32_t* counts = ws.cell_fill.data() + worker * cells;
+        std::uint32_t* counts = counts_of(worker);
         std::fill(counts, counts + cells, 0U);
         const auto [first, last] = block_of(worker);
         for (std::int64_t i = first; i < last; ++i) {
@@ -285,26 +289,29 @@ void GridSearch::bin_slice(const PairSearchInput& in, int slice, SliceWorkspace&
     // Each worker's first place in each cell, cell by cell.
     std::uint32_t placed = 0;
     for (std::int64_t cell = 0; cell < cells; ++cell) {
-        ws.cell_start[cell] = placed;
         for (std::int64_t worker = 0; worker < threads; ++worker) {
-            std::uint32_t& fill = ws.cell_fill[worker * cells + cell];
-            placed += std::exchange(fill, placed);
+            std::uint32_t& next = counts_of(worker)[cell];
+            placed += std::exchange(next, placed);
         }
     }
-    ws.cell_start[cells] = placed;
 
     parallel_for(threads, threads, [&](std::int64_t worker, std::size_t) {
-        std::uint32_t* fill = ws.cell_fill.data() + worker * cells;
+        std::uint32_t* next = counts_of(worker);
         const auto [first, last] = block_of(worker);
         for (std::int64_t i = first; i < last; ++i) {
             const std::uint32_t cell = ws.cell_of[i];
             if (cell >= large_marker) continue;
-            const std::uint32_t at = fill[cell]++;
+            const std::uint32_t at = next[cell]++;
             ws.by_cell[at] = static_cast<std::uint32_t>(i);
             ws.boxes_by_cell[at] = swept_box(in.particles[i], begin, slice_end(i));
             ws.states_by_cell[at] = pair_test_state(in, static_cast<std::uint32_t>(i));
         }
     });
+    // The last worker's next place in a cell is now where the next cell
+    // starts; from the top down, that overwrites only what is spent.
+    const std::uint32_t* ends = counts_of(threads - 1);
+    for (std::int64_t cell = cells - 1; cell >= 0; --cell) ws.cell_start[cell + 1] = ends[cell];
+    ws.cell_start[0] = 0;
 
     ws.large.clear();
     ws.large_boxes.clear();

@@ -4,6 +4,7 @@
 #include "particlesim/physics.hpp"
 
 #include <algorithm>
+#include <array>
 
 namespace particlesim {
 
@@ -21,27 +22,38 @@ void detect_wall_candidates(std::span<const Particle> particles, const Box& box,
 
 void order_candidates(std::vector<Collision>& candidates, std::span<ThreadCandidates> found,
                       std::vector<Collision>& scratch, int threads) {
-    for (ThreadCandidates& thread : found) {
-        candidates.insert(candidates.end(), thread.found.begin(), thread.found.end());
-    }
-    const auto count = static_cast<std::int64_t>(candidates.size());
-    if (count < 2) return;
-    // Busy steps: each worker sorts a part, then the parts are merged in
-    // pairs. The total order makes the result the same as one sort.
-    const int workers = worker_count(static_cast<std::size_t>(threads), count, min_candidates_per_thread);
-    const auto part_start = [&](std::int64_t part) { return candidates.begin() + part * count / workers; };
-    parallel_for(workers, workers, [&](std::int64_t part, std::size_t) {
-        std::sort(part_start(part), part_start(part + 1));
-    });
-    for (int width = 1; width < workers; width *= 2) {
-        scratch.resize(candidates.size());
-        for (int first = 0; first < workers; first += 2 * width) {
-            const int middle = std::min(first + width, workers);
-            const int last = std::min(first + 2 * width, workers);
-            std::merge(part_start(first), part_start(middle), part_start(middle), part_start(last),
-                       scratch.begin() + (part_start(first) - candidates.begin()));
+    std::int64_t count = static_cast<std::int64_t>(candidates.size());
+    for (const ThreadCandidates& thread : found) count += static_cast<std::int64_t>(thread.found.size());
+    // The merge keeps one cursor per list on the stack.
+    constexpr std::size_t max_merged_lists = 17;
+    const int workers = found.size() + 1 <= max_merged_lists
+                            ? worker_count(static_cast<std::size_t>(threads), count, min_candidates_per_thread)
+                            : 1;
+    if (workers <= 1) {
+        for (const ThreadCandidates& thread : found) {
+            candidates.insert(candidates.end(), thread.found.begin(), thread.found.end());
         }
-        candidates.swap(scratch);
+        std::sort(candidates.begin(), candidates.end());
+    } else {
+        // Busy steps: the walls (moved to `scratch`) and each thread's list are
+        // sorted on several threads, then merged into `candidates`. No list
+        // is copied whole, so the memory stays that of the lists themselves.
+        scratch.assign(candidates.begin(), candidates.end());
+        const auto list = [&](std::size_t k) -> std::vector<Collision>& { return k == 0 ? scratch : found[k - 1].found; };
+        const std::size_t lists = found.size() + 1;
+        parallel_for_dynamic(workers, static_cast<std::int64_t>(lists), 1, [&](std::int64_t k, std::size_t) {
+            std::sort(list(static_cast<std::size_t>(k)).begin(), list(static_cast<std::size_t>(k)).end());
+        });
+        candidates.clear();
+        std::array<std::size_t, max_merged_lists> heads{};
+        while (true) {
+            std::size_t best = lists;
+            for (std::size_t k = 0; k < lists; ++k) {
+                if (heads[k] < list(k).size() && (best == lists || list(k)[heads[k]] < list(best)[heads[best]])) best = k;
+            }
+            if (best == lists) break;
+            candidates.push_back(list(best)[heads[best]++]);
+        }
     }
     candidates.erase(std::unique(candidates.begin(), candidates.end()), candidates.end());
 }

@@ -60,7 +60,7 @@ public:
     struct SliceWorkspace {
         std::vector<std::uint32_t> cell_of;  // by particle: its cell, or absent / large
         std::vector<std::uint32_t> cell_start;
-        std::vector<std::uint32_t> cell_fill;  // per worker: its count, then its next place, in each cell
+        std::vector<std::uint32_t> cell_fill;  // per worker after the first: its count, then its next place, in each cell
         std::vector<std::uint32_t> by_cell;  // particles sorted by cell
         std::vector<SweptBox> boxes_by_cell;  // their boxes, in the same order
         std::vector<PairTestState> states_by_cell;  // their motion, in the same order
