@@ -47,6 +47,33 @@ struct CellMapper {
     }
 };
 
+// The time span of one slice. A particle's path in it runs from `begin` to
+// the particle's sweep end (its wall time or the step's end), if earlier.
+struct SliceSpan {
+    double begin, end;
+
+    [[nodiscard]] bool holds_path(double sweep_end) const { return sweep_end > 0.0 && !(sweep_end < begin); }
+    [[nodiscard]] double path_end(double sweep_end) const { return std::min(end, sweep_end); }
+};
+
+SliceSpan slice_span(const PairSearchInput& in, int slice, int slices) {
+    const double begin = in.duration * slice / slices;
+    const double end = slice + 1 == slices ? in.duration : in.duration * (slice + 1) / slices;
+    return {begin, end};
+}
+
+bool fits_cell(const SweptBox& box, double fit) {
+    return box.max_x - box.min_x <= fit && box.max_y - box.min_y <= fit;
+}
+
+// The cells whose fitting boxes can meet `box`: a fitting box that meets it
+// has its lower corner at most one cell below or left of this box's lower
+// corner.
+CellRegion cells_reaching(const SweptBox& box, const CellMapper& cell_of) {
+    return {std::max(cell_of(box.min_x) - 1, 0), std::max(cell_of(box.min_y) - 1, 0), cell_of(box.max_x),
+            cell_of(box.max_y)};
+}
+
 // The part of a box that can meet boxes binned in the grid (which lie within
 // a cell of the walls), so that a huge box still has float bounds.
 SweptBox within_grid(const SweptBox& box, double box_size) {
@@ -127,10 +154,9 @@ void GridSearch::find_pairs(const PairSearchInput& in, int forced_cells, std::sp
     forced_cells = std::min(forced_cells, max_forced_grid_cells);
     const int threads = static_cast<int>(buffers.size());
     layout_ = choose_layout(in, forced_cells, threads);
-    box_size_ = in.box.upper + in.box.lower;
 
     const std::size_t count = in.particles.size();
-    if (use_slots(count)) {
+    if (use_slots(in)) {
         // Every thread takes whole slices, each into a slot grid of its own.
         const int workers = std::min(threads, layout_.slices);
         slot_workspaces_.resize(static_cast<std::size_t>(workers));
@@ -181,19 +207,19 @@ void GridSearch::prepare(SliceWorkspace& ws, std::size_t count, int workers) con
     ws.large_boxes.reserve(count);
 }
 
-bool GridSearch::use_slots(std::size_t count) const {
+bool GridSearch::use_slots(const PairSearchInput& in) const {
     // Slots pay where each particle is binned several times a step; their
     // grid costs memory per cell, so only grids of at most ~4 cells per
     // particle use them (automatic grids always are; large forced ones not).
     // Their float bounds need coordinates well inside float's range.
     const auto cells = static_cast<double>(layout_.cells_per_side) * layout_.cells_per_side;
-    return layout_.slices > 1 && cells <= 4.0 * static_cast<double>(count) + 64.0 && box_size_ <= max_slot_box_size;
+    const auto count = static_cast<double>(in.particles.size());
+    return layout_.slices > 1 && cells <= 4.0 * count + 64.0 && in.box.upper + in.box.lower <= max_slot_box_size;
 }
 
 bool GridSearch::process_slice_in_slots(const PairSearchInput& in, int slice, SlotWorkspace& ws,
                                         ThreadCandidates& out) const {
-    const double begin = in.duration * slice / layout_.slices;
-    const double end = slice + 1 == layout_.slices ? in.duration : in.duration * (slice + 1) / layout_.slices;
+    const SliceSpan span = slice_span(in, slice, layout_.slices);
     const CellMapper cell_of{1.0 / layout_.cell_size, layout_.cells_per_side};
     const double fit = layout_.cell_size * cell_fit_slack;
     const auto count = static_cast<std::uint32_t>(in.particles.size());
@@ -206,11 +232,9 @@ bool GridSearch::process_slice_in_slots(const PairSearchInput& in, int slice, Sl
     const std::size_t overflow_limit = 32 + static_cast<std::size_t>(std::sqrt(8.0 * count));
     std::size_t overflow = 0;
     for (std::uint32_t i = 0; i < count; ++i) {
-        const double sweep_end = sweep_end_[i];
-        if (!(sweep_end > 0.0) || sweep_end < begin) continue;
-        const SweptBox box = swept_box(in.particles[i], begin, std::min(end, sweep_end));
-        const bool fits = box.max_x - box.min_x <= fit && box.max_y - box.min_y <= fit;
-        if (fits) {
+        if (!span.holds_path(sweep_end_[i])) continue;
+        const SweptBox box = swept_box(in.particles[i], span.begin, span.path_end(sweep_end_[i]));
+        if (fits_cell(box, fit)) {
             if (grid.insert(cell_of(box.min_x), cell_of(box.min_y), float_bounds(box), i)) continue;
             if (++overflow > overflow_limit) {
                 grid.clear();
@@ -229,8 +253,7 @@ bool GridSearch::process_slice_in_slots(const PairSearchInput& in, int slice, Sl
     for (std::size_t k = 0; k < aside_count; ++k) {
         const std::uint32_t a = ws.aside[k];
         const SweptBox& box = ws.aside_boxes[k];
-        grid.for_each_in_region(std::max(cell_of(box.min_x) - 1, 0), std::max(cell_of(box.min_y) - 1, 0),
-                                cell_of(box.max_x), cell_of(box.max_y), float_bounds(within_grid(box, box_size_)),
+        grid.for_each_in_region(cells_reaching(box, cell_of), float_bounds(within_grid(box, in.box.upper + in.box.lower)),
                                 [&](std::uint32_t b) { test(a, b); });
         for (std::size_t other = k + 1; other < aside_count; ++other) {
             if (box.overlaps(ws.aside_boxes[other])) test(a, ws.aside[other]);
@@ -248,13 +271,13 @@ void GridSearch::process_slice(const PairSearchInput& in, int slice, SliceWorksp
 }
 
 void GridSearch::bin_slice(const PairSearchInput& in, int slice, SliceWorkspace& ws, int threads) const {
-    const double begin = in.duration * slice / layout_.slices;
-    const double end = slice + 1 == layout_.slices ? in.duration : in.duration * (slice + 1) / layout_.slices;
+    const SliceSpan span = slice_span(in, slice, layout_.slices);
     const CellMapper cell_of{1.0 / layout_.cell_size, layout_.cells_per_side};
     const double fit = layout_.cell_size * cell_fit_slack;
     const auto count = static_cast<std::int64_t>(in.particles.size());
-    // The path of particle i in this slice ends at its sweep end, if earlier.
-    const auto slice_end = [&](std::int64_t i) { return std::min(end, sweep_end_[i]); };
+    const auto slice_box = [&](std::int64_t i) {
+        return swept_box(in.particles[i], span.begin, span.path_end(sweep_end_[i]));
+    };
 
     // Counting sort of the fitting boxes by cell, the large ones aside. Each
     // worker counts and then places a contiguous block of particles, so every
@@ -273,13 +296,12 @@ void GridSearch::bin_slice(const PairSearchInput& in, int slice, SliceWorkspace&
         std::fill(counts, counts + cells, 0U);
         const auto [first, last] = block_of(worker);
         for (std::int64_t i = first; i < last; ++i) {
-            const double sweep_end = sweep_end_[i];
-            if (!(sweep_end > 0.0) || sweep_end < begin) {
+            if (!span.holds_path(sweep_end_[i])) {
                 ws.cell_of[i] = absent_marker;
                 continue;
             }
-            const SweptBox box = swept_box(in.particles[i], begin, slice_end(i));
-            const bool fits = box.max_x - box.min_x <= fit && box.max_y - box.min_y <= fit;
+            const SweptBox box = slice_box(i);
+            const bool fits = fits_cell(box, fit);
             const auto cell = static_cast<std::uint32_t>(cell_of(box.min_y) * layout_.cells_per_side + cell_of(box.min_x));
             ws.cell_of[i] = fits ? cell : large_marker;
             if (fits) ++counts[cell];
@@ -303,7 +325,7 @@ void GridSearch::bin_slice(const PairSearchInput& in, int slice, SliceWorkspace&
             if (cell >= large_marker) continue;
             const std::uint32_t at = next[cell]++;
             ws.by_cell[at] = static_cast<std::uint32_t>(i);
-            ws.boxes_by_cell[at] = swept_box(in.particles[i], begin, slice_end(i));
+            ws.boxes_by_cell[at] = slice_box(i);
             ws.states_by_cell[at] = pair_test_state(in, static_cast<std::uint32_t>(i));
         }
     });
@@ -318,7 +340,7 @@ void GridSearch::bin_slice(const PairSearchInput& in, int slice, SliceWorkspace&
     for (std::int64_t i = 0; i < count; ++i) {
         if (ws.cell_of[i] != large_marker) continue;
         ws.large.push_back(static_cast<std::uint32_t>(i));
-        ws.large_boxes.push_back(swept_box(in.particles[i], begin, slice_end(i)));
+        ws.large_boxes.push_back(slice_box(i));
     }
 }
 
@@ -401,15 +423,11 @@ void GridSearch::test_large_pairs(const PairSearchInput& in, const SliceWorkspac
         const std::uint32_t a = ws.large[k];
         const SweptBox& box = ws.large_boxes[k];
         const PairTestState state = pair_test_state(in, a);
-        // A fitting box that meets this one has its lower corner at most one
-        // cell below or left of this box's lower corner.
-        const int x_first = std::max(cell_of(box.min_x) - 1, 0);
-        const int y_first = std::max(cell_of(box.min_y) - 1, 0);
-        const int x_last = cell_of(box.max_x);
-        const int y_last = cell_of(box.max_y);
-        for (int cy = y_first; cy <= y_last; ++cy) {
+        const CellRegion region = cells_reaching(box, cell_of);
+        for (int cy = region.y_first; cy <= region.y_last; ++cy) {
             const auto row = static_cast<std::size_t>(cy) * side;
-            test_against_range(in, ws, a, box, state, ws.cell_start[row + x_first], ws.cell_start[row + x_last + 1], found);
+            test_against_range(in, ws, a, box, state, ws.cell_start[row + region.x_first],
+                               ws.cell_start[row + region.x_last + 1], found);
         }
         for (std::int64_t other = k + 1; other < large_count; ++other) {
             const std::uint32_t b = ws.large[other];

@@ -10,7 +10,6 @@
 // double one (a few more pairs tested, never one fewer). A box that does not
 // find a free slot is refused; the caller keeps it aside.
 
-#include <algorithm>
 #include <bit>
 #include <cmath>
 #include <cstdint>
@@ -23,6 +22,11 @@ namespace particlesim {
 // Bounds of a box, rounded outwards to float.
 struct FloatBox {
     float min_x, min_y, max_x, max_y;
+};
+
+// Cells [x_first, x_last] x [y_first, y_last] of a grid.
+struct CellRegion {
+    int x_first, y_first, x_last, y_last;
 };
 
 // Rounding to float moves a value by at most 2^-24 of itself (or 2^-149 near
@@ -65,10 +69,6 @@ public:
         }
     }
 
-    [[nodiscard]] std::size_t index(int cx, int cy) const {
-        return static_cast<std::size_t>(cy) * static_cast<std::size_t>(width_) + static_cast<std::size_t>(cx) + 1;
-    }
-
     // Stores `box` of particle `id` in cell (cx, cy); false when the cell is full.
     bool insert(int cx, int cy, const FloatBox& box, std::uint32_t id) {
         const std::size_t at = index(cx, cy);
@@ -92,30 +92,6 @@ public:
             fill_[at] = 0;
         }
         occupied_.clear();
-    }
-
-    // Lane k all ones: slot k of cell `at` holds a box that overlaps `box`.
-    [[nodiscard]] LaneMask hit_lanes(std::size_t at, const FloatBox& box) const {
-        const Cell& cell = cells_[at];
-        return (lanes(cell.min_x) <= box.max_x) & (box.min_x <= lanes(cell.max_x)) & (lanes(cell.min_y) <= box.max_y) &
-               (box.min_y <= lanes(cell.max_y));
-    }
-
-    // Bit k set: lane k is set.
-    static unsigned bits(const LaneMask& hits) {
-        const LaneMask weighted = hits & LaneMask{1, 2, 4, 8};
-        return static_cast<unsigned>(weighted[0] | weighted[1] | weighted[2] | weighted[3]);
-    }
-
-    static bool any(const LaneMask& hits) {
-        std::uint64_t halves[2];
-        std::memcpy(halves, &hits, sizeof halves);
-        return (halves[0] | halves[1]) != 0;
-    }
-
-    static LaneMask later_slots(int slot) {
-        const LaneMask lane{0, 1, 2, 3};
-        return lane > slot;
     }
 
     // Calls pair(id_a, id_b) once for every two overlapping boxes held by
@@ -146,12 +122,11 @@ public:
         }
     }
 
-    // Calls found(id) for every box held in cells [x_first, x_last] x
-    // [y_first, y_last] that overlaps `box`.
+    // Calls found(id) for every box held in `region` that overlaps `box`.
     template <typename Found>
-    void for_each_in_region(int x_first, int y_first, int x_last, int y_last, const FloatBox& box, Found&& found) const {
-        for (int cy = y_first; cy <= y_last; ++cy) {
-            for (int cx = x_first; cx <= x_last; ++cx) {
+    void for_each_in_region(const CellRegion& region, const FloatBox& box, Found&& found) const {
+        for (int cy = region.y_first; cy <= region.y_last; ++cy) {
+            for (int cx = region.x_first; cx <= region.x_last; ++cx) {
                 const std::size_t at = index(cx, cy);
                 for (unsigned hits = bits(hit_lanes(at, box)); hits != 0; hits &= hits - 1) {
                     found(ids_[at * slots + static_cast<unsigned>(std::countr_zero(hits))]);
@@ -161,6 +136,34 @@ public:
     }
 
 private:
+    [[nodiscard]] std::size_t index(int cx, int cy) const {
+        return static_cast<std::size_t>(cy) * static_cast<std::size_t>(width_) + static_cast<std::size_t>(cx) + 1;
+    }
+
+    // Lane k all ones: slot k of cell `at` holds a box that overlaps `box`.
+    [[nodiscard]] LaneMask hit_lanes(std::size_t at, const FloatBox& box) const {
+        const Cell& cell = cells_[at];
+        return (lanes(cell.min_x) <= box.max_x) & (box.min_x <= lanes(cell.max_x)) & (lanes(cell.min_y) <= box.max_y) &
+               (box.min_y <= lanes(cell.max_y));
+    }
+
+    // Bit k set: lane k is set.
+    static unsigned bits(const LaneMask& hits) {
+        const LaneMask weighted = hits & LaneMask{1, 2, 4, 8};
+        return static_cast<unsigned>(weighted[0] | weighted[1] | weighted[2] | weighted[3]);
+    }
+
+    static bool any(const LaneMask& hits) {
+        std::uint64_t halves[2];
+        std::memcpy(halves, &hits, sizeof halves);
+        return (halves[0] | halves[1]) != 0;
+    }
+
+    static LaneMask later_slots(int slot) {
+        const LaneMask lane{0, 1, 2, 3};
+        return lane > slot;
+    }
+
     static Cell empty_cell() {
         // An empty slot spans nothing: min = +inf, max = -inf overlaps no box.
         constexpr float inf = std::numeric_limits<float>::infinity();

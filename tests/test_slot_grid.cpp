@@ -78,7 +78,7 @@ void grid_finds_every_overlap_once(std::uint64_t seed, int side, int count) {
     // The region query finds exactly the accepted boxes in its cells that overlap.
     const FloatBox probe{12.0f, 12.0f, 31.0f, 24.0f};
     std::multiset<std::uint32_t> found;
-    grid.for_each_in_region(0, 0, std::min(3, side - 1), std::min(2, side - 1), probe, [&](std::uint32_t id) { found.insert(id); });
+    grid.for_each_in_region({0, 0, std::min(3, side - 1), std::min(2, side - 1)}, probe, [&](std::uint32_t id) { found.insert(id); });
     std::multiset<std::uint32_t> in_region;
     for (std::uint32_t a = 0; a < accepted.size(); ++a) {
         const Placed& p = accepted[a];

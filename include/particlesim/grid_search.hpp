@@ -85,7 +85,7 @@ private:
                 std::max(from.x(), to.x()) + reach, std::max(from.y(), to.y()) + reach};
     }
     GridLayout choose_layout(const PairSearchInput& in, int forced_cells, int threads);
-    [[nodiscard]] bool use_slots(std::size_t count) const;
+    [[nodiscard]] bool use_slots(const PairSearchInput& in) const;
     void process_slice(const PairSearchInput& in, int slice, SliceWorkspace& ws, std::span<ThreadCandidates> out,
                        int threads) const;
     // False (and nothing tested) when too many cells overflow.
@@ -104,7 +104,6 @@ private:
     };
 
     GridLayout layout_;
-    double box_size_ = 0.0;  // L of the current step
     std::vector<BlockSums> block_sums_;
     std::vector<double> sweep_end_;  // by particle: min(duration, wall time)
     std::vector<SliceWorkspace> workspaces_;

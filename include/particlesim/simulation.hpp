@@ -67,7 +67,7 @@ private:
     std::vector<double> wall_time_;
     std::vector<std::uint8_t> busy_;
     std::vector<Collision> candidates_;
-    std::vector<Collision> merge_scratch_;  // candidates_'s partner in the parallel sort
+    std::vector<Collision> merge_scratch_;  // the walls, while a busy step's lists are merged
     std::vector<Collision> accepted_;
     std::vector<ThreadCandidates> thread_candidates_;
     std::unique_ptr<GridSearch> grid_;

@@ -24,8 +24,9 @@ void detect_wall_candidates(std::span<const Particle> particles, const Box& box,
                             std::span<double> wall_time, std::vector<Collision>& candidates, int threads);
 
 // Appends the pair candidates found by each thread to `candidates`, sorts all
-// by the total order (on up to `threads` threads, merging through `scratch`)
-// and removes the duplicates a pair search may produce.
+// by the total order and removes the duplicates a pair search may produce.
+// Busy steps sort the lists on up to `threads` threads and merge them, with
+// the wall candidates moved to `scratch` meanwhile.
 void order_candidates(std::vector<Collision>& candidates, std::span<ThreadCandidates> found,
                       std::vector<Collision>& scratch, int threads);
 
