@@ -1,7 +1,7 @@
 #include "particlesim/grid_search.hpp"
 
 #include "parallel.hpp"
-#include "slot_grid.hpp"
+#include "box_columns.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -10,15 +10,23 @@
 
 namespace particlesim {
 
+struct GridSearch::SliceWorkspace {
+    std::vector<std::uint32_t> cell_of;  // by particle: its cell, or absent / large
+    std::vector<std::uint32_t> cell_start;
+    std::vector<std::uint32_t> cell_fill;  // per worker after the first: its count, then its next place, in each cell
+    std::vector<std::uint32_t> by_cell;  // particles sorted by cell
+    BoxColumns boxes_by_cell;  // their boxes, in the same order
+    std::vector<PairTestState> states_by_cell;  // their motion, in the same order
+    std::vector<std::uint32_t> large;  // particles whose box exceeds a cell
+    std::vector<SweptBox> large_boxes;  // their boxes, in the same order
+};
+
 namespace {
 
 constexpr std::uint32_t absent_marker = std::numeric_limits<std::uint32_t>::max();
 constexpr std::uint32_t large_marker = absent_marker - 1;
 
 constexpr int max_slices = 64;
-// Slot grids store float bounds; boxes up to this size stay far inside float's range.
-constexpr double max_slot_box_size = 1e30;
-// Auto grids hold at most ~4 cells per particle (memory O(N)).
 // Below this many particles, threads take whole slices.
 constexpr std::size_t slice_parallel_below = 50000;
 
@@ -27,9 +35,13 @@ constexpr std::size_t slice_parallel_below = 50000;
 // ten million times that, and still far below any cell size it could disturb.
 constexpr double relative_margin = 1e-8;
 
-// Slices are cut so that a typical path in a slice covers at most half a cell
-// (measured best on the paper's scene; see docs/benchmarks.md).
-constexpr double sweeps_per_cell = 2.0;
+// Automatic layouts cut slices so that a typical path in a slice is this many
+// particle spacings long. Fewer, longer slices bin fewer boxes but test more
+// pairs; 4/3 was the fastest from N = 1000 to 32000 (see docs/benchmarks.md).
+constexpr double slice_sweep_in_spacings = 4.0 / 3.0;
+// Forced grids cut slices so that a typical path covers at most half a cell,
+// so that most boxes fit their cell.
+constexpr double slice_sweep_in_forced_cells = 0.5;
 
 // A box that fits a cell with this slack keeps its neighbours within one cell
 // even after the rounding of the cell index computation.
@@ -65,6 +77,11 @@ SliceSpan slice_span(const PairSearchInput& in, int slice, int slices) {
 bool fits_cell(const SweptBox& box, double fit) {
     return box.max_x - box.min_x <= fit && box.max_y - box.min_y <= fit;
 }
+
+// Cells [x_first, x_last] x [y_first, y_last] of the grid.
+struct CellRegion {
+    int x_first, y_first, x_last, y_last;
+};
 
 // The cells whose fitting boxes can meet `box`: a fitting box that meets it
 // has its lower corner at most one cell below or left of this box's lower
@@ -130,18 +147,19 @@ GridLayout GridSearch::choose_layout(const PairSearchInput& in, int forced_cells
     const double diameter = 2.0 * layout.reach;
     const auto slices_for = [&](double slice_sweep) {
         if (!(slice_sweep > 0.0)) return 1;
-        return static_cast<int>(std::clamp(std::ceil(sweeps_per_cell * mean_sweep / slice_sweep), 1.0, double{max_slices}));
+        return static_cast<int>(std::clamp(std::ceil(mean_sweep / slice_sweep), 1.0, double{max_slices}));
     };
 
     if (forced_cells > 0) {
         layout.cells_per_side = forced_cells;
         layout.cell_size = box_size / forced_cells;
-        layout.slices = slices_for(layout.cell_size - diameter);
+        layout.slices = slices_for(slice_sweep_in_forced_cells * (layout.cell_size - diameter));
     } else {
-        // About one particle per cell, and slices short enough that a typical
-        // swept box fits a cell.
+        // Cells at least a particle spacing wide and twice a typical slice
+        // path, so that most swept boxes fit their cell; at most ~4 cells per
+        // particle, so that memory stays O(N).
         const double spacing = box_size / std::sqrt(static_cast<double>(std::max<std::int64_t>(present, 1)));
-        layout.slices = slices_for(spacing);
+        layout.slices = slices_for(slice_sweep_in_spacings * spacing);
         const double wanted = std::max(spacing, diameter + 2.0 * mean_sweep / layout.slices);
         const double max_side = std::floor(std::sqrt(4.0 * static_cast<double>(present))) + 1.0;
         layout.cells_per_side = static_cast<int>(std::clamp(std::floor(box_size / wanted), 1.0, max_side));
@@ -156,26 +174,6 @@ void GridSearch::find_pairs(const PairSearchInput& in, int forced_cells, std::sp
     layout_ = choose_layout(in, forced_cells, threads);
 
     const std::size_t count = in.particles.size();
-    if (use_slots(in)) {
-        // Every thread takes whole slices, each into a slot grid of its own.
-        const int workers = std::min(threads, layout_.slices);
-        slot_workspaces_.resize(static_cast<std::size_t>(workers));
-        for (SlotWorkspace& ws : slot_workspaces_) {
-            if (!ws.grid) ws.grid = std::make_unique<SlotGrid>();
-            ws.grid->reset(layout_.cells_per_side);
-            ws.aside.reserve(count);
-            ws.aside_boxes.reserve(count);
-        }
-        workspaces_.resize(static_cast<std::size_t>(workers));
-        parallel_for_dynamic(workers, layout_.slices, 1, [&](std::int64_t slice, std::size_t thread) {
-            if (process_slice_in_slots(in, static_cast<int>(slice), slot_workspaces_[thread], buffers[thread])) return;
-            // Crowded cells: this slice goes through the sorted cell lists.
-            prepare(workspaces_[thread], count, 1);
-            process_slice(in, static_cast<int>(slice), workspaces_[thread], buffers.subspan(thread, 1), 1);
-        });
-        return;
-    }
-
     // Small scenes: one thread a slice, each with buffers of its own (fixed by
     // the scene, so they are allocated once). Large scenes: all threads share
     // each slice, and one set of buffers keeps the memory per particle low.
@@ -205,62 +203,6 @@ void GridSearch::prepare(SliceWorkspace& ws, std::size_t count, int workers) con
     ws.cell_fill.resize(cells * static_cast<std::size_t>(workers - 1));  // counts of workers 1, 2, ...
     ws.large.reserve(count);
     ws.large_boxes.reserve(count);
-}
-
-bool GridSearch::use_slots(const PairSearchInput& in) const {
-    // Slots pay where each particle is binned several times a step; their
-    // grid costs memory per cell, so only grids of at most ~4 cells per
-    // particle use them (automatic grids always are; large forced ones not).
-    // Their float bounds need coordinates well inside float's range.
-    const auto cells = static_cast<double>(layout_.cells_per_side) * layout_.cells_per_side;
-    const auto count = static_cast<double>(in.particles.size());
-    return layout_.slices > 1 && cells <= 4.0 * count + 64.0 && in.box.upper + in.box.lower <= max_slot_box_size;
-}
-
-bool GridSearch::process_slice_in_slots(const PairSearchInput& in, int slice, SlotWorkspace& ws,
-                                        ThreadCandidates& out) const {
-    const SliceSpan span = slice_span(in, slice, layout_.slices);
-    const CellMapper cell_of{1.0 / layout_.cell_size, layout_.cells_per_side};
-    const double fit = layout_.cell_size * cell_fit_slack;
-    const auto count = static_cast<std::uint32_t>(in.particles.size());
-    SlotGrid& grid = *ws.grid;
-    ws.aside.clear();
-    ws.aside_boxes.clear();
-
-    // Boxes that fit a cell but find it full are tested against every other
-    // box set aside; beyond this many, sorted cell lists are cheaper.
-    const std::size_t overflow_limit = 32 + static_cast<std::size_t>(std::sqrt(8.0 * count));
-    std::size_t overflow = 0;
-    for (std::uint32_t i = 0; i < count; ++i) {
-        if (!span.holds_path(sweep_end_[i])) continue;
-        const SweptBox box = swept_box(in.particles[i], span.begin, span.path_end(sweep_end_[i]));
-        if (fits_cell(box, fit)) {
-            if (grid.insert(cell_of(box.min_x), cell_of(box.min_y), float_bounds(box), i)) continue;
-            if (++overflow > overflow_limit) {
-                grid.clear();
-                return false;
-            }
-        }
-        ws.aside.push_back(i);
-        ws.aside_boxes.push_back(box);
-    }
-
-    const auto test = [&](std::uint32_t a, std::uint32_t b) { test_pair(in, std::min(a, b), std::max(a, b), out); };
-    grid.for_each_overlap(test);
-    // Boxes set aside: against the cells whose boxes can reach them (as in
-    // test_large_pairs), then against each other.
-    const std::size_t aside_count = ws.aside.size();
-    for (std::size_t k = 0; k < aside_count; ++k) {
-        const std::uint32_t a = ws.aside[k];
-        const SweptBox& box = ws.aside_boxes[k];
-        grid.for_each_in_region(cells_reaching(box, cell_of), float_bounds(within_grid(box, in.box.upper + in.box.lower)),
-                                [&](std::uint32_t b) { test(a, b); });
-        for (std::size_t other = k + 1; other < aside_count; ++other) {
-            if (box.overlaps(ws.aside_boxes[other])) test(a, ws.aside[other]);
-        }
-    }
-    grid.clear();
-    return true;
 }
 
 void GridSearch::process_slice(const PairSearchInput& in, int slice, SliceWorkspace& ws,
@@ -325,7 +267,7 @@ void GridSearch::bin_slice(const PairSearchInput& in, int slice, SliceWorkspace&
             if (cell >= large_marker) continue;
             const std::uint32_t at = next[cell]++;
             ws.by_cell[at] = static_cast<std::uint32_t>(i);
-            ws.boxes_by_cell[at] = slice_box(i);
+            ws.boxes_by_cell.set(at, float_bounds(slice_box(i)));
             ws.states_by_cell[at] = pair_test_state(in, static_cast<std::uint32_t>(i));
         }
     });
@@ -353,28 +295,17 @@ namespace {
 // and unpredictable, so the scan writes every position and advances only on
 // a hit (no branch), then tests the few hits.
 inline void test_against_range(const PairSearchInput& in, const GridSearch::SliceWorkspace& ws, std::uint32_t a,
-                               const SweptBox& box, const PairTestState& state, std::uint32_t first,
+                               const FloatBox& box, const PairTestState& state, std::uint32_t first,
                                std::uint32_t last, ThreadCandidates& out) {
-    constexpr std::uint32_t chunk = 64;
-    std::uint32_t hits[chunk];
-    const SweptBox* boxes = ws.boxes_by_cell.data();
-    for (std::uint32_t from = first; from < last; from += chunk) {
-        const std::uint32_t to = std::min(last, from + chunk);
-        std::uint32_t found = 0;
-        for (std::uint32_t m = from; m < to; ++m) {
-            hits[found] = m;
-            found += box.overlaps(boxes[m]) ? 1U : 0U;
+    ws.boxes_by_cell.for_each_overlap(first, last, box, [&](std::uint32_t m) {
+        const std::uint32_t b = ws.by_cell[m];
+        const PairTestState& other = ws.states_by_cell[m];
+        if (a < b) {
+            test_pair(state, other, a, b, in, out);
+        } else {
+            test_pair(other, state, b, a, in, out);
         }
-        for (std::uint32_t h = 0; h < found; ++h) {
-            const std::uint32_t b = ws.by_cell[hits[h]];
-            const PairTestState& other = ws.states_by_cell[hits[h]];
-            if (a < b) {
-                test_pair(state, other, a, b, in, out);
-            } else {
-                test_pair(other, state, b, a, in, out);
-            }
-        }
-    }
+    });
 }
 
 }  // namespace
@@ -384,7 +315,7 @@ void GridSearch::test_small_pairs(const PairSearchInput& in, const SliceWorkspac
     const int side = layout_.cells_per_side;
     const std::uint32_t* start = ws.cell_start.data();
     const std::uint32_t* ids = ws.by_cell.data();
-    const SweptBox* boxes = ws.boxes_by_cell.data();
+    const BoxColumns& boxes = ws.boxes_by_cell;
     const PairTestState* states = ws.states_by_cell.data();
 
     // Half stencil: the rest of the cell and the cell to the east (adjacent in
@@ -422,11 +353,12 @@ void GridSearch::test_large_pairs(const PairSearchInput& in, const SliceWorkspac
         ThreadCandidates& found = out[thread];
         const std::uint32_t a = ws.large[k];
         const SweptBox& box = ws.large_boxes[k];
+        const FloatBox bounds = float_bounds(within_grid(box, in.box.upper + in.box.lower));
         const PairTestState state = pair_test_state(in, a);
         const CellRegion region = cells_reaching(box, cell_of);
         for (int cy = region.y_first; cy <= region.y_last; ++cy) {
             const auto row = static_cast<std::size_t>(cy) * side;
-            test_against_range(in, ws, a, box, state, ws.cell_start[row + region.x_first],
+            test_against_range(in, ws, a, bounds, state, ws.cell_start[row + region.x_first],
                                ws.cell_start[row + region.x_last + 1], found);
         }
         for (std::int64_t other = k + 1; other < large_count; ++other) {

@@ -2,10 +2,12 @@
 // The fast pair search: exact for any speeds. It never assumes a speed limit:
 // the step is cut into time slices, and in each slice every particle's swept
 // box (its path in that slice, widened by r and a rounding margin) is binned
-// by its lower corner into a uniform grid. Two boxes that fit a cell can only
-// overlap when their cells are neighbours, so a half stencil finds each such
-// pair once; a box larger than a cell is scanned against the cells it covers
-// and against every other large box. Every pair whose boxes overlap in some
+// by its lower corner into a uniform grid (a counting sort, with the boxes
+// kept in float columns in cell order). Two boxes that fit a cell can only
+// overlap when their cells are neighbours, so a half stencil of contiguous
+// ranges finds each such pair once, four boxes per comparison; a box larger
+// than a cell is scanned against the cells it covers and against every other
+// large box. Every pair whose boxes overlap in some
 // slice gets the shared pair test, a superset of the pairs that can collide,
 // so the result is exactly the brute-force candidate set.
 
@@ -13,13 +15,10 @@
 
 #include <algorithm>
 #include <cstdint>
-#include <memory>
 #include <span>
 #include <vector>
 
 namespace particlesim {
-
-class SlotGrid;
 
 // The largest forced grid (G x G cells); larger requests are clamped to it,
 // so that the cell arrays stay a modest size.
@@ -57,23 +56,7 @@ public:
     [[nodiscard]] const GridLayout& last_layout() const { return layout_; }
 
     // Per-slice buffers; one per thread when slices run in parallel.
-    struct SliceWorkspace {
-        std::vector<std::uint32_t> cell_of;  // by particle: its cell, or absent / large
-        std::vector<std::uint32_t> cell_start;
-        std::vector<std::uint32_t> cell_fill;  // per worker after the first: its count, then its next place, in each cell
-        std::vector<std::uint32_t> by_cell;  // particles sorted by cell
-        std::vector<SweptBox> boxes_by_cell;  // their boxes, in the same order
-        std::vector<PairTestState> states_by_cell;  // their motion, in the same order
-        std::vector<std::uint32_t> large;    // particles whose box exceeds a cell
-        std::vector<SweptBox> large_boxes;   // their boxes, in the same order
-    };
-
-    // Per-thread buffers of a slice binned into slots (fast, sparse scenes).
-    struct SlotWorkspace {
-        std::unique_ptr<SlotGrid> grid;
-        std::vector<std::uint32_t> aside;  // particles whose box exceeds a cell or found it full
-        std::vector<SweptBox> aside_boxes;  // their boxes, in the same order
-    };
+    struct SliceWorkspace;  // defined in grid_search.cpp
 
 private:
     // Inline: it runs once per particle and slice.
@@ -85,11 +68,8 @@ private:
                 std::max(from.x(), to.x()) + reach, std::max(from.y(), to.y()) + reach};
     }
     GridLayout choose_layout(const PairSearchInput& in, int forced_cells, int threads);
-    [[nodiscard]] bool use_slots(const PairSearchInput& in) const;
     void process_slice(const PairSearchInput& in, int slice, SliceWorkspace& ws, std::span<ThreadCandidates> out,
                        int threads) const;
-    // False (and nothing tested) when too many cells overflow.
-    bool process_slice_in_slots(const PairSearchInput& in, int slice, SlotWorkspace& ws, ThreadCandidates& out) const;
     void prepare(SliceWorkspace& ws, std::size_t count, int workers) const;
     void bin_slice(const PairSearchInput& in, int slice, SliceWorkspace& ws, int threads) const;
     void test_small_pairs(const PairSearchInput& in, const SliceWorkspace& ws, std::span<ThreadCandidates> out,
@@ -107,7 +87,6 @@ private:
     std::vector<BlockSums> block_sums_;
     std::vector<double> sweep_end_;  // by particle: min(duration, wall time)
     std::vector<SliceWorkspace> workspaces_;
-    std::vector<SlotWorkspace> slot_workspaces_;
 };
 
 }  // namespace particlesim
