@@ -23,22 +23,21 @@ struct FloatBox {
 
 // Rounding to float moves a value by at most 2^-24 of itself (or 2^-149 near
 // zero); stepping 2^-20 of it (plus 1e-37) away first keeps the result on the
-// safe side. Beyond float's range the bound opens to infinity (or stays at
-// the largest float on the safe side).
+// safe side. Beyond float's range a bound opens to infinity, or stays at the
+// largest float on the safe side. Selects, not branches: this runs for every
+// binned box.
 inline float float_at_most(double value) {
     constexpr double largest = std::numeric_limits<float>::max();
     const double lowered = value - (std::abs(value) * 0x1p-20 + 1e-37);
-    if (!(lowered > -largest)) return -std::numeric_limits<float>::infinity();
-    if (lowered >= largest) return std::numeric_limits<float>::max();
-    return static_cast<float>(lowered);
+    const auto converted = static_cast<float>(std::min(std::max(lowered, -largest), largest));
+    return lowered < -largest ? -std::numeric_limits<float>::infinity() : converted;
 }
 
 inline float float_at_least(double value) {
     constexpr double largest = std::numeric_limits<float>::max();
     const double raised = value + (std::abs(value) * 0x1p-20 + 1e-37);
-    if (!(raised < largest)) return std::numeric_limits<float>::infinity();
-    if (raised <= -largest) return -std::numeric_limits<float>::max();
-    return static_cast<float>(raised);
+    const auto converted = static_cast<float>(std::min(std::max(raised, -largest), largest));
+    return raised > largest ? std::numeric_limits<float>::infinity() : converted;
 }
 
 class BoxColumns {

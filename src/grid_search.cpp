@@ -4,6 +4,7 @@
 #include "box_columns.hpp"
 
 #include <algorithm>
+#include <atomic>
 #include <cmath>
 #include <limits>
 #include <utility>
@@ -23,8 +24,17 @@ struct GridSearch::SliceWorkspace {
 
 namespace {
 
+// A path whose box exceeds a cell is cut into at most this many equal pieces
+// in time, each binned as a box of its own: fast particles then cost a few
+// more boxes instead of joining the large boxes, which meet each other in a
+// quadratic loop. Longer paths stay large.
+constexpr int max_pieces = 8;
+
+// Marks in cell_of, above every cell index: not moving in the slice, large,
+// and cut into k pieces (large_marker - k).
 constexpr std::uint32_t absent_marker = std::numeric_limits<std::uint32_t>::max();
 constexpr std::uint32_t large_marker = absent_marker - 1;
+constexpr std::uint32_t first_piece_marker = large_marker - max_pieces;
 
 constexpr int max_slices = 64;
 // Below this many particles, threads take whole slices.
@@ -98,7 +108,8 @@ SweptBox within_grid(const SweptBox& box, double box_size) {
     return {clip(box.min_x), clip(box.min_y), clip(box.max_x), clip(box.max_y)};
 }
 
-FloatBox float_bounds(const SweptBox& box) {
+// Always inlined: it runs for every binned box, and a call costs as much as it does.
+[[gnu::always_inline]] inline FloatBox float_bounds(const SweptBox& box) {
     return {float_at_most(box.min_x), float_at_most(box.min_y), float_at_least(box.max_x), float_at_least(box.max_y)};
 }
 
@@ -195,10 +206,12 @@ void GridSearch::find_pairs(const PairSearchInput& in, int forced_cells, std::sp
 
 void GridSearch::prepare(SliceWorkspace& ws, std::size_t count, int workers) const {
     const auto cells = static_cast<std::size_t>(layout_.cells_per_side) * static_cast<std::size_t>(layout_.cells_per_side);
+    // Room for every particle's box, plus pieces of a few fast paths.
+    const std::size_t boxes = count + count / 4 + 64;
     ws.cell_of.resize(count);
-    ws.by_cell.resize(count);
-    ws.boxes_by_cell.resize(count);
-    ws.states_by_cell.resize(count);
+    ws.by_cell.resize(boxes);
+    ws.boxes_by_cell.resize(boxes);
+    ws.states_by_cell.resize(boxes);
     ws.cell_start.resize(cells + 1);
     ws.cell_fill.resize(cells * static_cast<std::size_t>(workers - 1));  // counts of workers 1, 2, ...
     ws.large.reserve(count);
@@ -212,18 +225,39 @@ void GridSearch::process_slice(const PairSearchInput& in, int slice, SliceWorksp
     test_large_pairs(in, ws, out, threads);
 }
 
+int GridSearch::pieces_to_fit(const Particle& particle, double begin, double end, double fit) const {
+    const double room = fit - 2.0 * layout_.reach;
+    const double travel = std::max(std::abs(particle.velocity.x()), std::abs(particle.velocity.y())) * (end - begin);
+    if (!(room > 0.0) || !(travel < room * max_pieces)) return 0;
+    const int pieces = std::max(2, static_cast<int>(std::ceil(travel / room)));
+    if (pieces > max_pieces) return 0;
+    // The rounding of the piece ends may still push a box past the cell.
+    for (int piece = 0; piece < pieces; ++piece) {
+        if (!fits_cell(piece_box(particle, begin, end, piece, pieces), fit)) return 0;
+    }
+    return pieces;
+}
+
 void GridSearch::bin_slice(const PairSearchInput& in, int slice, SliceWorkspace& ws, int threads) const {
     const SliceSpan span = slice_span(in, slice, layout_.slices);
     const CellMapper cell_of{1.0 / layout_.cell_size, layout_.cells_per_side};
+    const auto cell_of_box = [&](const SweptBox& box) {
+        return static_cast<std::uint32_t>(cell_of(box.min_y) * layout_.cells_per_side + cell_of(box.min_x));
+    };
     const double fit = layout_.cell_size * cell_fit_slack;
     const auto count = static_cast<std::int64_t>(in.particles.size());
     const auto slice_box = [&](std::int64_t i) {
         return swept_box(in.particles[i], span.begin, span.path_end(sweep_end_[i]));
     };
+    const auto for_each_piece = [&](std::int64_t i, int pieces, auto&& body) {
+        for (int piece = 0; piece < pieces; ++piece) {
+            body(piece_box(in.particles[i], span.begin, span.path_end(sweep_end_[i]), piece, pieces));
+        }
+    };
 
-    // Counting sort of the fitting boxes by cell, the large ones aside. Each
-    // worker counts and then places a contiguous block of particles, so every
-    // cell lists its particles in index order whatever the worker count.
+    // Counting sort of the fitting boxes (and pieces) by cell, the large ones
+    // aside. Each worker counts and then places a contiguous block of
+    // particles. (The order within a cell does not change the pairs tested.)
     // Worker 0 counts in cell_start itself, the others in cell_fill.
     const auto cells = static_cast<std::int64_t>(ws.cell_start.size()) - 1;
     const std::int64_t block = (count + threads - 1) / threads;
@@ -233,22 +267,43 @@ void GridSearch::bin_slice(const PairSearchInput& in, int slice, SliceWorkspace&
     const auto counts_of = [&](std::int64_t worker) {
         return worker == 0 ? ws.cell_start.data() : ws.cell_fill.data() + (worker - 1) * cells;
     };
-    parallel_for(threads, threads, [&](std::int64_t worker, std::size_t) {
-        std::uint32_t* counts = counts_of(worker);
-        std::fill(counts, counts + cells, 0U);
-        const auto [first, last] = block_of(worker);
+    // Long paths, in a loop of their own (as in the placement below).
+    const auto count_pieces = [&](std::int64_t first, std::int64_t last, std::uint32_t* counts, std::size_t& counted) {
         for (std::int64_t i = first; i < last; ++i) {
-            if (!span.holds_path(sweep_end_[i])) {
-                ws.cell_of[i] = absent_marker;
-                continue;
-            }
-            const SweptBox box = slice_box(i);
-            const bool fits = fits_cell(box, fit);
-            const auto cell = static_cast<std::uint32_t>(cell_of(box.min_y) * layout_.cells_per_side + cell_of(box.min_x));
-            ws.cell_of[i] = fits ? cell : large_marker;
-            if (fits) ++counts[cell];
+            if (ws.cell_of[i] != large_marker) continue;
+            const int pieces = pieces_to_fit(in.particles[i], span.begin, span.path_end(sweep_end_[i]), fit);
+            ws.cell_of[i] = large_marker - static_cast<std::uint32_t>(pieces);
+            for_each_piece(i, pieces, [&](const SweptBox& piece) { ++counts[cell_of_box(piece)]; });
+            counted += static_cast<std::size_t>(pieces);
         }
-    });
+    };
+    const auto count_boxes = [&](bool cut_into_pieces) {
+        std::atomic<std::size_t> boxes{0};
+        parallel_for(threads, threads, [&](std::int64_t worker, std::size_t) {
+            std::uint32_t* counts = counts_of(worker);
+            std::fill(counts, counts + cells, 0U);
+            const auto [first, last] = block_of(worker);
+            std::size_t counted = 0;
+            for (std::int64_t i = first; i < last; ++i) {
+                if (!span.holds_path(sweep_end_[i])) {
+                    ws.cell_of[i] = absent_marker;
+                    continue;
+                }
+                const SweptBox box = slice_box(i);
+                const bool fits = fits_cell(box, fit);
+                const std::uint32_t cell = cell_of_box(box);
+                ws.cell_of[i] = fits ? cell : large_marker;
+                counts[cell] += fits ? 1U : 0U;
+                counted += fits ? 1U : 0U;
+            }
+            if (cut_into_pieces) count_pieces(first, last, counts, counted);
+            boxes += counted;
+        });
+        return boxes.load();
+    };
+    // Pieces that would not fit the buffers (many fast particles): the slice
+    // is counted again with the long paths large instead.
+    if (count_boxes(true) > ws.by_cell.size()) count_boxes(false);
 
     // Each worker's first place in each cell, cell by cell.
     std::uint32_t placed = 0;
@@ -262,13 +317,23 @@ void GridSearch::bin_slice(const PairSearchInput& in, int slice, SliceWorkspace&
     parallel_for(threads, threads, [&](std::int64_t worker, std::size_t) {
         std::uint32_t* next = counts_of(worker);
         const auto [first, last] = block_of(worker);
-        for (std::int64_t i = first; i < last; ++i) {
-            const std::uint32_t cell = ws.cell_of[i];
-            if (cell >= large_marker) continue;
+        const auto place = [&](std::int64_t i, std::uint32_t cell, const SweptBox& box) {
             const std::uint32_t at = next[cell]++;
             ws.by_cell[at] = static_cast<std::uint32_t>(i);
-            ws.boxes_by_cell.set(at, float_bounds(slice_box(i)));
+            ws.boxes_by_cell.set(at, float_bounds(box));
             ws.states_by_cell[at] = pair_test_state(in, static_cast<std::uint32_t>(i));
+        };
+        // The pieces in a loop of their own: the main loop stays short enough
+        // for the processor to overlap the cache misses of many particles.
+        for (std::int64_t i = first; i < last; ++i) {
+            const std::uint32_t mark = ws.cell_of[i];
+            if (mark < first_piece_marker) place(i, mark, slice_box(i));
+        }
+        for (std::int64_t i = first; i < last; ++i) {
+            const std::uint32_t mark = ws.cell_of[i];
+            if (mark < first_piece_marker || mark >= large_marker) continue;
+            for_each_piece(i, static_cast<int>(large_marker - mark),
+                           [&](const SweptBox& piece) { place(i, cell_of_box(piece), piece); });
         }
     });
     // The last worker's next place in a cell is now where the next cell
@@ -299,6 +364,7 @@ inline void test_against_range(const PairSearchInput& in, const GridSearch::Slic
                                std::uint32_t last, ThreadCandidates& out) {
     ws.boxes_by_cell.for_each_overlap(first, last, box, [&](std::uint32_t m) {
         const std::uint32_t b = ws.by_cell[m];
+        if (b == a) return;  // another piece of the same path
         const PairTestState& other = ws.states_by_cell[m];
         if (a < b) {
             test_pair(state, other, a, b, in, out);

@@ -67,6 +67,16 @@ private:
         return {std::min(from.x(), to.x()) - reach, std::min(from.y(), to.y()) - reach,
                 std::max(from.x(), to.x()) + reach, std::max(from.y(), to.y()) + reach};
     }
+    // Piece `piece` of `pieces` equal parts in time of the path from `begin` to `end`.
+    [[nodiscard]] SweptBox piece_box(const Particle& particle, double begin, double end, int piece, int pieces) const {
+        const double span = end - begin;
+        const double piece_begin = begin + span * piece / pieces;
+        const double piece_end = piece + 1 == pieces ? end : begin + span * (piece + 1) / pieces;
+        return swept_box(particle, piece_begin, piece_end);
+    }
+    // How many pieces a path must be cut into for each to fit a cell; 0 when
+    // too many.
+    [[nodiscard]] int pieces_to_fit(const Particle& particle, double begin, double end, double fit) const;
     GridLayout choose_layout(const PairSearchInput& in, int forced_cells, int threads);
     void process_slice(const PairSearchInput& in, int slice, SliceWorkspace& ws, std::span<ThreadCandidates> out,
                        int threads) const;

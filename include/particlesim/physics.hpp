@@ -40,16 +40,20 @@ inline WallHit time_to_wall(const Vec2& position, const Vec2& velocity, const Bo
 // touching or overlapping pair collides at t = 0 when it approaches.
 inline double contact_time(const Vec2& dp, const Vec2& dv, double contact_dist_sq) {
     const double a = dv.dot(dv);
-    if (a == 0.0) return never;
     const double half_b = dp.dot(dv);
     const double c = dp.dot(dp) - contact_dist_sq;
-    if (c <= 0.0) return half_b < 0.0 ? 0.0 : never;
-    if (half_b >= 0.0) return never;
     // (B^2 - 4AC) / 4 rewritten with Lagrange's identity as (2r)^2 A - (dp x dv)^2:
     // it avoids the cancellation of B^2 against 4AC for distant pairs.
     const double cross = dp.x() * dv.y() - dp.y() * dv.x();
     const double quarter_disc = contact_dist_sq * a - cross * cross;
-    if (!(quarter_disc > 0.0)) return never;  // a miss or a graze
+    // A contact needs relative motion (A != 0) towards each other (B < 0), and
+    // either a touching start (C <= 0) or a real crossing (disc > 0; not a
+    // graze). Decided without branches: most pairs a search tests recede or
+    // miss, in no pattern a branch predictor could learn.
+    const bool approaching = (a != 0.0) & (half_b < 0.0);
+    const bool touching = c <= 0.0;
+    if (!(approaching & (touching | (quarter_disc > 0.0)))) return never;
+    if (touching) return 0.0;
     return c / (std::sqrt(quarter_disc) - half_b);  // the smaller root, without cancellation
 }
 
