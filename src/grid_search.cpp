@@ -1,7 +1,7 @@
 #include "particlesim/grid_search.hpp"
 
 #include "parallel.hpp"
-#include "box_columns.hpp"
+#include "float_box_array.hpp"
 
 #include <algorithm>
 #include <atomic>
@@ -16,7 +16,7 @@ struct GridSearch::SliceWorkspace {
     std::vector<std::uint32_t> cell_start;
     std::vector<std::uint32_t> cell_fill;  // per worker after the first: its count, then its next place, in each cell
     std::vector<std::uint32_t> by_cell;  // particles sorted by cell
-    BoxColumns boxes_by_cell;  // their boxes, in the same order
+    FloatBoxArray boxes_by_cell;  // their boxes, in the same order
     std::vector<PairTestState> states_by_cell;  // their motion, in the same order
     std::vector<std::uint32_t> large;  // particles whose box exceeds a cell
     std::vector<SweptBox> large_boxes;  // their boxes, in the same order
@@ -381,7 +381,7 @@ void GridSearch::test_small_pairs(const PairSearchInput& in, const SliceWorkspac
     const int side = layout_.cells_per_side;
     const std::uint32_t* start = ws.cell_start.data();
     const std::uint32_t* ids = ws.by_cell.data();
-    const BoxColumns& boxes = ws.boxes_by_cell;
+    const FloatBoxArray& boxes = ws.boxes_by_cell;
     const PairTestState* states = ws.states_by_cell.data();
 
     // Half stencil: the rest of the cell and the cell to the east (adjacent in

@@ -86,8 +86,9 @@ int main() {
             std::fprintf(stderr, "scene %llu: runs differ\n", static_cast<unsigned long long>(k));
         }
     }
-    // Clusters that fill some cells of the grid beyond their slots, or crowd
-    // them so much that the search falls back to sorted cell lists.
+    // Clusters of fast particles crowd a few cells, and many of their paths
+    // are too long for a cell: cut into pieces, set aside as large boxes, or
+    // (when the pieces would overflow the buffers) recounted as large.
     for (std::uint64_t k = 0; k < 12; ++k) {
         const random_scenes::TestScene scene = random_scenes::make_clustered(k);
         const int threads = thread_counts[k % 4];

@@ -3,7 +3,7 @@
 // the step is cut into time slices, and in each slice every particle's swept
 // box (its path in that slice, widened by r and a rounding margin) is binned
 // by its lower corner into a uniform grid (a counting sort, with the boxes
-// kept in float columns in cell order). Two boxes that fit a cell can only
+// kept as float boxes in cell order). Two boxes that fit a cell can only
 // overlap when their cells are neighbours, so a half stencil of contiguous
 // ranges finds each such pair once, four boxes per comparison; a box larger
 // than a cell is scanned against the cells it covers and against every other

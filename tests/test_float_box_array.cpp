@@ -1,10 +1,10 @@
-// The float box columns of the grid search: bounds that never shrink a box
+// The float box array of the grid search: bounds that never shrink a box
 // (even beyond float's range), and range scans that report exactly the boxes
 // a brute force finds, whatever the range's length and alignment.
 
 #include "check.hpp"
 
-#include "../src/box_columns.hpp"
+#include "../src/float_box_array.hpp"
 #include "particlesim/random.hpp"
 
 #include <algorithm>
@@ -49,21 +49,21 @@ FloatBox random_box(SplitMix64& rng, float extent) {
     return {x, y, x + coordinate() * 0.2f, y + coordinate() * 0.2f};
 }
 
-// Every range [first, last) of a column set, scanned against random probes,
+// Every range [first, last) of an array, scanned against random probes,
 // reports exactly the overlapping boxes, each once and in increasing order.
 void scans_report_exactly_the_overlaps(std::uint64_t seed, std::uint32_t count) {
     SplitMix64 rng(seed);
-    BoxColumns columns;
-    columns.resize(count);
+    FloatBoxArray array;
+    array.resize(count);
     std::vector<FloatBox> boxes(count);
     for (std::uint32_t m = 0; m < count; ++m) {
         boxes[m] = random_box(rng, 10.0f);
-        columns.set(m, boxes[m]);
+        array.set(m, boxes[m]);
     }
     // Stored boxes read back as they were set.
     int misread = 0;
     for (std::uint32_t m = 0; m < count; ++m) {
-        const FloatBox back = columns[m];
+        const FloatBox back = array[m];
         if (back.min_x != boxes[m].min_x || back.max_y != boxes[m].max_y) ++misread;
     }
     CHECK_EQ(misread, 0);
@@ -74,7 +74,7 @@ void scans_report_exactly_the_overlaps(std::uint64_t seed, std::uint32_t count) 
         for (std::uint32_t last = first; last <= count; ++last) {
             const FloatBox probe = random_box(rng, 10.0f);
             std::vector<std::uint32_t> reported;
-            columns.for_each_overlap(first, last, probe, [&](std::uint32_t m) { reported.push_back(m); });
+            array.for_each_overlap(first, last, probe, [&](std::uint32_t m) { reported.push_back(m); });
             std::vector<std::uint32_t> expected;
             for (std::uint32_t m = first; m < last; ++m) {
                 if (overlap(boxes[m], probe)) expected.push_back(m);
@@ -91,15 +91,15 @@ void scans_report_exactly_the_overlaps(std::uint64_t seed, std::uint32_t count) 
 // Boxes that touch only at a boundary overlap (closed intervals), as in the
 // double-precision test they stand for.
 void touching_boxes_overlap() {
-    BoxColumns columns;
-    columns.resize(5);
-    columns.set(0, {0.0f, 0.0f, 1.0f, 1.0f});
-    columns.set(1, {1.0f, 1.0f, 2.0f, 2.0f});  // touches the probe's corner
-    columns.set(2, {1.5f, 0.0f, 2.0f, 1.0f});  // right of the probe
-    columns.set(3, {-1.0f, -1.0f, -0.5f, 0.5f});  // left of the probe
-    columns.set(4, {0.5f, 1.0f, 0.6f, 3.0f});  // touches the probe's top edge
+    FloatBoxArray array;
+    array.resize(5);
+    array.set(0, {0.0f, 0.0f, 1.0f, 1.0f});
+    array.set(1, {1.0f, 1.0f, 2.0f, 2.0f});  // touches the probe's corner
+    array.set(2, {1.5f, 0.0f, 2.0f, 1.0f});  // right of the probe
+    array.set(3, {-1.0f, -1.0f, -0.5f, 0.5f});  // left of the probe
+    array.set(4, {0.5f, 1.0f, 0.6f, 3.0f});  // touches the probe's top edge
     std::vector<std::uint32_t> reported;
-    columns.for_each_overlap(0, 5, {0.0f, 0.0f, 1.0f, 1.0f}, [&](std::uint32_t m) { reported.push_back(m); });
+    array.for_each_overlap(0, 5, {0.0f, 0.0f, 1.0f, 1.0f}, [&](std::uint32_t m) { reported.push_back(m); });
     CHECK(reported == (std::vector<std::uint32_t>{0, 1, 4}));
 }
 
@@ -110,5 +110,5 @@ int main() {
     touching_boxes_overlap();
     std::uint64_t seed = 1;
     for (const std::uint32_t count : {0U, 1U, 3U, 4U, 5U, 9U, 40U}) scans_report_exactly_the_overlaps(seed++, count);
-    return check::summary("test_box_columns");
+    return check::summary("test_float_box_array");
 }
