@@ -1,7 +1,7 @@
 #include "particlesim/grid_search.hpp"
 
-#include "parallel.hpp"
 #include "float_box_array.hpp"
+#include "parallel.hpp"
 
 #include <algorithm>
 #include <atomic>
@@ -15,10 +15,10 @@ struct GridSearch::SliceWorkspace {
     std::vector<std::uint32_t> cell_of;  // by particle: its cell, or absent / large
     std::vector<std::uint32_t> cell_start;
     std::vector<std::uint32_t> cell_fill;  // per worker after the first: its count, then its next place, in each cell
-    std::vector<std::uint32_t> by_cell;  // particles sorted by cell
-    FloatBoxArray boxes_by_cell;  // their boxes, in the same order
-    std::vector<PairTestState> states_by_cell;  // their motion, in the same order
-    std::vector<std::uint32_t> large;  // particles whose box exceeds a cell
+    std::vector<std::uint32_t> by_cell;  // the particle of each box (or piece), sorted by cell
+    FloatBoxArray boxes_by_cell;  // those boxes, in the same order
+    std::vector<PairTestState> states_by_cell;  // their particles' motion, in the same order
+    std::vector<std::uint32_t> large;  // particles whose path fits no cell, even in pieces
     std::vector<SweptBox> large_boxes;  // their boxes, in the same order
 };
 
@@ -99,13 +99,6 @@ struct CellRegion {
 CellRegion cells_reaching(const SweptBox& box, const CellMapper& cell_of) {
     return {std::max(cell_of(box.min_x) - 1, 0), std::max(cell_of(box.min_y) - 1, 0), cell_of(box.max_x),
             cell_of(box.max_y)};
-}
-
-// The part of a box that can meet boxes binned in the grid (which lie within
-// a cell of the walls), so that a huge box still has float bounds.
-SweptBox within_grid(const SweptBox& box, double box_size) {
-    const auto clip = [&](double value) { return std::clamp(value, -box_size, 2.0 * box_size); };
-    return {clip(box.min_x), clip(box.min_y), clip(box.max_x), clip(box.max_y)};
 }
 
 // Always inlined: it runs for every binned box, and a call costs as much as it does.
@@ -353,12 +346,8 @@ void GridSearch::bin_slice(const PairSearchInput& in, int slice, SliceWorkspace&
 
 namespace {
 
-// Tests particle `a` (box `box`) against the fitting particles stored at
-// positions [first, last) of the cell order.
-// Tests particle `a` (box `box`, state `state`) against the fitting
-// particles at positions [first, last) of the cell order. Overlaps are rare
-// and unpredictable, so the scan writes every position and advances only on
-// a hit (no branch), then tests the few hits.
+// Tests particle `a` (box `box`, state `state`) against the boxes stored at
+// positions [first, last) of the cell order whose float bounds meet its own.
 inline void test_against_range(const PairSearchInput& in, const GridSearch::SliceWorkspace& ws, std::uint32_t a,
                                const FloatBox& box, const PairTestState& state, std::uint32_t first,
                                std::uint32_t last, ThreadCandidates& out) {
@@ -419,7 +408,7 @@ void GridSearch::test_large_pairs(const PairSearchInput& in, const SliceWorkspac
         ThreadCandidates& found = out[thread];
         const std::uint32_t a = ws.large[k];
         const SweptBox& box = ws.large_boxes[k];
-        const FloatBox bounds = float_bounds(within_grid(box, in.box.upper + in.box.lower));
+        const FloatBox bounds = float_bounds(box);
         const PairTestState state = pair_test_state(in, a);
         const CellRegion region = cells_reaching(box, cell_of);
         for (int cy = region.y_first; cy <= region.y_last; ++cy) {

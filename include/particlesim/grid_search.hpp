@@ -5,11 +5,12 @@
 // by its lower corner into a uniform grid (a counting sort, with the boxes
 // kept as float boxes in cell order). Two boxes that fit a cell can only
 // overlap when their cells are neighbours, so a half stencil of contiguous
-// ranges finds each such pair once, four boxes per comparison; a box larger
-// than a cell is scanned against the cells it covers and against every other
-// large box. Every pair whose boxes overlap in some
-// slice gets the shared pair test, a superset of the pairs that can collide,
-// so the result is exactly the brute-force candidate set.
+// ranges finds each such pair once, four boxes per comparison. A path too
+// long for a cell is cut into pieces in time; one too long even for that is
+// a large box, scanned against the cells it covers and against every other
+// large box. Every pair whose boxes overlap in some slice gets the shared
+// pair test, a superset of the pairs that can collide, so the result is
+// exactly the brute-force candidate set.
 
 #include "particlesim/pair_search.hpp"
 
