@@ -20,8 +20,42 @@ void detect_wall_candidates(std::span<const Particle> particles, const Box& box,
     }
 }
 
+namespace {
+
+// Candidates sorted by stored indices are in the total order except within
+// runs of equal (t, kind), where the user's indices decide: such a run is
+// renamed to user indices, sorted, and renamed back.
+void order_ties_by_user_index(std::span<Collision> sorted, std::span<const std::uint32_t> user_index,
+                              std::span<const std::uint32_t> stored_index) {
+    const auto rename = [](std::span<Collision> run, std::span<const std::uint32_t> index) {
+        for (Collision& c : run) {
+            c.i = index[c.i];
+            if (c.kind == CollisionKind::pair) {
+                c.j = index[c.j];
+                if (c.i > c.j) std::swap(c.i, c.j);
+            }
+        }
+    };
+    for (std::size_t first = 0; first < sorted.size();) {
+        std::size_t last = first + 1;
+        while (last < sorted.size() && sorted[last].time == sorted[first].time && sorted[last].kind == sorted[first].kind) {
+            ++last;
+        }
+        if (last - first > 1) {
+            const std::span<Collision> run = sorted.subspan(first, last - first);
+            rename(run, user_index);
+            std::sort(run.begin(), run.end());
+            rename(run, stored_index);
+        }
+        first = last;
+    }
+}
+
+}  // namespace
+
 void order_candidates(std::vector<Collision>& candidates, std::span<ThreadCandidates> found,
-                      std::vector<Collision>& scratch, int threads) {
+                      std::vector<Collision>& scratch, std::span<const std::uint32_t> user_index,
+                      std::span<const std::uint32_t> stored_index, int threads) {
     std::int64_t count = static_cast<std::int64_t>(candidates.size());
     for (const ThreadCandidates& thread : found) count += static_cast<std::int64_t>(thread.found.size());
     // The merge keeps one cursor per list on the stack.
@@ -56,19 +90,19 @@ void order_candidates(std::vector<Collision>& candidates, std::span<ThreadCandid
         }
     }
     candidates.erase(std::unique(candidates.begin(), candidates.end()), candidates.end());
+    if (!user_index.empty()) order_ties_by_user_index(candidates, user_index, stored_index);
 }
 
-void select_collisions(std::span<const Collision> ordered, std::span<std::uint8_t> busy,
+void select_collisions(std::span<const Collision> ordered, std::span<std::uint32_t> collision_of,
                        std::vector<Collision>& accepted) {
     accepted.clear();
     for (const Collision& c : ordered) {
-        if (busy[c.i]) continue;
-        if (c.kind == CollisionKind::pair) {
-            if (busy[c.j]) continue;
-            busy[c.j] = 1;
-        }
-        busy[c.i] = 1;
+        if (collision_of[c.i] != 0) continue;
+        if (c.kind == CollisionKind::pair && collision_of[c.j] != 0) continue;
         accepted.push_back(c);
+        const auto number = static_cast<std::uint32_t>(accepted.size());
+        collision_of[c.i] = number;
+        if (c.kind == CollisionKind::pair) collision_of[c.j] = number;
     }
 }
 
@@ -94,32 +128,36 @@ void resolve_pair(Particle& a, Particle& b, double time, const Box& box, double 
 
 }  // namespace
 
-void resolve_collisions(std::span<Particle> particles, std::span<const Collision> accepted, const Box& box,
-                        double duration, int threads) {
-    const auto count = static_cast<std::int64_t>(accepted.size());
+void resolve_collisions(std::span<Particle> particles, std::span<const std::uint32_t> collision_of,
+                        std::span<const Collision> accepted, const Box& box, double duration, int threads) {
+    const auto count = static_cast<std::int64_t>(particles.size());
     const int workers = worker_count(static_cast<std::size_t>(threads), count, min_particles_per_thread);
-    // Accepted collisions share no particle, so they resolve independently.
-    parallel_for(workers, count, [&](std::int64_t k, std::size_t) {
-        const Collision& c = accepted[k];
+    // In storage order, not in the accepted (time) order: a large scene is
+    // stored by position, so this walks memory instead of jumping through it.
+    // A pair is resolved at its lower index; accepted collisions share no
+    // particle, so they resolve independently.
+    parallel_for(workers, count, [&](std::int64_t i, std::size_t) {
+        if (collision_of[i] == 0) return;
+        const Collision& c = accepted[collision_of[i] - 1];
         if (c.kind == CollisionKind::wall) {
-            resolve_wall(particles[c.i], c.time, box, duration);
-        } else {
+            resolve_wall(particles[i], c.time, box, duration);
+        } else if (c.i == static_cast<std::uint32_t>(i)) {
             resolve_pair(particles[c.i], particles[c.j], c.time, box, duration);
         }
     });
 }
 
-void advance_free_particles(std::span<Particle> particles, std::span<std::uint8_t> busy,
-                            std::span<const Collision> accepted, const Box& box, double duration, int threads) {
+void advance_free_particles(std::span<Particle> particles, std::span<std::uint32_t> collision_of, const Box& box,
+                            double duration, int threads) {
     const auto count = static_cast<std::int64_t>(particles.size());
     const int workers = worker_count(static_cast<std::size_t>(threads), count, min_particles_per_thread);
     parallel_for(workers, count, [&](std::int64_t i, std::size_t) {
-        if (!busy[i]) move_freely(particles[i], duration, box);
+        if (collision_of[i] == 0) {
+            move_freely(particles[i], duration, box);
+        } else {
+            collision_of[i] = 0;
+        }
     });
-    for (const Collision& c : accepted) {
-        busy[c.i] = 0;
-        if (c.kind == CollisionKind::pair) busy[c.j] = 0;
-    }
 }
 
 }  // namespace particlesim

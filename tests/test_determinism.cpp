@@ -28,6 +28,9 @@ void same_hash_everywhere(const char* name, const SimParams& params, const std::
         differing += final_hash(params, particles, {Broadphase::grid, 0, threads, substeps}) != reference;
         differing += final_hash(params, particles, {Broadphase::automatic, 0, threads, substeps}) != reference;
         differing += final_hash(params, particles, {Broadphase::grid, forced_grid, threads, substeps}) != reference;
+        // Stored by position every step, and never (automatic: every 8 steps from 65536 particles on).
+        differing += final_hash(params, particles, {Broadphase::grid, 0, threads, substeps, 1}) != reference;
+        differing += final_hash(params, particles, {Broadphase::grid, 0, threads, substeps, 0}) != reference;
         if (with_brute) differing += final_hash(params, particles, {Broadphase::brute, 0, threads, substeps}) != reference;
     }
     std::printf("%s, %d substep(s): final state hash %016llx\n", name, substeps, static_cast<unsigned long long>(reference));
@@ -50,8 +53,9 @@ int main() {
     // A crowded box of slow particles (area fraction 0.3): many collisions.
     const SimParams crowded{160.0, 1.0, 100, OutputMode::perf};
     same_hash_everywhere("crowded box", crowded, make_random_particles(2400, crowded, {5, SpeedRange{0.1, 1.0}}), 16, false);
-    // Large enough for the grid to share each slice between threads.
-    const SimParams large{1000.0, 1.0, 10, OutputMode::perf};
-    same_hash_everywhere("60000 particles", large, make_random_particles(60000, large, {9, SpeedRange{0.1, 1.0}}), 256, false);
+    // Large enough for the grid to share each slice between threads, and for
+    // the automatic storage order by position.
+    const SimParams large{1100.0, 1.0, 10, OutputMode::perf};
+    same_hash_everywhere("70000 particles", large, make_random_particles(70000, large, {9, SpeedRange{0.1, 1.0}}), 256, false);
     return check::summary("test_determinism");
 }

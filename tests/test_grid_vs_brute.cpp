@@ -31,7 +31,7 @@ std::vector<Collision> pair_candidates(const PairSearchInput& in, int grid_cells
     }
     std::vector<Collision> all;
     std::vector<Collision> scratch;
-    order_candidates(all, buffers, scratch, threads);
+    order_candidates(all, buffers, scratch, {}, {}, threads);
     return all;
 }
 

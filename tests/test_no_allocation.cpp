@@ -28,11 +28,13 @@ int main() {
     const SimParams params{20000.0, 1.0, 100, OutputMode::perf};
     for (const Broadphase search : {Broadphase::brute, Broadphase::grid}) {
         for (const int threads : {1, 2}) {
-            Simulation sim(params, make_random_particles(1000, params), {search, 0, threads});
-            sim.run(20);  // warm-up: buffers grow to their working size
-            const long before = allocations.load();
-            sim.run(200);
-            CHECK_EQ(allocations.load() - before, 0L);
+            for (const int sort_every : {0, 1}) {  // never / every step stored by position
+                Simulation sim(params, make_random_particles(1000, params), {search, 0, threads, 1, sort_every});
+                sim.run(20);  // warm-up: buffers grow to their working size
+                const long before = allocations.load();
+                sim.run(200);
+                CHECK_EQ(allocations.load() - before, 0L);
+            }
         }
     }
     return check::summary("test_no_allocation");

@@ -28,21 +28,22 @@ void order_encodes_the_tie_rules() {
                                       Collision::pair(0.3, 3, 4), Collision::pair(0.5, 0, 2)};
     std::vector<ThreadCandidates> none(1);
     std::vector<Collision> scratch;
-    order_candidates(candidates, none, scratch, 1);
+    order_candidates(candidates, none, scratch, {}, {}, 1);
     // Sorted by time, walls before pairs at equal time, then by indices; the
     // duplicate (0, 2) found twice by a search is kept once.
     const std::vector<Collision> expected{Collision::pair(0.3, 3, 4), Collision::wall(0.5, 1), Collision::pair(0.5, 0, 2),
                                           Collision::pair(0.5, 1, 2)};
     CHECK(candidates == expected);
 
-    std::vector<std::uint8_t> busy(5, 0);
+    std::vector<std::uint32_t> collision_of(5, 0);
     std::vector<Collision> accepted;
-    select_collisions(candidates, busy, accepted);
+    select_collisions(candidates, collision_of, accepted);
     // (1, 2) loses: 1 already has its wall collision.
     const std::vector<Collision> expected_accepted{Collision::pair(0.3, 3, 4), Collision::wall(0.5, 1),
                                                    Collision::pair(0.5, 0, 2)};
     CHECK(accepted == expected_accepted);
-    CHECK(std::all_of(busy.begin(), busy.end(), [](std::uint8_t b) { return b == 1; }));
+    // Each particle is marked with its collision's number in `accepted`.
+    CHECK(collision_of == (std::vector<std::uint32_t>{3, 2, 3, 1, 1}));
 }
 
 void wall_beats_pair_at_equal_time() {
@@ -148,7 +149,7 @@ void parallel_order_equals_one_sort() {
         std::vector<ThreadCandidates> found(static_cast<std::size_t>(threads));
         for (std::size_t k = 75000; k < drawn.size(); ++k) found[k % found.size()].found.push_back(drawn[k]);
         std::vector<Collision> scratch;
-        order_candidates(candidates, found, scratch, threads);
+        order_candidates(candidates, found, scratch, {}, {}, threads);
         CHECK(candidates == expected);
     }
 }

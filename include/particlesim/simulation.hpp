@@ -8,6 +8,7 @@
 #include "particlesim/particle.hpp"
 #include "particlesim/sim_params.hpp"
 #include "particlesim/step_counts.hpp"
+#include "particlesim/storage_order.hpp"
 #include "particlesim/whole_step_runner.hpp"
 
 #include <cstdint>
@@ -30,6 +31,11 @@ struct SimOptions {
     int grid_cells = 0;  // > 0 forces a G x G grid (implies the grid search)
     int threads = 0;     // 0: OpenMP's default
     int substeps = 1;    // micro-steps of length 1/substeps per step (rules.md "Substeps")
+    // Steps between sorts of the stored particles by position (see
+    // storage_order.hpp): 0 never; automatic: every 8 steps from 65536
+    // particles on. Results do not depend on it, only speed does.
+    int sort_by_position_every = automatic_sorting;
+    static constexpr int automatic_sorting = -1;
 };
 
 class Simulation : public WholeStepRunner<Simulation> {
@@ -43,7 +49,8 @@ public:
     // One whole step: `substeps` micro-steps under the step rules.
     void step();
 
-    [[nodiscard]] std::span<const Particle> particles() const { return particles_; }
+    // In the user's order (a large scene's storage order is undone on demand).
+    [[nodiscard]] std::span<const Particle> particles() const;
     [[nodiscard]] const SimParams& params() const { return params_; }
     [[nodiscard]] std::int64_t steps_done() const { return steps_done_; }
     [[nodiscard]] int threads() const { return threads_; }
@@ -61,11 +68,14 @@ private:
     Box box_;
     SimOptions options_;
     int threads_ = 1;
-    std::vector<Particle> particles_;
+    // Mutable: particles() restores the user's order, which changes no state.
+    mutable std::vector<Particle> particles_;
+    mutable StorageOrder storage_order_;
+    int sort_every_ = 0;  // steps; 0: never
 
     // Step buffers, sized once and reused so that a step allocates nothing.
     std::vector<double> wall_time_;
-    std::vector<std::uint8_t> busy_;
+    std::vector<std::uint32_t> collision_of_;  // by particle: its number in accepted_ (from 1), 0 if none
     std::vector<Collision> candidates_;
     std::vector<Collision> merge_scratch_;  // the walls, while a busy step's lists are merged
     std::vector<Collision> accepted_;

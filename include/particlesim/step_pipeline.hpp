@@ -26,21 +26,24 @@ void detect_wall_candidates(std::span<const Particle> particles, const Box& box,
 // Appends the pair candidates found by each thread to `candidates`, sorts all
 // by the total order and removes the duplicates a pair search may produce.
 // Busy steps sort the lists on up to `threads` threads and merge them, with
-// the wall candidates moved to `scratch` meanwhile.
+// the wall candidates moved to `scratch` meanwhile. When the particles are
+// not stored in the user's order, ties are broken by their user indices:
+// `user_index` maps stored places to user indices, `stored_index` back (see
+// StorageOrder); both empty when the two orders are the same. A pair's
+// stored indices may then come in either order.
 void order_candidates(std::vector<Collision>& candidates, std::span<ThreadCandidates> found,
-                      std::vector<Collision>& scratch, int threads);
+                      std::vector<Collision>& scratch, std::span<const std::uint32_t> user_index,
+                      std::span<const std::uint32_t> stored_index, int threads);
 
-// Accepts, in order, each candidate whose particles are still free and marks
-// them `busy`.
-void select_collisions(std::span<const Collision> ordered, std::span<std::uint8_t> busy,
+// Accepts, in order, each candidate whose particles are still free, and
+// marks each of its particles with its number in `accepted` (from 1; 0 is
+// free).
+void select_collisions(std::span<const Collision> ordered, std::span<std::uint32_t> collision_of,
                        std::vector<Collision>& accepted);
-
 // Carries out every accepted collision and the rest of the step of its particles.
-void resolve_collisions(std::span<Particle> particles, std::span<const Collision> accepted, const Box& box,
-                        double duration, int threads);
-
-// Moves every particle that is not `busy`, then clears the marks of `accepted`.
-void advance_free_particles(std::span<Particle> particles, std::span<std::uint8_t> busy,
-                            std::span<const Collision> accepted, const Box& box, double duration, int threads);
-
+void resolve_collisions(std::span<Particle> particles, std::span<const std::uint32_t> collision_of,
+                        std::span<const Collision> accepted, const Box& box, double duration, int threads);
+// Moves every particle without a collision, and clears the marks of the others.
+void advance_free_particles(std::span<Particle> particles, std::span<std::uint32_t> collision_of, const Box& box,
+                            double duration, int threads);
 }  // namespace particlesim

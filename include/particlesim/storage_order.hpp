@@ -1,0 +1,51 @@
+#pragma once
+// The order in which a simulation stores its particles. Large scenes are
+// stored sorted by position (row-major cells), so that the grid's binning,
+// the collisions and the moves walk memory roughly in the order they walk
+// space instead of jumping at random through it. The user's index of every
+// stored particle is kept: it decides ties (rules.md "Order") and the order
+// of the output, so the results do not depend on the storage order.
+
+#include "particlesim/box.hpp"
+#include "particlesim/particle.hpp"
+
+#include <cstdint>
+#include <span>
+#include <vector>
+
+namespace particlesim {
+
+class StorageOrder {
+public:
+    // Makes room for `count` particles, so that sorting allocates nothing.
+    void reserve(std::size_t count);
+
+    // Sorts `particles` by cell, stably, and records their user indices.
+    void sort_by_position(std::span<Particle> particles, const Box& box);
+
+    // Puts `particles` back in the user's order.
+    void restore_user_order(std::span<Particle> particles);
+
+    [[nodiscard]] bool is_user_order() const { return user_order_; }
+
+    // The user's index of the particle stored at each place, and the stored
+    // place of each user index; both empty while the order is the user's.
+    [[nodiscard]] std::span<const std::uint32_t> user_index() const { return in_use(user_index_); }
+    [[nodiscard]] std::span<const std::uint32_t> stored_index() const { return in_use(stored_index_); }
+
+private:
+    [[nodiscard]] std::span<const std::uint32_t> in_use(const std::vector<std::uint32_t>& map) const {
+        return user_order_ ? std::span<const std::uint32_t>{} : std::span<const std::uint32_t>{map};
+    }
+
+    // Moves the particle stored at i to stored_index_[i] (its destination),
+    // for every i; then makes stored_index_ the inverse of user_index_.
+    void permute(std::span<Particle> particles);
+
+    bool user_order_ = true;
+    std::vector<std::uint32_t> user_index_;
+    std::vector<std::uint32_t> stored_index_;
+    std::vector<std::uint32_t> cell_start_;
+};
+
+}  // namespace particlesim

@@ -1,0 +1,76 @@
+#include "particlesim/storage_order.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <numeric>
+#include <utility>
+
+namespace particlesim {
+
+namespace {
+
+// About two particles a cell: fine enough that a grid cell's particles sit
+// together in memory, coarse enough that the cell counts stay small.
+constexpr double particles_per_cell = 2.0;
+
+std::size_t cells_per_side(std::size_t count) {
+    return static_cast<std::size_t>(std::max(1.0, std::floor(std::sqrt(static_cast<double>(count) / particles_per_cell))));
+}
+
+}  // namespace
+
+void StorageOrder::reserve(std::size_t count) {
+    user_index_.reserve(count);
+    stored_index_.reserve(count);
+    const std::size_t side = cells_per_side(count);
+    cell_start_.reserve(side * side + 1);
+}
+
+void StorageOrder::sort_by_position(std::span<Particle> particles, const Box& box) {
+    const std::size_t count = particles.size();
+    if (user_order_) {
+        user_index_.resize(count);
+        std::iota(user_index_.begin(), user_index_.end(), 0U);
+    }
+    const std::size_t side = cells_per_side(count);
+    const double scale = static_cast<double>(side) / (box.upper + box.lower);
+    const auto cell_of = [&](const Vec2& p) {
+        const auto column = std::min(side - 1, static_cast<std::size_t>(std::max(0.0, p.x() * scale)));
+        const auto row = std::min(side - 1, static_cast<std::size_t>(std::max(0.0, p.y() * scale)));
+        return row * side + column;
+    };
+    // Counting sort: stored_index_ holds each particle's cell, then its destination.
+    cell_start_.assign(side * side + 1, 0U);
+    stored_index_.resize(count);
+    for (std::size_t i = 0; i < count; ++i) {
+        stored_index_[i] = static_cast<std::uint32_t>(cell_of(particles[i].position));
+        ++cell_start_[stored_index_[i] + 1];
+    }
+    std::partial_sum(cell_start_.begin(), cell_start_.end(), cell_start_.begin());
+    for (std::uint32_t& place : stored_index_) place = cell_start_[place]++;
+    permute(particles);
+    user_order_ = false;
+}
+
+void StorageOrder::restore_user_order(std::span<Particle> particles) {
+    if (user_order_) return;
+    stored_index_.assign(user_index_.begin(), user_index_.end());
+    permute(particles);
+    user_order_ = true;
+}
+
+void StorageOrder::permute(std::span<Particle> particles) {
+    // In place, cycle by cycle: each swap puts one particle where it belongs,
+    // without a second copy of the particles.
+    for (std::size_t i = 0; i < particles.size(); ++i) {
+        while (stored_index_[i] != i) {
+            const std::uint32_t to = stored_index_[i];
+            std::swap(particles[i], particles[to]);
+            std::swap(user_index_[i], user_index_[to]);
+            std::swap(stored_index_[i], stored_index_[to]);
+        }
+    }
+    for (std::size_t i = 0; i < particles.size(); ++i) stored_index_[user_index_[i]] = static_cast<std::uint32_t>(i);
+}
+
+}  // namespace particlesim
