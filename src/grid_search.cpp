@@ -78,6 +78,11 @@ struct SliceSpan {
     [[nodiscard]] double path_end(double sweep_end) const { return std::min(end, sweep_end); }
 };
 
+// A particle's path ends at its wall time or at the end of the step.
+double sweep_end(const PairSearchInput& in, std::int64_t particle) {
+    return std::min(in.duration, in.wall_time[particle]);
+}
+
 SliceSpan slice_span(const PairSearchInput& in, int slice, int slices) {
     const double begin = in.duration * slice / slices;
     const double end = slice + 1 == slices ? in.duration : in.duration * (slice + 1) / slices;
@@ -115,7 +120,6 @@ GridSearch& GridSearch::operator=(GridSearch&&) noexcept = default;
 
 GridLayout GridSearch::choose_layout(const PairSearchInput& in, int forced_cells, int threads) {
     const auto count = static_cast<std::int64_t>(in.particles.size());
-    sweep_end_.resize(in.particles.size());
     double length_sum = 0.0;
     double max_speed = 0.0;
     std::int64_t present = 0;
@@ -128,8 +132,7 @@ GridLayout GridSearch::choose_layout(const PairSearchInput& in, int forced_cells
     parallel_for(workers, blocks, [&](std::int64_t b, std::size_t) {
         BlockSums& sums = block_sums_[b];
         for (std::int64_t i = b * block; i < std::min(count, (b + 1) * block); ++i) {
-            const double end = std::min(in.duration, in.wall_time[i]);
-            sweep_end_[i] = end;
+            const double end = sweep_end(in, i);
             const double speed = in.particles[i].velocity.norm();
             sums.max_speed = std::max(sums.max_speed, speed);
             if (end > 0.0) {
@@ -240,11 +243,11 @@ void GridSearch::bin_slice(const PairSearchInput& in, int slice, SliceWorkspace&
     const double fit = layout_.cell_size * cell_fit_slack;
     const auto count = static_cast<std::int64_t>(in.particles.size());
     const auto slice_box = [&](std::int64_t i) {
-        return swept_box(in.particles[i], span.begin, span.path_end(sweep_end_[i]));
+        return swept_box(in.particles[i], span.begin, span.path_end(sweep_end(in, i)));
     };
     const auto for_each_piece = [&](std::int64_t i, int pieces, auto&& body) {
         for (int piece = 0; piece < pieces; ++piece) {
-            body(piece_box(in.particles[i], span.begin, span.path_end(sweep_end_[i]), piece, pieces));
+            body(piece_box(in.particles[i], span.begin, span.path_end(sweep_end(in, i)), piece, pieces));
         }
     };
 
@@ -264,7 +267,7 @@ void GridSearch::bin_slice(const PairSearchInput& in, int slice, SliceWorkspace&
     const auto count_pieces = [&](std::int64_t first, std::int64_t last, std::uint32_t* counts, std::size_t& counted) {
         for (std::int64_t i = first; i < last; ++i) {
             if (ws.cell_of[i] != large_marker) continue;
-            const int pieces = pieces_to_fit(in.particles[i], span.begin, span.path_end(sweep_end_[i]), fit);
+            const int pieces = pieces_to_fit(in.particles[i], span.begin, span.path_end(sweep_end(in, i)), fit);
             ws.cell_of[i] = large_marker - static_cast<std::uint32_t>(pieces);
             for_each_piece(i, pieces, [&](const SweptBox& piece) { ++counts[cell_of_box(piece)]; });
             counted += static_cast<std::size_t>(pieces);
@@ -278,7 +281,7 @@ void GridSearch::bin_slice(const PairSearchInput& in, int slice, SliceWorkspace&
             const auto [first, last] = block_of(worker);
             std::size_t counted = 0;
             for (std::int64_t i = first; i < last; ++i) {
-                if (!span.holds_path(sweep_end_[i])) {
+                if (!span.holds_path(sweep_end(in, i))) {
                     ws.cell_of[i] = absent_marker;
                     continue;
                 }

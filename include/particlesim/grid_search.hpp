@@ -96,7 +96,6 @@ private:
 
     GridLayout layout_;
     std::vector<BlockSums> block_sums_;
-    std::vector<double> sweep_end_;  // by particle: min(duration, wall time)
     std::vector<SliceWorkspace> workspaces_;
 };
 
