@@ -12,8 +12,11 @@ enum class CollisionKind : std::uint8_t { wall = 0, pair = 1 };
 struct Collision {
     double time = 0.0;  // within the step (or micro-step), from its start
     CollisionKind kind = CollisionKind::wall;
-    std::uint32_t i = 0;  // the particle (wall) or the lower index (pair)
-    std::uint32_t j = 0;  // the higher index of a pair; 0 for a wall
+    // Stored indices: i the particle (wall) or the lower index (pair), j the
+    // higher one (0 for a wall). While a Simulation stores its particles out
+    // of the user's order (storage_order.hpp), a pair's may come either way.
+    std::uint32_t i = 0;
+    std::uint32_t j = 0;
 
     static Collision wall(double time, std::uint32_t particle) {
         return {time, CollisionKind::wall, particle, 0};

@@ -49,7 +49,8 @@ public:
     // One whole step: `substeps` micro-steps under the step rules.
     void step();
 
-    // In the user's order (a large scene's storage order is undone on demand).
+    // In the user's order: a large scene's storage order is undone on demand
+    // (so, unlike most const functions, not to be called from two threads at once).
     [[nodiscard]] std::span<const Particle> particles() const;
     [[nodiscard]] const SimParams& params() const { return params_; }
     [[nodiscard]] std::int64_t steps_done() const { return steps_done_; }

@@ -40,10 +40,13 @@ void order_candidates(std::vector<Collision>& candidates, std::span<ThreadCandid
 // free).
 void select_collisions(std::span<const Collision> ordered, std::span<std::uint32_t> collision_of,
                        std::vector<Collision>& accepted);
+
 // Carries out every accepted collision and the rest of the step of its particles.
 void resolve_collisions(std::span<Particle> particles, std::span<const std::uint32_t> collision_of,
                         std::span<const Collision> accepted, const Box& box, double duration, int threads);
+
 // Moves every particle without a collision, and clears the marks of the others.
 void advance_free_particles(std::span<Particle> particles, std::span<std::uint32_t> collision_of, const Box& box,
                             double duration, int threads);
+
 }  // namespace particlesim
