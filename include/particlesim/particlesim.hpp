@@ -22,5 +22,6 @@
 #include "particlesim/state_writer.hpp"
 #include "particlesim/step_counts.hpp"
 #include "particlesim/step_pipeline.hpp"
+#include "particlesim/storage_order.hpp"
 #include "particlesim/version.hpp"
 #include "particlesim/whole_step_runner.hpp"
