@@ -1,5 +1,6 @@
 #include "particlesim/grid_search.hpp"
 
+#include "cell_mapper.hpp"
 #include "float_box_array.hpp"
 #include "parallel.hpp"
 
@@ -56,18 +57,6 @@ constexpr double slice_sweep_in_forced_cells = 0.5;
 // A box that fits a cell with this slack keeps its neighbours within one cell
 // even after the rounding of the cell index computation.
 constexpr double cell_fit_slack = 1.0 - 1e-6;
-
-struct CellMapper {
-    double inverse_size;
-    int per_side;
-
-    [[nodiscard]] int operator()(double coordinate) const {
-        const double scaled = coordinate * inverse_size;
-        if (!(scaled > 0.0)) return 0;
-        if (scaled >= per_side) return per_side - 1;
-        return static_cast<int>(scaled);
-    }
-};
 
 // The time span of one slice. A particle's path in it runs from `begin` to
 // the particle's sweep end (its wall time or the step's end), if earlier.
@@ -242,12 +231,11 @@ void GridSearch::bin_slice(const PairSearchInput& in, int slice, SliceWorkspace&
     };
     const double fit = layout_.cell_size * cell_fit_slack;
     const auto count = static_cast<std::int64_t>(in.particles.size());
-    const auto slice_box = [&](std::int64_t i) {
-        return swept_box(in.particles[i], span.begin, span.path_end(sweep_end(in, i)));
-    };
+    const auto path_end = [&](std::int64_t i) { return span.path_end(sweep_end(in, i)); };
+    const auto slice_box = [&](std::int64_t i) { return swept_box(in.particles[i], span.begin, path_end(i)); };
     const auto for_each_piece = [&](std::int64_t i, int pieces, auto&& body) {
         for (int piece = 0; piece < pieces; ++piece) {
-            body(piece_box(in.particles[i], span.begin, span.path_end(sweep_end(in, i)), piece, pieces));
+            body(piece_box(in.particles[i], span.begin, path_end(i), piece, pieces));
         }
     };
 
@@ -267,7 +255,7 @@ void GridSearch::bin_slice(const PairSearchInput& in, int slice, SliceWorkspace&
     const auto count_pieces = [&](std::int64_t first, std::int64_t last, std::uint32_t* counts, std::size_t& counted) {
         for (std::int64_t i = first; i < last; ++i) {
             if (ws.cell_of[i] != large_marker) continue;
-            const int pieces = pieces_to_fit(in.particles[i], span.begin, span.path_end(sweep_end(in, i)), fit);
+            const int pieces = pieces_to_fit(in.particles[i], span.begin, path_end(i), fit);
             ws.cell_of[i] = large_marker - static_cast<std::uint32_t>(pieces);
             for_each_piece(i, pieces, [&](const SweptBox& piece) { ++counts[cell_of_box(piece)]; });
             counted += static_cast<std::size_t>(pieces);

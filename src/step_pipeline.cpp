@@ -134,8 +134,8 @@ void resolve_collisions(std::span<Particle> particles, std::span<const std::uint
     const int workers = worker_count(static_cast<std::size_t>(threads), count, min_particles_per_thread);
     // In storage order, not in the accepted (time) order: a large scene is
     // stored by position, so this walks memory instead of jumping through it.
-    // A pair is resolved at its lower index; accepted collisions share no
-    // particle, so they resolve independently.
+    // A pair is resolved once, at its particle c.i; accepted collisions share
+    // no particle, so they resolve independently.
     parallel_for(workers, count, [&](std::int64_t i, std::size_t) {
         if (collision_of[i] == 0) return;
         const Collision& c = accepted[collision_of[i] - 1];

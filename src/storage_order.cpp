@@ -1,5 +1,7 @@
 #include "particlesim/storage_order.hpp"
 
+#include "cell_mapper.hpp"
+
 #include <algorithm>
 #include <cmath>
 #include <numeric>
@@ -33,11 +35,9 @@ void StorageOrder::sort_by_position(std::span<Particle> particles, const Box& bo
         std::iota(user_index_.begin(), user_index_.end(), 0U);
     }
     const std::size_t side = cells_per_side(count);
-    const double scale = static_cast<double>(side) / (box.upper + box.lower);
+    const CellMapper column_of{static_cast<double>(side) / (box.upper + box.lower), static_cast<int>(side)};
     const auto cell_of = [&](const Vec2& p) {
-        const auto column = std::min(side - 1, static_cast<std::size_t>(std::max(0.0, p.x() * scale)));
-        const auto row = std::min(side - 1, static_cast<std::size_t>(std::max(0.0, p.y() * scale)));
-        return row * side + column;
+        return static_cast<std::size_t>(column_of(p.y())) * side + static_cast<std::size_t>(column_of(p.x()));
     };
     // Counting sort: stored_index_ holds each particle's cell, then its destination.
     cell_start_.assign(side * side + 1, 0U);
