@@ -1,14 +1,7 @@
 // simcli: reads a scene, runs it, writes the states (io.md). Thin by design:
 // arguments -> scene -> simulation -> output; the library does the work.
 
-#include "particlesim/energy.hpp"
-#include "particlesim/exact_simulation.hpp"
-#include "particlesim/grid_search.hpp"
-#include "particlesim/random_scene.hpp"
-#include "particlesim/scene_reader.hpp"
-#include "particlesim/simulation.hpp"
-#include "particlesim/state_writer.hpp"
-#include "particlesim/version.hpp"
+#include "particlesim/particlesim.hpp"
 
 #include <getopt.h>
 
@@ -70,7 +63,8 @@ struct CliOptions {
     EngineChoice engine = EngineChoice::step;
     bool stats = false;
     bool step_engine_options = false;  // --broadphase, --grid or --substeps given
-    SimOptions sim;
+    std::optional<PairSearch> pair_search;  // --broadphase
+    SteppedOptions stepped;
     RandomSceneOptions random;
 };
 
@@ -105,26 +99,27 @@ std::optional<CliOptions> parse_arguments(int argc, char** argv) {
         const std::string_view value = optarg != nullptr ? optarg : "";
         switch (c) {
         case 'o': options.output_path = std::string(value); break;
-        case 't': options.sim.threads = static_cast<int>(parse_unsigned("--threads", value, 1, 1024)); break;
+        case 't': options.stepped.threads = static_cast<int>(parse_unsigned("--threads", value, 1, 1024)); break;
         case opt_seed: options.random.seed = parse_unsigned("--seed", value, 0, UINT64_MAX); break;
         case opt_broadphase:
             options.step_engine_options = true;
             if (value == "auto") {
-                options.sim.broadphase = Broadphase::automatic;
+                options.pair_search = PairSearch::automatic;
             } else if (value == "brute") {
-                options.sim.broadphase = Broadphase::brute;
+                options.pair_search = PairSearch::brute_force;
             } else if (value == "grid") {
-                options.sim.broadphase = Broadphase::grid;
+                options.pair_search = PairSearch::grid;
             } else {
                 throw BadInput("--broadphase: expected auto, brute or grid, found \"" + std::string(value) + "\"");
             }
             break;
         case opt_grid:
             options.step_engine_options = true;
-            options.sim.grid_cells = static_cast<int>(parse_unsigned("--grid", value, 1, max_forced_grid_cells)); break;
+            options.stepped.grid_cells = static_cast<int>(parse_unsigned("--grid", value, 1, max_grid_cells));
+            break;
         case opt_substeps:
             options.step_engine_options = true;
-            options.sim.substeps = static_cast<int>(parse_unsigned("--substeps", value, 1, max_substeps));
+            options.stepped.substeps = static_cast<int>(parse_unsigned("--substeps", value, 1, max_substeps));
             break;
         case opt_engine:
             if (value == "step") {
@@ -147,29 +142,38 @@ std::optional<CliOptions> parse_arguments(int argc, char** argv) {
     if (options.engine == EngineChoice::exact && options.step_engine_options) {
         throw BadInput("--broadphase, --grid and --substeps belong to the step engine, not to --engine exact");
     }
+    // --grid G is a grid search with a G x G grid; it contradicts only --broadphase brute.
+    if (options.stepped.grid_cells && options.pair_search == PairSearch::brute_force) {
+        throw BadInput("--grid needs the grid search, not --broadphase brute");
+    }
+    options.stepped.pair_search =
+        options.stepped.grid_cells ? PairSearch::grid : options.pair_search.value_or(PairSearch::automatic);
     return options;
 }
 
-Scene read_input(const std::string& path, const std::string& name) {
-    if (path == "-") return read_scene(std::cin);
+Scene read_input(const std::string& path, const std::string& name, SceneLines& lines) {
+    if (path == "-") return read_scene(std::cin, &lines);
     std::error_code error;
     if (std::filesystem::is_directory(path, error)) throw BadInput(name + ": is a directory");
     std::ifstream file(path, std::ios::binary);
     if (!file) throw BadInput(name + ": cannot open: " + std::strerror(errno));
-    return read_scene(file);
+    return read_scene(file, &lines);
 }
 
 // Writes the run of `engine` (either engine) and returns its run time in seconds.
-template <typename Engine>
-double write_run(std::FILE* out, Engine& engine, const SimParams& params) {
+template <Engine E>
+double write_run(std::FILE* out, E& engine, const Scene& scene) {
     StateWriter writer(out);
     writer.write_state(0, engine.particles());
-    const bool print_mode = params.mode == OutputMode::print;
     const auto start = std::chrono::steady_clock::now();
-    engine.run(params.steps, [&](std::int64_t step, std::span<const Particle> particles) {
-        if (print_mode && step < params.steps) writer.write_state(step, particles);
-    });
-    writer.write_final(params.steps, engine.particles());
+    if (scene.mode == OutputMode::print) {
+        run(engine, scene.steps, [&](std::int64_t step, std::span<const Particle> particles) {
+            if (step < scene.steps) writer.write_state(step, particles);
+        });
+    } else {
+        run(engine, scene.steps);
+    }
+    writer.write_final(scene.steps, engine.particles());
     writer.flush();
     return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 }
@@ -193,17 +197,17 @@ void print_stats(const char* engine, const RunStats& stats, std::int64_t steps) 
 }
 
 // Runs the scene with `engine` into `output_path` (stdout when absent).
-template <typename Engine>
-RunStats run_to_output(Engine& engine, const SimParams& params, const std::optional<std::string>& output_path) {
+template <Engine E>
+RunStats run_to_output(E& engine, const Scene& scene, const std::optional<std::string>& output_path) {
     RunStats stats;
     stats.initial_energy = total_kinetic_energy(engine.particles());
     if (!output_path) {
-        stats.seconds = write_run(stdout, engine, params);
+        stats.seconds = write_run(stdout, engine, scene);
     } else {
         std::FILE* out = std::fopen(output_path->c_str(), "wb");
         if (out == nullptr) throw OutputError(*output_path + ": cannot open for writing: " + std::strerror(errno));
         try {
-            stats.seconds = write_run(out, engine, params);
+            stats.seconds = write_run(out, engine, scene);
         } catch (...) {
             std::fclose(out);
             throw;
@@ -216,7 +220,7 @@ RunStats run_to_output(Engine& engine, const SimParams& params, const std::optio
 }
 
 ExactSimulation make_exact_engine(const Scene& scene, std::vector<Particle> particles, const std::string& name) {
-    const double events = estimated_events_per_step(scene.params, particles) * static_cast<double>(scene.params.steps);
+    const double events = estimated_events_per_step(scene.world, particles) * static_cast<double>(scene.steps);
     if (!(events <= exact_event_limit)) {
         char message[200];
         std::snprintf(message, sizeof message,
@@ -225,7 +229,7 @@ ExactSimulation make_exact_engine(const Scene& scene, std::vector<Particle> part
         throw BadInput(name + ": " + message);
     }
     try {
-        return ExactSimulation(scene.params, std::move(particles));
+        return ExactSimulation(scene.world, std::move(particles));
     } catch (const OverlappingStart& e) {
         throw BadInput(name + ": " + e.what());
     }
@@ -237,25 +241,26 @@ int run(int argc, char** argv) {
     const std::string name = options->scene_path == "-" ? "<stdin>" : options->scene_path;
 
     Scene scene;
+    SceneLines lines;
     std::vector<Particle> particles;
     try {
-        scene = read_input(options->scene_path, name);
-        particles = scene.is_random() ? make_random_particles(scene.particle_count, scene.params, options->random)
+        scene = read_input(options->scene_path, name, lines);
+        particles = scene.is_random() ? make_random_particles(scene.particle_count, scene.world, options->random)
                                       : std::move(scene.particles);
     } catch (const InputError& e) {
         throw BadInput(name + ":" + std::to_string(e.line()) + ": " + e.what());
     } catch (const SceneTooFull& e) {
-        throw BadInput(name + ":" + std::to_string(scene.particle_count_line) + ": " + e.what());
+        throw BadInput(name + ":" + std::to_string(lines.particle_count) + ": " + e.what());
     }
 
     if (options->engine == EngineChoice::exact) {
         ExactSimulation engine = make_exact_engine(scene, std::move(particles), name);
-        const RunStats stats = run_to_output(engine, scene.params, options->output_path);
-        if (options->stats) print_stats("exact", stats, scene.params.steps);
+        const RunStats stats = run_to_output(engine, scene, options->output_path);
+        if (options->stats) print_stats("exact", stats, scene.steps);
     } else {
-        Simulation engine(scene.params, std::move(particles), options->sim);
-        const RunStats stats = run_to_output(engine, scene.params, options->output_path);
-        if (options->stats) print_stats("step", stats, scene.params.steps);
+        SteppedSimulation engine(scene.world, std::move(particles), options->stepped);
+        const RunStats stats = run_to_output(engine, scene, options->output_path);
+        if (options->stats) print_stats("step", stats, scene.steps);
     }
     return 0;
 }

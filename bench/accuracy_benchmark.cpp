@@ -25,7 +25,7 @@ namespace {
 
 struct AccuracyScene {
     std::string name;
-    SimParams params;
+    World params;
     std::vector<Particle> particles;
 };
 
@@ -81,7 +81,7 @@ void accuracy_benchmark(bool quick) {
     AccuracyScene default_scene{"default", {20000.0, 1.0, steps, OutputMode::perf}, {}};
     default_scene.particles = make_random_particles(1000, default_scene.params);
     for (const AccuracyScene& scene : {default_scene, crowded_box(steps)}) {
-        const SimParams& params = scene.params;
+        const World& params = scene.params;
         ExactSimulation exact(params, scene.particles);
         const RunRecord truth = record_run(exact, steps);
         const double exact_seconds =
@@ -115,7 +115,7 @@ void exact_benchmark(bool quick) {
         cases.push_back({"dense gas", n, box, static_cast<std::int64_t>(2e6 / static_cast<double>(n)) + 2, SpeedRange{0.1, 1.0}});
     }
     for (const ExactCase& c : cases) {
-        const SimParams params{c.box, 1.0, c.steps, OutputMode::perf};
+        const World params{c.box, 1.0, c.steps, OutputMode::perf};
         const std::vector<Particle> particles = make_random_particles(c.count, params, {3210, c.speeds});
         std::vector<double> seconds;
         std::uint64_t particle_collisions = 0;

@@ -14,7 +14,7 @@
 #include "statistics.hpp"
 
 #include "particlesim/random_scene.hpp"
-#include "particlesim/simulation.hpp"
+#include "particlesim/stepped_simulation.hpp"
 
 #include <spawn.h>
 #include <sys/resource.h>
@@ -60,7 +60,7 @@ struct Measurement {
 
 // Runs in the child: builds the scene (untimed), then times the steps.
 Measurement measure(const Case& c) {
-    const SimParams params{c.box_size, c.radius, c.steps, OutputMode::perf};
+    const World params{c.box_size, c.radius, c.steps, OutputMode::perf};
     RandomSceneOptions scene;
     scene.speeds = c.speeds;
     std::vector<double> seconds;

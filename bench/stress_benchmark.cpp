@@ -6,7 +6,7 @@
 
 #include "../tests/stress_scenes.hpp"
 #include "particlesim/exact_simulation.hpp"
-#include "particlesim/simulation.hpp"
+#include "particlesim/stepped_simulation.hpp"
 
 #include <chrono>
 #include <cmath>
@@ -19,7 +19,7 @@ namespace bench {
 namespace {
 
 template <typename Engine>
-void stress_row(const char* engine_name, Engine& engine, const SimParams& params, std::int64_t steps) {
+void stress_row(const char* engine_name, Engine& engine, const World& params, std::int64_t steps) {
     const auto start = std::chrono::steady_clock::now();
     const double drift = stress_scenes::run_checked(engine, params, steps);
     const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();

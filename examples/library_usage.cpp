@@ -6,7 +6,7 @@
 
 int main() {
     using namespace particlesim;
-    const SimParams params{20000.0, 1.0, 100, OutputMode::perf};  // L, r, S, mode
+    const World params{20000.0, 1.0, 100, OutputMode::perf};  // L, r, S, mode
     RandomSceneOptions scene;
     scene.seed = 42;
     SimOptions options;

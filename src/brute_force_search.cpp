@@ -1,4 +1,4 @@
-#include "particlesim/brute_force_search.hpp"
+#include "brute_force_search.hpp"
 
 #include "parallel.hpp"
 

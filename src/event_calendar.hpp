@@ -10,6 +10,7 @@
 // events fill about half of it.
 
 #include "bucket_lists.hpp"
+#include "event_order.hpp"
 
 #include <algorithm>
 #include <cstdint>
@@ -31,11 +32,7 @@ struct Event {
     std::uint32_t i = 0;  // the particle, or the lower index of a pair
     std::uint32_t j = 0;  // pair: the higher index; crossing: the cell entered
 
-    // The total order of rules.md, (t, kind, i, j).
-    friend bool operator<(const Event& a, const Event& b) {
-        if (a.time != b.time) return a.time < b.time;
-        return std::tie(a.kind, a.i, a.j) < std::tie(b.kind, b.i, b.j);
-    }
+    friend bool operator<(const Event& a, const Event& b) { return comes_before(a, b); }
 };
 
 class EventCalendar {

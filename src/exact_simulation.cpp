@@ -2,12 +2,15 @@
 
 #include "cell_list.hpp"
 #include "event_calendar.hpp"
-#include "particlesim/box.hpp"
-#include "particlesim/physics.hpp"
+#include "box.hpp"
+#include "options_check.hpp"
+#include "physics.hpp"
 #include "scene_checks.hpp"
+#include "uniform_grid.hpp"
 
 #include <algorithm>
 #include <cmath>
+#include <optional>
 #include <string>
 
 namespace particlesim {
@@ -19,19 +22,18 @@ OverlappingStart::OverlappingStart(std::uint32_t first, std::uint32_t second)
 
 namespace {
 
-// Cells a little wider than a diameter, so that rounding at a cell border
-// cannot hide a contact. Wider cells mean fewer crossing events but more pair
+// Cells at least a diameter wide, so that a contact is always between
+// neighbouring cells. Wider cells mean fewer crossing events but more pair
 // tests per event, so: about 4 particles per cell in a sparse box, and no
 // wider than half a mean free path (1 / (4 r N / L^2)) in a dense one. Either
-// way the cell count stays O(N). Measured when it was chosen: the default
-// scene ran in 0.94 s with 16 cells a side against 2.0 s with 64, and the
-// dense gas of 1e6 in 3.1 s with 1617 against 4.0 s with 800.
-int cells_per_side_for(const SimParams& params, std::size_t particle_count) {
+// way the cell count stays O(N) (the choice is measured in docs/benchmarks.md).
+UniformGrid neighbour_grid(const World& world, std::size_t particle_count, std::optional<int> cells_per_side) {
+    if (cells_per_side) return UniformGrid(world.box_size, *cells_per_side);
     const double count = static_cast<double>(particle_count);
-    const double by_diameter = std::floor(params.box_size / (2.0 * params.radius * (1.0 + 1e-6)));
     const double by_count = std::ceil(0.5 * std::sqrt(count));
-    const double by_free_path = std::ceil(8.0 * params.radius * count / params.box_size);
-    return static_cast<int>(std::max(1.0, std::min(by_diameter, std::max(by_count, by_free_path))));
+    const double by_free_path = std::ceil(8.0 * world.radius * count / world.box_size);
+    return UniformGrid(world.box_size,
+                       UniformGrid::cells_per_side(world.box_size, 2.0 * world.radius, std::max(by_count, by_free_path)));
 }
 
 }  // namespace
@@ -49,16 +51,14 @@ int cells_per_side_for(const SimParams& params, std::size_t particle_count) {
 // collision partner is always a neighbour (cells are wider than a diameter).
 class ExactSimulation::Engine {
 public:
-    Engine(const SimParams& params, std::vector<Particle> particles, const ExactOptions& options)
-        : params_(params), box_(Box::of(params)), particles_(std::move(particles)),
-          cells_(options.cells_per_side > 0 ? options.cells_per_side : cells_per_side_for(params, particles_.size()),
-                 params.box_size, particles_.size()),
+    Engine(const World& world, std::vector<Particle> particles, const ExactOptions& options)
+        : world_(world), box_(Box::of(world)), particles_(std::move(particles)),
+          cells_(neighbour_grid(world, particles_.size(), options.cells_per_side), particles_.size()),
           stamp_(particles_.size(), 0.0), wall_time_(particles_.size(), never), crossing_(particles_.size()),
           pair_(particles_.size()), last_event_step_(particles_.size(), -1), last_repeat_step_(particles_.size(), -1),
           snapshot_(particles_), queue_(count(), Event{never, EventKind::cell_crossing, 0, 0}) {
         for (std::uint32_t i = 0; i < count(); ++i) {
-            const Vec2& p = particles_[i].position;
-            cells_.insert(i, cells_.cell_at(cells_.column_of(p.x()), cells_.column_of(p.y())));
+            cells_.insert(i, cells_.grid().cell_of(particles_[i].position));
         }
         reject_overlaps();
         // Every wall time first: the pair predictions read them.
@@ -96,12 +96,11 @@ public:
     }
 
     const std::vector<Particle>& snapshot() const { return snapshot_; }
-    const SimParams& params() const { return params_; }
+    const World& world() const { return world_; }
     std::int64_t steps_done() const { return steps_done_; }
     const StepCounts& last_step() const { return last_step_; }
     const StepCounts& totals() const { return totals_; }
     std::uint64_t several_events() const { return several_events_; }
-    int cells_per_side() const { return cells_.side(); }
 
 private:
     struct Crossing {
@@ -131,8 +130,8 @@ private:
     template <typename Visit>
     void for_each_neighbour(std::uint32_t i, Visit&& visit) const {
         const std::uint32_t cell = cells_.cell_of_particle(i);
-        const int column = cells_.column(cell);
-        const int row = cells_.row(cell);
+        const int column = cells_.grid().column(cell);
+        const int row = cells_.grid().row(cell);
         for (int dy = -1; dy <= 1; ++dy) {
             for (int dx = -1; dx <= 1; ++dx) {
                 cells_.for_each_in(column + dx, row + dy, [&](std::uint32_t j) {
@@ -145,8 +144,9 @@ private:
     void reject_overlaps() const {
         for (std::uint32_t i = 0; i < count(); ++i) {
             for_each_neighbour(i, [&](std::uint32_t j) {
-                const Vec2 d = particles_[j].position - particles_[i].position;
-                if (j > i && d.dot(d) < box_.contact_dist_sq) throw OverlappingStart(i, j);
+                if (j > i && disks_overlap(particles_[j].position - particles_[i].position, box_.contact_dist_sq)) {
+                    throw OverlappingStart(i, j);
+                }
             });
         }
     }
@@ -158,18 +158,18 @@ private:
     void predict_wall(std::uint32_t i) {
         const WallHit hit = time_to_wall(particles_[i].position, particles_[i].velocity, box_);
         wall_time_[i] = hit.time == never ? never : not_before_now(stamp_[i] + hit.time);
-        ++last_step_.candidates;
     }
 
     // The next time the particle leaves its cell, and the cell it enters.
     void predict_crossing(std::uint32_t i) {
         const Particle& p = particles_[i];
+        const UniformGrid& grid = cells_.grid();
         const std::uint32_t cell = cells_.cell_of_particle(i);
-        int column = cells_.column(cell);
-        int row = cells_.row(cell);
+        int column = grid.column(cell);
+        int row = grid.row(cell);
         const auto exit_delay = [&](double position, double velocity, int index) {
-            if (velocity > 0.0 && index + 1 < cells_.side()) return ((index + 1) * cells_.cell_size() - position) / velocity;
-            if (velocity < 0.0 && index > 0) return (index * cells_.cell_size() - position) / velocity;
+            if (velocity > 0.0 && index + 1 < grid.per_side()) return ((index + 1) * grid.cell_size() - position) / velocity;
+            if (velocity < 0.0 && index > 0) return (index * grid.cell_size() - position) / velocity;
             return never;
         };
         const double along_x = exit_delay(p.position.x(), p.velocity.x(), column);
@@ -184,7 +184,7 @@ private:
         } else {
             row += p.velocity.y() > 0.0 ? 1 : -1;
         }
-        crossing_[i] = {not_before_now(stamp_[i] + delay), cells_.cell_at(column, row)};
+        crossing_[i] = {not_before_now(stamp_[i] + delay), grid.cell_at(column, row)};
     }
 
     // Keeps the pair event of (i, j) as i's pair prediction if it comes first.
@@ -201,7 +201,6 @@ private:
         const Event event{not_before_now(reference + delay), EventKind::pair, lower, higher};
         if (!(event.time < wall_time_[i] && event.time < wall_time_[j] && event < pair_[i].event)) return;
         pair_[i] = {event, j, version(j)};
-        ++last_step_.candidates;
     }
 
     void predict_pairs(std::uint32_t i) {
@@ -271,10 +270,11 @@ private:
     void cross_cell(std::uint32_t i, std::uint32_t cell) {
         const std::uint32_t old_cell = cells_.cell_of_particle(i);
         cells_.move(i, cell);
-        const int column = cells_.column(cell);
-        const int row = cells_.row(cell);
-        const int step_x = column - cells_.column(old_cell);
-        const int step_y = row - cells_.row(old_cell);
+        const UniformGrid& grid = cells_.grid();
+        const int column = grid.column(cell);
+        const int row = grid.row(cell);
+        const int step_x = column - grid.column(old_cell);
+        const int step_y = row - grid.row(old_cell);
         for (int k = -1; k <= 1; ++k) {
             const int new_column = step_x != 0 ? column + step_x : column + k;
             const int new_row = step_x != 0 ? row + k : row + step_y;
@@ -293,7 +293,7 @@ private:
         }
     }
 
-    SimParams params_;
+    World world_;
     Box box_;
     std::vector<Particle> particles_;  // each at its own stamp_
     CellList cells_;
@@ -314,17 +314,18 @@ private:
 
 namespace {
 
-std::vector<Particle> checked(const SimParams& params, std::vector<Particle> particles) {
-    require_valid_scene("particlesim::ExactSimulation", params, particles);
+std::vector<Particle> checked(const World& world, std::vector<Particle> particles, const ExactOptions& options) {
+    if (options.cells_per_side) {
+        OptionsCheck("particlesim::ExactOptions").in_range("cells_per_side", *options.cells_per_side, 1, max_grid_cells);
+    }
+    require_valid_scene("particlesim::ExactSimulation", world, particles);
     return particles;
 }
 
 }  // namespace
 
-ExactSimulation::ExactSimulation(const SimParams& params, std::vector<Particle> particles, const ExactOptions& options) {
-    if (options.cells_per_side < 0) throw std::invalid_argument("particlesim::ExactSimulation: cells_per_side must be >= 0");
-    engine_ = std::make_unique<Engine>(params, checked(params, std::move(particles)), options);
-}
+ExactSimulation::ExactSimulation(const World& world, std::vector<Particle> particles, const ExactOptions& options)
+    : engine_(std::make_unique<Engine>(world, checked(world, std::move(particles), options), options)) {}
 
 ExactSimulation::~ExactSimulation() = default;
 ExactSimulation::ExactSimulation(ExactSimulation&&) noexcept = default;
@@ -332,24 +333,23 @@ ExactSimulation& ExactSimulation::operator=(ExactSimulation&&) noexcept = defaul
 
 void ExactSimulation::step() { engine_->step(); }
 std::span<const Particle> ExactSimulation::particles() const { return engine_->snapshot(); }
-const SimParams& ExactSimulation::params() const { return engine_->params(); }
+const World& ExactSimulation::world() const { return engine_->world(); }
 std::int64_t ExactSimulation::steps_done() const { return engine_->steps_done(); }
 const StepCounts& ExactSimulation::last_step() const { return engine_->last_step(); }
 const StepCounts& ExactSimulation::totals() const { return engine_->totals(); }
 std::uint64_t ExactSimulation::last_step_particles_with_several_events() const { return engine_->several_events(); }
-int ExactSimulation::cells_per_side() const { return engine_->cells_per_side(); }
 
-double estimated_events_per_step(const SimParams& params, std::span<const Particle> particles) {
+double estimated_events_per_step(const World& world, std::span<const Particle> particles) {
     double speed_sum = 0.0;  // sum of |vx| + |vy|
     for (const Particle& p : particles) speed_sum += std::abs(p.velocity.x()) + std::abs(p.velocity.y());
     if (speed_sum == 0.0) return 0.0;
-    const double span = params.upper() - params.lower();
+    const double span = world.upper() - world.lower();
     if (!(span > 0.0)) return never;  // a moving disk that fills the box bounces forever
     const double walls = speed_sum / span;
     // Ideal gas: collision length 4r per unit path, density of the others (N - 1) / L^2,
     // relative speeds about sqrt(2) times the speeds.
-    const double density = static_cast<double>(particles.size() - 1) / (params.box_size * params.box_size);
-    const double pairs = 0.5 * speed_sum * 4.0 * params.radius * density * std::sqrt(2.0);
+    const double density = static_cast<double>(particles.size() - 1) / (world.box_size * world.box_size);
+    const double pairs = 0.5 * speed_sum * 4.0 * world.radius * density * std::sqrt(2.0);
     return walls + pairs;
 }
 

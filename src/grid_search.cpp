@@ -1,6 +1,6 @@
-#include "particlesim/grid_search.hpp"
+#include "grid_search.hpp"
 
-#include "cell_mapper.hpp"
+#include "uniform_grid.hpp"
 #include "float_box_array.hpp"
 #include "parallel.hpp"
 
@@ -90,9 +90,9 @@ struct CellRegion {
 // The cells whose fitting boxes can meet `box`: a fitting box that meets it
 // has its lower corner at most one cell below or left of this box's lower
 // corner.
-CellRegion cells_reaching(const SweptBox& box, const CellMapper& cell_of) {
-    return {std::max(cell_of(box.min_x) - 1, 0), std::max(cell_of(box.min_y) - 1, 0), cell_of(box.max_x),
-            cell_of(box.max_y)};
+CellRegion cells_reaching(const SweptBox& box, const UniformGrid& grid) {
+    return {std::max(grid.column_of(box.min_x) - 1, 0), std::max(grid.column_of(box.min_y) - 1, 0),
+            grid.column_of(box.max_x), grid.column_of(box.max_y)};
 }
 
 // Always inlined: it runs for every binned box, and a call costs as much as it does.
@@ -107,7 +107,7 @@ GridSearch::~GridSearch() = default;
 GridSearch::GridSearch(GridSearch&&) noexcept = default;
 GridSearch& GridSearch::operator=(GridSearch&&) noexcept = default;
 
-GridLayout GridSearch::choose_layout(const PairSearchInput& in, int forced_cells, int threads) {
+GridLayout GridSearch::choose_layout(const PairSearchInput& in, std::optional<int> forced_cells, int threads) {
     const auto count = static_cast<std::int64_t>(in.particles.size());
     double length_sum = 0.0;
     double max_speed = 0.0;
@@ -136,7 +136,7 @@ GridLayout GridSearch::choose_layout(const PairSearchInput& in, int forced_cells
         max_speed = std::max(max_speed, sums.max_speed);
     }
 
-    const double box_size = in.box.upper + in.box.lower;
+    const double box_size = in.box.side;
     GridLayout layout;
     layout.reach = in.box.lower + relative_margin * (box_size + max_speed * in.duration);
     const double mean_sweep = length_sum / static_cast<double>(std::max<std::int64_t>(present, 1));
@@ -146,10 +146,9 @@ GridLayout GridSearch::choose_layout(const PairSearchInput& in, int forced_cells
         return static_cast<int>(std::clamp(std::ceil(mean_sweep / slice_sweep), 1.0, double{max_slices}));
     };
 
-    if (forced_cells > 0) {
-        layout.cells_per_side = forced_cells;
-        layout.cell_size = box_size / forced_cells;
-        layout.slices = slices_for(slice_sweep_in_forced_cells * (layout.cell_size - diameter));
+    if (forced_cells) {
+        layout.grid = UniformGrid(box_size, *forced_cells);
+        layout.slices = slices_for(slice_sweep_in_forced_cells * (layout.grid.cell_size() - diameter));
     } else {
         // Cells at least a particle spacing wide and twice a typical slice
         // path, so that most swept boxes fit their cell; at most ~4 cells per
@@ -158,14 +157,12 @@ GridLayout GridSearch::choose_layout(const PairSearchInput& in, int forced_cells
         layout.slices = slices_for(slice_sweep_in_spacings * spacing);
         const double wanted = std::max(spacing, diameter + 2.0 * mean_sweep / layout.slices);
         const double max_side = std::floor(std::sqrt(4.0 * static_cast<double>(present))) + 1.0;
-        layout.cells_per_side = static_cast<int>(std::clamp(std::floor(box_size / wanted), 1.0, max_side));
-        layout.cell_size = box_size / layout.cells_per_side;
+        layout.grid = UniformGrid(box_size, UniformGrid::cells_per_side(box_size, wanted, max_side));
     }
     return layout;
 }
 
-void GridSearch::find_pairs(const PairSearchInput& in, int forced_cells, std::span<ThreadCandidates> buffers) {
-    forced_cells = std::min(forced_cells, max_forced_grid_cells);
+void GridSearch::find_pairs(const PairSearchInput& in, std::optional<int> forced_cells, std::span<ThreadCandidates> buffers) {
     const int threads = static_cast<int>(buffers.size());
     layout_ = choose_layout(in, forced_cells, threads);
 
@@ -190,7 +187,7 @@ void GridSearch::find_pairs(const PairSearchInput& in, int forced_cells, std::sp
 }
 
 void GridSearch::prepare(SliceWorkspace& ws, std::size_t count, int workers) const {
-    const auto cells = static_cast<std::size_t>(layout_.cells_per_side) * static_cast<std::size_t>(layout_.cells_per_side);
+    const std::size_t cells = layout_.grid.cell_count();
     // Room for every particle's box, plus pieces of a few fast paths.
     const std::size_t boxes = count + count / 4 + 64;
     ws.cell_of.resize(count);
@@ -225,11 +222,9 @@ int GridSearch::pieces_to_fit(const Particle& particle, double begin, double end
 
 void GridSearch::bin_slice(const PairSearchInput& in, int slice, SliceWorkspace& ws, int threads) const {
     const SliceSpan span = slice_span(in, slice, layout_.slices);
-    const CellMapper cell_of{1.0 / layout_.cell_size, layout_.cells_per_side};
-    const auto cell_of_box = [&](const SweptBox& box) {
-        return static_cast<std::uint32_t>(cell_of(box.min_y) * layout_.cells_per_side + cell_of(box.min_x));
-    };
-    const double fit = layout_.cell_size * cell_fit_slack;
+    const UniformGrid& grid = layout_.grid;
+    const auto cell_of_box = [&](const SweptBox& box) { return grid.cell_of(box.min_x, box.min_y); };
+    const double fit = grid.cell_size() * cell_fit_slack;
     const auto count = static_cast<std::int64_t>(in.particles.size());
     const auto path_end = [&](std::int64_t i) { return span.path_end(sweep_end(in, i)); };
     const auto slice_box = [&](std::int64_t i) { return swept_box(in.particles[i], span.begin, path_end(i)); };
@@ -358,7 +353,7 @@ inline void test_against_range(const PairSearchInput& in, const GridSearch::Slic
 
 void GridSearch::test_small_pairs(const PairSearchInput& in, const SliceWorkspace& ws,
                                   std::span<ThreadCandidates> out, int threads) const {
-    const int side = layout_.cells_per_side;
+    const int side = layout_.grid.per_side();
     const std::uint32_t* start = ws.cell_start.data();
     const std::uint32_t* ids = ws.by_cell.data();
     const FloatBoxArray& boxes = ws.boxes_by_cell;
@@ -391,8 +386,8 @@ void GridSearch::test_small_pairs(const PairSearchInput& in, const SliceWorkspac
 
 void GridSearch::test_large_pairs(const PairSearchInput& in, const SliceWorkspace& ws,
                                   std::span<ThreadCandidates> out, int threads) const {
-    const CellMapper cell_of{1.0 / layout_.cell_size, layout_.cells_per_side};
-    const int side = layout_.cells_per_side;
+    const UniformGrid& grid = layout_.grid;
+    const int side = grid.per_side();
     const auto large_count = static_cast<std::int64_t>(ws.large.size());
 
     parallel_for_dynamic(large_count > 1 ? threads : 1, large_count, 1, [&](std::int64_t k, std::size_t thread) {
@@ -401,7 +396,7 @@ void GridSearch::test_large_pairs(const PairSearchInput& in, const SliceWorkspac
         const SweptBox& box = ws.large_boxes[k];
         const FloatBox bounds = float_bounds(box);
         const PairTestState state = pair_test_state(in, a);
-        const CellRegion region = cells_reaching(box, cell_of);
+        const CellRegion region = cells_reaching(box, grid);
         for (int cy = region.y_first; cy <= region.y_last; ++cy) {
             const auto row = static_cast<std::size_t>(cy) * side;
             test_against_range(in, ws, a, bounds, state, ws.cell_start[row + region.x_first],

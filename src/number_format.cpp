@@ -1,4 +1,4 @@
-#include "particlesim/number_format.hpp"
+#include "number_format.hpp"
 
 #include <charconv>
 #include <cmath>

@@ -1,7 +1,8 @@
 #include "particlesim/random_scene.hpp"
 
-#include "particlesim/box.hpp"
-#include "particlesim/random.hpp"
+#include "box.hpp"
+#include "random.hpp"
+#include "uniform_grid.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -11,9 +12,9 @@
 
 namespace particlesim {
 
-SpeedRange default_speed_range(const SimParams& params) {
-    const double a = params.box_size / (8.0 * params.radius);
-    const double b = params.box_size / 4.0;
+SpeedRange default_speed_range(const World& world) {
+    const double a = world.box_size / (8.0 * world.radius);
+    const double b = world.box_size / 4.0;
     return {std::min(a, b), std::max(a, b)};
 }
 
@@ -23,21 +24,20 @@ namespace {
 // as linked lists, so that an overlap check looks at 3 x 3 cells only.
 class PlacementGrid {
 public:
-    PlacementGrid(std::size_t count, const SimParams& params) {
-        const double by_radius = std::floor(params.box_size / (2.0 * params.radius));
-        const double by_count = std::floor(std::sqrt(static_cast<double>(count))) + 1.0;
-        side_ = static_cast<int>(std::clamp(std::min(by_radius, by_count), 1.0, 65536.0));
-        inverse_cell_ = side_ / params.box_size;
-        head_.assign(static_cast<std::size_t>(side_) * side_, none);
+    PlacementGrid(std::size_t count, const World& world)
+        : grid_(world.box_size, UniformGrid::cells_per_side(world.box_size, 2.0 * world.radius,
+                                                            std::floor(std::sqrt(static_cast<double>(count))) + 1.0)),
+          head_(grid_.cell_count(), none) {
         next_.reserve(count);
     }
 
     [[nodiscard]] bool overlaps_any(const Vec2& p, std::span<const Particle> placed, double contact_dist_sq) const {
-        const int cx = cell(p.x());
-        const int cy = cell(p.y());
-        for (int y = std::max(cy - 1, 0); y <= std::min(cy + 1, side_ - 1); ++y) {
-            for (int x = std::max(cx - 1, 0); x <= std::min(cx + 1, side_ - 1); ++x) {
-                for (std::uint32_t k = head_[index(x, y)]; k != none; k = next_[k]) {
+        const int cx = grid_.column_of(p.x());
+        const int cy = grid_.column_of(p.y());
+        const int last = grid_.per_side() - 1;
+        for (int y = std::max(cy - 1, 0); y <= std::min(cy + 1, last); ++y) {
+            for (int x = std::max(cx - 1, 0); x <= std::min(cx + 1, last); ++x) {
+                for (std::uint32_t k = head_[grid_.cell_at(x, y)]; k != none; k = next_[k]) {
                     const Vec2 d = placed[k].position - p;
                     if (d.dot(d) - contact_dist_sq <= 0.0) return true;  // the rules' C <= 0
                 }
@@ -47,7 +47,7 @@ public:
     }
 
     void add(const Vec2& p, std::uint32_t k) {
-        const std::size_t at = index(cell(p.x()), cell(p.y()));
+        const std::uint32_t at = grid_.cell_of(p);
         next_.push_back(head_[at]);
         head_[at] = k;
     }
@@ -55,13 +55,7 @@ public:
 private:
     static constexpr std::uint32_t none = 0xffffffffU;
 
-    [[nodiscard]] int cell(double coordinate) const {
-        return std::clamp(static_cast<int>(coordinate * inverse_cell_), 0, side_ - 1);
-    }
-    [[nodiscard]] std::size_t index(int x, int y) const { return static_cast<std::size_t>(y) * side_ + x; }
-
-    int side_ = 1;
-    double inverse_cell_ = 1.0;
+    UniformGrid grid_;
     std::vector<std::uint32_t> head_;
     std::vector<std::uint32_t> next_;
 };
@@ -77,15 +71,15 @@ Vec2 random_direction(SplitMix64& rng) {
 
 }  // namespace
 
-std::vector<Particle> make_random_particles(std::size_t count, const SimParams& params,
+std::vector<Particle> make_random_particles(std::size_t count, const World& world,
                                             const RandomSceneOptions& options) {
-    const SpeedRange speeds = options.speeds.value_or(default_speed_range(params));
+    const SpeedRange speeds = options.speeds.value_or(default_speed_range(world));
     if (!(std::isfinite(speeds.min) && std::isfinite(speeds.max) && 0.0 <= speeds.min && speeds.min <= speeds.max)) {
         throw std::invalid_argument("make_random_particles: speed range must satisfy 0 <= min <= max < inf");
     }
-    const Box box = Box::of(params);
-    const double area_fraction = static_cast<double>(count) * std::numbers::pi * params.radius * params.radius /
-                                 (params.box_size * params.box_size);
+    const Box box = Box::of(world);
+    const double area_fraction = static_cast<double>(count) * std::numbers::pi * world.radius * world.radius /
+                                 (world.box_size * world.box_size);
     // Random sequential placement jams near an area fraction of 0.55; far
     // beyond that it can only fail, so fail at once rather than search.
     const bool hopeless = count > 16 && area_fraction > 0.7;
@@ -93,14 +87,14 @@ std::vector<Particle> make_random_particles(std::size_t count, const SimParams& 
 
     const auto too_full = [&](std::uint64_t attempts) {
         return SceneTooFull("cannot place " + std::to_string(count) + " non-overlapping disks of radius " +
-                            std::to_string(params.radius) + " in a box of side " + std::to_string(params.box_size) +
+                            std::to_string(world.radius) + " in a box of side " + std::to_string(world.box_size) +
                             " (area fraction " + std::to_string(area_fraction) + ", gave up after " +
                             std::to_string(attempts) + " attempts)");
     };
     if (hopeless) throw too_full(0);
 
     SplitMix64 rng(options.seed);
-    PlacementGrid grid(count, params);
+    PlacementGrid grid(count, world);
     std::vector<Particle> particles;
     particles.reserve(count);
     std::uint64_t attempts = 0;

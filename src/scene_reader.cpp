@@ -1,6 +1,6 @@
-#include "particlesim/scene_reader.hpp"
+#include "particlesim/scene.hpp"
 
-#include "particlesim/number_format.hpp"
+#include "number_format.hpp"
 
 #include <unistd.h>
 
@@ -14,6 +14,11 @@
 
 namespace particlesim {
 
+namespace {
+
+// The most particles this machine can hold (bounded by memory and by the
+// 32-bit particle indices), so that a header's N is refused before anything
+// is allocated for it.
 std::size_t max_particle_count() {
     // Everything a run keeps per particle (state, step and grid buffers) stays
     // well below this; see docs/benchmarks.md for the measured peak.
@@ -25,8 +30,6 @@ std::size_t max_particle_count() {
                                       : std::size_t{1} << 24;
     return std::min<std::size_t>(by_memory, 0xfffffffeU);
 }
-
-namespace {
 
 using Text = std::string;
 
@@ -135,11 +138,11 @@ double parse_real(std::string_view token, std::string_view what, long line) {
     return value + 0.0;  // -0 is read as 0
 }
 
-SimParams read_header(HeaderTokens& header, Scene& scene) {
-    SimParams params;
+void read_header(HeaderTokens& header, Scene& scene, SceneLines& lines) {
+    World& world = scene.world;
     const std::string_view count_text = header.take("N (number of particles)");
     const std::uint64_t count = parse_count(count_text, "N", header.line());
-    scene.particle_count_line = header.line();
+    lines.particle_count = header.line();
     if (count > max_particle_count()) {
         throw InputError(header.line(), "N = " + std::to_string(count) + " is more particles than this machine can hold (at most " +
                                             std::to_string(max_particle_count()) + ")");
@@ -147,31 +150,34 @@ SimParams read_header(HeaderTokens& header, Scene& scene) {
     scene.particle_count = static_cast<std::size_t>(count);
 
     const std::string_view box_text = header.take("L (box side)");
-    params.box_size = parse_real(box_text, "L", header.line());
-    if (!(params.box_size > 0.0)) throw InputError(header.line(), "L = " + format_short(params.box_size) + " must be > 0");
+    world.box_size = parse_real(box_text, "L", header.line());
+    lines.box_size = header.line();
+    if (!(world.box_size > 0.0)) throw InputError(header.line(), "L = " + format_short(world.box_size) + " must be > 0");
 
     const std::string_view radius_text = header.take("r (radius)");
-    params.radius = parse_real(radius_text, "r", header.line());
-    if (!(params.radius > 0.0)) throw InputError(header.line(), "r = " + format_short(params.radius) + " must be > 0");
-    if (!(2.0 * params.radius <= params.box_size)) {
-        throw InputError(header.line(), "r = " + format_short(params.radius) + " is too large: 2r must be <= L = " +
-                                            format_short(params.box_size));
+    world.radius = parse_real(radius_text, "r", header.line());
+    lines.radius = header.line();
+    if (!(world.radius > 0.0)) throw InputError(header.line(), "r = " + format_short(world.radius) + " must be > 0");
+    if (!(2.0 * world.radius <= world.box_size)) {
+        throw InputError(header.line(), "r = " + format_short(world.radius) + " is too large: 2r must be <= L = " +
+                                            format_short(world.box_size));
     }
 
     const std::string_view steps_text = header.take("S (number of steps)");
     const std::uint64_t steps = parse_count(steps_text, "S", header.line());
     if (steps > static_cast<std::uint64_t>(INT64_MAX)) throw InputError(header.line(), "S = " + std::to_string(steps) + " is too large");
-    params.steps = static_cast<std::int64_t>(steps);
+    scene.steps = static_cast<std::int64_t>(steps);
+    lines.steps = header.line();
 
     const std::string_view mode = header.take("the output mode (print or perf)");
+    lines.mode = header.line();
     if (mode == "print") {
-        params.mode = OutputMode::print;
+        scene.mode = OutputMode::print;
     } else if (mode == "perf") {
-        params.mode = OutputMode::perf;
+        scene.mode = OutputMode::perf;
     } else {
         throw InputError(header.line(), "output mode: expected print or perf, found \"" + Text(mode) + "\"");
     }
-    return params;
 }
 
 void read_particle(const std::vector<std::string_view>& fields, long line, Scene& scene, std::vector<long>& seen_on) {
@@ -189,15 +195,15 @@ void read_particle(const std::vector<std::string_view>& fields, long line, Scene
     seen_on[index] = line;
 
     const std::string label = "particle " + std::to_string(index) + ": ";
-    const SimParams& params = scene.params;
+    const World& world = scene.world;
     Particle& p = scene.particles[index];
     const char* names[] = {"x", "y", "vx", "vy"};
     double values[4];
     for (int k = 0; k < 4; ++k) values[k] = parse_real(fields[k + 1], label + names[k], line);
     for (int k = 0; k < 2; ++k) {
-        if (values[k] < params.lower() || values[k] > params.upper()) {
-            throw InputError(line, label + names[k] + " = " + Text(fields[k + 1]) + " is outside [" + format_short(params.lower()) +
-                                       ", " + format_short(params.upper()) + "]");
+        if (values[k] < world.lower() || values[k] > world.upper()) {
+            throw InputError(line, label + names[k] + " = " + Text(fields[k + 1]) + " is outside [" + format_short(world.lower()) +
+                                       ", " + format_short(world.upper()) + "]");
         }
     }
     p.position = Vec2(values[0], values[1]);
@@ -206,11 +212,13 @@ void read_particle(const std::vector<std::string_view>& fields, long line, Scene
 
 }  // namespace
 
-Scene read_scene(std::istream& input) {
+Scene read_scene(std::istream& input, SceneLines* header_lines) {
     Scene scene;
     TokenLines lines(input);
     HeaderTokens header(lines);
-    scene.params = read_header(header, scene);
+    SceneLines read_on;
+    read_header(header, scene, read_on);
+    if (header_lines != nullptr) *header_lines = read_on;
 
     std::vector<long> seen_on;  // line of each particle, 0 while unseen
     std::size_t listed = 0;

@@ -1,6 +1,6 @@
 #include "particlesim/state_writer.hpp"
 
-#include "particlesim/number_format.hpp"
+#include "number_format.hpp"
 
 #include <cerrno>
 #include <charconv>

@@ -1,7 +1,7 @@
-#include "particlesim/step_pipeline.hpp"
+#include "step_pipeline.hpp"
 
 #include "parallel.hpp"
-#include "particlesim/physics.hpp"
+#include "physics.hpp"
 
 #include <algorithm>
 #include <array>

@@ -1,6 +1,6 @@
-#include "particlesim/storage_order.hpp"
+#include "storage_order.hpp"
 
-#include "cell_mapper.hpp"
+#include "uniform_grid.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -15,8 +15,9 @@ namespace {
 // together in memory, coarse enough that the cell counts stay small.
 constexpr double particles_per_cell = 2.0;
 
-std::size_t cells_per_side(std::size_t count) {
-    return static_cast<std::size_t>(std::max(1.0, std::floor(std::sqrt(static_cast<double>(count) / particles_per_cell))));
+UniformGrid sorting_grid(double box_size, std::size_t count) {
+    const double wanted = std::sqrt(static_cast<double>(count) / particles_per_cell);
+    return UniformGrid(box_size, UniformGrid::cells_per_side(box_size, 0.0, wanted));
 }
 
 }  // namespace
@@ -24,8 +25,7 @@ std::size_t cells_per_side(std::size_t count) {
 void StorageOrder::reserve(std::size_t count) {
     user_index_.reserve(count);
     stored_index_.reserve(count);
-    const std::size_t side = cells_per_side(count);
-    cell_start_.reserve(side * side + 1);
+    cell_start_.reserve(sorting_grid(1.0, count).cell_count() + 1);
 }
 
 void StorageOrder::sort_by_position(std::span<Particle> particles, const Box& box) {
@@ -34,16 +34,12 @@ void StorageOrder::sort_by_position(std::span<Particle> particles, const Box& bo
         user_index_.resize(count);
         std::iota(user_index_.begin(), user_index_.end(), 0U);
     }
-    const std::size_t side = cells_per_side(count);
-    const CellMapper column_of{static_cast<double>(side) / (box.upper + box.lower), static_cast<int>(side)};
-    const auto cell_of = [&](const Vec2& p) {
-        return static_cast<std::size_t>(column_of(p.y())) * side + static_cast<std::size_t>(column_of(p.x()));
-    };
+    const UniformGrid grid = sorting_grid(box.side, count);
     // Counting sort: stored_index_ holds each particle's cell, then its destination.
-    cell_start_.assign(side * side + 1, 0U);
+    cell_start_.assign(grid.cell_count() + 1, 0U);
     stored_index_.resize(count);
     for (std::size_t i = 0; i < count; ++i) {
-        stored_index_[i] = static_cast<std::uint32_t>(cell_of(particles[i].position));
+        stored_index_[i] = grid.cell_of(particles[i].position);
         ++cell_start_[stored_index_[i] + 1];
     }
     std::partial_sum(cell_start_.begin(), cell_start_.end(), cell_start_.begin());

@@ -3,8 +3,8 @@
 // state on the way.
 
 #include "particlesim/exact_simulation.hpp"
-#include "particlesim/scene_reader.hpp"
-#include "particlesim/simulation.hpp"
+#include "particlesim/scene.hpp"
+#include "particlesim/stepped_simulation.hpp"
 
 #include <fstream>
 #include <stdexcept>

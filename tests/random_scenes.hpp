@@ -2,7 +2,7 @@
 // Random test scenes across the regimes that matter: sparse and dense boxes,
 // slow particles and particles faster than the box per step, overlapping starts.
 
-#include "particlesim/random.hpp"
+#include "random.hpp"
 #include "particlesim/random_scene.hpp"
 
 #include <algorithm>
@@ -12,7 +12,7 @@
 namespace random_scenes {
 
 struct TestScene {
-    particlesim::SimParams params;
+    particlesim::World params;
     std::vector<particlesim::Particle> particles;
 };
 
@@ -24,7 +24,7 @@ inline TestScene make(std::uint64_t k) {
     const int regime = static_cast<int>(k % 5);
     const std::size_t count = 2 + rng.next() % (regime == 4 ? 40 : 300);
     const double box_size = regime == 1 ? 60.0 + 100.0 * rng.uniform() : 200.0 + 20000.0 * rng.uniform();
-    scene.params = SimParams{box_size, 1.0, 30, OutputMode::perf};
+    scene.params = World{box_size, 1.0, 30, OutputMode::perf};
     const double speed_scale = regime == 2 ? 3.0 * box_size : (regime == 3 ? 0.05 : box_size / 4.0);
 
     if (regime == 0 || regime == 3) {
@@ -58,7 +58,7 @@ inline TestScene make_clustered(std::uint64_t k) {
     SplitMix64 rng(5000 + k);
     TestScene scene;
     const double box_size = 20000.0;
-    scene.params = SimParams{box_size, 1.0, 20, OutputMode::perf};
+    scene.params = World{box_size, 1.0, 20, OutputMode::perf};
     const std::size_t spread = 100 + rng.next() % 400;
     const std::size_t clustered = k % 2 == 0 ? 20 + rng.next() % 60 : 300 + rng.next() % 300;
     const double patch = 5.0 + 200.0 * rng.uniform();

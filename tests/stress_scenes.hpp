@@ -2,8 +2,8 @@
 // Adversarial scenes for the stability tests (quick ones in CTest, long ones
 // in the benchmark tree), and the check every step of them must pass.
 
-#include "particlesim/energy.hpp"
-#include "particlesim/random.hpp"
+#include "energy.hpp"
+#include "random.hpp"
 #include "particlesim/random_scene.hpp"
 
 #include <cmath>
@@ -16,7 +16,7 @@ using namespace particlesim;
 
 struct StressScene {
     std::string name;
-    SimParams params;
+    World params;
     std::vector<Particle> particles;
     bool overlapping = false;  // the exact engine refuses such a start
 };
@@ -109,7 +109,7 @@ inline std::vector<StressScene> all() {
 }
 
 // The state a step must leave: finite, every centre in [r, L - r] exactly.
-inline bool valid_state(std::span<const Particle> particles, const SimParams& params) {
+inline bool valid_state(std::span<const Particle> particles, const World& params) {
     for (const Particle& p : particles) {
         if (!p.position.allFinite() || !p.velocity.allFinite()) return false;
         if (p.position.minCoeff() < params.lower() || p.position.maxCoeff() > params.upper()) return false;
@@ -120,7 +120,7 @@ inline bool valid_state(std::span<const Particle> particles, const SimParams& pa
 // Runs `steps` steps, checking every one; returns the largest relative energy
 // drift seen, or infinity at the first invalid state.
 template <typename Engine>
-double run_checked(Engine& engine, const SimParams& params, std::int64_t steps) {
+double run_checked(Engine& engine, const World& params, std::int64_t steps) {
     const double initial = total_kinetic_energy(engine.particles());
     double largest = 0.0;
     for (std::int64_t s = 0; s < steps; ++s) {

@@ -5,7 +5,7 @@
 #include "check.hpp"
 
 #include "particlesim/accuracy.hpp"
-#include "particlesim/overlap_counter.hpp"
+#include "overlap_counter.hpp"
 #include "particlesim/random_scene.hpp"
 
 #include <cmath>
@@ -21,7 +21,7 @@ Particle at(double x, double y) {
 }
 
 void overlap_counter() {
-    const SimParams params{100.0, 1.0, 1, OutputMode::perf};
+    const World params{100.0, 1.0, 1, OutputMode::perf};
     OverlapCounter counter;
     // 0 and 1 overlap (1.5 apart), 2 touches 1 exactly (not an overlap), 3 is alone.
     std::vector<Particle> scene = {at(10, 10), at(11.5, 10), at(13.5, 10), at(50, 50)};
@@ -42,7 +42,7 @@ void overlap_counter() {
 }
 
 void metrics_by_hand() {
-    const SimParams params{100.0, 1.0, 10, OutputMode::perf};
+    const World params{100.0, 1.0, 10, OutputMode::perf};
     RunRecord exact;
     exact.steps = 10;
     exact.particle_count = 2;
@@ -71,7 +71,7 @@ void metrics_by_hand() {
 }
 
 void exact_against_itself() {
-    const SimParams params{200.0, 1.0, 30, OutputMode::perf};
+    const World params{200.0, 1.0, 30, OutputMode::perf};
     const std::vector<Particle> start = make_random_particles(300, params, {11, SpeedRange{0.5, 3.0}});
     ExactSimulation a(params, start);
     ExactSimulation b(params, start, {1});
@@ -88,7 +88,7 @@ void exact_against_itself() {
 // moderately dense box of slow disks (area fraction 0.12, speeds up to 2r a
 // step), every error falls as K goes 1 -> 4 -> 16 -> 64, averaged over scenes.
 void substeps_converge_to_exact() {
-    const SimParams params{100.0, 1.0, 40, OutputMode::perf};
+    const World params{100.0, 1.0, 40, OutputMode::perf};
     const int ks[] = {1, 4, 16, 64};
     double rate_error[4] = {};
     double wall_error[4] = {};

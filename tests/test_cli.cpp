@@ -118,7 +118,7 @@ void random_scenes_and_options() {
     CHECK_EQ(std::count(a.out.begin(), a.out.end(), '\n'), 300L * 21);
     // The library's random scene is what simcli printed as the initial state.
     Scene expected;
-    expected.params = SimParams{20000.0, 1.0, 20, OutputMode::print};
+    expected.params = World{20000.0, 1.0, 20, OutputMode::print};
     expected.particles = make_random_particles(300, expected.params);
     expected.particle_count = 300;
     CHECK(a.out == expected_output(expected));

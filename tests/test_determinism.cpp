@@ -5,7 +5,7 @@
 #include "state_hash.hpp"
 
 #include "particlesim/random_scene.hpp"
-#include "particlesim/simulation.hpp"
+#include "particlesim/stepped_simulation.hpp"
 
 #include <cstdio>
 
@@ -13,14 +13,14 @@ using namespace particlesim;
 
 namespace {
 
-std::uint64_t final_hash(const SimParams& params, const std::vector<Particle>& particles, const SimOptions& options) {
+std::uint64_t final_hash(const World& params, const std::vector<Particle>& particles, const SimOptions& options) {
     Simulation sim(params, particles, options);
     sim.run(params.steps);
     return state_hash::hash(sim.particles());
 }
 
 // `forced_grid`: a G x G grid to impose besides the automatic one.
-void same_hash_everywhere(const char* name, const SimParams& params, const std::vector<Particle>& particles,
+void same_hash_everywhere(const char* name, const World& params, const std::vector<Particle>& particles,
                           int forced_grid, bool with_brute, int substeps = 1) {
     const std::uint64_t reference = final_hash(params, particles, {Broadphase::grid, 0, 1, substeps});
     int differing = 0;
@@ -41,21 +41,21 @@ void same_hash_everywhere(const char* name, const SimParams& params, const std::
 
 int main() {
     // The paper's scene (fast particles, sparse box), 200 steps.
-    const SimParams paper{20000.0, 1.0, 200, OutputMode::perf};
+    const World paper{20000.0, 1.0, 200, OutputMode::perf};
     same_hash_everywhere("default scene", paper, make_random_particles(1000, paper), 4, true);
     // Substeps: micro-steps of 1/K under the same rules, the same everywhere too.
-    const SimParams short_paper{20000.0, 1.0, 20, OutputMode::perf};
+    const World short_paper{20000.0, 1.0, 20, OutputMode::perf};
     for (const int substeps : {2, 3, 8}) {
         same_hash_everywhere("default scene", short_paper, make_random_particles(1000, short_paper), 4, true, substeps);
     }
     const std::vector<Particle> start = make_random_particles(1000, short_paper);
     CHECK(final_hash(short_paper, start, {Broadphase::automatic, 0, 1, 1}) != final_hash(short_paper, start, {Broadphase::automatic, 0, 1, 2}));
     // A crowded box of slow particles (area fraction 0.3): many collisions.
-    const SimParams crowded{160.0, 1.0, 100, OutputMode::perf};
+    const World crowded{160.0, 1.0, 100, OutputMode::perf};
     same_hash_everywhere("crowded box", crowded, make_random_particles(2400, crowded, {5, SpeedRange{0.1, 1.0}}), 16, false);
     // Large enough for the grid to share each slice between threads, and for
     // the automatic storage order by position.
-    const SimParams large{1100.0, 1.0, 10, OutputMode::perf};
+    const World large{1100.0, 1.0, 10, OutputMode::perf};
     same_hash_everywhere("70000 particles", large, make_random_particles(70000, large, {9, SpeedRange{0.1, 1.0}}), 256, false);
     return check::summary("test_determinism");
 }

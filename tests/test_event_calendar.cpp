@@ -5,7 +5,7 @@
 #include "check.hpp"
 
 #include "../src/event_calendar.hpp"
-#include "particlesim/random.hpp"
+#include "random.hpp"
 
 #include <algorithm>
 #include <limits>

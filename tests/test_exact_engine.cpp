@@ -7,10 +7,10 @@
 #include "random_scenes.hpp"
 #include "state_hash.hpp"
 
-#include "particlesim/energy.hpp"
+#include "energy.hpp"
 #include "particlesim/exact_simulation.hpp"
 #include "particlesim/random_scene.hpp"
-#include "particlesim/simulation.hpp"
+#include "particlesim/stepped_simulation.hpp"
 
 #include <cmath>
 
@@ -105,7 +105,7 @@ void agrees_with_stepped_engine_when_events_do_not_share_a_particle() {
     std::uint64_t compared_steps = 0;
     std::uint64_t compared_collisions = 0;
     for (std::uint64_t seed = 0; seed < 200; ++seed) {
-        const SimParams params{60.0, 1.0, 12, OutputMode::perf};
+        const World params{60.0, 1.0, 12, OutputMode::perf};
         const std::vector<Particle> start = make_random_particles(12, params, {seed, SpeedRange{0.5, 4.0}});
         ExactSimulation exact(params, start);
         Simulation stepped(params, start);
@@ -144,7 +144,7 @@ void conserves_and_stays_inside() {
 }
 
 void refuses_overlaps_and_bad_scenes() {
-    const SimParams params{20.0, 1.0, 1, OutputMode::perf};
+    const World params{20.0, 1.0, 1, OutputMode::perf};
     std::vector<Particle> pair(2);
     pair[0].position = Vec2(5, 5);
     pair[1].position = Vec2(6.5, 5);
@@ -170,7 +170,7 @@ void refuses_overlaps_and_bad_scenes() {
 
 void estimates_events() {
     // One disk crossing a box of span 8 at speed 4 per step: 0.5 wall hits a step.
-    const SimParams params{10.0, 1.0, 1, OutputMode::perf};
+    const World params{10.0, 1.0, 1, OutputMode::perf};
     std::vector<Particle> one(1);
     one[0].position = Vec2(5, 5);
     one[0].velocity = Vec2(4, 0);
@@ -179,7 +179,7 @@ void estimates_events() {
     CHECK_EQ(estimated_events_per_step(params, one), 0.0);
     one[0].velocity = Vec2(1, 0);
     one[0].position = Vec2(1, 1);
-    CHECK(std::isinf(estimated_events_per_step(SimParams{2.0, 1.0, 1, OutputMode::perf}, one)));
+    CHECK(std::isinf(estimated_events_per_step(World{2.0, 1.0, 1, OutputMode::perf}, one)));
 }
 
 }  // namespace

@@ -4,7 +4,7 @@
 #include "check.hpp"
 #include "example_scenes.hpp"
 
-#include "particlesim/physics.hpp"
+#include "physics.hpp"
 
 #include <cmath>
 

@@ -5,7 +5,7 @@
 #include "check.hpp"
 
 #include "../src/float_box_array.hpp"
-#include "particlesim/random.hpp"
+#include "random.hpp"
 
 #include <algorithm>
 #include <cmath>

@@ -8,10 +8,10 @@
 #include "random_scenes.hpp"
 #include "state_hash.hpp"
 
-#include "particlesim/brute_force_search.hpp"
-#include "particlesim/grid_search.hpp"
-#include "particlesim/simulation.hpp"
-#include "particlesim/step_pipeline.hpp"
+#include "brute_force_search.hpp"
+#include "grid_search.hpp"
+#include "particlesim/stepped_simulation.hpp"
+#include "step_pipeline.hpp"
 
 #include <algorithm>
 #include <vector>

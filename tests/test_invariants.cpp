@@ -5,8 +5,8 @@
 #include "check.hpp"
 #include "random_scenes.hpp"
 
-#include "particlesim/physics.hpp"
-#include "particlesim/simulation.hpp"
+#include "physics.hpp"
+#include "particlesim/stepped_simulation.hpp"
 
 #include <cmath>
 

@@ -4,7 +4,7 @@
 #include "check.hpp"
 
 #include "particlesim/random_scene.hpp"
-#include "particlesim/simulation.hpp"
+#include "particlesim/stepped_simulation.hpp"
 
 #include <atomic>
 #include <cstdlib>
@@ -25,7 +25,7 @@ void operator delete(void* p, std::size_t) noexcept { std::free(p); }
 using namespace particlesim;
 
 int main() {
-    const SimParams params{20000.0, 1.0, 100, OutputMode::perf};
+    const World params{20000.0, 1.0, 100, OutputMode::perf};
     for (const Broadphase search : {Broadphase::brute, Broadphase::grid}) {
         for (const int threads : {1, 2}) {
             for (const int sort_every : {0, 1}) {  // never / every step stored by position

@@ -2,8 +2,8 @@
 
 #include "check.hpp"
 
-#include "particlesim/number_format.hpp"
-#include "particlesim/random.hpp"
+#include "number_format.hpp"
+#include "random.hpp"
 
 #include <cmath>
 #include <cstdio>

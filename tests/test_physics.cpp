@@ -2,7 +2,7 @@
 
 #include "check.hpp"
 
-#include "particlesim/physics.hpp"
+#include "physics.hpp"
 
 #include <cmath>
 
@@ -10,7 +10,7 @@ using namespace particlesim;
 
 namespace {
 
-const Box box = Box::of(SimParams{20.0, 1.0, 1, OutputMode::perf});  // centres in [1, 19]
+const Box box = Box::of(World{20.0, 1.0, 1, OutputMode::perf});  // centres in [1, 19]
 
 void wall_times() {
     // x = 10 moving +2: reaches 19 at t = 4.5; y = 5 moving -1: reaches 1 at t = 4.

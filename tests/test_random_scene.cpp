@@ -3,7 +3,7 @@
 
 #include "check.hpp"
 
-#include "particlesim/physics.hpp"
+#include "physics.hpp"
 #include "particlesim/random_scene.hpp"
 
 #include <chrono>
@@ -23,7 +23,7 @@ bool same(const std::vector<Particle>& a, const std::vector<Particle>& b) {
 }
 
 void reproducible_by_seed() {
-    const SimParams params{20000.0, 1.0, 10, OutputMode::perf};
+    const World params{20000.0, 1.0, 10, OutputMode::perf};
     const auto a = make_random_particles(500, params);
     const auto b = make_random_particles(500, params, {default_seed, {}});
     const auto c = make_random_particles(500, params, {default_seed + 1, {}});
@@ -41,7 +41,7 @@ void reproducible_by_seed() {
     CHECK_EQ(a[0].position.x(), two[0].position.x());
 }
 
-void valid_and_in_range(std::size_t count, const SimParams& params, const RandomSceneOptions& options) {
+void valid_and_in_range(std::size_t count, const World& params, const RandomSceneOptions& options) {
     const auto particles = make_random_particles(count, params, options);
     CHECK_EQ(particles.size(), count);
     const Box box = Box::of(params);
@@ -73,7 +73,7 @@ void valid_and_in_range(std::size_t count, const SimParams& params, const Random
 }
 
 void too_full_fails_fast() {
-    const SimParams params{20.0, 1.0, 10, OutputMode::perf};
+    const World params{20.0, 1.0, 10, OutputMode::perf};
     for (std::size_t count : {std::size_t{200}, std::size_t{80}, std::size_t{1000000}}) {
         const auto start = std::chrono::steady_clock::now();
         bool refused = false;
@@ -87,19 +87,19 @@ void too_full_fails_fast() {
         CHECK(seconds < 5.0);
     }
     // A single disk that exactly fits the box is fine.
-    CHECK_EQ(make_random_particles(1, SimParams{2.0, 1.0, 1, OutputMode::perf}).size(), 1U);
+    CHECK_EQ(make_random_particles(1, World{2.0, 1.0, 1, OutputMode::perf}).size(), 1U);
 }
 
 }  // namespace
 
 int main() {
     reproducible_by_seed();
-    const SimParams paper{20000.0, 1.0, 10, OutputMode::perf};
+    const World paper{20000.0, 1.0, 10, OutputMode::perf};
     valid_and_in_range(3000, paper, {});
-    valid_and_in_range(2000, SimParams{200.0, 1.0, 10, OutputMode::perf}, {42, SpeedRange{0.1, 1.0}});  // area fraction 0.16
-    valid_and_in_range(100, SimParams{1.0, 1e-9, 10, OutputMode::perf}, {1, {}});
+    valid_and_in_range(2000, World{200.0, 1.0, 10, OutputMode::perf}, {42, SpeedRange{0.1, 1.0}});  // area fraction 0.16
+    valid_and_in_range(100, World{1.0, 1e-9, 10, OutputMode::perf}, {1, {}});
     too_full_fails_fast();
     CHECK(default_speed_range(paper).min == 2500.0 && default_speed_range(paper).max == 5000.0);
-    CHECK(default_speed_range(SimParams{16.0, 1.0, 1, OutputMode::perf}).min == 2.0);
+    CHECK(default_speed_range(World{16.0, 1.0, 1, OutputMode::perf}).min == 2.0);
     return check::summary("test_random_scene");
 }

@@ -3,9 +3,9 @@
 
 #include "check.hpp"
 
-#include "particlesim/random.hpp"
-#include "particlesim/simulation.hpp"
-#include "particlesim/step_pipeline.hpp"
+#include "random.hpp"
+#include "particlesim/stepped_simulation.hpp"
+#include "step_pipeline.hpp"
 
 #include <algorithm>
 #include <vector>
@@ -14,7 +14,7 @@ using namespace particlesim;
 
 namespace {
 
-const SimParams params{20.0, 1.0, 10, OutputMode::perf};
+const World params{20.0, 1.0, 10, OutputMode::perf};
 
 Particle make(double x, double y, double vx, double vy) {
     Particle p;

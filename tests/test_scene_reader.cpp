@@ -3,7 +3,7 @@
 
 #include "check.hpp"
 
-#include "particlesim/scene_reader.hpp"
+#include "particlesim/scene.hpp"
 
 #include <sstream>
 #include <string>

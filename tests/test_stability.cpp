@@ -7,7 +7,7 @@
 #include "stress_scenes.hpp"
 
 #include "particlesim/exact_simulation.hpp"
-#include "particlesim/simulation.hpp"
+#include "particlesim/stepped_simulation.hpp"
 
 #include <cstdio>
 

@@ -8,8 +8,8 @@
 #include "stress_scenes.hpp"
 
 #include "particlesim/random_scene.hpp"
-#include "particlesim/simulation.hpp"
-#include "particlesim/storage_order.hpp"
+#include "particlesim/stepped_simulation.hpp"
+#include "storage_order.hpp"
 
 #include <cmath>
 #include <cstdio>
@@ -34,7 +34,7 @@ bool consistent(std::span<const Particle> stored, const StorageOrder& order) {
 }
 
 void sorts_by_rows_and_restores_exactly() {
-    const SimParams params{200.0, 1.0, 1, OutputMode::perf};
+    const World params{200.0, 1.0, 1, OutputMode::perf};
     const Box box = Box::of(params);
     std::vector<Particle> original = make_random_particles(3000, params, {11, SpeedRange{0.1, 1.0}});
     for (std::size_t i = 0; i < original.size(); ++i) original[i].wall_collisions = i;  // a tag
@@ -75,7 +75,7 @@ using States = example_scenes::States;
 
 // Every state of a run sorted each step against one never sorted, and the
 // final states of runs sorted every 3 steps (kept sorted between steps).
-void same_as_unsorted(const char* name, const SimParams& params, const std::vector<Particle>& particles) {
+void same_as_unsorted(const char* name, const World& params, const std::vector<Particle>& particles) {
     Scene scene;
     scene.params = params;
     scene.particles = particles;

@@ -1,50 +1,101 @@
 #pragma once
-// How far the step rules are from real hard disks on a given scene: the
-// stepped engine (with its substeps) measured against the exact engine on the
-// same start. Record each run once, then compare records.
+// How far a run is from real hard disks: its energy, the particles left
+// overlapping, and the stepped engine (with its substeps) against the exact
+// engine on the same start. Record each run once (record_run works with
+// either engine), then compare the records.
 
-#include "particlesim/exact_simulation.hpp"
+#include "particlesim/engine.hpp"
 #include "particlesim/particle.hpp"
-#include "particlesim/sim_params.hpp"
-#include "particlesim/simulation.hpp"
+#include "particlesim/stepped_simulation.hpp"
+#include "particlesim/world.hpp"
 
 #include <cstdint>
+#include <memory>
+#include <optional>
 #include <span>
 #include <vector>
 
 namespace particlesim {
 
-// What a run did, as the metrics need it.
+// Total kinetic energy (masses 1) at full precision (a compensated sum).
+double total_kinetic_energy(std::span<const Particle> particles);
+// (E - E0) / E0, or 0 when there was no energy to begin with.
+double relative_energy_drift(double initial, double current);
+
+// The positions of every particle after one step of a run.
+struct PositionCheckpoint {
+    std::int64_t step = 0;
+    std::vector<Vec2> positions;
+};
+
+// What a run did, as the comparison needs it.
 struct RunRecord {
     std::int64_t steps = 0;
     std::size_t particle_count = 0;
     std::uint64_t particle_collisions = 0;
     std::uint64_t wall_collisions = 0;
     std::uint64_t overlapping_particle_steps = 0;  // particles overlapping another, summed over the steps
-    std::vector<Vec2> positions_after_1;           // empty when the run is shorter
-    std::vector<Vec2> positions_after_10;
-    double largest_energy_drift = 0.0;  // max over steps of |E - E0| / E0, at full precision
-    double seconds = 0.0;               // in the engine's steps only, not in the measuring
+    std::vector<PositionCheckpoint> checkpoints;   // those of the asked steps that the run reached
+    double largest_energy_drift = 0.0;             // max over steps of |E - E0| / E0, at full precision
+};
+
+// Before chaos dominates: one step shows the error of a step, ten its growth.
+inline constexpr std::int64_t default_checkpoints[] = {1, 10};
+
+// Builds a RunRecord from the states a run shows after each step.
+class RunRecorder {
+public:
+    RunRecorder(const World& world, std::span<const Particle> start, std::span<const std::int64_t> checkpoint_steps);
+    ~RunRecorder();
+    RunRecorder(RunRecorder&&) noexcept;
+    RunRecorder& operator=(RunRecorder&&) noexcept;
+
+    void observe(std::int64_t step, std::span<const Particle> particles, const StepCounts& step_counts);
+    [[nodiscard]] const RunRecord& record() const;
+
+private:
+    class Measures;
+    std::unique_ptr<Measures> measures_;
 };
 
 // Runs `steps` steps of the engine and records them.
-RunRecord record_run(Simulation& engine, std::int64_t steps);
-RunRecord record_run(ExactSimulation& engine, std::int64_t steps);
+template <Engine E>
+RunRecord record_run(E& engine, std::int64_t steps, std::span<const std::int64_t> checkpoint_steps = default_checkpoints) {
+    RunRecorder recorder(engine.world(), engine.particles(), checkpoint_steps);
+    run(engine, steps, [&](std::int64_t step, std::span<const Particle> particles) {
+        recorder.observe(step, particles, engine.last_step());
+    });
+    return recorder.record();
+}
+
+// The RMS distance between the two runs' positions at a checkpoint, over L.
+struct PositionError {
+    std::int64_t step = 0;
+    double rms_over_box = 0.0;
+};
 
 struct AccuracyReport {
     double particle_collision_rate_error = 0.0;  // (stepped - exact) / exact; 0 when both are 0
     double wall_collision_rate_error = 0.0;      // the same for walls: the pressure on the walls
     double overlap_fraction = 0.0;               // of the stepped run's particle-steps
-    double position_error_1 = 0.0;               // RMS distance to the exact positions after 1 step, over L
-    double position_error_10 = 0.0;              // the same after 10 steps (before chaos dominates)
+    std::vector<PositionError> position_errors;  // at each checkpoint both runs reached
     double energy_drift = 0.0;                   // the stepped run's largest relative drift
+
+    // The error at `step`; empty when it was not a checkpoint of both runs.
+    [[nodiscard]] std::optional<double> position_error_at(std::int64_t step) const {
+        for (const PositionError& e : position_errors) {
+            if (e.step == step) return e.rms_over_box;
+        }
+        return std::nullopt;
+    }
 };
 
-AccuracyReport compare_to_exact(const RunRecord& stepped, const RunRecord& exact, const SimParams& params);
+AccuracyReport compare_to_exact(const RunRecord& stepped, const RunRecord& exact, const World& world);
 
 // Both runs from the same start, then the comparison. Throws OverlappingStart
 // when the start has overlaps (the exact engine has no ground truth then).
-AccuracyReport measure_accuracy(const SimParams& params, const std::vector<Particle>& particles,
-                                const SimOptions& stepped_options, std::int64_t steps);
+AccuracyReport measure_accuracy(const World& world, const std::vector<Particle>& particles,
+                                const SteppedOptions& stepped_options, std::int64_t steps,
+                                std::span<const std::int64_t> checkpoint_steps = default_checkpoints);
 
 }  // namespace particlesim

@@ -2,17 +2,16 @@
 // The exact engine (rules.md "Substeps and the exact engine"): continuous-time,
 // event-driven hard disks. Every collision happens at its own time, with no
 // one-per-step limit; it is the ground truth the stepped engine is measured
-// against. It calls the same physics functions as the stepped engine, orders
-// simultaneous events by the same key (time, kind, i, j), and shows the state
-// at whole steps in the same form.
+// against. It shares the stepped engine's physics and its order of
+// simultaneous events (time, kind, i, j), and shows the state at whole steps.
 
+#include "particlesim/engine.hpp"
 #include "particlesim/particle.hpp"
-#include "particlesim/sim_params.hpp"
-#include "particlesim/step_counts.hpp"
-#include "particlesim/whole_step_runner.hpp"
+#include "particlesim/world.hpp"
 
 #include <cstdint>
 #include <memory>
+#include <optional>
 #include <span>
 #include <stdexcept>
 #include <vector>
@@ -33,16 +32,17 @@ private:
 };
 
 struct ExactOptions {
-    // Cells per side of the cell lists; 0 sizes them from the scene. Any value
-    // gives the same events (1 is a brute-force neighbour search).
-    int cells_per_side = 0;
+    // Cells per side of the neighbour search, >= 1 (1 tests every pair).
+    // Empty: sized from the scene. Every value gives the same events.
+    std::optional<int> cells_per_side;
 };
 
-class ExactSimulation : public WholeStepRunner<ExactSimulation> {
+class ExactSimulation {
 public:
-    // Throws std::invalid_argument for a scene that breaks rules.md "World",
-    // and OverlappingStart when two disks overlap (touching is allowed).
-    ExactSimulation(const SimParams& params, std::vector<Particle> particles, const ExactOptions& options = {});
+    // Throws std::invalid_argument for a world or particles that break
+    // rules.md "World" or a bad option, and OverlappingStart when two disks
+    // overlap (touching is allowed).
+    ExactSimulation(const World& world, std::vector<Particle> particles, const ExactOptions& options = {});
     ~ExactSimulation();
     ExactSimulation(ExactSimulation&&) noexcept;
     ExactSimulation& operator=(ExactSimulation&&) noexcept;
@@ -52,14 +52,13 @@ public:
 
     // The state at the last whole step; positions clamped into [r, L - r].
     [[nodiscard]] std::span<const Particle> particles() const;
-    [[nodiscard]] const SimParams& params() const;
+    [[nodiscard]] const World& world() const;
     [[nodiscard]] std::int64_t steps_done() const;
     [[nodiscard]] const StepCounts& last_step() const;
     [[nodiscard]] const StepCounts& totals() const;
     // Particles with more than one collision (wall or particle) in the last
     // step: where the one-collision-per-step rule must differ from this engine.
     [[nodiscard]] std::uint64_t last_step_particles_with_several_events() const;
-    [[nodiscard]] int cells_per_side() const;
 
 private:
     class Engine;
@@ -70,6 +69,6 @@ private:
 // scene, from its speeds and density. Ideal-gas estimate, not a bound: it
 // lets a caller refuse runs that would take hours, or never end (a particle
 // much faster than the box bounces many times per step).
-double estimated_events_per_step(const SimParams& params, std::span<const Particle> particles);
+double estimated_events_per_step(const World& world, std::span<const Particle> particles);
 
 }  // namespace particlesim

@@ -3,7 +3,7 @@
 // uniform positions, uniform speeds, uniform directions, reproducible by seed.
 
 #include "particlesim/particle.hpp"
-#include "particlesim/sim_params.hpp"
+#include "particlesim/world.hpp"
 
 #include <cstddef>
 #include <cstdint>
@@ -21,7 +21,7 @@ struct SpeedRange {
 };
 
 // Between L/(8r) and L/4, whichever is smaller first.
-SpeedRange default_speed_range(const SimParams& params);
+SpeedRange default_speed_range(const World& world);
 
 struct RandomSceneOptions {
     std::uint64_t seed = default_seed;
@@ -39,7 +39,7 @@ public:
 // uniformly in the unit disk, normalised: no trigonometry, so the result is
 // the same on every IEEE-754 platform). Throws SceneTooFull instead of
 // searching without end, std::invalid_argument for a bad speed range.
-std::vector<Particle> make_random_particles(std::size_t count, const SimParams& params,
+std::vector<Particle> make_random_particles(std::size_t count, const World& world,
                                             const RandomSceneOptions& options = {});
 
 }  // namespace particlesim

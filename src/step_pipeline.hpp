@@ -7,9 +7,9 @@
 //   advance : every particle without a collision moves freely
 // None of them allocates once its vectors have reached their working size.
 
-#include "particlesim/box.hpp"
-#include "particlesim/collision.hpp"
-#include "particlesim/pair_search.hpp"
+#include "box.hpp"
+#include "collision.hpp"
+#include "pair_search.hpp"
 #include "particlesim/particle.hpp"
 
 #include <cstdint>

@@ -2,10 +2,10 @@
 // What every pair search (brute force, grid) receives and produces, and the one
 // pair test they all apply, so that their candidate sets are identical.
 
-#include "particlesim/box.hpp"
-#include "particlesim/collision.hpp"
+#include "box.hpp"
+#include "collision.hpp"
 #include "particlesim/particle.hpp"
-#include "particlesim/physics.hpp"
+#include "physics.hpp"
 
 #include <cstdint>
 #include <span>

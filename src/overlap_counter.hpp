@@ -4,7 +4,7 @@
 // buffers, so counting after every step allocates nothing once warm.
 
 #include "particlesim/particle.hpp"
-#include "particlesim/sim_params.hpp"
+#include "particlesim/world.hpp"
 
 #include <cstdint>
 #include <span>
@@ -12,14 +12,11 @@
 
 namespace particlesim {
 
-// Two disks overlap when their centres are closer than 2r by more than this
-// fraction: shallower overlaps are rounding at a contact, not pass-through.
-inline constexpr double overlap_tolerance = 1e-6;
-
 class OverlapCounter {
 public:
-    // The number of particles that overlap at least one other particle.
-    std::uint64_t count(std::span<const Particle> particles, const SimParams& params);
+    // The number of particles that overlap at least one other particle
+    // (disks_overlap() of physics.hpp).
+    std::uint64_t count(std::span<const Particle> particles, const World& world);
 
 private:
     std::vector<std::uint32_t> cell_start_;

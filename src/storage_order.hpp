@@ -6,7 +6,7 @@
 // stored particle is kept: it decides ties (rules.md "Order") and the order
 // of the output, so the results do not depend on the storage order.
 
-#include "particlesim/box.hpp"
+#include "box.hpp"
 #include "particlesim/particle.hpp"
 
 #include <cstdint>

@@ -2,7 +2,7 @@
 // The reference pair search: every pair i < j. Slow, obviously right, kept
 // forever behind `--broadphase brute` to check every faster search against.
 
-#include "particlesim/pair_search.hpp"
+#include "pair_search.hpp"
 
 #include <span>
 

@@ -1,16 +1,13 @@
-#pragma once
-// Total kinetic energy at full precision: a compensated (Neumaier) sum, so
-// that a drift of 1e-15 is a property of the dynamics, not of the summation.
-
-#include "particlesim/particle.hpp"
-#include "particlesim/physics.hpp"
+#include "particlesim/accuracy.hpp"
+#include "physics.hpp"
 
 #include <cmath>
-#include <span>
 
 namespace particlesim {
 
-inline double total_kinetic_energy(std::span<const Particle> particles) {
+// A compensated (Neumaier) sum, so that the drift it shows is a property of
+// the dynamics, not of the summation.
+double total_kinetic_energy(std::span<const Particle> particles) {
     double sum = 0.0;
     double compensation = 0.0;
     for (const Particle& p : particles) {
@@ -22,8 +19,7 @@ inline double total_kinetic_energy(std::span<const Particle> particles) {
     return sum + compensation;
 }
 
-// (E - E0) / E0, or 0 when there was no energy to begin with.
-inline double relative_energy_drift(double initial, double current) {
+double relative_energy_drift(double initial, double current) {
     return initial > 0.0 ? (current - initial) / initial : 0.0;
 }
 

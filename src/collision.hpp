@@ -1,6 +1,8 @@
 #pragma once
 // A candidate or accepted collision, and the one total order that encodes
-// every tie rule: (time, kind, i, j), walls before pairs (rules.md "Order").
+// every tie rule (event_order.hpp).
+
+#include "event_order.hpp"
 
 #include <cstdint>
 #include <tuple>
@@ -25,9 +27,7 @@ struct Collision {
         return {time, CollisionKind::pair, lower, higher};
     }
 
-    friend bool operator<(const Collision& a, const Collision& b) {
-        return std::tie(a.time, a.kind, a.i, a.j) < std::tie(b.time, b.kind, b.i, b.j);
-    }
+    friend bool operator<(const Collision& a, const Collision& b) { return comes_before(a, b); }
     friend bool operator==(const Collision& a, const Collision& b) {
         return std::tie(a.time, a.kind, a.i, a.j) == std::tie(b.time, b.kind, b.i, b.j);
     }

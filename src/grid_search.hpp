@@ -12,24 +12,21 @@
 // pair test, a superset of the pairs that can collide, so the result is
 // exactly the brute-force candidate set.
 
-#include "particlesim/pair_search.hpp"
+#include "pair_search.hpp"
+#include "uniform_grid.hpp"
 
 #include <algorithm>
 #include <cstdint>
+#include <optional>
 #include <span>
 #include <vector>
 
 namespace particlesim {
 
-// The largest forced grid (G x G cells); larger requests are clamped to it,
-// so that the cell arrays stay a modest size.
-inline constexpr int max_forced_grid_cells = 4096;
-
 // The shape of the search in one step; chosen per step from the scene.
 struct GridLayout {
-    int cells_per_side = 1;
+    UniformGrid grid;
     int slices = 1;
-    double cell_size = 0.0;
     double reach = 0.0;  // r plus the rounding margin added around each path
 };
 
@@ -50,11 +47,9 @@ public:
     GridSearch(GridSearch&&) noexcept;
     GridSearch& operator=(GridSearch&&) noexcept;
 
-    // forced_cells > 0 imposes a G x G grid (still exact); 0 sizes it from the
-    // particles' motion in this step and r.
-    void find_pairs(const PairSearchInput& in, int forced_cells, std::span<ThreadCandidates> buffers);
-
-    [[nodiscard]] const GridLayout& last_layout() const { return layout_; }
+    // forced_cells imposes a G x G grid (still exact); without it the grid is
+    // sized from the particles' motion in this step and r.
+    void find_pairs(const PairSearchInput& in, std::optional<int> forced_cells, std::span<ThreadCandidates> buffers);
 
     // Per-slice buffers; one per thread when slices run in parallel.
     struct SliceWorkspace;  // defined in grid_search.cpp
@@ -78,7 +73,7 @@ private:
     // How many pieces a path must be cut into for each to fit a cell; 0 when
     // too many.
     [[nodiscard]] int pieces_to_fit(const Particle& particle, double begin, double end, double fit) const;
-    GridLayout choose_layout(const PairSearchInput& in, int forced_cells, int threads);
+    GridLayout choose_layout(const PairSearchInput& in, std::optional<int> forced_cells, int threads);
     void process_slice(const PairSearchInput& in, int slice, SliceWorkspace& ws, std::span<ThreadCandidates> out,
                        int threads) const;
     void prepare(SliceWorkspace& ws, std::size_t count, int workers) const;

@@ -3,7 +3,7 @@
 // wall bounce, the elastic exchange and the "stop at the wall" motion. Every
 // engine calls these and nothing else, so engines cannot disagree on physics.
 
-#include "particlesim/box.hpp"
+#include "box.hpp"
 #include "particlesim/particle.hpp"
 
 #include <algorithm>
@@ -55,6 +55,15 @@ inline double contact_time(const Vec2& dp, const Vec2& dv, double contact_dist_s
     if (!(approaching & (touching | (quarter_disc > 0.0)))) return never;
     if (touching) return 0.0;
     return c / (std::sqrt(quarter_disc) - half_b);  // the smaller root, without cancellation
+}
+
+// Two disks overlap when their centres are closer than 2r by more than this
+// fraction of (2r)^2: shallower overlaps are rounding at a contact, which the
+// step rules and the exact engine both treat as touching.
+inline constexpr double overlap_tolerance = 1e-6;
+
+inline bool disks_overlap(const Vec2& dp, double contact_dist_sq) {
+    return dp.dot(dp) < contact_dist_sq * (1.0 - overlap_tolerance);
 }
 
 inline void clamp_into_box(Vec2& position, const Box& box) {

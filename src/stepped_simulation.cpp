@@ -1,0 +1,156 @@
+#include "particlesim/stepped_simulation.hpp"
+
+#include "box.hpp"
+#include "brute_force_search.hpp"
+#include "collision.hpp"
+#include "grid_search.hpp"
+#include "options_check.hpp"
+#include "pair_search.hpp"
+#include "scene_checks.hpp"
+#include "step_pipeline.hpp"
+#include "storage_order.hpp"
+
+#include <omp.h>
+
+namespace particlesim {
+
+namespace {
+
+// Below this many particles the brute-force search is the faster one.
+constexpr std::size_t brute_force_is_faster_below = 48;
+
+// Automatic sorting by position: from this many particles on (below, they
+// stay in the caches in any order), every this many steps (particles fast
+// enough to scramble the order in fewer steps gain nothing from it, and lose
+// one pass over the particles in this many steps).
+constexpr std::size_t sort_by_position_from = 65536;
+constexpr int automatic_sort_every = 8;
+
+const SteppedOptions& checked(const SteppedOptions& options) {
+    const OptionsCheck check("particlesim::SteppedOptions");
+    if (options.grid_cells) {
+        check.in_range("grid_cells", *options.grid_cells, 1, max_grid_cells);
+        if (options.pair_search != PairSearch::grid) check.fail("grid_cells needs pair_search = PairSearch::grid");
+    }
+    if (options.threads) check.at_least("threads", *options.threads, 1);
+    check.at_least("substeps", options.substeps, 1);
+    if (options.sort_by_position_every) check.at_least("sort_by_position_every", *options.sort_by_position_every, 0);
+    return options;
+}
+
+}  // namespace
+
+// The particles and every buffer the step pipeline reuses, sized once so that
+// a step allocates nothing.
+class SteppedSimulation::Engine {
+public:
+    Engine(const World& world, std::vector<Particle> particles, const SteppedOptions& options)
+        : world_(world), box_(Box::of(world)), options_(checked(options)), particles_(std::move(particles)) {
+        require_valid_scene("particlesim::SteppedSimulation", world_, particles_);
+        const std::size_t count = particles_.size();
+        sort_every_ = options_.sort_by_position_every.value_or(count >= sort_by_position_from ? automatic_sort_every : 0);
+        if (sort_every_ > 0) storage_order_.reserve(count);
+        threads_ = options_.threads.value_or(omp_get_max_threads());
+        search_ = options_.pair_search;
+        if (search_ == PairSearch::automatic) {
+            search_ = count < brute_force_is_faster_below ? PairSearch::brute_force : PairSearch::grid;
+        }
+        wall_time_.resize(count);
+        collision_of_.resize(count);
+        // Room for a busy step from the start, so that steps rarely need to grow it.
+        candidates_.reserve(2 * count + 64);
+        accepted_.reserve(count);
+        thread_candidates_.resize(static_cast<std::size_t>(threads_));
+        for (ThreadCandidates& thread : thread_candidates_) {
+            thread.found.reserve(count / static_cast<std::size_t>(threads_) + 64);
+        }
+    }
+
+    void step() {
+        last_step_ = {};
+        if (sort_every_ > 0 && (storage_order_.is_user_order() || steps_done_ % sort_every_ == 0)) {
+            storage_order_.sort_by_position(particles_, box_);
+        }
+        // 1.0 / 1 is exactly 1.0: one substep is the plain step rules, bit for bit.
+        const double duration = 1.0 / options_.substeps;
+        for (int micro = 0; micro < options_.substeps; ++micro) micro_step(duration);
+        totals_ += last_step_;
+        ++steps_done_;
+    }
+
+    std::span<const Particle> particles() {
+        storage_order_.restore_user_order(particles_);
+        return particles_;
+    }
+    const World& world() const { return world_; }
+    std::int64_t steps_done() const { return steps_done_; }
+    const StepCounts& last_step() const { return last_step_; }
+    const StepCounts& totals() const { return totals_; }
+
+private:
+    void micro_step(double duration) {
+        candidates_.clear();
+        for (ThreadCandidates& thread : thread_candidates_) {
+            thread.found.clear();
+            thread.pair_tests = 0;
+        }
+        detect_wall_candidates(particles_, box_, duration, wall_time_, candidates_, threads_);
+        const PairSearchInput input{particles_, wall_time_, box_, duration};
+        if (search_ == PairSearch::brute_force) {
+            find_pairs_brute_force(input, thread_candidates_);
+        } else {
+            grid_.find_pairs(input, options_.grid_cells, thread_candidates_);
+        }
+        order_candidates(candidates_, thread_candidates_, merge_scratch_, storage_order_.user_index(),
+                         storage_order_.stored_index(), threads_);
+        select_collisions(candidates_, collision_of_, accepted_);
+        resolve_collisions(particles_, collision_of_, accepted_, box_, duration, threads_);
+        advance_free_particles(particles_, collision_of_, box_, duration, threads_);
+
+        for (const ThreadCandidates& thread : thread_candidates_) last_step_.pair_tests += thread.pair_tests;
+        for (const Collision& c : accepted_) {
+            if (c.kind == CollisionKind::pair) {
+                ++last_step_.particle_collisions;
+            } else {
+                ++last_step_.wall_collisions;
+            }
+        }
+    }
+
+    World world_;
+    Box box_;
+    SteppedOptions options_;
+    PairSearch search_ = PairSearch::grid;  // never automatic
+    int threads_ = 1;
+    int sort_every_ = 0;  // steps; 0: never
+    std::vector<Particle> particles_;
+    StorageOrder storage_order_;
+
+    std::vector<double> wall_time_;
+    std::vector<std::uint32_t> collision_of_;  // by particle: its number in accepted_ (from 1), 0 if none
+    std::vector<Collision> candidates_;
+    std::vector<Collision> merge_scratch_;  // the walls, while a busy step's lists are merged
+    std::vector<Collision> accepted_;
+    std::vector<ThreadCandidates> thread_candidates_;
+    GridSearch grid_;
+
+    std::int64_t steps_done_ = 0;
+    StepCounts last_step_;
+    StepCounts totals_;
+};
+
+SteppedSimulation::SteppedSimulation(const World& world, std::vector<Particle> particles, const SteppedOptions& options)
+    : engine_(std::make_unique<Engine>(world, std::move(particles), options)) {}
+SteppedSimulation::~SteppedSimulation() = default;
+SteppedSimulation::SteppedSimulation(SteppedSimulation&&) noexcept = default;
+SteppedSimulation& SteppedSimulation::operator=(SteppedSimulation&&) noexcept = default;
+
+void SteppedSimulation::step() { engine_->step(); }
+// The engine is mutable behind the pointer: restoring the user's order changes no state.
+std::span<const Particle> SteppedSimulation::particles() const { return engine_->particles(); }
+const World& SteppedSimulation::world() const { return engine_->world(); }
+std::int64_t SteppedSimulation::steps_done() const { return engine_->steps_done(); }
+const StepCounts& SteppedSimulation::last_step() const { return engine_->last_step(); }
+const StepCounts& SteppedSimulation::totals() const { return engine_->totals(); }
+
+}  // namespace particlesim
