@@ -25,7 +25,8 @@ namespace {
 
 struct AccuracyScene {
     std::string name;
-    World params;
+    World world;
+    std::int64_t steps = 0;
     std::vector<Particle> particles;
 };
 
@@ -35,7 +36,7 @@ double median_run_seconds(MakeEngine&& make_engine, std::int64_t steps, int repe
     for (int r = 0; r < repeats; ++r) {
         auto engine = make_engine();
         const auto start = std::chrono::steady_clock::now();
-        engine.run(steps);
+        particlesim::run(engine, steps);
         seconds.push_back(std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
     }
     return median(seconds);
@@ -52,10 +53,10 @@ double counting_noise(std::uint64_t run, std::uint64_t truth) {
 void print_row(const AccuracyScene& scene, const char* engine, int substeps, int threads, int repeats, double seconds,
                const RunRecord& run, const RunRecord& truth, const AccuracyReport& report) {
     std::printf("%s,%zu,%lld,%s,%d,%d,%d,%.6f,%llu,%llu,%.6g,%.6g,%.6g,%.6g,%.6g,%.3g,%.3g\n", scene.name.c_str(),
-                scene.particles.size(), static_cast<long long>(scene.params.steps), engine, substeps, threads, repeats, seconds,
+                scene.particles.size(), static_cast<long long>(scene.steps), engine, substeps, threads, repeats, seconds,
                 static_cast<unsigned long long>(run.particle_collisions), static_cast<unsigned long long>(run.wall_collisions),
                 report.particle_collision_rate_error, report.wall_collision_rate_error, report.overlap_fraction,
-                report.position_error_1, report.position_error_10, run.largest_energy_drift,
+                report.position_error_at(1).value_or(0.0), report.position_error_at(10).value_or(0.0), run.largest_energy_drift,
                 counting_noise(run.particle_collisions, truth.particle_collisions));
     std::fflush(stdout);
 }
@@ -64,8 +65,8 @@ AccuracyScene crowded_box(std::int64_t steps) {
     // Area fraction 0.3, speeds 0.1 to 1 r per step (the dense gas, smaller).
     const std::size_t count = 2000;
     const double box = std::sqrt(static_cast<double>(count) * std::numbers::pi / 0.3);
-    AccuracyScene scene{"crowded box", {box, 1.0, steps, OutputMode::perf}, {}};
-    scene.particles = make_random_particles(count, scene.params, {3210, SpeedRange{0.1, 1.0}});
+    AccuracyScene scene{"crowded box", {box, 1.0}, steps, {}};
+    scene.particles = make_random_particles(count, scene.world, {3210, SpeedRange{0.1, 1.0}});
     return scene;
 }
 
@@ -78,27 +79,27 @@ void accuracy_benchmark(bool quick) {
     const std::int64_t steps = quick ? 100 : 1000;
     const int repeats = quick ? 1 : 3;
     const int threads = 2;
-    AccuracyScene default_scene{"default", {20000.0, 1.0, steps, OutputMode::perf}, {}};
-    default_scene.particles = make_random_particles(1000, default_scene.params);
+    AccuracyScene default_scene{"default", {20000.0, 1.0}, steps, {}};
+    default_scene.particles = make_random_particles(1000, default_scene.world);
     for (const AccuracyScene& scene : {default_scene, crowded_box(steps)}) {
-        const World& params = scene.params;
+        const World& params = scene.world;
         ExactSimulation exact(params, scene.particles);
         const RunRecord truth = record_run(exact, steps);
         const double exact_seconds =
             median_run_seconds([&] { return ExactSimulation(params, scene.particles); }, steps, repeats);
         print_row(scene, "exact", 0, 1, repeats, exact_seconds, truth, truth, compare_to_exact(truth, truth, params));
         for (int k = 1; k <= 64; k *= 2) {
-            const SimOptions options{Broadphase::automatic, 0, threads, k};
-            Simulation stepped(params, scene.particles, options);
+            const SteppedOptions options{.threads = threads, .substeps = k};
+            SteppedSimulation stepped(params, scene.particles, options);
             const RunRecord run = record_run(stepped, steps);
-            const double seconds = median_run_seconds([&] { return Simulation(params, scene.particles, options); }, steps, repeats);
+            const double seconds = median_run_seconds([&] { return SteppedSimulation(params, scene.particles, options); }, steps, repeats);
             print_row(scene, "step", k, threads, repeats, seconds, run, truth, compare_to_exact(run, truth, params));
         }
     }
 }
 
 void exact_benchmark(bool quick) {
-    std::printf("scene,n,steps,runs,median_s,particle_collisions,wall_collisions,collisions_per_s,cells_per_side\n");
+    std::printf("scene,n,steps,runs,median_s,particle_collisions,wall_collisions,collisions_per_s\n");
     const int repeats = quick ? 1 : 3;
     struct ExactCase {
         std::string name;
@@ -115,25 +116,23 @@ void exact_benchmark(bool quick) {
         cases.push_back({"dense gas", n, box, static_cast<std::int64_t>(2e6 / static_cast<double>(n)) + 2, SpeedRange{0.1, 1.0}});
     }
     for (const ExactCase& c : cases) {
-        const World params{c.box, 1.0, c.steps, OutputMode::perf};
+        const World params{c.box, 1.0};
         const std::vector<Particle> particles = make_random_particles(c.count, params, {3210, c.speeds});
         std::vector<double> seconds;
         std::uint64_t particle_collisions = 0;
         std::uint64_t wall_collisions = 0;
-        int cells = 0;
         for (int r = 0; r < repeats; ++r) {
             ExactSimulation exact(params, particles);
             const auto start = std::chrono::steady_clock::now();
-            exact.run(c.steps);
+            particlesim::run(exact, c.steps);
             seconds.push_back(std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
             particle_collisions = exact.totals().particle_collisions;
             wall_collisions = exact.totals().wall_collisions;
-            cells = exact.cells_per_side();
         }
         const double time = median(seconds);
-        std::printf("%s,%zu,%lld,%d,%.6f,%llu,%llu,%.4g,%d\n", c.name.c_str(), c.count, static_cast<long long>(c.steps), repeats, time,
+        std::printf("%s,%zu,%lld,%d,%.6f,%llu,%llu,%.4g\n", c.name.c_str(), c.count, static_cast<long long>(c.steps), repeats, time,
                     static_cast<unsigned long long>(particle_collisions), static_cast<unsigned long long>(wall_collisions),
-                    static_cast<double>(particle_collisions + wall_collisions) / time, cells);
+                    static_cast<double>(particle_collisions + wall_collisions) / time);
         std::fflush(stdout);
     }
 }

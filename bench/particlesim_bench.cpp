@@ -45,7 +45,7 @@ struct Case {
     double radius;
     std::int64_t steps;
     std::optional<SpeedRange> speeds;
-    Broadphase search;
+    PairSearch search;
     int threads;
     int repeats;
 };
@@ -60,7 +60,7 @@ struct Measurement {
 
 // Runs in the child: builds the scene (untimed), then times the steps.
 Measurement measure(const Case& c) {
-    const World params{c.box_size, c.radius, c.steps, OutputMode::perf};
+    const World params{c.box_size, c.radius};
     RandomSceneOptions scene;
     scene.speeds = c.speeds;
     std::vector<double> seconds;
@@ -68,9 +68,9 @@ Measurement measure(const Case& c) {
     for (int r = 0; r < c.repeats; ++r) {
         // A fresh scene moved into the simulation, so that the peak memory is
         // the simulation's, not that of a copy kept for the next repeat.
-        Simulation sim(params, make_random_particles(c.count, params, scene), {c.search, 0, c.threads});
+        SteppedSimulation sim(params, make_random_particles(c.count, params, scene), {.pair_search = c.search, .threads = c.threads});
         const auto start = std::chrono::steady_clock::now();
-        sim.run(c.steps);
+        particlesim::run(sim, c.steps);
         seconds.push_back(std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
         m.pair_tests_per_step = static_cast<double>(sim.totals().pair_tests) / static_cast<double>(c.steps);
         m.collisions_per_step = static_cast<double>(sim.totals().particle_collisions) / static_cast<double>(c.steps);
@@ -81,11 +81,11 @@ Measurement measure(const Case& c) {
     return m;
 }
 
-const char* search_name(Broadphase search) {
+const char* search_name(PairSearch search) {
     switch (search) {
-    case Broadphase::brute: return "brute";
-    case Broadphase::grid: return "grid";
-    case Broadphase::automatic: return "auto";
+    case PairSearch::brute_force: return "brute";
+    case PairSearch::grid: return "grid";
+    case PairSearch::automatic: return "auto";
     }
     return "?";
 }
@@ -136,10 +136,10 @@ void steps_benchmark(bool quick) {
     for (const std::size_t n : {4, 16, 64, 256, 1024, 4096, 16384, 32000}) {
         if (quick && n > 4096) break;
         const double nd = static_cast<double>(n);
-        for (const Broadphase search : {Broadphase::brute, Broadphase::grid}) {
-            if (search == Broadphase::brute && n > 16384) continue;  // hours at N = 32000
+        for (const PairSearch search : {PairSearch::brute_force, PairSearch::grid}) {
+            if (search == PairSearch::brute_force && n > 16384) continue;  // hours at N = 32000
             for (const int threads : {1, 2}) {
-                const double guess = search == Broadphase::brute ? 4e-9 * nd * nd + 1e-6 : 4e-7 * nd + 2e-6;
+                const double guess = search == PairSearch::brute_force ? 4e-9 * nd * nd + 1e-6 : 4e-7 * nd + 2e-6;
                 const Case c{"sparse", n, 20000.0, 1.0, steps_for(guess, target, 1000000), {}, search, threads, repeats};
                 run_step_case(c);
             }
@@ -149,7 +149,7 @@ void steps_benchmark(bool quick) {
     const std::size_t dense_n = quick ? 100000 : 1000000;
     const double dense_box = std::sqrt(static_cast<double>(dense_n) * std::numbers::pi / 0.3);
     for (const int threads : {1, 2}) {
-        run_step_case({"dense", dense_n, dense_box, 1.0, quick ? 5 : 20, SpeedRange{0.1, 1.0}, Broadphase::grid, threads,
+        run_step_case({"dense", dense_n, dense_box, 1.0, quick ? 5 : 20, SpeedRange{0.1, 1.0}, PairSearch::grid, threads,
                        quick ? 1 : 3});
     }
 }

@@ -4,7 +4,7 @@
 
 #include "benchmarks.hpp"
 
-#include "../tests/stress_scenes.hpp"
+#include "stress_scenes.hpp"
 #include "particlesim/exact_simulation.hpp"
 #include "particlesim/stepped_simulation.hpp"
 
@@ -39,13 +39,13 @@ void stress_benchmark(bool quick) {
     const std::int64_t steps = quick ? 20000 : 1000000;
     const stress_scenes::StressScene scene = stress_scenes::crowded_box();
     for (const int threads : {1, 2}) {
-        Simulation stepped(scene.params, scene.particles, {Broadphase::automatic, 0, threads, 1});
-        stress_row(threads == 1 ? "step (1 thread)" : "step (2 threads)", stepped, scene.params, steps);
+        SteppedSimulation stepped(scene.world, scene.particles, {.threads = threads});
+        stress_row(threads == 1 ? "step (1 thread)" : "step (2 threads)", stepped, scene.world, steps);
     }
-    Simulation substeps(scene.params, scene.particles, {Broadphase::automatic, 0, 1, 4});
-    stress_row("step K=4", substeps, scene.params, steps / 4);
-    ExactSimulation exact(scene.params, scene.particles);
-    stress_row("exact", exact, scene.params, steps);
+    SteppedSimulation substeps(scene.world, scene.particles, {.threads = 1, .substeps = 4});
+    stress_row("step K=4", substeps, scene.world, steps / 4);
+    ExactSimulation exact(scene.world, scene.particles);
+    stress_row("exact", exact, scene.world, steps);
 }
 
 }  // namespace bench

@@ -6,15 +6,15 @@
 
 int main() {
     using namespace particlesim;
-    const World params{20000.0, 1.0, 100, OutputMode::perf};  // L, r, S, mode
+    const World params{20000.0, 1.0};  // L, r, S, mode
     RandomSceneOptions scene;
     scene.seed = 42;
-    SimOptions options;
+    SteppedOptions options;
     options.threads = 2;  // the output is the same for any number
-    Simulation sim(params, make_random_particles(1000, params, scene), options);
+    SteppedSimulation sim(params, make_random_particles(1000, params, scene), options);
 
     std::uint64_t wall_hits = 0;
-    sim.run(params.steps, [&](std::int64_t /*step*/, std::span<const Particle>) {
+    particlesim::run(sim, 100, [&](std::int64_t /*step*/, std::span<const Particle>) {
         wall_hits += sim.last_step().wall_collisions;
     });
 

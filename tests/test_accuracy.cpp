@@ -21,7 +21,7 @@ Particle at(double x, double y) {
 }
 
 void overlap_counter() {
-    const World params{100.0, 1.0, 1, OutputMode::perf};
+    const World params{100.0, 1.0};
     OverlapCounter counter;
     // 0 and 1 overlap (1.5 apart), 2 touches 1 exactly (not an overlap), 3 is alone.
     std::vector<Particle> scene = {at(10, 10), at(11.5, 10), at(13.5, 10), at(50, 50)};
@@ -42,45 +42,45 @@ void overlap_counter() {
 }
 
 void metrics_by_hand() {
-    const World params{100.0, 1.0, 10, OutputMode::perf};
+    const World params{100.0, 1.0};
     RunRecord exact;
     exact.steps = 10;
     exact.particle_count = 2;
     exact.particle_collisions = 40;
     exact.wall_collisions = 10;
-    exact.positions_after_1 = {Vec2(10, 10), Vec2(20, 20)};
-    exact.positions_after_10 = exact.positions_after_1;
+    exact.checkpoints = {{1, {Vec2(10, 10), Vec2(20, 20)}}, {10, {Vec2(10, 10), Vec2(20, 20)}}};
     const AccuracyReport same = compare_to_exact(exact, exact, params);
     CHECK_EQ(same.particle_collision_rate_error, 0.0);
     CHECK_EQ(same.wall_collision_rate_error, 0.0);
-    CHECK_EQ(same.position_error_1, 0.0);
+    CHECK(same.position_error_at(1) == 0.0);
 
     RunRecord stepped = exact;
     stepped.particle_collisions = 30;  // -25 %
     stepped.wall_collisions = 11;      // +10 %
     stepped.overlapping_particle_steps = 5;  // of 2 x 10 particle-steps
-    stepped.positions_after_1 = {Vec2(13, 14), Vec2(20, 20)};  // one off by 5: RMS 5 / sqrt(2)
+    stepped.checkpoints[0].positions = {Vec2(13, 14), Vec2(20, 20)};  // one off by 5: RMS 5 / sqrt(2)
     stepped.largest_energy_drift = 3e-16;
     const AccuracyReport report = compare_to_exact(stepped, exact, params);
     CHECK_NEAR(report.particle_collision_rate_error, -0.25, 1e-15);
     CHECK_NEAR(report.wall_collision_rate_error, 0.1, 1e-15);
     CHECK_NEAR(report.overlap_fraction, 0.25, 1e-15);
-    CHECK_NEAR(report.position_error_1, 5.0 / std::sqrt(2.0) / 100.0, 1e-15);
-    CHECK_EQ(report.position_error_10, 0.0);
+    CHECK_NEAR(report.position_error_at(1).value_or(-1.0), 5.0 / std::sqrt(2.0) / 100.0, 1e-15);
+    CHECK(report.position_error_at(10) == 0.0);
+    CHECK(!report.position_error_at(2).has_value());  // not a checkpoint
     CHECK_EQ(report.energy_drift, 3e-16);
 }
 
 void exact_against_itself() {
-    const World params{200.0, 1.0, 30, OutputMode::perf};
+    const World params{200.0, 1.0};
     const std::vector<Particle> start = make_random_particles(300, params, {11, SpeedRange{0.5, 3.0}});
     ExactSimulation a(params, start);
-    ExactSimulation b(params, start, {1});
-    const RunRecord ra = record_run(a, params.steps);
-    const AccuracyReport report = compare_to_exact(ra, record_run(b, params.steps), params);
+    ExactSimulation b(params, start, {.cells_per_side = 1});
+    const RunRecord ra = record_run(a, 30);
+    const AccuracyReport report = compare_to_exact(ra, record_run(b, 30), params);
     CHECK(ra.particle_collisions > 100);
     CHECK_EQ(ra.overlapping_particle_steps, 0U);  // real hard disks never overlap
     CHECK_EQ(report.particle_collision_rate_error, 0.0);
-    CHECK_EQ(report.position_error_10, 0.0);
+    CHECK(report.position_error_at(10) == 0.0);
     CHECK(ra.largest_energy_drift <= 1e-13);
 }
 
@@ -88,7 +88,7 @@ void exact_against_itself() {
 // moderately dense box of slow disks (area fraction 0.12, speeds up to 2r a
 // step), every error falls as K goes 1 -> 4 -> 16 -> 64, averaged over scenes.
 void substeps_converge_to_exact() {
-    const World params{100.0, 1.0, 40, OutputMode::perf};
+    const World params{100.0, 1.0};
     const int ks[] = {1, 4, 16, 64};
     double rate_error[4] = {};
     double wall_error[4] = {};
@@ -97,14 +97,14 @@ void substeps_converge_to_exact() {
     for (std::uint64_t seed = 0; seed < 4; ++seed) {
         const std::vector<Particle> start = make_random_particles(400, params, {seed, SpeedRange{0.2, 2.0}});
         ExactSimulation exact(params, start);
-        const RunRecord truth = record_run(exact, params.steps);
+        const RunRecord truth = record_run(exact, 40);
         for (int k = 0; k < 4; ++k) {
-            Simulation stepped(params, start, {Broadphase::automatic, 0, 0, ks[k]});
-            const AccuracyReport r = compare_to_exact(record_run(stepped, params.steps), truth, params);
+            SteppedSimulation stepped(params, start, {.substeps = ks[k]});
+            const AccuracyReport r = compare_to_exact(record_run(stepped, 40), truth, params);
             rate_error[k] += std::abs(r.particle_collision_rate_error);
             wall_error[k] += std::abs(r.wall_collision_rate_error);
             overlaps[k] += r.overlap_fraction;
-            position_1[k] += r.position_error_1;
+            position_1[k] += r.position_error_at(1).value();
         }
     }
     for (int k = 0; k < 4; ++k) {
@@ -122,10 +122,11 @@ void substeps_converge_to_exact() {
 
 }  // namespace
 
-int main() {
-    overlap_counter();
-    metrics_by_hand();
-    exact_against_itself();
-    substeps_converge_to_exact();
-    return check::summary("test_accuracy");
+int main(int argc, char** argv) {
+    return check::run(argc, argv, "test_accuracy",
+                     {
+                      {"overlap counter", overlap_counter},
+                      {"metrics by hand", metrics_by_hand},
+                      {"exact against itself", exact_against_itself},
+                      {"substeps converge to exact", substeps_converge_to_exact}});
 }

@@ -68,9 +68,9 @@ std::string expected_output(const Scene& scene, const example_scenes::States& st
             text += "\n";
         }
     };
-    const std::int64_t steps = scene.params.steps;
+    const std::int64_t steps = scene.steps;
     add_block(0, states[0], false);
-    if (scene.params.mode == OutputMode::print) {
+    if (scene.mode == OutputMode::print) {
         for (std::int64_t s = 1; s < steps; ++s) add_block(s, states[static_cast<std::size_t>(s)], false);
     }
     add_block(steps, states[static_cast<std::size_t>(steps)], true);
@@ -118,8 +118,10 @@ void random_scenes_and_options() {
     CHECK_EQ(std::count(a.out.begin(), a.out.end(), '\n'), 300L * 21);
     // The library's random scene is what simcli printed as the initial state.
     Scene expected;
-    expected.params = World{20000.0, 1.0, 20, OutputMode::print};
-    expected.particles = make_random_particles(300, expected.params);
+    expected.world = World{20000.0, 1.0};
+    expected.steps = 20;
+    expected.mode = OutputMode::print;
+    expected.particles = make_random_particles(300, expected.world);
     expected.particle_count = 300;
     CHECK(a.out == expected_output(expected));
     for (const std::string broadphase : {"brute", "grid", "auto"}) {
@@ -132,7 +134,7 @@ void random_scenes_and_options() {
     // Substeps and the exact engine print what the library computes.
     const Result substeps = simcli_run({"--substeps", "3", "-t", "2"}, scene);
     CHECK_EQ(substeps.status, 0);
-    CHECK(substeps.out == expected_output(expected, example_scenes::run(expected, {Broadphase::automatic, 0, 1, 3})));
+    CHECK(substeps.out == expected_output(expected, example_scenes::run(expected, {.threads = 1, .substeps = 3})));
     CHECK(substeps.out != a.out);
     const Result exact = simcli_run({"--engine", "exact"}, scene);
     CHECK_EQ(exact.status, 0);
@@ -278,14 +280,15 @@ void write_failures() {
 
 }  // namespace
 
-int main() {
-    examples_byte_for_byte();
-    random_scenes_and_options();
-    help_and_version();
-    bad_usage();
-    bad_input();
-    exact_engine();
-    stats();
-    write_failures();
-    return check::summary("test_cli");
+int main(int argc, char** argv) {
+    return check::run(argc, argv, "test_cli",
+                     {
+                      {"examples byte for byte", examples_byte_for_byte},
+                      {"random scenes and options", random_scenes_and_options},
+                      {"help and version", help_and_version},
+                      {"bad usage", bad_usage},
+                      {"bad input", bad_input},
+                      {"exact engine", exact_engine},
+                      {"stats", stats},
+                      {"write failures", write_failures}});
 }

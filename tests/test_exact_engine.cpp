@@ -7,7 +7,7 @@
 #include "random_scenes.hpp"
 #include "state_hash.hpp"
 
-#include "energy.hpp"
+#include "particlesim/accuracy.hpp"
 #include "particlesim/exact_simulation.hpp"
 #include "particlesim/random_scene.hpp"
 #include "particlesim/stepped_simulation.hpp"
@@ -52,7 +52,7 @@ void wall_then_pair() {
     CHECK_EQ(stepped[1][1].velocity.x(), 0.0);
     CHECK_EQ(state_hash::hash(stepped[2]), state_hash::hash(exact[2]));
     // Two substeps of 0.5 catch both events in step 1, as the exact engine does.
-    const auto substeps = example_scenes::run(scene, {Broadphase::automatic, 0, 1, 2});
+    const auto substeps = example_scenes::run(scene, {.threads = 1, .substeps = 2});
     CHECK_EQ(state_hash::hash(substeps[1]), state_hash::hash(exact[1]));
 }
 
@@ -82,10 +82,10 @@ void same_events_for_every_cell_size() {
     for (std::uint64_t k = 0; k < 60; ++k) {
         // The family's non-overlapping regimes: 0 (default speeds) and 3 (slow).
         const random_scenes::TestScene scene = random_scenes::make(k * 5 + (k % 2 == 0 ? 0 : 3));
-        ExactSimulation automatic(scene.params, scene.particles);
-        ExactSimulation one_cell(scene.params, scene.particles, {1});
-        ExactSimulation seven(scene.params, scene.particles, {7});
-        for (std::int64_t s = 0; s < scene.params.steps; ++s) {
+        ExactSimulation automatic(scene.world, scene.particles);
+        ExactSimulation one_cell(scene.world, scene.particles, {1});
+        ExactSimulation seven(scene.world, scene.particles, {7});
+        for (std::int64_t s = 0; s < scene.steps; ++s) {
             automatic.step();
             one_cell.step();
             seven.step();
@@ -105,11 +105,11 @@ void agrees_with_stepped_engine_when_events_do_not_share_a_particle() {
     std::uint64_t compared_steps = 0;
     std::uint64_t compared_collisions = 0;
     for (std::uint64_t seed = 0; seed < 200; ++seed) {
-        const World params{60.0, 1.0, 12, OutputMode::perf};
+        const World params{60.0, 1.0};
         const std::vector<Particle> start = make_random_particles(12, params, {seed, SpeedRange{0.5, 4.0}});
         ExactSimulation exact(params, start);
-        Simulation stepped(params, start);
-        for (std::int64_t s = 0; s < params.steps; ++s) {
+        SteppedSimulation stepped(params, start);
+        for (std::int64_t s = 0; s < 12; ++s) {
             exact.step();
             stepped.step();
             if (exact.last_step_particles_with_several_events() != 0) break;
@@ -127,15 +127,15 @@ void agrees_with_stepped_engine_when_events_do_not_share_a_particle() {
 void conserves_and_stays_inside() {
     for (std::uint64_t k = 0; k < 30; ++k) {
         const random_scenes::TestScene scene = random_scenes::make(k * 5 + (k % 2 == 0 ? 0 : 3));
-        ExactSimulation exact(scene.params, scene.particles);
+        ExactSimulation exact(scene.world, scene.particles);
         const double e0 = total_kinetic_energy(exact.particles());
         Vec2 momentum0 = Vec2::Zero();
         for (const Particle& p : exact.particles()) momentum0 += p.velocity;
-        exact.run(scene.params.steps, [&](std::int64_t, std::span<const Particle> particles) {
+        particlesim::run(exact, scene.steps, [&](std::int64_t, std::span<const Particle> particles) {
             bool inside = true;
             for (const Particle& p : particles) {
-                inside = inside && p.position.allFinite() && p.position.minCoeff() >= scene.params.lower() &&
-                         p.position.maxCoeff() <= scene.params.upper();
+                inside = inside && p.position.allFinite() && p.position.minCoeff() >= scene.world.lower() &&
+                         p.position.maxCoeff() <= scene.world.upper();
             }
             CHECK(inside);
             CHECK(std::abs(relative_energy_drift(e0, total_kinetic_energy(particles))) <= 1e-12);
@@ -144,7 +144,7 @@ void conserves_and_stays_inside() {
 }
 
 void refuses_overlaps_and_bad_scenes() {
-    const World params{20.0, 1.0, 1, OutputMode::perf};
+    const World params{20.0, 1.0};
     std::vector<Particle> pair(2);
     pair[0].position = Vec2(5, 5);
     pair[1].position = Vec2(6.5, 5);
@@ -170,7 +170,7 @@ void refuses_overlaps_and_bad_scenes() {
 
 void estimates_events() {
     // One disk crossing a box of span 8 at speed 4 per step: 0.5 wall hits a step.
-    const World params{10.0, 1.0, 1, OutputMode::perf};
+    const World params{10.0, 1.0};
     std::vector<Particle> one(1);
     one[0].position = Vec2(5, 5);
     one[0].velocity = Vec2(4, 0);
@@ -179,18 +179,19 @@ void estimates_events() {
     CHECK_EQ(estimated_events_per_step(params, one), 0.0);
     one[0].velocity = Vec2(1, 0);
     one[0].position = Vec2(1, 1);
-    CHECK(std::isinf(estimated_events_per_step(World{2.0, 1.0, 1, OutputMode::perf}, one)));
+    CHECK(std::isinf(estimated_events_per_step(World{2.0, 1.0}, one)));
 }
 
 }  // namespace
 
-int main() {
-    wall_then_pair();
-    hand_built_examples();
-    same_events_for_every_cell_size();
-    agrees_with_stepped_engine_when_events_do_not_share_a_particle();
-    conserves_and_stays_inside();
-    refuses_overlaps_and_bad_scenes();
-    estimates_events();
-    return check::summary("test_exact_engine");
+int main(int argc, char** argv) {
+    return check::run(argc, argv, "test_exact_engine",
+                     {
+                      {"wall then pair", wall_then_pair},
+                      {"hand built examples", hand_built_examples},
+                      {"same events for every cell size", same_events_for_every_cell_size},
+                      {"agrees with stepped engine when events do not share a particle", agrees_with_stepped_engine_when_events_do_not_share_a_particle},
+                      {"conserves and stays inside", conserves_and_stays_inside},
+                      {"refuses overlaps and bad scenes", refuses_overlaps_and_bad_scenes},
+                      {"estimates events", estimates_events}});
 }

@@ -2,6 +2,8 @@
 // (the derivations are in the comments). L = 20, r = 1: centres in [1, 19].
 
 #include "check.hpp"
+
+#include <optional>
 #include "example_scenes.hpp"
 
 #include "physics.hpp"
@@ -143,9 +145,10 @@ void every_search_agrees_on_examples() {
     for (const char* name : {"head_on.in", "crossing.in", "newtons_cradle.in", "glancing_line.in", "square.in",
                              "triangle.in", "corner.in", "faster_than_box.in"}) {
         const Scene scene = example_scenes::load(name);
-        const auto brute = example_scenes::run(scene, {Broadphase::brute, 0, 1});
+        const auto brute = example_scenes::run(scene, {.pair_search = PairSearch::brute_force, .threads = 1});
         for (int grid : {0, 1, 2, 4, 7}) {
-            const auto fast = example_scenes::run(scene, {Broadphase::grid, grid, 2});
+            const std::optional<int> cells = grid > 0 ? std::optional<int>(grid) : std::nullopt;
+            const auto fast = example_scenes::run(scene, {.pair_search = PairSearch::grid, .grid_cells = cells, .threads = 2});
             bool same = true;
             for (std::size_t s = 0; s < brute.size(); ++s) {
                 for (std::size_t i = 0; i < brute[s].size(); ++i) {
@@ -161,15 +164,16 @@ void every_search_agrees_on_examples() {
 
 }  // namespace
 
-int main() {
-    head_on();
-    crossing();
-    newtons_cradle();
-    glancing_line();
-    square();
-    triangle();
-    corner();
-    faster_than_box();
-    every_search_agrees_on_examples();
-    return check::summary("test_examples");
+int main(int argc, char** argv) {
+    return check::run(argc, argv, "test_examples",
+                     {
+                      {"head on", head_on},
+                      {"crossing", crossing},
+                      {"newtons cradle", newtons_cradle},
+                      {"glancing line", glancing_line},
+                      {"square", square},
+                      {"triangle", triangle},
+                      {"corner", corner},
+                      {"faster than box", faster_than_box},
+                      {"every search agrees on examples", every_search_agrees_on_examples}});
 }

@@ -105,10 +105,11 @@ void touching_boxes_overlap() {
 
 }  // namespace
 
-int main() {
-    float_bounds_enclose_the_value();
-    touching_boxes_overlap();
-    std::uint64_t seed = 1;
-    for (const std::uint32_t count : {0U, 1U, 3U, 4U, 5U, 9U, 40U}) scans_report_exactly_the_overlaps(seed++, count);
-    return check::summary("test_float_box_array");
+int main(int argc, char** argv) {
+    return check::run(argc, argv, "test_float_box_array", {{"float box scans", [] {
+        float_bounds_enclose_the_value();
+        touching_boxes_overlap();
+        std::uint64_t seed = 1;
+        for (const std::uint32_t count : {0U, 1U, 3U, 4U, 5U, 9U, 40U}) scans_report_exactly_the_overlaps(seed++, count);
+    }}});
 }

@@ -23,7 +23,7 @@ bool same(const std::vector<Particle>& a, const std::vector<Particle>& b) {
 }
 
 void reproducible_by_seed() {
-    const World params{20000.0, 1.0, 10, OutputMode::perf};
+    const World params{20000.0, 1.0};
     const auto a = make_random_particles(500, params);
     const auto b = make_random_particles(500, params, {default_seed, {}});
     const auto c = make_random_particles(500, params, {default_seed + 1, {}});
@@ -73,7 +73,7 @@ void valid_and_in_range(std::size_t count, const World& params, const RandomScen
 }
 
 void too_full_fails_fast() {
-    const World params{20.0, 1.0, 10, OutputMode::perf};
+    const World params{20.0, 1.0};
     for (std::size_t count : {std::size_t{200}, std::size_t{80}, std::size_t{1000000}}) {
         const auto start = std::chrono::steady_clock::now();
         bool refused = false;
@@ -87,19 +87,20 @@ void too_full_fails_fast() {
         CHECK(seconds < 5.0);
     }
     // A single disk that exactly fits the box is fine.
-    CHECK_EQ(make_random_particles(1, World{2.0, 1.0, 1, OutputMode::perf}).size(), 1U);
+    CHECK_EQ(make_random_particles(1, World{2.0, 1.0}).size(), 1U);
 }
 
 }  // namespace
 
-int main() {
-    reproducible_by_seed();
-    const World paper{20000.0, 1.0, 10, OutputMode::perf};
-    valid_and_in_range(3000, paper, {});
-    valid_and_in_range(2000, World{200.0, 1.0, 10, OutputMode::perf}, {42, SpeedRange{0.1, 1.0}});  // area fraction 0.16
-    valid_and_in_range(100, World{1.0, 1e-9, 10, OutputMode::perf}, {1, {}});
-    too_full_fails_fast();
-    CHECK(default_speed_range(paper).min == 2500.0 && default_speed_range(paper).max == 5000.0);
-    CHECK(default_speed_range(World{16.0, 1.0, 1, OutputMode::perf}).min == 2.0);
-    return check::summary("test_random_scene");
+int main(int argc, char** argv) {
+    return check::run(argc, argv, "test_random_scene", {{"random scenes", [] {
+        reproducible_by_seed();
+        const World paper{20000.0, 1.0};
+        valid_and_in_range(3000, paper, {});
+        valid_and_in_range(2000, World{200.0, 1.0}, {42, SpeedRange{0.1, 1.0}});  // area fraction 0.16
+        valid_and_in_range(100, World{1.0, 1e-9}, {1, {}});
+        too_full_fails_fast();
+        CHECK(default_speed_range(paper).min == 2500.0 && default_speed_range(paper).max == 5000.0);
+        CHECK(default_speed_range(World{16.0, 1.0}).min == 2.0);
+    }}});
 }

@@ -14,7 +14,7 @@ using namespace particlesim;
 
 namespace {
 
-const World params{20.0, 1.0, 10, OutputMode::perf};
+const World params{20.0, 1.0};
 
 Particle make(double x, double y, double vx, double vy) {
     Particle p;
@@ -49,7 +49,7 @@ void order_encodes_the_tie_rules() {
 void wall_beats_pair_at_equal_time() {
     // 0 reaches x = 19 at t = 1; at that moment 1, sliding down x = 19, is at
     // distance 2 above it: a wall and a pair candidate at t = 1. The wall wins.
-    Simulation sim(params, {make(17, 10, 2, 0), make(19, 13, 0, -1)});
+    SteppedSimulation sim(params, {make(17, 10, 2, 0), make(19, 13, 0, -1)});
     sim.step();
     const auto p = sim.particles();
     CHECK_EQ(p[0].wall_collisions, 1U);
@@ -63,7 +63,7 @@ void lowest_indices_win_among_equal_pairs() {
     // 1 at the centre, 0 and 2 at the same distance on either side closing at
     // the same speed: (0, 1) and (1, 2) tie at t = 0.5; (0, 1) wins and 2
     // passes on into 1.
-    Simulation sim(params, {make(7, 10, 2, 0), make(10, 10, 0, 0), make(13, 10, -2, 0)});
+    SteppedSimulation sim(params, {make(7, 10, 2, 0), make(10, 10, 0, 0), make(13, 10, -2, 0)});
     sim.step();
     const auto p = sim.particles();
     CHECK_EQ(p[0].particle_collisions, 1U);
@@ -79,7 +79,7 @@ void collision_near_wall_stops_at_wall_then_passes_through() {
     // start of the step, so it is no candidate) and runs back through 0 (at
     // x = 15.5), ending at x = 16, overlapping. Step 3: overlapping and
     // approaching: collision at t = 0, velocities exchanged.
-    Simulation sim(params, {make(15, 10, 3, 0), make(17.5, 10, 0, 0)});
+    SteppedSimulation sim(params, {make(15, 10, 3, 0), make(17.5, 10, 0, 0)});
     sim.step();
     auto p = sim.particles();
     CHECK_EQ(p[1].position.x(), 19.0);
@@ -99,8 +99,8 @@ void collision_near_wall_stops_at_wall_then_passes_through() {
 }
 
 void overlapping_and_receding_separate_freely() {
-    Simulation sim(params, {make(9.5, 10, -0.5, 0), make(10.5, 10, 0.5, 0)});
-    sim.run(3);
+    SteppedSimulation sim(params, {make(9.5, 10, -0.5, 0), make(10.5, 10, 0.5, 0)});
+    particlesim::run(sim, 3);
     const auto p = sim.particles();
     CHECK_EQ(p[0].particle_collisions + p[1].particle_collisions, 0U);
     CHECK_EQ(p[0].position.x(), 8.0);
@@ -108,7 +108,7 @@ void overlapping_and_receding_separate_freely() {
 }
 
 void coincident_centres_never_collide() {
-    Simulation sim(params, {make(10, 10, 1, 0), make(10, 10, 0, 1)});
+    SteppedSimulation sim(params, {make(10, 10, 1, 0), make(10, 10, 0, 1)});
     sim.step();
     const auto p = sim.particles();
     CHECK_EQ(p[0].particle_collisions, 0U);
@@ -119,7 +119,7 @@ void coincident_centres_never_collide() {
 void invalid_scenes_are_refused() {
     bool refused = false;
     try {
-        Simulation sim(params, {make(0.5, 10, 0, 0)});
+        SteppedSimulation sim(params, {make(0.5, 10, 0, 0)});
     } catch (const std::invalid_argument&) {
         refused = true;
     }
@@ -154,14 +154,15 @@ void parallel_order_equals_one_sort() {
     }
 }
 
-int main() {
-    order_encodes_the_tie_rules();
-    parallel_order_equals_one_sort();
-    wall_beats_pair_at_equal_time();
-    lowest_indices_win_among_equal_pairs();
-    collision_near_wall_stops_at_wall_then_passes_through();
-    overlapping_and_receding_separate_freely();
-    coincident_centres_never_collide();
-    invalid_scenes_are_refused();
-    return check::summary("test_rules");
+int main(int argc, char** argv) {
+    return check::run(argc, argv, "test_rules",
+                     {
+                      {"order encodes the tie rules", order_encodes_the_tie_rules},
+                      {"parallel order equals one sort", parallel_order_equals_one_sort},
+                      {"wall beats pair at equal time", wall_beats_pair_at_equal_time},
+                      {"lowest indices win among equal pairs", lowest_indices_win_among_equal_pairs},
+                      {"collision near wall stops at wall then passes through", collision_near_wall_stops_at_wall_then_passes_through},
+                      {"overlapping and receding separate freely", overlapping_and_receding_separate_freely},
+                      {"coincident centres never collide", coincident_centres_never_collide},
+                      {"invalid scenes are refused", invalid_scenes_are_refused}});
 }

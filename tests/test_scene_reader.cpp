@@ -46,8 +46,8 @@ void valid_scenes() {
     CHECK(random.ok);
     CHECK(random.scene.is_random());
     CHECK_EQ(random.scene.particle_count, 1000U);
-    CHECK_EQ(random.scene.params.steps, 1000);
-    CHECK(random.scene.params.mode == OutputMode::perf);
+    CHECK_EQ(random.scene.steps, 1000);
+    CHECK(random.scene.mode == OutputMode::perf);
 
     // Particles in any order, blank lines, tabs, CRLF, header on one line.
     const Outcome listed = read("2 20 1 5 print\n\n1\t15 12 -0.5 0\r\n0 5 5 1e-1 -0\n\n");
@@ -57,7 +57,7 @@ void valid_scenes() {
     CHECK_EQ(listed.scene.particles[0].velocity.x(), 0.1);
     CHECK(!std::signbit(listed.scene.particles[0].velocity.y()));
     CHECK_EQ(listed.scene.particles[1].position.y(), 12.0);
-    CHECK(listed.scene.params.mode == OutputMode::print);
+    CHECK(listed.scene.mode == OutputMode::print);
 
     // Boundaries are valid: x = r, x = L - r, 2r = L, N = 0, S = 0.
     CHECK(read("1 2 1 0 perf\n0 1 1 0 0\n").ok);
@@ -107,9 +107,10 @@ void bad_particles() {
 
 }  // namespace
 
-int main() {
-    valid_scenes();
-    bad_headers();
-    bad_particles();
-    return check::summary("test_scene_reader");
+int main(int argc, char** argv) {
+    return check::run(argc, argv, "test_scene_reader",
+                     {
+                      {"valid scenes", valid_scenes},
+                      {"bad headers", bad_headers},
+                      {"bad particles", bad_particles}});
 }

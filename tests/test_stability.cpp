@@ -20,21 +20,21 @@ constexpr double max_drift = 1e-12;
 void adversarial_scenes() {
     for (const stress_scenes::StressScene& scene : stress_scenes::all()) {
         for (const int substeps : {1, 4}) {
-            for (const Broadphase search : {Broadphase::brute, Broadphase::grid}) {
-                Simulation stepped(scene.params, scene.particles, {search, 0, 2, substeps});
-                const double drift = stress_scenes::run_checked(stepped, scene.params, scene.params.steps);
+            for (const PairSearch search : {PairSearch::brute_force, PairSearch::grid}) {
+                SteppedSimulation stepped(scene.world, scene.particles, {.pair_search = search, .threads = 2, .substeps = substeps});
+                const double drift = stress_scenes::run_checked(stepped, scene.world, scene.steps);
                 CHECK(drift <= max_drift);
                 if (!(drift <= max_drift)) std::fprintf(stderr, "  %s (stepped, K = %d): drift %g\n", scene.name.c_str(), substeps, drift);
             }
         }
         // The exact engine takes what it can: no overlaps, a bounded number of events.
-        const double events = estimated_events_per_step(scene.params, scene.particles) * static_cast<double>(scene.params.steps);
+        const double events = estimated_events_per_step(scene.world, scene.particles) * static_cast<double>(scene.steps);
         if (scene.overlapping || events > 1e7) {
             std::printf("%s: exact engine skipped (%s)\n", scene.name.c_str(), scene.overlapping ? "overlaps" : "too many events");
             continue;
         }
-        ExactSimulation exact(scene.params, scene.particles);
-        const double drift = stress_scenes::run_checked(exact, scene.params, scene.params.steps);
+        ExactSimulation exact(scene.world, scene.particles);
+        const double drift = stress_scenes::run_checked(exact, scene.world, scene.steps);
         CHECK(drift <= max_drift);
         if (!(drift <= max_drift)) std::fprintf(stderr, "  %s (exact): drift %g\n", scene.name.c_str(), drift);
         std::printf("%s: exact engine %llu particle and %llu wall collisions\n", scene.name.c_str(),
@@ -47,12 +47,12 @@ void exact_engine_refuses_what_would_hang() {
     // Exactly the scenes skipped above: the guard sees them coming.
     for (const stress_scenes::StressScene& scene : stress_scenes::all()) {
         if (scene.name.rfind("tiny radius", 0) == 0 || scene.name.rfind("speeds far above", 0) == 0) {
-            CHECK(estimated_events_per_step(scene.params, scene.particles) > 1e7);
+            CHECK(estimated_events_per_step(scene.world, scene.particles) > 1e7);
         }
         if (scene.overlapping) {
             bool refused = false;
             try {
-                ExactSimulation exact(scene.params, scene.particles);
+                ExactSimulation exact(scene.world, scene.particles);
             } catch (const OverlappingStart&) {
                 refused = true;
             }
@@ -63,18 +63,19 @@ void exact_engine_refuses_what_would_hang() {
 
 void crowded_box_quick() {
     const stress_scenes::StressScene scene = stress_scenes::crowded_box();
-    Simulation stepped(scene.params, scene.particles, {Broadphase::automatic, 0, 1, 1});
-    CHECK(stress_scenes::run_checked(stepped, scene.params, 20000) <= max_drift);
-    ExactSimulation exact(scene.params, scene.particles);
-    CHECK(stress_scenes::run_checked(exact, scene.params, 5000) <= max_drift);
+    SteppedSimulation stepped(scene.world, scene.particles, {.threads = 1});
+    CHECK(stress_scenes::run_checked(stepped, scene.world, 20000) <= max_drift);
+    ExactSimulation exact(scene.world, scene.particles);
+    CHECK(stress_scenes::run_checked(exact, scene.world, 5000) <= max_drift);
     CHECK(exact.totals().particle_collisions > 100000);
 }
 
 }  // namespace
 
-int main() {
-    adversarial_scenes();
-    exact_engine_refuses_what_would_hang();
-    crowded_box_quick();
-    return check::summary("test_stability");
+int main(int argc, char** argv) {
+    return check::run(argc, argv, "test_stability",
+                     {
+                      {"adversarial scenes", adversarial_scenes},
+                      {"exact engine refuses what would hang", exact_engine_refuses_what_would_hang},
+                      {"crowded box quick", crowded_box_quick}});
 }

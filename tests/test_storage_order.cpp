@@ -34,7 +34,7 @@ bool consistent(std::span<const Particle> stored, const StorageOrder& order) {
 }
 
 void sorts_by_rows_and_restores_exactly() {
-    const World params{200.0, 1.0, 1, OutputMode::perf};
+    const World params{200.0, 1.0};
     const Box box = Box::of(params);
     std::vector<Particle> original = make_random_particles(3000, params, {11, SpeedRange{0.1, 1.0}});
     for (std::size_t i = 0; i < original.size(); ++i) original[i].wall_collisions = i;  // a tag
@@ -75,20 +75,22 @@ using States = example_scenes::States;
 
 // Every state of a run sorted each step against one never sorted, and the
 // final states of runs sorted every 3 steps (kept sorted between steps).
-void same_as_unsorted(const char* name, const World& params, const std::vector<Particle>& particles) {
+void same_as_unsorted(const char* name, const World& params, std::int64_t steps, const std::vector<Particle>& particles) {
+    const check::Context context(name);
     Scene scene;
-    scene.params = params;
+    scene.world = params;
+    scene.steps = steps;
     scene.particles = particles;
     for (const int threads : {1, 2}) {
-        const States reference = example_scenes::run(scene, {Broadphase::automatic, 0, threads, 1, 0});
-        const States sorted = example_scenes::run(scene, {Broadphase::automatic, 0, threads, 1, 1});
+        const States reference = example_scenes::run(scene, {.threads = threads, .sort_by_position_every = 0});
+        const States sorted = example_scenes::run(scene, {.threads = threads, .sort_by_position_every = 1});
         bool same = reference.size() == sorted.size();
         for (std::size_t s = 0; same && s < reference.size(); ++s) same = identical(reference[s], sorted[s]);
         if (!same) std::printf("differs: %s, %d thread(s), sorted every step\n", name, threads);
         CHECK(same);
 
-        Simulation every_third(params, particles, {Broadphase::automatic, 0, threads, 1, 3});
-        every_third.run(params.steps);
+        SteppedSimulation every_third(params, particles, {.threads = threads, .sort_by_position_every = 3});
+        particlesim::run(every_third, steps);
         const bool same_end = identical(every_third.particles(), reference.back());
         if (!same_end) std::printf("differs: %s, %d thread(s), sorted every 3 steps\n", name, threads);
         CHECK(same_end);
@@ -97,21 +99,22 @@ void same_as_unsorted(const char* name, const World& params, const std::vector<P
 
 }  // namespace
 
-int main() {
-    sorts_by_rows_and_restores_exactly();
-    for (const char* name : {"corner.in", "crossing.in", "faster_than_box.in", "glancing_line.in", "head_on.in",
-                             "newtons_cradle.in", "square.in", "triangle.in", "wall_then_pair.in"}) {
-        const Scene scene = example_scenes::load(name);
-        same_as_unsorted(name, scene.params, scene.particles);
-    }
-    // Symmetric and tied scenes: ties must still go by the user's indices.
-    for (const stress_scenes::StressScene& s : stress_scenes::all()) same_as_unsorted(s.name.c_str(), s.params, s.particles);
-    stress_scenes::StressScene crowded = stress_scenes::crowded_box();
-    crowded.params.steps = 300;
-    same_as_unsorted(crowded.name.c_str(), crowded.params, crowded.particles);
-    for (std::uint64_t k = 0; k < 60; ++k) {
-        const random_scenes::TestScene scene = random_scenes::make(k);
-        same_as_unsorted("random scene", scene.params, scene.particles);
-    }
-    return check::summary("test_storage_order");
+int main(int argc, char** argv) {
+    return check::run(argc, argv, "test_storage_order", {{"storage order changes no result", [] {
+        sorts_by_rows_and_restores_exactly();
+        for (const char* name : {"corner.in", "crossing.in", "faster_than_box.in", "glancing_line.in", "head_on.in",
+                                 "newtons_cradle.in", "square.in", "triangle.in", "wall_then_pair.in"}) {
+            const Scene scene = example_scenes::load(name);
+            same_as_unsorted(name, scene.world, scene.steps, scene.particles);
+        }
+        // Symmetric and tied scenes: ties must still go by the user's indices.
+        for (const stress_scenes::StressScene& s : stress_scenes::all()) same_as_unsorted(s.name.c_str(), s.world, s.steps, s.particles);
+        stress_scenes::StressScene crowded = stress_scenes::crowded_box();
+        crowded.steps = 300;
+        same_as_unsorted(crowded.name.c_str(), crowded.world, crowded.steps, crowded.particles);
+        for (std::uint64_t k = 0; k < 60; ++k) {
+            const random_scenes::TestScene scene = random_scenes::make(k);
+            same_as_unsorted("random scene", scene.world, scene.steps, scene.particles);
+        }
+    }}});
 }

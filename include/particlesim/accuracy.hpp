@@ -5,6 +5,7 @@
 // either engine), then compare the records.
 
 #include "particlesim/engine.hpp"
+#include "particlesim/exact_simulation.hpp"
 #include "particlesim/particle.hpp"
 #include "particlesim/stepped_simulation.hpp"
 #include "particlesim/world.hpp"

@@ -34,7 +34,7 @@ private:
 struct ExactOptions {
     // Cells per side of the neighbour search, >= 1 (1 tests every pair).
     // Empty: sized from the scene. Every value gives the same events.
-    std::optional<int> cells_per_side;
+    std::optional<int> cells_per_side = std::nullopt;
 };
 
 class ExactSimulation {

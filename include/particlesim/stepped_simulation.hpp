@@ -29,14 +29,14 @@ struct SteppedOptions {
     PairSearch pair_search = PairSearch::automatic;
     // Imposes a G x G grid, 1 <= G <= max_grid_cells; only with PairSearch::grid.
     // Empty: the grid is sized from each step's motion.
-    std::optional<int> grid_cells;
+    std::optional<int> grid_cells = std::nullopt;
     // Worker threads, >= 1. Empty: OpenMP's default.
-    std::optional<int> threads;
+    std::optional<int> threads = std::nullopt;
     // Micro-steps of length 1 / substeps per step (rules.md "Substeps"), >= 1.
     int substeps = 1;
     // Steps between sorts of the stored particles by position, >= 0 (0: never).
     // Empty: every 8 steps from 65536 particles on. Only speed depends on it.
-    std::optional<int> sort_by_position_every;
+    std::optional<int> sort_by_position_every = std::nullopt;
 };
 
 class SteppedSimulation {

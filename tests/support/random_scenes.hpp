@@ -12,7 +12,8 @@
 namespace random_scenes {
 
 struct TestScene {
-    particlesim::World params;
+    particlesim::World world;
+    std::int64_t steps = 0;
     std::vector<particlesim::Particle> particles;
 };
 
@@ -24,21 +25,22 @@ inline TestScene make(std::uint64_t k) {
     const int regime = static_cast<int>(k % 5);
     const std::size_t count = 2 + rng.next() % (regime == 4 ? 40 : 300);
     const double box_size = regime == 1 ? 60.0 + 100.0 * rng.uniform() : 200.0 + 20000.0 * rng.uniform();
-    scene.params = World{box_size, 1.0, 30, OutputMode::perf};
+    scene.world = World{box_size, 1.0};
+    scene.steps = 30;
     const double speed_scale = regime == 2 ? 3.0 * box_size : (regime == 3 ? 0.05 : box_size / 4.0);
 
     if (regime == 0 || regime == 3) {
         // Non-overlapping random scene with the rules' generator.
         const double max_speed = regime == 3 ? speed_scale : box_size / 4.0;
         const std::size_t fits = std::min<std::size_t>(count, static_cast<std::size_t>(0.3 * box_size * box_size / 3.2));
-        scene.particles = make_random_particles(std::max<std::size_t>(fits, 2), scene.params,
+        scene.particles = make_random_particles(std::max<std::size_t>(fits, 2), scene.world,
                                                 {k, SpeedRange{0.0, max_speed}});
         return scene;
     }
     // Positions anywhere (overlaps allowed), velocities of the regime's scale;
     // some particles start on a wall, some at rest.
-    const double lower = scene.params.lower();
-    const double upper = scene.params.upper();
+    const double lower = scene.world.lower();
+    const double upper = scene.world.upper();
     for (std::size_t i = 0; i < count; ++i) {
         Particle p;
         p.position = Vec2(lower + rng.uniform() * (upper - lower), lower + rng.uniform() * (upper - lower));
@@ -58,7 +60,8 @@ inline TestScene make_clustered(std::uint64_t k) {
     SplitMix64 rng(5000 + k);
     TestScene scene;
     const double box_size = 20000.0;
-    scene.params = World{box_size, 1.0, 20, OutputMode::perf};
+    scene.world = World{box_size, 1.0};
+    scene.steps = 20;
     const std::size_t spread = 100 + rng.next() % 400;
     const std::size_t clustered = k % 2 == 0 ? 20 + rng.next() % 60 : 300 + rng.next() % 300;
     const double patch = 5.0 + 200.0 * rng.uniform();

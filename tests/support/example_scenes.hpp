@@ -25,20 +25,20 @@ inline particlesim::Scene load(const std::string& name) {
 template <typename Engine>
 States states_of(Engine& engine, std::int64_t steps) {
     States states{{engine.particles().begin(), engine.particles().end()}};
-    engine.run(steps, [&](std::int64_t, std::span<const particlesim::Particle> particles) {
+    particlesim::run(engine, steps, [&](std::int64_t, std::span<const particlesim::Particle> particles) {
         states.emplace_back(particles.begin(), particles.end());
     });
     return states;
 }
 
-inline States run(const particlesim::Scene& scene, const particlesim::SimOptions& options = {}) {
-    particlesim::Simulation sim(scene.params, scene.particles, options);
-    return states_of(sim, scene.params.steps);
+inline States run(const particlesim::Scene& scene, const particlesim::SteppedOptions& options = {}) {
+    particlesim::SteppedSimulation sim(scene.world, scene.particles, options);
+    return states_of(sim, scene.steps);
 }
 
 inline States run_exact(const particlesim::Scene& scene) {
-    particlesim::ExactSimulation sim(scene.params, scene.particles);
-    return states_of(sim, scene.params.steps);
+    particlesim::ExactSimulation sim(scene.world, scene.particles);
+    return states_of(sim, scene.steps);
 }
 
 }  // namespace example_scenes

@@ -1,0 +1,90 @@
+// Options are checked where they enter an engine: every bad value throws
+// std::invalid_argument naming the option, and every good one is accepted.
+
+#include "check.hpp"
+
+#include "particlesim/exact_simulation.hpp"
+#include "particlesim/stepped_simulation.hpp"
+
+#include <stdexcept>
+#include <string>
+
+using namespace particlesim;
+
+namespace {
+
+const World world{20.0, 1.0};
+
+std::vector<Particle> two_disks() {
+    std::vector<Particle> particles(2);
+    particles[0].position = Vec2(5, 5);
+    particles[0].velocity = Vec2(1, 0);
+    particles[1].position = Vec2(15, 5);
+    return particles;
+}
+
+// The message of the std::invalid_argument thrown while building, or "" when none is.
+template <typename Build>
+std::string refusal(Build&& build) {
+    try {
+        build();
+    } catch (const std::invalid_argument& e) {
+        return e.what();
+    }
+    return "";
+}
+
+bool names(const std::string& message, const char* option) { return message.find(option) != std::string::npos; }
+
+void stepped_options_are_checked() {
+    const auto stepped = [](const SteppedOptions& options) {
+        return refusal([&] { SteppedSimulation(world, two_disks(), options); });
+    };
+    CHECK(names(stepped({.threads = 0}), "threads"));
+    CHECK(names(stepped({.threads = -3}), "threads"));
+    CHECK(names(stepped({.substeps = 0}), "substeps"));
+    CHECK(names(stepped({.sort_by_position_every = -1}), "sort_by_position_every"));
+    CHECK(names(stepped({.pair_search = PairSearch::grid, .grid_cells = 0}), "grid_cells"));
+    CHECK(names(stepped({.pair_search = PairSearch::grid, .grid_cells = max_grid_cells + 1}), "grid_cells"));
+    // A grid size means nothing to another search: refused, not silently ignored or obeyed.
+    CHECK(names(stepped({.pair_search = PairSearch::brute_force, .grid_cells = 4}), "grid_cells"));
+    CHECK(names(stepped({.grid_cells = 4}), "grid_cells"));
+    CHECK(names(stepped({.substeps = 0}), "SteppedOptions"));
+
+    CHECK_EQ(stepped({}), "");
+    CHECK_EQ(stepped({.pair_search = PairSearch::grid, .grid_cells = max_grid_cells}), "");
+    CHECK_EQ(stepped({.pair_search = PairSearch::grid, .grid_cells = 1, .threads = 3, .substeps = 7,
+                      .sort_by_position_every = 0}),
+             "");
+}
+
+void exact_options_are_checked() {
+    const auto exact = [](const ExactOptions& options) {
+        return refusal([&] { ExactSimulation(world, two_disks(), options); });
+    };
+    CHECK(names(exact({.cells_per_side = 0}), "cells_per_side"));
+    CHECK(names(exact({.cells_per_side = max_grid_cells + 1}), "cells_per_side"));
+    CHECK_EQ(exact({}), "");
+    CHECK_EQ(exact({.cells_per_side = 1}), "");
+}
+
+void bad_worlds_are_refused_by_both_engines() {
+    for (const World bad : {World{0.0, 1.0}, World{20.0, 0.0}, World{2.0, 1.5}, World{-1.0, 1.0}}) {
+        const check::Context context("L = ", bad.box_size, ", r = ", bad.radius);
+        CHECK(!refusal([&] { SteppedSimulation(bad, {}); }).empty());
+        CHECK(!refusal([&] { ExactSimulation(bad, {}); }).empty());
+    }
+    std::vector<Particle> outside = two_disks();
+    outside[1].position.x() = 19.5;  // beyond L - r
+    CHECK(names(refusal([&] { SteppedSimulation(world, outside); }), "particle 1"));
+    CHECK(names(refusal([&] { ExactSimulation(world, outside); }), "particle 1"));
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+    return check::run(argc, argv, "test_options",
+                      {{"stepped options are checked", stepped_options_are_checked},
+                       {"exact options are checked", exact_options_are_checked},
+                       {"bad worlds are refused by both engines", bad_worlds_are_refused_by_both_engines}});
+}
