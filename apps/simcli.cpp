@@ -35,8 +35,9 @@ Simulates N hard disks bouncing elastically in a square box, in discrete steps.
   -o, --output FILE                write the output to FILE instead of stdout
   -t, --threads N                  worker threads (default: OpenMP's default)
       --seed N                     seed of a random scene (default 3210)
-      --broadphase auto|brute|grid candidate search (default auto); all give identical output
-      --grid G                     force a G x G grid (4 = the 4 x 4 grid of L/4 cells)
+      --broadphase auto|brute|grid pair search (default auto); all give identical output
+      --grid G                     the grid search with a G x G grid (1 <= G <= 4096;
+                                   4 = the 4 x 4 grid of L/4 cells); not with --broadphase brute
       --substeps K                 K micro-steps per step (default 1)
       --engine step|exact          exact = continuous-time event-driven engine
                                    (one thread; needs a start without overlaps)
@@ -62,7 +63,7 @@ struct CliOptions {
     std::optional<std::string> output_path;
     EngineChoice engine = EngineChoice::step;
     bool stats = false;
-    bool step_engine_options = false;  // --broadphase, --grid or --substeps given
+    bool step_engine_options = false;       // --broadphase, --grid or --substeps given
     std::optional<PairSearch> pair_search;  // --broadphase
     SteppedOptions stepped;
     RandomSceneOptions random;
@@ -76,8 +77,8 @@ std::uint64_t parse_unsigned(std::string_view option, std::string_view text, std
     std::uint64_t value = 0;
     const auto [end, error] = std::from_chars(text.data(), text.data() + text.size(), value);
     if (text.empty() || error != std::errc{} || end != text.data() + text.size() || value < min || value > max) {
-        throw BadInput(std::string(option) + ": expected an integer in [" + std::to_string(min) + ", " + std::to_string(max) +
-                       "], found \"" + std::string(text) + "\"");
+        throw BadInput(std::string(option) + ": expected an integer in [" + std::to_string(min) + ", " +
+                       std::to_string(max) + "], found \"" + std::string(text) + "\"");
     }
     return value;
 }
@@ -86,13 +87,17 @@ enum LongOnly { opt_seed = 256, opt_broadphase, opt_grid, opt_substeps, opt_engi
 
 // Returns nothing when --help or --version has been answered.
 std::optional<CliOptions> parse_arguments(int argc, char** argv) {
-    static const option long_options[] = {
-        {"output", required_argument, nullptr, 'o'},      {"threads", required_argument, nullptr, 't'},
-        {"seed", required_argument, nullptr, opt_seed},   {"broadphase", required_argument, nullptr, opt_broadphase},
-        {"grid", required_argument, nullptr, opt_grid},   {"substeps", required_argument, nullptr, opt_substeps},
-        {"engine", required_argument, nullptr, opt_engine}, {"stats", no_argument, nullptr, opt_stats},
-        {"help", no_argument, nullptr, 'h'},              {"version", no_argument, nullptr, opt_version},
-        {nullptr, 0, nullptr, 0}};
+    static const option long_options[] = {{"output", required_argument, nullptr, 'o'},
+                                          {"threads", required_argument, nullptr, 't'},
+                                          {"seed", required_argument, nullptr, opt_seed},
+                                          {"broadphase", required_argument, nullptr, opt_broadphase},
+                                          {"grid", required_argument, nullptr, opt_grid},
+                                          {"substeps", required_argument, nullptr, opt_substeps},
+                                          {"engine", required_argument, nullptr, opt_engine},
+                                          {"stats", no_argument, nullptr, opt_stats},
+                                          {"help", no_argument, nullptr, 'h'},
+                                          {"version", no_argument, nullptr, opt_version},
+                                          {nullptr, 0, nullptr, 0}};
     CliOptions options;
     opterr = 0;  // our own one-line messages
     for (int c; (c = getopt_long(argc, argv, ":o:t:h", long_options, nullptr)) != -1;) {
@@ -137,14 +142,16 @@ std::optional<CliOptions> parse_arguments(int argc, char** argv) {
         default: throw BadInput(std::string("unknown option ") + argv[optind - 1] + " (see simcli --help)");
         }
     }
-    if (argc - optind > 1) throw BadInput("expected at most one scene file, found " + std::to_string(argc - optind) + " (see simcli --help)");
+    if (argc - optind > 1)
+        throw BadInput("expected at most one scene file, found " + std::to_string(argc - optind) +
+                       " (see simcli --help)");
     if (argc - optind == 1) options.scene_path = argv[optind];
     if (options.engine == EngineChoice::exact && options.step_engine_options) {
         throw BadInput("--broadphase, --grid and --substeps belong to the step engine, not to --engine exact");
     }
     // --grid G is a grid search with a G x G grid; it contradicts only --broadphase brute.
     if (options.stepped.grid_cells && options.pair_search == PairSearch::brute_force) {
-        throw BadInput("--grid needs the grid search, not --broadphase brute");
+        throw BadInput("--grid G is the grid search, not with --broadphase brute");
     }
     options.stepped.pair_search =
         options.stepped.grid_cells ? PairSearch::grid : options.pair_search.value_or(PairSearch::automatic);
@@ -187,13 +194,16 @@ struct RunStats {
 
 void print_stats(const char* engine, const RunStats& stats, std::int64_t steps) {
     const double per_step = steps > 0 ? 1.0 / static_cast<double>(steps) : 0.0;
-    std::fprintf(stderr, "stats: engine %s, %lld steps in %.6f s (%.6g steps/s)\n", engine, static_cast<long long>(steps),
-                 stats.seconds, stats.seconds > 0.0 ? static_cast<double>(steps) / stats.seconds : 0.0);
+    std::fprintf(stderr, "stats: engine %s, %lld steps in %.6f s (%.6g steps/s)\n", engine,
+                 static_cast<long long>(steps), stats.seconds,
+                 stats.seconds > 0.0 ? static_cast<double>(steps) / stats.seconds : 0.0);
     std::fprintf(stderr, "stats: %llu particle collisions, %llu wall collisions\n",
                  static_cast<unsigned long long>(stats.totals.particle_collisions),
                  static_cast<unsigned long long>(stats.totals.wall_collisions));
-    std::fprintf(stderr, "stats: relative energy drift %+.16e\n", relative_energy_drift(stats.initial_energy, stats.final_energy));
-    std::fprintf(stderr, "stats: %.6g candidate pairs tested per step\n", static_cast<double>(stats.totals.pair_tests) * per_step);
+    std::fprintf(stderr, "stats: relative energy drift %+.16e\n",
+                 relative_energy_drift(stats.initial_energy, stats.final_energy));
+    std::fprintf(stderr, "stats: %.6g candidate pairs tested per step\n",
+                 static_cast<double>(stats.totals.pair_tests) * per_step);
 }
 
 // Runs the scene with `engine` into `output_path` (stdout when absent).
@@ -225,7 +235,8 @@ ExactSimulation make_exact_engine(const Scene& scene, std::vector<Particle> part
         char message[200];
         std::snprintf(message, sizeof message,
                       "the exact engine would need about %.3g events for this scene (limit %.3g); "
-                      "use fewer steps or the step engine", events, exact_event_limit);
+                      "use fewer steps or the step engine",
+                      events, exact_event_limit);
         throw BadInput(name + ": " + message);
     }
     try {

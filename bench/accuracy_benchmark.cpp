@@ -53,10 +53,11 @@ double counting_noise(std::uint64_t run, std::uint64_t truth) {
 void print_row(const AccuracyScene& scene, const char* engine, int substeps, int threads, int repeats, double seconds,
                const RunRecord& run, const RunRecord& truth, const AccuracyReport& report) {
     std::printf("%s,%zu,%lld,%s,%d,%d,%d,%.6f,%llu,%llu,%.6g,%.6g,%.6g,%.6g,%.6g,%.3g,%.3g\n", scene.name.c_str(),
-                scene.particles.size(), static_cast<long long>(scene.steps), engine, substeps, threads, repeats, seconds,
-                static_cast<unsigned long long>(run.particle_collisions), static_cast<unsigned long long>(run.wall_collisions),
-                report.particle_collision_rate_error, report.wall_collision_rate_error, report.overlap_fraction,
-                report.position_error_at(1).value_or(0.0), report.position_error_at(10).value_or(0.0), run.largest_energy_drift,
+                scene.particles.size(), static_cast<long long>(scene.steps), engine, substeps, threads, repeats,
+                seconds, static_cast<unsigned long long>(run.particle_collisions),
+                static_cast<unsigned long long>(run.wall_collisions), report.particle_collision_rate_error,
+                report.wall_collision_rate_error, report.overlap_fraction, report.position_error_at(1).value_or(0.0),
+                report.position_error_at(10).value_or(0.0), run.largest_energy_drift,
                 counting_noise(run.particle_collisions, truth.particle_collisions));
     std::fflush(stdout);
 }
@@ -73,9 +74,10 @@ AccuracyScene crowded_box(std::int64_t steps) {
 }  // namespace
 
 void accuracy_benchmark(bool quick) {
-    std::printf("scene,n,steps,engine,substeps,threads,runs,median_s,particle_collisions,wall_collisions,"
-                "particle_rate_error,wall_rate_error,overlap_fraction,position_error_1,position_error_10,energy_drift,"
-                "particle_rate_noise\n");
+    std::printf(
+        "scene,n,steps,engine,substeps,threads,runs,median_s,particle_collisions,wall_collisions,"
+        "particle_rate_error,wall_rate_error,overlap_fraction,position_error_1,position_error_10,energy_drift,"
+        "particle_rate_noise\n");
     const std::int64_t steps = quick ? 100 : 1000;
     const int repeats = quick ? 1 : 3;
     const int threads = 2;
@@ -92,7 +94,8 @@ void accuracy_benchmark(bool quick) {
             const SteppedOptions options{.threads = threads, .substeps = k};
             SteppedSimulation stepped(params, scene.particles, options);
             const RunRecord run = record_run(stepped, steps);
-            const double seconds = median_run_seconds([&] { return SteppedSimulation(params, scene.particles, options); }, steps, repeats);
+            const double seconds =
+                median_run_seconds([&] { return SteppedSimulation(params, scene.particles, options); }, steps, repeats);
             print_row(scene, "step", k, threads, repeats, seconds, run, truth, compare_to_exact(run, truth, params));
         }
     }
@@ -113,7 +116,8 @@ void exact_benchmark(bool quick) {
         if (quick && n > 100000) break;
         // The dense gas: area fraction 0.3, speeds 0.1 to 1 r per step.
         const double box = std::sqrt(static_cast<double>(n) * std::numbers::pi / 0.3);
-        cases.push_back({"dense gas", n, box, static_cast<std::int64_t>(2e6 / static_cast<double>(n)) + 2, SpeedRange{0.1, 1.0}});
+        cases.push_back(
+            {"dense gas", n, box, static_cast<std::int64_t>(2e6 / static_cast<double>(n)) + 2, SpeedRange{0.1, 1.0}});
     }
     for (const ExactCase& c : cases) {
         const World params{c.box, 1.0};
@@ -130,8 +134,9 @@ void exact_benchmark(bool quick) {
             wall_collisions = exact.totals().wall_collisions;
         }
         const double time = median(seconds);
-        std::printf("%s,%zu,%lld,%d,%.6f,%llu,%llu,%.4g\n", c.name.c_str(), c.count, static_cast<long long>(c.steps), repeats, time,
-                    static_cast<unsigned long long>(particle_collisions), static_cast<unsigned long long>(wall_collisions),
+        std::printf("%s,%zu,%lld,%d,%.6f,%llu,%llu,%.4g\n", c.name.c_str(), c.count, static_cast<long long>(c.steps),
+                    repeats, time, static_cast<unsigned long long>(particle_collisions),
+                    static_cast<unsigned long long>(wall_collisions),
                     static_cast<double>(particle_collisions + wall_collisions) / time);
         std::fflush(stdout);
     }

@@ -11,12 +11,12 @@
 // Every time is the median of repeated runs measured in the same invocation.
 
 #include "benchmarks.hpp"
+#include "run_process.hpp"
 #include "statistics.hpp"
 
 #include "particlesim/random_scene.hpp"
 #include "particlesim/stepped_simulation.hpp"
 
-#include <spawn.h>
 #include <sys/resource.h>
 #include <sys/wait.h>
 #include <unistd.h>
@@ -25,8 +25,8 @@
 #include <chrono>
 #include <cmath>
 #include <cstdio>
+#include <cstdlib>
 #include <cstring>
-#include <fcntl.h>
 #include <numbers>
 #include <optional>
 #include <string>
@@ -68,7 +68,8 @@ Measurement measure(const Case& c) {
     for (int r = 0; r < c.repeats; ++r) {
         // A fresh scene moved into the simulation, so that the peak memory is
         // the simulation's, not that of a copy kept for the next repeat.
-        SteppedSimulation sim(params, make_random_particles(c.count, params, scene), {.pair_search = c.search, .threads = c.threads});
+        SteppedSimulation sim(params, make_random_particles(c.count, params, scene),
+                              {.pair_search = c.search, .threads = c.threads});
         const auto start = std::chrono::steady_clock::now();
         particlesim::run(sim, c.steps);
         seconds.push_back(std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
@@ -113,9 +114,9 @@ void run_step_case(const Case& c) {
     }
     const double peak_bytes = static_cast<double>(usage.ru_maxrss) * 1024.0;
     const double per_step = m.median_seconds / static_cast<double>(c.steps);
-    std::printf("%s,%zu,%g,%g,%lld,%s,%d,%d,%.9g,%.9g,%.9g,%.6g,%.1f,%.4g,%.0f,%.1f\n", c.name.c_str(), c.count, c.box_size,
-                c.radius, static_cast<long long>(c.steps), search_name(c.search), c.threads, c.repeats, per_step,
-                m.min_seconds / static_cast<double>(c.steps), m.max_seconds / static_cast<double>(c.steps),
+    std::printf("%s,%zu,%g,%g,%lld,%s,%d,%d,%.9g,%.9g,%.9g,%.6g,%.1f,%.4g,%.0f,%.1f\n", c.name.c_str(), c.count,
+                c.box_size, c.radius, static_cast<long long>(c.steps), search_name(c.search), c.threads, c.repeats,
+                per_step, m.min_seconds / static_cast<double>(c.steps), m.max_seconds / static_cast<double>(c.steps),
                 static_cast<double>(c.count) / per_step, m.pair_tests_per_step, m.collisions_per_step, peak_bytes,
                 peak_bytes / static_cast<double>(c.count));
     std::fflush(stdout);
@@ -129,8 +130,10 @@ std::int64_t steps_for(double per_step_guess, double target, std::int64_t most) 
 }  // namespace
 
 void steps_benchmark(bool quick) {
-    std::printf("case,n,box_size,radius,steps,search,threads,repeats,median_s_per_step,min_s_per_step,max_s_per_step,"
-                "particle_steps_per_s,pair_tests_per_step,particle_collisions_per_step,peak_rss_bytes,peak_bytes_per_particle\n");
+    std::printf(
+        "case,n,box_size,radius,steps,search,threads,repeats,median_s_per_step,min_s_per_step,max_s_per_step,"
+        "particle_steps_per_s,pair_tests_per_step,particle_collisions_per_step,peak_rss_bytes,peak_bytes_per_"
+        "particle\n");
     const int repeats = quick ? 3 : 5;
     const double target = quick ? 0.1 : 0.5;
     for (const std::size_t n : {4, 16, 64, 256, 1024, 4096, 16384, 32000}) {
@@ -140,7 +143,8 @@ void steps_benchmark(bool quick) {
             if (search == PairSearch::brute_force && n > 16384) continue;  // hours at N = 32000
             for (const int threads : {1, 2}) {
                 const double guess = search == PairSearch::brute_force ? 4e-9 * nd * nd + 1e-6 : 4e-7 * nd + 2e-6;
-                const Case c{"sparse", n, 20000.0, 1.0, steps_for(guess, target, 1000000), {}, search, threads, repeats};
+                const Case c{"sparse", n,      20000.0, 1.0,    steps_for(guess, target, 1000000),
+                             {},       search, threads, repeats};
                 run_step_case(c);
             }
         }
@@ -149,32 +153,29 @@ void steps_benchmark(bool quick) {
     const std::size_t dense_n = quick ? 100000 : 1000000;
     const double dense_box = std::sqrt(static_cast<double>(dense_n) * std::numbers::pi / 0.3);
     for (const int threads : {1, 2}) {
-        run_step_case({"dense", dense_n, dense_box, 1.0, quick ? 5 : 20, SpeedRange{0.1, 1.0}, PairSearch::grid, threads,
-                       quick ? 1 : 3});
+        run_step_case({"dense", dense_n, dense_box, 1.0, quick ? 5 : 20, SpeedRange{0.1, 1.0}, PairSearch::grid,
+                       threads, quick ? 1 : 3});
     }
 }
 
 namespace {
 
+// The wall time of one whole run of a program, its output thrown away.
 double time_command(const std::vector<std::string>& args) {
-    std::vector<char*> argv;
-    for (const std::string& a : args) argv.push_back(const_cast<char*>(a.c_str()));
-    argv.push_back(nullptr);
-    posix_spawn_file_actions_t actions;
-    posix_spawn_file_actions_init(&actions);
-    posix_spawn_file_actions_addopen(&actions, 1, "/dev/null", O_WRONLY, 0);
     const auto start = std::chrono::steady_clock::now();
-    pid_t pid = 0;
-    int status = 1;
-    if (posix_spawn(&pid, argv[0], &actions, nullptr, argv.data(), environ) == 0) waitpid(pid, &status, 0);
+    const run_process::Result result = run_process::run(args.front(), {args.begin() + 1, args.end()}, "", "/dev/null");
     const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-    posix_spawn_file_actions_destroy(&actions);
-    return status == 0 ? seconds : -1.0;
+    return result.status == 0 ? seconds : -1.0;
 }
 
 }  // namespace
 
 void simcli_benchmark(bool quick) {
+#ifndef SIMCLI_PATH
+    (void)quick;
+    std::fprintf(stderr, "particlesim_bench simcli: built without simcli (PARTICLESIM_BUILD_APPS=OFF)\n");
+    std::exit(2);
+#else
     std::printf("scene,options,runs,median_s,min_s,max_s\n");
     const std::string simcli = SIMCLI_PATH;
     const std::string examples = PARTICLESIM_EXAMPLES_DIR;
@@ -197,12 +198,13 @@ void simcli_benchmark(bool quick) {
     const std::string default_print = write_scene("default_print.in", "1000 20000 1 1000 print\n");
     const std::string tiny = write_scene("four_1e6.in", quick ? "4 20000 1 100000 perf\n" : "4 20000 1 1000000 perf\n");
     const std::string n32000 = write_scene("n32000.in", "32000 20000 1 1000 perf\n");
-    std::vector<Run> runs{{"default", default_path, {"-t", "2"}, quick ? 5 : 11},
-                          {"default", default_path, {"-t", "1"}, quick ? 5 : 11},
-                          {"default", default_path, {"-t", "2", "--broadphase", "brute"}, 3},
-                          {"default", default_path, {"--engine", "exact"}, quick ? 3 : 5},
-                          {"default print", default_print, {"-t", "2"}, quick ? 3 : 7},
-                          {quick ? "4 particles 1e5 steps" : "4 particles 1e6 steps", tiny, {"-t", "2"}, quick ? 3 : 7}};
+    std::vector<Run> runs{
+        {"default", default_path, {"-t", "2"}, quick ? 5 : 11},
+        {"default", default_path, {"-t", "1"}, quick ? 5 : 11},
+        {"default", default_path, {"-t", "2", "--broadphase", "brute"}, 3},
+        {"default", default_path, {"--engine", "exact"}, quick ? 3 : 5},
+        {"default print", default_print, {"-t", "2"}, quick ? 3 : 7},
+        {quick ? "4 particles 1e5 steps" : "4 particles 1e6 steps", tiny, {"-t", "2"}, quick ? 3 : 7}};
     if (!quick) runs.push_back({"N=32000 S=1000", n32000, {"-t", "2"}, 3});
     for (const Run& run : runs) {
         std::vector<std::string> args{simcli};
@@ -213,9 +215,11 @@ void simcli_benchmark(bool quick) {
         std::string options;
         for (const std::string& o : run.options) options += (options.empty() ? "" : " ") + o;
         std::printf("%s,%s,%d,%.6f,%.6f,%.6f\n", run.scene.c_str(), options.c_str(), run.runs, median(seconds),
-                    *std::min_element(seconds.begin(), seconds.end()), *std::max_element(seconds.begin(), seconds.end()));
+                    *std::min_element(seconds.begin(), seconds.end()),
+                    *std::max_element(seconds.begin(), seconds.end()));
         std::fflush(stdout);
     }
+#endif
 }
 
 }  // namespace bench

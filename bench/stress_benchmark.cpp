@@ -4,9 +4,9 @@
 
 #include "benchmarks.hpp"
 
-#include "stress_scenes.hpp"
 #include "particlesim/exact_simulation.hpp"
 #include "particlesim/stepped_simulation.hpp"
+#include "stress_scenes.hpp"
 
 #include <chrono>
 #include <cmath>
@@ -34,8 +34,9 @@ void stress_row(const char* engine_name, Engine& engine, const World& params, st
 }  // namespace
 
 void stress_benchmark(bool quick) {
-    std::printf("scene,n,box_size,steps,engine,every_step_valid,largest_energy_drift,drift_within_1e-12,"
-                "particle_collisions,wall_collisions,seconds\n");
+    std::printf(
+        "scene,n,box_size,steps,engine,every_step_valid,largest_energy_drift,drift_within_1e-12,"
+        "particle_collisions,wall_collisions,seconds\n");
     const std::int64_t steps = quick ? 20000 : 1000000;
     const stress_scenes::StressScene scene = stress_scenes::crowded_box();
     for (const int threads : {1, 2}) {

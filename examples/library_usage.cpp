@@ -1,28 +1,31 @@
-// Using particlesim from C++: a random scene, a run with an observer, and
-// the final state written in simcli's output format.
+// Using particlesim from C++: a random scene, both engines run side by side
+// with an observer, and the final state written in simcli's output format.
 #include <particlesim/particlesim.hpp>
 
 #include <cstdio>
 
 int main() {
     using namespace particlesim;
-    const World params{20000.0, 1.0};  // L, r, S, mode
-    RandomSceneOptions scene;
-    scene.seed = 42;
-    SteppedOptions options;
-    options.threads = 2;  // the output is the same for any number
-    SteppedSimulation sim(params, make_random_particles(1000, params, scene), options);
+    const World world{20000.0, 1.0};  // L, r
+    const std::vector<Particle> start = make_random_particles(1000, world, {.seed = 42});
 
+    // The output is the same for any number of threads and any pair search.
+    SteppedSimulation stepped(world, start, {.threads = 2});
     std::uint64_t wall_hits = 0;
-    particlesim::run(sim, 100, [&](std::int64_t /*step*/, std::span<const Particle>) {
-        wall_hits += sim.last_step().wall_collisions;
+    run(stepped, 100, [&](std::int64_t /*step*/, std::span<const Particle> /*particles*/) {
+        wall_hits += stepped.last_step().wall_collisions;
     });
+    std::printf("%llu wall and %llu particle collisions in %lld steps\n", static_cast<unsigned long long>(wall_hits),
+                static_cast<unsigned long long>(stepped.totals().particle_collisions),
+                static_cast<long long>(stepped.steps_done()));
 
-    std::printf("%llu wall and %llu particle collisions in %lld steps\n",
-                static_cast<unsigned long long>(wall_hits),
-                static_cast<unsigned long long>(sim.totals().particle_collisions),
-                static_cast<long long>(sim.steps_done()));
+    // The same start under real hard-disk dynamics, and how far apart the two are.
+    ExactSimulation exact(world, start);
+    run(exact, 100);
+    std::printf("exact engine: %llu particle collisions\n",
+                static_cast<unsigned long long>(exact.totals().particle_collisions));
+
     StateWriter writer(stdout);
-    writer.write_final(sim.steps_done(), sim.particles().first(3));
+    writer.write_final(stepped.steps_done(), stepped.particles().first(3));
     writer.flush();
 }

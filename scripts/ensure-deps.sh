@@ -11,6 +11,7 @@ command -v g++ >/dev/null 2>&1 || missing+=(g++)
 for extra in "$@"; do
   case "$extra" in
     gnuplot-nox) command -v gnuplot >/dev/null 2>&1 || missing+=(gnuplot-nox) ;;
+    clang-format) command -v clang-format >/dev/null 2>&1 || missing+=(clang-format) ;;
     *) dpkg -s "$extra" >/dev/null 2>&1 || missing+=("$extra") ;;
   esac
 done

@@ -1,22 +1,30 @@
 #!/usr/bin/env bash
 # Builds the benchmark harness (Release), runs it, and writes the CSVs and the
-# plots under bench/results/<machine>/ (machine: first argument, or hostname).
-# --quick runs a short version (smaller N, fewer repeats) for a smoke check.
+# plots under build/bench-results/<machine>/ (machine: first argument, or
+# hostname); with --update, under bench/results/<machine>/, replacing the
+# committed results. --quick runs a short version (smaller N, fewer repeats).
 # Further arguments pick modes (default: all): steps simcli accuracy exact stress.
+# Installs gnuplot-nox (for the plots) when missing.
 #   scripts/run-bench.sh cpp-2core                  # everything (about an hour)
 #   scripts/run-bench.sh cpp-2core "" accuracy      # just run time against error
+#   scripts/run-bench.sh --update cpp-2core         # everything, into the committed results
 set -euo pipefail
 cd "$(dirname "$0")/.."
+results_root=build/bench-results
+if [ "${1:-}" = "--update" ]; then
+  results_root=bench/results
+  shift
+fi
 scripts/ensure-deps.sh gnuplot-nox
 machine=${1:-$(hostname)}
 quick=${2:-}
 shift $(( $# < 2 ? $# : 2 ))
 modes=${*:-steps simcli accuracy exact stress}
-out=bench/results/$machine
+out=$results_root/$machine
 mkdir -p "$out"
 
-cmake -S . -B build -DCMAKE_BUILD_TYPE=Release >/dev/null
-cmake --build build --target particlesim_bench simcli -j "$(nproc)" >/dev/null
+cmake --preset release >/dev/null
+cmake --build --preset release --target particlesim_bench simcli -j "$(nproc)" >/dev/null
 
 {
   echo "machine: $machine"

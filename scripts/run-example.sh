@@ -4,7 +4,7 @@
 set -euo pipefail
 cd "$(dirname "$0")/.."
 scripts/ensure-deps.sh
-cmake -S . -B build -DCMAKE_BUILD_TYPE=Release >/dev/null
-cmake --build build --target simcli -j "$(nproc)" >/dev/null
+cmake --preset release >/dev/null
+cmake --build --preset release --target simcli -j "$(nproc)" >/dev/null
 if [ $# -eq 0 ]; then set -- examples/default.in; fi
 exec build/apps/simcli "$@"

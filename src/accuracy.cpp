@@ -1,7 +1,7 @@
 #include "particlesim/accuracy.hpp"
 
-#include "particlesim/exact_simulation.hpp"
 #include "overlap_counter.hpp"
+#include "particlesim/exact_simulation.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -14,7 +14,8 @@ namespace particlesim {
 class RunRecorder::Measures {
 public:
     Measures(const World& world, std::span<const Particle> start, std::span<const std::int64_t> checkpoint_steps)
-        : world_(world), initial_energy_(total_kinetic_energy(start)),
+        : world_(world),
+          initial_energy_(total_kinetic_energy(start)),
           checkpoint_steps_(checkpoint_steps.begin(), checkpoint_steps.end()) {
         record_.particle_count = start.size();
     }
@@ -44,7 +45,8 @@ private:
     RunRecord record_;
 };
 
-RunRecorder::RunRecorder(const World& world, std::span<const Particle> start, std::span<const std::int64_t> checkpoint_steps)
+RunRecorder::RunRecorder(const World& world, std::span<const Particle> start,
+                         std::span<const std::int64_t> checkpoint_steps)
     : measures_(std::make_unique<Measures>(world, start, checkpoint_steps)) {}
 RunRecorder::~RunRecorder() = default;
 RunRecorder::RunRecorder(RunRecorder&&) noexcept = default;

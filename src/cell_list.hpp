@@ -13,7 +13,8 @@ namespace particlesim {
 
 class CellList {
 public:
-    CellList(const UniformGrid& grid, std::size_t particle_count) : grid_(grid), members_(grid.cell_count(), particle_count) {}
+    CellList(const UniformGrid& grid, std::size_t particle_count)
+        : grid_(grid), members_(grid.cell_count(), particle_count) {}
 
     [[nodiscard]] const UniformGrid& grid() const { return grid_; }
     [[nodiscard]] std::uint32_t cell_of_particle(std::uint32_t particle) const { return members_.bucket_of(particle); }

@@ -20,9 +20,7 @@ struct Collision {
     std::uint32_t i = 0;
     std::uint32_t j = 0;
 
-    static Collision wall(double time, std::uint32_t particle) {
-        return {time, CollisionKind::wall, particle, 0};
-    }
+    static Collision wall(double time, std::uint32_t particle) { return {time, CollisionKind::wall, particle, 0}; }
     static Collision pair(double time, std::uint32_t lower, std::uint32_t higher) {
         return {time, CollisionKind::pair, lower, higher};
     }

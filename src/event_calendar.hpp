@@ -21,7 +21,7 @@
 namespace particlesim {
 
 enum class EventKind : std::uint8_t {
-    wall = 0,           // the same kinds and order as Collision: walls first
+    wall = 0,  // the same kinds and order as Collision: walls first
     pair = 1,
     cell_crossing = 2,  // bookkeeping only, changes no motion
 };
@@ -118,13 +118,13 @@ private:
     }
 
     std::uint32_t buckets_;
-    BucketLists lists_;                 // owners by bucket; the last bucket is the overflow
-    std::vector<Event> events_;         // by owner
-    std::vector<double> times_;         // scratch of rebuild_window()
-    double base_ = 0.0;                 // start time of bucket 0
+    BucketLists lists_;          // owners by bucket; the last bucket is the overflow
+    std::vector<Event> events_;  // by owner
+    std::vector<double> times_;  // scratch of rebuild_window()
+    double base_ = 0.0;          // start time of bucket 0
     double width_ = 1.0;
-    std::uint32_t current_ = 0;         // no entry lies in an earlier bucket
-    std::uint32_t earliest_ = none;     // cached; none when unknown
+    std::uint32_t current_ = 0;      // no entry lies in an earlier bucket
+    std::uint32_t earliest_ = none;  // cached; none when unknown
 };
 
 }  // namespace particlesim

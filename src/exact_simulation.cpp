@@ -1,8 +1,8 @@
 #include "particlesim/exact_simulation.hpp"
 
+#include "box.hpp"
 #include "cell_list.hpp"
 #include "event_calendar.hpp"
-#include "box.hpp"
 #include "options_check.hpp"
 #include "physics.hpp"
 #include "scene_checks.hpp"
@@ -18,7 +18,8 @@ namespace particlesim {
 OverlappingStart::OverlappingStart(std::uint32_t first, std::uint32_t second)
     : std::invalid_argument("particles " + std::to_string(first) + " and " + std::to_string(second) +
                             " overlap; the exact engine needs a start where no two disks overlap"),
-      first_(first), second_(second) {}
+      first_(first),
+      second_(second) {}
 
 namespace {
 
@@ -32,8 +33,8 @@ UniformGrid neighbour_grid(const World& world, std::size_t particle_count, std::
     const double count = static_cast<double>(particle_count);
     const double by_count = std::ceil(0.5 * std::sqrt(count));
     const double by_free_path = std::ceil(8.0 * world.radius * count / world.box_size);
-    return UniformGrid(world.box_size,
-                       UniformGrid::cells_per_side(world.box_size, 2.0 * world.radius, std::max(by_count, by_free_path)));
+    return UniformGrid(world.box_size, UniformGrid::cells_per_side(world.box_size, 2.0 * world.radius,
+                                                                   std::max(by_count, by_free_path)));
 }
 
 }  // namespace
@@ -52,11 +53,18 @@ UniformGrid neighbour_grid(const World& world, std::size_t particle_count, std::
 class ExactSimulation::Engine {
 public:
     Engine(const World& world, std::vector<Particle> particles, const ExactOptions& options)
-        : world_(world), box_(Box::of(world)), particles_(std::move(particles)),
+        : world_(world),
+          box_(Box::of(world)),
+          particles_(std::move(particles)),
           cells_(neighbour_grid(world, particles_.size(), options.cells_per_side), particles_.size()),
-          stamp_(particles_.size(), 0.0), wall_time_(particles_.size(), never), crossing_(particles_.size()),
-          pair_(particles_.size()), last_event_step_(particles_.size(), -1), last_repeat_step_(particles_.size(), -1),
-          snapshot_(particles_), queue_(count(), Event{never, EventKind::cell_crossing, 0, 0}) {
+          stamp_(particles_.size(), 0.0),
+          wall_time_(particles_.size(), never),
+          crossing_(particles_.size()),
+          pair_(particles_.size()),
+          last_event_step_(particles_.size(), -1),
+          last_repeat_step_(particles_.size(), -1),
+          snapshot_(particles_),
+          queue_(count(), Event{never, EventKind::cell_crossing, 0, 0}) {
         for (std::uint32_t i = 0; i < count(); ++i) {
             cells_.insert(i, cells_.grid().cell_of(particles_[i].position));
         }
@@ -119,9 +127,7 @@ private:
     std::uint32_t version(std::uint32_t i) const {
         return static_cast<std::uint32_t>(particles_[i].particle_collisions + particles_[i].wall_collisions);
     }
-    bool pair_partner_moved(std::uint32_t i) const {
-        return pair_[i].partner_version != version(pair_[i].partner);
-    }
+    bool pair_partner_moved(std::uint32_t i) const { return pair_[i].partner_version != version(pair_[i].partner); }
 
     Vec2 position_at(std::uint32_t i, double time) const {
         return particles_[i].position + particles_[i].velocity * (time - stamp_[i]);
@@ -168,7 +174,8 @@ private:
         int column = grid.column(cell);
         int row = grid.row(cell);
         const auto exit_delay = [&](double position, double velocity, int index) {
-            if (velocity > 0.0 && index + 1 < grid.per_side()) return ((index + 1) * grid.cell_size() - position) / velocity;
+            if (velocity > 0.0 && index + 1 < grid.per_side())
+                return ((index + 1) * grid.cell_size() - position) / velocity;
             if (velocity < 0.0 && index > 0) return (index * grid.cell_size() - position) / velocity;
             return never;
         };
@@ -195,8 +202,9 @@ private:
         const std::uint32_t lower = std::min(i, j);
         const std::uint32_t higher = std::max(i, j);
         const double reference = std::max(stamp_[lower], stamp_[higher]);
-        const double delay = contact_time(position_at(higher, reference) - position_at(lower, reference),
-                                          particles_[higher].velocity - particles_[lower].velocity, box_.contact_dist_sq);
+        const double delay =
+            contact_time(position_at(higher, reference) - position_at(lower, reference),
+                         particles_[higher].velocity - particles_[lower].velocity, box_.contact_dist_sq);
         if (delay == never) return;
         const Event event{not_before_now(reference + delay), EventKind::pair, lower, higher};
         if (!(event.time < wall_time_[i] && event.time < wall_time_[j] && event < pair_[i].event)) return;
@@ -316,7 +324,8 @@ namespace {
 
 std::vector<Particle> checked(const World& world, std::vector<Particle> particles, const ExactOptions& options) {
     if (options.cells_per_side) {
-        OptionsCheck("particlesim::ExactOptions").in_range("cells_per_side", *options.cells_per_side, 1, max_grid_cells);
+        OptionsCheck("particlesim::ExactOptions")
+            .in_range("cells_per_side", *options.cells_per_side, 1, max_grid_cells);
     }
     require_valid_scene("particlesim::ExactSimulation", world, particles);
     return particles;

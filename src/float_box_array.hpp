@@ -79,8 +79,10 @@ private:
     [[nodiscard]] unsigned hit_bits(std::uint32_t group, const FloatBox& box) const {
         // Four boxes, one a row, turned into one row per bound.
         const Lanes a = load(group), b = load(group + 1), c = load(group + 2), d = load(group + 3);
-        const Lanes ab_low = __builtin_shufflevector(a, b, 0, 4, 1, 5), cd_low = __builtin_shufflevector(c, d, 0, 4, 1, 5);
-        const Lanes ab_high = __builtin_shufflevector(a, b, 2, 6, 3, 7), cd_high = __builtin_shufflevector(c, d, 2, 6, 3, 7);
+        const Lanes ab_low = __builtin_shufflevector(a, b, 0, 4, 1, 5),
+                    cd_low = __builtin_shufflevector(c, d, 0, 4, 1, 5);
+        const Lanes ab_high = __builtin_shufflevector(a, b, 2, 6, 3, 7),
+                    cd_high = __builtin_shufflevector(c, d, 2, 6, 3, 7);
         const Lanes min_x = __builtin_shufflevector(ab_low, cd_low, 0, 1, 4, 5);
         const Lanes min_y = __builtin_shufflevector(ab_low, cd_low, 2, 3, 6, 7);
         const Lanes max_x = __builtin_shufflevector(ab_high, cd_high, 0, 1, 4, 5);

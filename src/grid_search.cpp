@@ -1,8 +1,8 @@
 #include "grid_search.hpp"
 
-#include "uniform_grid.hpp"
 #include "float_box_array.hpp"
 #include "parallel.hpp"
+#include "uniform_grid.hpp"
 
 #include <algorithm>
 #include <atomic>
@@ -16,11 +16,11 @@ struct GridSearch::SliceWorkspace {
     std::vector<std::uint32_t> cell_of;  // by particle: its cell, or absent / large
     std::vector<std::uint32_t> cell_start;
     std::vector<std::uint32_t> cell_fill;  // per worker after the first: its count, then its next place, in each cell
-    std::vector<std::uint32_t> by_cell;  // the particle of each box (or piece), sorted by cell
-    FloatBoxArray boxes_by_cell;  // those boxes, in the same order
+    std::vector<std::uint32_t> by_cell;    // the particle of each box (or piece), sorted by cell
+    FloatBoxArray boxes_by_cell;           // those boxes, in the same order
     std::vector<PairTestState> states_by_cell;  // their particles' motion, in the same order
-    std::vector<std::uint32_t> large;  // particles whose path fits no cell, even in pieces
-    std::vector<SweptBox> large_boxes;  // their boxes, in the same order
+    std::vector<std::uint32_t> large;           // particles whose path fits no cell, even in pieces
+    std::vector<SweptBox> large_boxes;          // their boxes, in the same order
 };
 
 namespace {
@@ -78,9 +78,7 @@ SliceSpan slice_span(const PairSearchInput& in, int slice, int slices) {
     return {begin, end};
 }
 
-bool fits_cell(const SweptBox& box, double fit) {
-    return box.max_x - box.min_x <= fit && box.max_y - box.min_y <= fit;
-}
+bool fits_cell(const SweptBox& box, double fit) { return box.max_x - box.min_x <= fit && box.max_y - box.min_y <= fit; }
 
 // Cells [x_first, x_last] x [y_first, y_last] of the grid.
 struct CellRegion {
@@ -162,7 +160,8 @@ GridLayout GridSearch::choose_layout(const PairSearchInput& in, std::optional<in
     return layout;
 }
 
-void GridSearch::find_pairs(const PairSearchInput& in, std::optional<int> forced_cells, std::span<ThreadCandidates> buffers) {
+void GridSearch::find_pairs(const PairSearchInput& in, std::optional<int> forced_cells,
+                            std::span<ThreadCandidates> buffers) {
     const int threads = static_cast<int>(buffers.size());
     layout_ = choose_layout(in, forced_cells, threads);
 
@@ -176,9 +175,10 @@ void GridSearch::find_pairs(const PairSearchInput& in, std::optional<int> forced
     for (SliceWorkspace& ws : workspaces_) prepare(ws, count, parallel_slices ? 1 : workers);
 
     if (parallel_slices) {
-        parallel_for_dynamic(std::min(threads, layout_.slices), layout_.slices, 1, [&](std::int64_t slice, std::size_t thread) {
-            process_slice(in, static_cast<int>(slice), workspaces_[thread], buffers.subspan(thread, 1), 1);
-        });
+        parallel_for_dynamic(
+            std::min(threads, layout_.slices), layout_.slices, 1, [&](std::int64_t slice, std::size_t thread) {
+                process_slice(in, static_cast<int>(slice), workspaces_[thread], buffers.subspan(thread, 1), 1);
+            });
     } else {
         for (int slice = 0; slice < layout_.slices; ++slice) {
             process_slice(in, slice, workspaces_[0], buffers, workers);
@@ -335,8 +335,8 @@ namespace {
 // Tests particle `a` (box `box`, state `state`) against the boxes stored at
 // positions [first, last) of the cell order whose float bounds meet its own.
 inline void test_against_range(const PairSearchInput& in, const GridSearch::SliceWorkspace& ws, std::uint32_t a,
-                               const FloatBox& box, const PairTestState& state, std::uint32_t first,
-                               std::uint32_t last, ThreadCandidates& out) {
+                               const FloatBox& box, const PairTestState& state, std::uint32_t first, std::uint32_t last,
+                               ThreadCandidates& out) {
     ws.boxes_by_cell.for_each_overlap(first, last, box, [&](std::uint32_t m) {
         const std::uint32_t b = ws.by_cell[m];
         if (b == a) return;  // another piece of the same path
@@ -351,8 +351,8 @@ inline void test_against_range(const PairSearchInput& in, const GridSearch::Slic
 
 }  // namespace
 
-void GridSearch::test_small_pairs(const PairSearchInput& in, const SliceWorkspace& ws,
-                                  std::span<ThreadCandidates> out, int threads) const {
+void GridSearch::test_small_pairs(const PairSearchInput& in, const SliceWorkspace& ws, std::span<ThreadCandidates> out,
+                                  int threads) const {
     const int side = layout_.grid.per_side();
     const std::uint32_t* start = ws.cell_start.data();
     const std::uint32_t* ids = ws.by_cell.data();
@@ -384,8 +384,8 @@ void GridSearch::test_small_pairs(const PairSearchInput& in, const SliceWorkspac
     });
 }
 
-void GridSearch::test_large_pairs(const PairSearchInput& in, const SliceWorkspace& ws,
-                                  std::span<ThreadCandidates> out, int threads) const {
+void GridSearch::test_large_pairs(const PairSearchInput& in, const SliceWorkspace& ws, std::span<ThreadCandidates> out,
+                                  int threads) const {
     const UniformGrid& grid = layout_.grid;
     const int side = grid.per_side();
     const auto large_count = static_cast<std::int64_t>(ws.large.size());

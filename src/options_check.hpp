@@ -11,9 +11,12 @@ class OptionsCheck {
 public:
     explicit OptionsCheck(const char* options_name) : name_(options_name) {}
 
-    [[noreturn]] void fail(const std::string& what) const { throw std::invalid_argument(std::string(name_) + ": " + what); }
+    [[noreturn]] void fail(const std::string& what) const {
+        throw std::invalid_argument(std::string(name_) + ": " + what);
+    }
     void at_least(const char* option, long long value, long long min) const {
-        if (value < min) fail(std::string(option) + " must be >= " + std::to_string(min) + ", not " + std::to_string(value));
+        if (value < min)
+            fail(std::string(option) + " must be >= " + std::to_string(min) + ", not " + std::to_string(value));
     }
     void in_range(const char* option, long long value, long long min, long long max) const {
         if (value < min || value > max) {

@@ -13,8 +13,8 @@ std::uint64_t OverlapCounter::count(std::span<const Particle> particles, const W
     const std::size_t n = particles.size();
     if (n < 2) return 0;
     // Cells at least a diameter wide, and no more of them than particles.
-    const UniformGrid grid(world.box_size,
-                           UniformGrid::cells_per_side(world.box_size, 2.0 * world.radius, std::sqrt(static_cast<double>(n))));
+    const UniformGrid grid(world.box_size, UniformGrid::cells_per_side(world.box_size, 2.0 * world.radius,
+                                                                       std::sqrt(static_cast<double>(n))));
     const int side = grid.per_side();
     const double contact_dist_sq = Box::of(world).contact_dist_sq;
 
@@ -39,7 +39,8 @@ std::uint64_t OverlapCounter::count(std::span<const Particle> particles, const W
         bool found = false;
         for (int y = std::max(0, row - 1); y <= std::min(side - 1, row + 1) && !found; ++y) {
             for (int x = std::max(0, column - 1); x <= std::min(side - 1, column + 1) && !found; ++x) {
-                const std::size_t cell = static_cast<std::size_t>(y) * static_cast<std::size_t>(side) + static_cast<std::size_t>(x);
+                const std::size_t cell =
+                    static_cast<std::size_t>(y) * static_cast<std::size_t>(side) + static_cast<std::size_t>(x);
                 for (std::uint32_t k = cell_start_[cell]; k < cell_start_[cell + 1]; ++k) {
                     const std::uint32_t j = by_cell_[k];
                     if (j != i && disks_overlap(particles[j].position - particles[i].position, contact_dist_sq)) {

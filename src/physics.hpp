@@ -92,16 +92,17 @@ inline void bounce_off_wall(Particle& particle, const WallHit& hit, const Box& b
 // velocity components along the line of centres, keep the tangential ones.
 // ((vj - vi).n) n is computed as ((vj - vi).d / d.d) d, with no unit normal
 // and in extended precision, so that the only rounding left is the final one
-// to double. Energy then drifts as a random walk (about 1e-15 after 5e7
-// collisions); with a unit normal, or with double intermediates, it drifted
-// steadily by 8e-19 and 8e-20 per collision (bench/results: stress.csv).
+// to double, which is unbiased: energy drifts as a random walk instead of
+// steadily, as it does with a unit normal or double intermediates
+// (docs/accuracy.md, "Stability", and bench/results/*/stress.csv).
 inline void exchange_normal_velocities(const Vec2& pi, const Vec2& pj, Vec2& vi, Vec2& vj) {
     using Wide = long double;
     const Wide dx = static_cast<Wide>(pj.x()) - pi.x();
     const Wide dy = static_cast<Wide>(pj.y()) - pi.y();
     const Wide dist_sq = dx * dx + dy * dy;
     if (!(dist_sq > 0.0L)) return;  // unreachable for valid radii; never divide by zero
-    const Wide along = ((static_cast<Wide>(vj.x()) - vi.x()) * dx + (static_cast<Wide>(vj.y()) - vi.y()) * dy) / dist_sq;
+    const Wide along =
+        ((static_cast<Wide>(vj.x()) - vi.x()) * dx + (static_cast<Wide>(vj.y()) - vi.y()) * dy) / dist_sq;
     const Wide ex = along * dx;
     const Wide ey = along * dy;
     vi = Vec2(static_cast<double>(vi.x() + ex), static_cast<double>(vi.y() + ey));
@@ -127,8 +128,6 @@ inline void move_freely(Particle& particle, double duration, const Box& box) {
     clamp_into_box(particle.position, box);
 }
 
-inline double kinetic_energy(const Particle& particle) {
-    return 0.5 * particle.velocity.squaredNorm();
-}
+inline double kinetic_energy(const Particle& particle) { return 0.5 * particle.velocity.squaredNorm(); }
 
 }  // namespace particlesim

@@ -71,15 +71,14 @@ Vec2 random_direction(SplitMix64& rng) {
 
 }  // namespace
 
-std::vector<Particle> make_random_particles(std::size_t count, const World& world,
-                                            const RandomSceneOptions& options) {
+std::vector<Particle> make_random_particles(std::size_t count, const World& world, const RandomSceneOptions& options) {
     const SpeedRange speeds = options.speeds.value_or(default_speed_range(world));
     if (!(std::isfinite(speeds.min) && std::isfinite(speeds.max) && 0.0 <= speeds.min && speeds.min <= speeds.max)) {
         throw std::invalid_argument("make_random_particles: speed range must satisfy 0 <= min <= max < inf");
     }
     const Box box = Box::of(world);
-    const double area_fraction = static_cast<double>(count) * std::numbers::pi * world.radius * world.radius /
-                                 (world.box_size * world.box_size);
+    const double area_fraction =
+        static_cast<double>(count) * std::numbers::pi * world.radius * world.radius / (world.box_size * world.box_size);
     // Random sequential placement jams near an area fraction of 0.55; far
     // beyond that it can only fail, so fail at once rather than search.
     const bool hopeless = count > 16 && area_fraction > 0.7;

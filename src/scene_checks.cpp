@@ -7,7 +7,9 @@
 namespace particlesim {
 
 void require_valid_scene(const char* engine, const World& world, std::span<const Particle> particles) {
-    const auto fail = [engine](const std::string& what) { throw std::invalid_argument(std::string(engine) + ": " + what); };
+    const auto fail = [engine](const std::string& what) {
+        throw std::invalid_argument(std::string(engine) + ": " + what);
+    };
     if (!(std::isfinite(world.box_size) && world.box_size > 0.0)) fail("box size must be finite and > 0");
     if (!(std::isfinite(world.radius) && world.radius > 0.0)) fail("radius must be finite and > 0");
     if (!(2.0 * world.radius <= world.box_size)) fail("2 * radius must be <= box size");

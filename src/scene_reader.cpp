@@ -21,13 +21,13 @@ namespace {
 // is allocated for it.
 std::size_t max_particle_count() {
     // Everything a run keeps per particle (state, step and grid buffers) stays
-    // well below this; see docs/benchmarks.md for the measured peak.
+    // well below this (docs/benchmarks.md gives the peak).
     constexpr std::size_t bytes_per_particle = 256;
     const long pages = sysconf(_SC_PHYS_PAGES);
     const long page_size = sysconf(_SC_PAGE_SIZE);
-    const std::size_t by_memory = pages > 0 && page_size > 0
-                                      ? static_cast<std::size_t>(pages) / bytes_per_particle * static_cast<std::size_t>(page_size)
-                                      : std::size_t{1} << 24;
+    const std::size_t by_memory = pages > 0 && page_size > 0 ? static_cast<std::size_t>(pages) / bytes_per_particle *
+                                                                   static_cast<std::size_t>(page_size)
+                                                             : std::size_t{1} << 24;
     return std::min<std::size_t>(by_memory, 0xfffffffeU);
 }
 
@@ -96,7 +96,8 @@ public:
 
     std::string_view take(std::string_view what) {
         while (index_ >= count_()) {
-            if (!lines_.next()) throw InputError(std::max(lines_.number(), 1L), "missing " + Text(what) + ": the input ends here");
+            if (!lines_.next())
+                throw InputError(std::max(lines_.number(), 1L), "missing " + Text(what) + ": the input ends here");
             index_ = 0;
         }
         line_ = lines_.number();
@@ -116,9 +117,11 @@ private:
 
 std::uint64_t parse_count(std::string_view token, std::string_view what, long line) {
     std::uint64_t value = 0;
-    const bool digits_only = !token.empty() && std::all_of(token.begin(), token.end(), [](char c) { return c >= '0' && c <= '9'; });
+    const bool digits_only =
+        !token.empty() && std::all_of(token.begin(), token.end(), [](char c) { return c >= '0' && c <= '9'; });
     const auto [end, error] = std::from_chars(token.data(), token.data() + token.size(), value);
-    if (!digits_only) throw InputError(line, Text(what) + ": expected a non-negative integer, found \"" + Text(token) + "\"");
+    if (!digits_only)
+        throw InputError(line, Text(what) + ": expected a non-negative integer, found \"" + Text(token) + "\"");
     if (error != std::errc{} || end != token.data() + token.size()) {
         throw InputError(line, Text(what) + " = " + Text(token) + " is too large");
     }
@@ -129,7 +132,8 @@ double parse_real(std::string_view token, std::string_view what, long line) {
     double value = 0.0;
     const auto [end, error] = std::from_chars(token.data(), token.data() + token.size(), value);
     if (error != std::errc{} || end != token.data() + token.size() || !std::isfinite(value)) {
-        if (error == std::errc::result_out_of_range) throw InputError(line, Text(what) + " = " + Text(token) + " is out of range");
+        if (error == std::errc::result_out_of_range)
+            throw InputError(line, Text(what) + " = " + Text(token) + " is out of range");
         throw InputError(line, Text(what) + ": expected a finite number, found \"" + Text(token) + "\"");
     }
     if (std::fabs(value) > max_magnitude) {
@@ -144,7 +148,8 @@ void read_header(HeaderTokens& header, Scene& scene, SceneLines& lines) {
     const std::uint64_t count = parse_count(count_text, "N", header.line());
     lines.particle_count = header.line();
     if (count > max_particle_count()) {
-        throw InputError(header.line(), "N = " + std::to_string(count) + " is more particles than this machine can hold (at most " +
+        throw InputError(header.line(), "N = " + std::to_string(count) +
+                                            " is more particles than this machine can hold (at most " +
                                             std::to_string(max_particle_count()) + ")");
     }
     scene.particle_count = static_cast<std::size_t>(count);
@@ -152,20 +157,22 @@ void read_header(HeaderTokens& header, Scene& scene, SceneLines& lines) {
     const std::string_view box_text = header.take("L (box side)");
     world.box_size = parse_real(box_text, "L", header.line());
     lines.box_size = header.line();
-    if (!(world.box_size > 0.0)) throw InputError(header.line(), "L = " + format_short(world.box_size) + " must be > 0");
+    if (!(world.box_size > 0.0))
+        throw InputError(header.line(), "L = " + format_short(world.box_size) + " must be > 0");
 
     const std::string_view radius_text = header.take("r (radius)");
     world.radius = parse_real(radius_text, "r", header.line());
     lines.radius = header.line();
     if (!(world.radius > 0.0)) throw InputError(header.line(), "r = " + format_short(world.radius) + " must be > 0");
     if (!(2.0 * world.radius <= world.box_size)) {
-        throw InputError(header.line(), "r = " + format_short(world.radius) + " is too large: 2r must be <= L = " +
-                                            format_short(world.box_size));
+        throw InputError(header.line(), "r = " + format_short(world.radius) +
+                                            " is too large: 2r must be <= L = " + format_short(world.box_size));
     }
 
     const std::string_view steps_text = header.take("S (number of steps)");
     const std::uint64_t steps = parse_count(steps_text, "S", header.line());
-    if (steps > static_cast<std::uint64_t>(INT64_MAX)) throw InputError(header.line(), "S = " + std::to_string(steps) + " is too large");
+    if (steps > static_cast<std::uint64_t>(INT64_MAX))
+        throw InputError(header.line(), "S = " + std::to_string(steps) + " is too large");
     scene.steps = static_cast<std::int64_t>(steps);
     lines.steps = header.line();
 
@@ -182,11 +189,13 @@ void read_header(HeaderTokens& header, Scene& scene, SceneLines& lines) {
 
 void read_particle(const std::vector<std::string_view>& fields, long line, Scene& scene, std::vector<long>& seen_on) {
     if (fields.size() != 5) {
-        throw InputError(line, "a particle line has 5 fields \"i x y vx vy\", this one has " + std::to_string(fields.size()));
+        throw InputError(line,
+                         "a particle line has 5 fields \"i x y vx vy\", this one has " + std::to_string(fields.size()));
     }
     const std::uint64_t index = parse_count(fields[0], "particle index", line);
     if (index >= scene.particle_count) {
-        throw InputError(line, "particle index " + Text(fields[0]) + " is outside [0, " + std::to_string(scene.particle_count - 1) + "]");
+        throw InputError(line, "particle index " + Text(fields[0]) + " is outside [0, " +
+                                   std::to_string(scene.particle_count - 1) + "]");
     }
     if (seen_on[index] != 0) {
         throw InputError(line, "particle " + std::to_string(index) + " is listed twice (first on line " +
@@ -202,8 +211,8 @@ void read_particle(const std::vector<std::string_view>& fields, long line, Scene
     for (int k = 0; k < 4; ++k) values[k] = parse_real(fields[k + 1], label + names[k], line);
     for (int k = 0; k < 2; ++k) {
         if (values[k] < world.lower() || values[k] > world.upper()) {
-            throw InputError(line, label + names[k] + " = " + Text(fields[k + 1]) + " is outside [" + format_short(world.lower()) +
-                                       ", " + format_short(world.upper()) + "]");
+            throw InputError(line, label + names[k] + " = " + Text(fields[k + 1]) + " is outside [" +
+                                       format_short(world.lower()) + ", " + format_short(world.upper()) + "]");
         }
     }
     p.position = Vec2(values[0], values[1]);
@@ -222,12 +231,14 @@ Scene read_scene(std::istream& input, SceneLines* header_lines) {
 
     std::vector<long> seen_on;  // line of each particle, 0 while unseen
     std::size_t listed = 0;
-    if (header.line_has_more()) throw InputError(header.line(), "unexpected text after the output mode; particles go on lines of their own");
+    if (header.line_has_more())
+        throw InputError(header.line(), "unexpected text after the output mode; particles go on lines of their own");
     while (lines.next()) {
         if (listed == scene.particle_count) {
-            throw InputError(lines.number(), scene.particle_count == 0 ? "N = 0, but a particle line follows"
-                                                                       : "more than N = " + std::to_string(scene.particle_count) +
-                                                                             " particle lines");
+            throw InputError(lines.number(),
+                             scene.particle_count == 0
+                                 ? "N = 0, but a particle line follows"
+                                 : "more than N = " + std::to_string(scene.particle_count) + " particle lines");
         }
         if (listed == 0) {
             scene.particles.resize(scene.particle_count);

@@ -29,7 +29,8 @@ void StateWriter::write_final(std::int64_t step, std::span<const Particle> parti
 
 void StateWriter::write_block(std::int64_t step, std::span<const Particle> particles, bool with_counters) {
     char step_text[24];
-    const std::size_t step_length = static_cast<std::size_t>(std::to_chars(step_text, step_text + 24, step).ptr - step_text);
+    const std::size_t step_length =
+        static_cast<std::size_t>(std::to_chars(step_text, step_text + 24, step).ptr - step_text);
     for (std::size_t i = 0; i < particles.size(); ++i) {
         if (buffer_.size() - used_ < max_line_length) drain();
         char* out = buffer_.data() + used_;

@@ -16,7 +16,8 @@ void detect_wall_candidates(std::span<const Particle> particles, const Box& box,
         wall_time[i] = time_to_wall(particles[i].position, particles[i].velocity, box).time;
     });
     for (std::int64_t i = 0; i < count; ++i) {
-        if (wall_time[i] <= duration) candidates.push_back(Collision::wall(wall_time[i], static_cast<std::uint32_t>(i)));
+        if (wall_time[i] <= duration)
+            candidates.push_back(Collision::wall(wall_time[i], static_cast<std::uint32_t>(i)));
     }
 }
 
@@ -38,7 +39,8 @@ void order_ties_by_user_index(std::span<Collision> sorted, std::span<const std::
     };
     for (std::size_t first = 0; first < sorted.size();) {
         std::size_t last = first + 1;
-        while (last < sorted.size() && sorted[last].time == sorted[first].time && sorted[last].kind == sorted[first].kind) {
+        while (last < sorted.size() && sorted[last].time == sorted[first].time &&
+               sorted[last].kind == sorted[first].kind) {
             ++last;
         }
         if (last - first > 1) {
@@ -73,7 +75,9 @@ void order_candidates(std::vector<Collision>& candidates, std::span<ThreadCandid
         // sorted on several threads, then merged into `candidates`. No list
         // is copied whole, so the memory stays that of the lists themselves.
         scratch.assign(candidates.begin(), candidates.end());
-        const auto list = [&](std::size_t k) -> std::vector<Collision>& { return k == 0 ? scratch : found[k - 1].found; };
+        const auto list = [&](std::size_t k) -> std::vector<Collision>& {
+            return k == 0 ? scratch : found[k - 1].found;
+        };
         const std::size_t lists = found.size() + 1;
         parallel_for_dynamic(workers, static_cast<std::int64_t>(lists), 1, [&](std::int64_t k, std::size_t) {
             std::sort(list(static_cast<std::size_t>(k)).begin(), list(static_cast<std::size_t>(k)).end());
@@ -83,7 +87,8 @@ void order_candidates(std::vector<Collision>& candidates, std::span<ThreadCandid
         while (true) {
             std::size_t best = lists;
             for (std::size_t k = 0; k < lists; ++k) {
-                if (heads[k] < list(k).size() && (best == lists || list(k)[heads[k]] < list(best)[heads[best]])) best = k;
+                if (heads[k] < list(k).size() && (best == lists || list(k)[heads[k]] < list(best)[heads[best]]))
+                    best = k;
             }
             if (best == lists) break;
             candidates.push_back(list(best)[heads[best]++]);

@@ -48,7 +48,8 @@ public:
         : world_(world), box_(Box::of(world)), options_(checked(options)), particles_(std::move(particles)) {
         require_valid_scene("particlesim::SteppedSimulation", world_, particles_);
         const std::size_t count = particles_.size();
-        sort_every_ = options_.sort_by_position_every.value_or(count >= sort_by_position_from ? automatic_sort_every : 0);
+        sort_every_ =
+            options_.sort_by_position_every.value_or(count >= sort_by_position_from ? automatic_sort_every : 0);
         if (sort_every_ > 0) storage_order_.reserve(count);
         threads_ = options_.threads.value_or(omp_get_max_threads());
         search_ = options_.pair_search;

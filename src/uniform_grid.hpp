@@ -22,7 +22,8 @@ public:
     static int cells_per_side(double extent, double min_cell_size, double max_per_side) {
         constexpr double rounding_margin = 1.0 + 1e-6;
         constexpr double largest_side = 65536.0;  // cell counts stay within 32-bit indices
-        const double by_size = min_cell_size > 0.0 ? std::floor(extent / (min_cell_size * rounding_margin)) : largest_side;
+        const double by_size =
+            min_cell_size > 0.0 ? std::floor(extent / (min_cell_size * rounding_margin)) : largest_side;
         return static_cast<int>(std::clamp(std::min(by_size, std::floor(max_per_side)), 1.0, largest_side));
     }
 
@@ -47,12 +48,17 @@ public:
     }
     // Cells are numbered row by row.
     [[nodiscard]] std::uint32_t cell_at(int column, int row) const {
-        return static_cast<std::uint32_t>(row) * static_cast<std::uint32_t>(per_side_) + static_cast<std::uint32_t>(column);
+        return static_cast<std::uint32_t>(row) * static_cast<std::uint32_t>(per_side_) +
+               static_cast<std::uint32_t>(column);
     }
     [[nodiscard]] std::uint32_t cell_of(double x, double y) const { return cell_at(column_of(x), column_of(y)); }
     [[nodiscard]] std::uint32_t cell_of(const Vec2& point) const { return cell_of(point.x(), point.y()); }
-    [[nodiscard]] int column(std::uint32_t cell) const { return static_cast<int>(cell % static_cast<std::uint32_t>(per_side_)); }
-    [[nodiscard]] int row(std::uint32_t cell) const { return static_cast<int>(cell / static_cast<std::uint32_t>(per_side_)); }
+    [[nodiscard]] int column(std::uint32_t cell) const {
+        return static_cast<int>(cell % static_cast<std::uint32_t>(per_side_));
+    }
+    [[nodiscard]] int row(std::uint32_t cell) const {
+        return static_cast<int>(cell / static_cast<std::uint32_t>(per_side_));
+    }
 
 private:
     int per_side_ = 1;

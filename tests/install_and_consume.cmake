@@ -1,6 +1,8 @@
-# Installs particlesim into a scratch prefix, then configures, builds and runs
-# a consumer project that uses find_package(particlesim).
-# Inputs: BUILD_DIR, WORK_DIR, CONSUMER_DIR, LIBRARY_USAGE_SOURCE.
+# Installs particlesim into a scratch prefix, checks that exactly the public
+# headers are installed, then configures, builds and runs a consumer project
+# (tests/consumer/CMakeLists.txt with examples/library_usage.cpp as its
+# main.cpp) that finds the package with find_package(particlesim).
+# Inputs: BUILD_DIR, WORK_DIR, CONSUMER_DIR, LIBRARY_USAGE_SOURCE, APPS_BUILT.
 file(REMOVE_RECURSE "${WORK_DIR}")
 function(run_step)
   execute_process(COMMAND ${ARGV} RESULT_VARIABLE status OUTPUT_VARIABLE out ERROR_VARIABLE err)
@@ -9,18 +11,34 @@ function(run_step)
   endif()
   set(last_output "${out}" PARENT_SCOPE)
 endfunction()
-run_step(${CMAKE_COMMAND} --install "${BUILD_DIR}" --prefix "${WORK_DIR}/prefix")
-foreach(required include/particlesim/simulation.hpp include/particlesim/version.hpp lib/libparticlesim.a
-                 lib/cmake/particlesim/particlesimConfig.cmake bin/simcli)
-  if(NOT EXISTS "${WORK_DIR}/prefix/${required}")
-    message(FATAL_ERROR "not installed: ${required}")
+set(prefix "${WORK_DIR}/prefix")
+run_step(${CMAKE_COMMAND} --install "${BUILD_DIR}" --prefix "${prefix}")
+
+# The public API, and nothing else.
+set(public_headers accuracy.hpp engine.hpp exact_simulation.hpp particle.hpp particlesim.hpp random_scene.hpp
+                   scene.hpp state_writer.hpp stepped_simulation.hpp version.hpp world.hpp)
+file(GLOB installed RELATIVE "${prefix}/include/particlesim" "${prefix}/include/particlesim/*")
+list(SORT installed)
+if(NOT installed STREQUAL public_headers)
+  message(FATAL_ERROR "installed headers:\n  ${installed}\nexpected:\n  ${public_headers}")
+endif()
+set(required lib/libparticlesim.a lib/cmake/particlesim/particlesimConfig.cmake)
+if(APPS_BUILT)
+  list(APPEND required bin/simcli)
+endif()
+foreach(file IN LISTS required)
+  if(NOT EXISTS "${prefix}/${file}")
+    message(FATAL_ERROR "not installed: ${file}")
   endif()
 endforeach()
-run_step(${CMAKE_COMMAND} -S "${CONSUMER_DIR}" -B "${WORK_DIR}/build" -DCMAKE_BUILD_TYPE=Release
-         "-DCMAKE_PREFIX_PATH=${WORK_DIR}/prefix" "-DLIBRARY_USAGE_SOURCE=${LIBRARY_USAGE_SOURCE}")
+
+file(COPY "${CONSUMER_DIR}/CMakeLists.txt" DESTINATION "${WORK_DIR}/consumer")
+configure_file("${LIBRARY_USAGE_SOURCE}" "${WORK_DIR}/consumer/main.cpp" COPYONLY)
+run_step(${CMAKE_COMMAND} -S "${WORK_DIR}/consumer" -B "${WORK_DIR}/build" -DCMAKE_BUILD_TYPE=Release
+         "-DCMAKE_PREFIX_PATH=${prefix}")
 run_step(${CMAKE_COMMAND} --build "${WORK_DIR}/build")
 run_step("${WORK_DIR}/build/consumer")
-if(NOT last_output MATCHES "wall and [0-9]+ particle collisions in 100 steps\n100 0 [0-9.]+ ")
+if(NOT last_output MATCHES "wall and [0-9]+ particle collisions in 100 steps\nexact engine: [0-9]+ particle collisions\n100 0 [0-9.]+ ")
   message(FATAL_ERROR "unexpected consumer output:\n${last_output}")
 endif()
 message(STATUS "consumer ran:\n${last_output}")

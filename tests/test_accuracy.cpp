@@ -4,8 +4,8 @@
 
 #include "check.hpp"
 
-#include "particlesim/accuracy.hpp"
 #include "overlap_counter.hpp"
+#include "particlesim/accuracy.hpp"
 #include "particlesim/random_scene.hpp"
 
 #include <cmath>
@@ -55,9 +55,9 @@ void metrics_by_hand() {
     CHECK(same.position_error_at(1) == 0.0);
 
     RunRecord stepped = exact;
-    stepped.particle_collisions = 30;  // -25 %
-    stepped.wall_collisions = 11;      // +10 %
-    stepped.overlapping_particle_steps = 5;  // of 2 x 10 particle-steps
+    stepped.particle_collisions = 30;                                 // -25 %
+    stepped.wall_collisions = 11;                                     // +10 %
+    stepped.overlapping_particle_steps = 5;                           // of 2 x 10 particle-steps
     stepped.checkpoints[0].positions = {Vec2(13, 14), Vec2(20, 20)};  // one off by 5: RMS 5 / sqrt(2)
     stepped.largest_energy_drift = 3e-16;
     const AccuracyReport report = compare_to_exact(stepped, exact, params);
@@ -108,8 +108,9 @@ void substeps_converge_to_exact() {
         }
     }
     for (int k = 0; k < 4; ++k) {
-        std::printf("K = %2d: |particle rate error| %.4f, |wall rate error| %.4f, overlaps %.2e, position after 1 step %.2e\n",
-                    ks[k], rate_error[k] / 4, wall_error[k] / 4, overlaps[k] / 4, position_1[k] / 4);
+        std::printf(
+            "K = %2d: |particle rate error| %.4f, |wall rate error| %.4f, overlaps %.2e, position after 1 step %.2e\n",
+            ks[k], rate_error[k] / 4, wall_error[k] / 4, overlaps[k] / 4, position_1[k] / 4);
     }
     CHECK(rate_error[0] > 0.1 * 4);  // the step rules lose many collisions here
     for (int k = 1; k < 4; ++k) {
@@ -124,9 +125,8 @@ void substeps_converge_to_exact() {
 
 int main(int argc, char** argv) {
     return check::run(argc, argv, "test_accuracy",
-                     {
-                      {"overlap counter", overlap_counter},
-                      {"metrics by hand", metrics_by_hand},
-                      {"exact against itself", exact_against_itself},
-                      {"substeps converge to exact", substeps_converge_to_exact}});
+                      {{"overlap counter", overlap_counter},
+                       {"metrics by hand", metrics_by_hand},
+                       {"exact against itself", exact_against_itself},
+                       {"substeps converge to exact", substeps_converge_to_exact}});
 }

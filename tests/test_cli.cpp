@@ -8,7 +8,6 @@
 
 #include "particlesim/random_scene.hpp"
 
-
 #include <algorithm>
 #include <cctype>
 #include <cstdio>
@@ -61,7 +60,8 @@ std::string expected_output(const Scene& scene, const example_scenes::States& st
                           number(ps[i].velocity.x()).c_str(), number(ps[i].velocity.y()).c_str());
             text += line;
             if (counters) {
-                std::snprintf(line, sizeof line, " %llu %llu", static_cast<unsigned long long>(ps[i].particle_collisions),
+                std::snprintf(line, sizeof line, " %llu %llu",
+                              static_cast<unsigned long long>(ps[i].particle_collisions),
                               static_cast<unsigned long long>(ps[i].wall_collisions));
                 text += line;
             }
@@ -151,9 +151,10 @@ void random_scenes_and_options() {
 
     // S = 0: the initial state, then the same with zero counters.
     const Result zero = simcli_run({}, "2 20 1 0 print\n0 5 5 1 0\n1 9 9 0 -1\n");
-    CHECK(zero.out == "0 0 5.00000000 5.00000000 1.00000000 0.00000000\n0 1 9.00000000 9.00000000 0.00000000 -1.00000000\n"
-                      "0 0 5.00000000 5.00000000 1.00000000 0.00000000 0 0\n"
-                      "0 1 9.00000000 9.00000000 0.00000000 -1.00000000 0 0\n");
+    CHECK(zero.out ==
+          "0 0 5.00000000 5.00000000 1.00000000 0.00000000\n0 1 9.00000000 9.00000000 0.00000000 -1.00000000\n"
+          "0 0 5.00000000 5.00000000 1.00000000 0.00000000 0 0\n"
+          "0 1 9.00000000 9.00000000 0.00000000 -1.00000000 0 0\n");
     CHECK(simcli_run({}, "0 20 1 5 print\n").out.empty());
 }
 
@@ -175,6 +176,9 @@ void bad_usage() {
     expect_rejected({"--seed", "-1"}, scene, "simcli: --seed", "expected an integer");
     expect_rejected({"--broadphase", "octree"}, scene, "simcli: --broadphase", "expected auto, brute or grid");
     expect_rejected({"--grid", "0"}, scene, "simcli: --grid", "[1, 4096]");
+    expect_rejected({"--grid", "4097"}, scene, "simcli: --grid", "[1, 4096]");  // refused, not clamped
+    expect_rejected({"--broadphase", "brute", "--grid", "4"}, scene, "simcli: --grid", "not with --broadphase brute");
+    expect_rejected({"--grid", "4", "--broadphase", "brute"}, scene, "simcli: --grid", "not with --broadphase brute");
     expect_rejected({"--substeps", "0"}, scene, "simcli: --substeps", "expected an integer in [1, 1048576]");
     expect_rejected({"--engine", "exact", "--substeps", "2"}, scene, "simcli: --broadphase, --grid and --substeps",
                     "not to --engine exact");
@@ -194,12 +198,13 @@ void bad_input() {
     expect_rejected({}, "5\n20\n11\n", "simcli: <stdin>:3: ", "2r must be <= L");
     expect_rejected({}, "5\n20\n1\n1.5\n", "simcli: <stdin>:4: ", "S: expected a non-negative integer");
     expect_rejected({}, "5\n20\n1\n1\nfast\n", "simcli: <stdin>:5: ", "expected print or perf");
-    expect_rejected({}, "2\n20000\n1\n1000\nperf\n0 -2 5 0 0\n", "simcli: <stdin>:6: ",
-                    "particle 0: x = -2 is outside [1, 19999]");
+    expect_rejected({}, "2\n20000\n1\n1000\nperf\n0 -2 5 0 0\n",
+                    "simcli: <stdin>:6: ", "particle 0: x = -2 is outside [1, 19999]");
     expect_rejected({}, "2 20 1 1 perf\n0 5 5 0 0\n0 6 6 0 0\n", "simcli: <stdin>:3: ", "listed twice");
     expect_rejected({}, "2 20 1 1 perf\n0 5 5 0 0\n", "simcli: <stdin>:2: ", "found 1");
     expect_rejected({}, "2 20 1 1 perf\n0 5 5 inf 0\n", "simcli: <stdin>:2: ", "finite");
-    expect_rejected({}, "4000000000\n20\n1\n1\nperf\n", "simcli: <stdin>:1: ", "more particles than this machine can hold");
+    expect_rejected({}, "4000000000\n20\n1\n1\nperf\n",
+                    "simcli: <stdin>:1: ", "more particles than this machine can hold");
     expect_rejected({}, "500\n20\n1\n1\nperf\n", "simcli: <stdin>:1: ", "cannot place 500 non-overlapping disks");
     expect_rejected({}, std::string(100000, '7'), "simcli: <stdin>:1: ", "longer than");
     // Binary garbage is just bad input.
@@ -214,14 +219,15 @@ void exact_engine() {
     CHECK(r.out == expected_output(scene, example_scenes::run_exact(scene)));
     CHECK(r.out.find("1 0 95.00000000 50.00000000 0.00000000 0.00000000\n") != std::string::npos);
     // Overlapping disks have no exact ground truth; touching ones do.
-    expect_rejected({"--engine", "exact"}, "2 20 1 1 perf\n0 5 5 0 0\n1 6 5 0 0\n", "simcli: <stdin>: particles 0 and 1 overlap",
-                    "no two disks overlap");
+    expect_rejected({"--engine", "exact"}, "2 20 1 1 perf\n0 5 5 0 0\n1 6 5 0 0\n",
+                    "simcli: <stdin>: particles 0 and 1 overlap", "no two disks overlap");
     CHECK_EQ(simcli_run({"--engine", "exact"}, "2 20 1 1 perf\n0 5 5 0 0\n1 7 5 0 0\n").status, 0);
     // A disk far faster than the box bounces ~1e9 times a step: refused, not hung.
-    expect_rejected({"--engine", "exact"}, "1 20 1 100 perf\n0 5 5 1e10 3\n", "simcli: <stdin>: the exact engine would need",
-                    "use fewer steps or the step engine");
+    expect_rejected({"--engine", "exact"}, "1 20 1 100 perf\n0 5 5 1e10 3\n",
+                    "simcli: <stdin>: the exact engine would need", "use fewer steps or the step engine");
     // A moving disk that fills the box would bounce forever at one instant.
-    expect_rejected({"--engine", "exact"}, "1 2 1 1 perf\n0 1 1 1 0\n", "simcli: <stdin>: the exact engine would need", "inf");
+    expect_rejected({"--engine", "exact"}, "1 2 1 1 perf\n0 1 1 1 0\n", "simcli: <stdin>: the exact engine would need",
+                    "inf");
     CHECK_EQ(simcli_run({"--engine", "step"}, "1 2 1 3 perf\n0 1 1 1 0\n").status, 0);
 }
 
@@ -255,11 +261,12 @@ void stats() {
         const unsigned long long pc = field_sum(final_block, 6) / 2;
         const unsigned long long wc = field_sum(final_block, 7);
         CHECK(pc > 0 && wc > 0);
-        CHECK(r.err.find("stats: " + std::to_string(pc) + " particle collisions, " + std::to_string(wc) + " wall collisions") !=
-              std::string::npos);
+        CHECK(r.err.find("stats: " + std::to_string(pc) + " particle collisions, " + std::to_string(wc) +
+                         " wall collisions") != std::string::npos);
         unsigned drift_digits = 0;
         const std::size_t drift = r.err.find("drift ");
-        for (std::size_t k = drift + 6; k < r.err.size() && r.err[k] != '\n'; ++k) drift_digits += std::isdigit(r.err[k]) ? 1 : 0;
+        for (std::size_t k = drift + 6; k < r.err.size() && r.err[k] != '\n'; ++k)
+            drift_digits += std::isdigit(r.err[k]) ? 1 : 0;
         CHECK(drift_digits >= 19);  // full precision: 17 significant digits and the exponent
     }
 }
@@ -282,13 +289,12 @@ void write_failures() {
 
 int main(int argc, char** argv) {
     return check::run(argc, argv, "test_cli",
-                     {
-                      {"examples byte for byte", examples_byte_for_byte},
-                      {"random scenes and options", random_scenes_and_options},
-                      {"help and version", help_and_version},
-                      {"bad usage", bad_usage},
-                      {"bad input", bad_input},
-                      {"exact engine", exact_engine},
-                      {"stats", stats},
-                      {"write failures", write_failures}});
+                      {{"examples byte for byte", examples_byte_for_byte},
+                       {"random scenes and options", random_scenes_and_options},
+                       {"help and version", help_and_version},
+                       {"bad usage", bad_usage},
+                       {"bad input", bad_input},
+                       {"exact engine", exact_engine},
+                       {"stats", stats},
+                       {"write failures", write_failures}});
 }

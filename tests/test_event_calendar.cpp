@@ -21,9 +21,9 @@ constexpr double never = std::numeric_limits<double>::infinity();
 
 double delay(particlesim::SplitMix64& rng) {
     switch (rng.next() % 6) {
-    case 0: return 0.0;                         // a tie with the present
-    case 1: return never;                       // nothing predicted
-    case 2: return 1e6 * rng.uniform();         // far in the future
+    case 0: return 0.0;                                  // a tie with the present
+    case 1: return never;                                // nothing predicted
+    case 2: return 1e6 * rng.uniform();                  // far in the future
     case 3: return static_cast<double>(rng.next() % 4);  // ties on a coarse grid
     default: return rng.uniform();
     }
@@ -35,7 +35,8 @@ void matches_brute_force(std::uint32_t owners, std::uint64_t seed, int operation
     EventCalendar calendar(owners, events[0]);
     const auto random_event = [&](double now) {
         const auto kind = static_cast<EventKind>(rng.next() % 3);
-        return Event{now + delay(rng), kind, static_cast<std::uint32_t>(rng.next() % 8), static_cast<std::uint32_t>(rng.next() % 8)};
+        return Event{now + delay(rng), kind, static_cast<std::uint32_t>(rng.next() % 8),
+                     static_cast<std::uint32_t>(rng.next() % 8)};
     };
     for (std::uint32_t owner = 0; owner < owners; ++owner) {
         events[owner] = random_event(0.0);
@@ -73,10 +74,12 @@ void all_never() {
 }  // namespace
 
 int main(int argc, char** argv) {
-    return check::run(argc, argv, "test_event_calendar", {{"calendar against brute-force minimum", [] {
-        all_never();
-        for (const std::uint32_t owners : {1U, 2U, 7U, 100U, 5000U}) {
-            for (std::uint64_t seed = 0; seed < 4; ++seed) matches_brute_force(owners, seed, owners < 1000 ? 20000 : 4000);
-        }
-    }}});
+    return check::run(argc, argv, "test_event_calendar",
+                      {{"calendar against brute-force minimum", [] {
+                            all_never();
+                            for (const std::uint32_t owners : {1U, 2U, 7U, 100U, 5000U}) {
+                                for (std::uint64_t seed = 0; seed < 4; ++seed)
+                                    matches_brute_force(owners, seed, owners < 1000 ? 20000 : 4000);
+                            }
+                        }}});
 }

@@ -115,7 +115,9 @@ void agrees_with_stepped_engine_when_events_do_not_share_a_particle() {
             if (exact.last_step_particles_with_several_events() != 0) break;
             const bool same = agree(exact.particles(), stepped.particles());
             CHECK(same);
-            if (!same) std::fprintf(stderr, "  seed %llu, step %lld\n", static_cast<unsigned long long>(seed), static_cast<long long>(s + 1));
+            if (!same)
+                std::fprintf(stderr, "  seed %llu, step %lld\n", static_cast<unsigned long long>(seed),
+                             static_cast<long long>(s + 1));
             ++compared_steps;
             compared_collisions += exact.last_step().particle_collisions + exact.last_step().wall_collisions;
         }
@@ -186,12 +188,12 @@ void estimates_events() {
 
 int main(int argc, char** argv) {
     return check::run(argc, argv, "test_exact_engine",
-                     {
-                      {"wall then pair", wall_then_pair},
-                      {"hand built examples", hand_built_examples},
-                      {"same events for every cell size", same_events_for_every_cell_size},
-                      {"agrees with stepped engine when events do not share a particle", agrees_with_stepped_engine_when_events_do_not_share_a_particle},
-                      {"conserves and stays inside", conserves_and_stays_inside},
-                      {"refuses overlaps and bad scenes", refuses_overlaps_and_bad_scenes},
-                      {"estimates events", estimates_events}});
+                      {{"wall then pair", wall_then_pair},
+                       {"hand built examples", hand_built_examples},
+                       {"same events for every cell size", same_events_for_every_cell_size},
+                       {"agrees with stepped engine when events do not share a particle",
+                        agrees_with_stepped_engine_when_events_do_not_share_a_particle},
+                       {"conserves and stays inside", conserves_and_stays_inside},
+                       {"refuses overlaps and bad scenes", refuses_overlaps_and_bad_scenes},
+                       {"estimates events", estimates_events}});
 }

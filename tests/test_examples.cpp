@@ -148,7 +148,8 @@ void every_search_agrees_on_examples() {
         const auto brute = example_scenes::run(scene, {.pair_search = PairSearch::brute_force, .threads = 1});
         for (int grid : {0, 1, 2, 4, 7}) {
             const std::optional<int> cells = grid > 0 ? std::optional<int>(grid) : std::nullopt;
-            const auto fast = example_scenes::run(scene, {.pair_search = PairSearch::grid, .grid_cells = cells, .threads = 2});
+            const auto fast =
+                example_scenes::run(scene, {.pair_search = PairSearch::grid, .grid_cells = cells, .threads = 2});
             bool same = true;
             for (std::size_t s = 0; s < brute.size(); ++s) {
                 for (std::size_t i = 0; i < brute[s].size(); ++i) {
@@ -166,14 +167,13 @@ void every_search_agrees_on_examples() {
 
 int main(int argc, char** argv) {
     return check::run(argc, argv, "test_examples",
-                     {
-                      {"head on", head_on},
-                      {"crossing", crossing},
-                      {"newtons cradle", newtons_cradle},
-                      {"glancing line", glancing_line},
-                      {"square", square},
-                      {"triangle", triangle},
-                      {"corner", corner},
-                      {"faster than box", faster_than_box},
-                      {"every search agrees on examples", every_search_agrees_on_examples}});
+                      {{"head on", head_on},
+                       {"crossing", crossing},
+                       {"newtons cradle", newtons_cradle},
+                       {"glancing line", glancing_line},
+                       {"square", square},
+                       {"triangle", triangle},
+                       {"corner", corner},
+                       {"faster than box", faster_than_box},
+                       {"every search agrees on examples", every_search_agrees_on_examples}});
 }

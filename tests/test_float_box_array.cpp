@@ -94,10 +94,10 @@ void touching_boxes_overlap() {
     FloatBoxArray array;
     array.resize(5);
     array.set(0, {0.0f, 0.0f, 1.0f, 1.0f});
-    array.set(1, {1.0f, 1.0f, 2.0f, 2.0f});  // touches the probe's corner
-    array.set(2, {1.5f, 0.0f, 2.0f, 1.0f});  // right of the probe
+    array.set(1, {1.0f, 1.0f, 2.0f, 2.0f});     // touches the probe's corner
+    array.set(2, {1.5f, 0.0f, 2.0f, 1.0f});     // right of the probe
     array.set(3, {-1.0f, -1.0f, -0.5f, 0.5f});  // left of the probe
-    array.set(4, {0.5f, 1.0f, 0.6f, 3.0f});  // touches the probe's top edge
+    array.set(4, {0.5f, 1.0f, 0.6f, 3.0f});     // touches the probe's top edge
     std::vector<std::uint32_t> reported;
     array.for_each_overlap(0, 5, {0.0f, 0.0f, 1.0f, 1.0f}, [&](std::uint32_t m) { reported.push_back(m); });
     CHECK(reported == (std::vector<std::uint32_t>{0, 1, 4}));
@@ -106,10 +106,12 @@ void touching_boxes_overlap() {
 }  // namespace
 
 int main(int argc, char** argv) {
-    return check::run(argc, argv, "test_float_box_array", {{"float box scans", [] {
-        float_bounds_enclose_the_value();
-        touching_boxes_overlap();
-        std::uint64_t seed = 1;
-        for (const std::uint32_t count : {0U, 1U, 3U, 4U, 5U, 9U, 40U}) scans_report_exactly_the_overlaps(seed++, count);
-    }}});
+    return check::run(argc, argv, "test_float_box_array",
+                      {{"float box scans", [] {
+                            float_bounds_enclose_the_value();
+                            touching_boxes_overlap();
+                            std::uint64_t seed = 1;
+                            for (const std::uint32_t count : {0U, 1U, 3U, 4U, 5U, 9U, 40U})
+                                scans_report_exactly_the_overlaps(seed++, count);
+                        }}});
 }

@@ -14,6 +14,7 @@
 #include "step_pipeline.hpp"
 
 #include <algorithm>
+#include <optional>
 #include <vector>
 
 using namespace particlesim;
@@ -21,7 +22,8 @@ using namespace particlesim;
 namespace {
 
 // Candidates of one search on one state, merged and in the total order.
-std::vector<Collision> pair_candidates(const PairSearchInput& in, int grid_cells, bool brute, int threads) {
+std::vector<Collision> pair_candidates(const PairSearchInput& in, std::optional<int> grid_cells, bool brute,
+                                       int threads) {
     std::vector<ThreadCandidates> buffers(static_cast<std::size_t>(threads));
     if (brute) {
         find_pairs_brute_force(in, buffers);
@@ -36,8 +38,8 @@ std::vector<Collision> pair_candidates(const PairSearchInput& in, int grid_cells
 }
 
 // Runs the scene with the brute force, comparing at every step the grid's
-// candidate set (with `grid_cells`, 0 = auto) on the same state.
-bool same_candidates_every_step(const random_scenes::TestScene& scene, int grid_cells, int threads) {
+// candidate set (with `grid_cells`, or sized from the motion) on the same state.
+bool same_candidates_every_step(const random_scenes::TestScene& scene, std::optional<int> grid_cells, int threads) {
     SteppedSimulation sim(scene.world, scene.particles, {.pair_search = PairSearch::brute_force, .threads = 1});
     const Box box = Box::of(scene.world);
     std::vector<double> wall_time(scene.particles.size());
@@ -45,7 +47,7 @@ bool same_candidates_every_step(const random_scenes::TestScene& scene, int grid_
     for (std::int64_t s = 0; s < scene.steps; ++s) {
         detect_wall_candidates(sim.particles(), box, 1.0, wall_time, walls, 1);
         const PairSearchInput in{sim.particles(), wall_time, box, 1.0};
-        if (pair_candidates(in, 0, true, 1) != pair_candidates(in, grid_cells, false, threads)) return false;
+        if (pair_candidates(in, std::nullopt, true, 1) != pair_candidates(in, grid_cells, false, threads)) return false;
         sim.step();
     }
     return true;
@@ -54,56 +56,52 @@ bool same_candidates_every_step(const random_scenes::TestScene& scene, int grid_
 std::uint64_t run_hash(const random_scenes::TestScene& scene, const SteppedOptions& options) {
     SteppedSimulation sim(scene.world, scene.particles, options);
     std::uint64_t h = state_hash::hash(sim.particles());
-    particlesim::run(sim, scene.steps, [&](std::int64_t, std::span<const Particle> particles) { h = state_hash::hash(particles, h); });
+    particlesim::run(sim, scene.steps,
+                     [&](std::int64_t, std::span<const Particle> particles) { h = state_hash::hash(particles, h); });
     return h;
 }
 
 }  // namespace
 
 int main(int argc, char** argv) {
-    return check::run(argc, argv, "test_grid_vs_brute", {{"grid against brute force on random scenes", [] {
-        const int forced_grids[] = {1, 2, 4, 7, 16, 64};
-        const int thread_counts[] = {1, 2, 3, 8};
-        int candidate_mismatches = 0;
-        int run_mismatches = 0;
-        for (std::uint64_t k = 0; k < 200; ++k) {
-            const random_scenes::TestScene scene = random_scenes::make(k);
-            const int forced = forced_grids[k % 6];
-            const int threads = thread_counts[(k / 6) % 4];
-            if (!same_candidates_every_step(scene, k % 2 == 0 ? 0 : forced, threads)) {
-                ++candidate_mismatches;
-                std::fprintf(stderr, "scene %llu: candidate sets differ (grid %d, %d threads)\n",
-                             static_cast<unsigned long long>(k), k % 2 == 0 ? 0 : forced, threads);
-            }
-            // Whole runs, hashed after every step: brute on 1 thread against the
-            // grid (auto and forced) and brute on several threads.
-            const std::uint64_t reference = run_hash(scene, {.pair_search = PairSearch::brute_force, .threads = 1});
-            const bool same = run_hash(scene, {.pair_search = PairSearch::grid, .threads = threads}) == reference &&
-                              run_hash(scene, {.pair_search = PairSearch::grid, .grid_cells = forced, .threads = thread_counts[k % 4]}) == reference &&
-                              run_hash(scene, {.threads = threads}) == reference &&
-                              run_hash(scene, {.pair_search = PairSearch::brute_force, .threads = threads}) == reference;
-            if (!same) {
-                ++run_mismatches;
-                std::fprintf(stderr, "scene %llu: runs differ\n", static_cast<unsigned long long>(k));
-            }
-        }
-        // Clusters of fast particles crowd a few cells, and many of their paths
-        // are too long for a cell: cut into pieces, set aside as large boxes, or
-        // (when the pieces would overflow the buffers) recounted as large.
-        for (std::uint64_t k = 0; k < 12; ++k) {
-            const random_scenes::TestScene scene = random_scenes::make_clustered(k);
-            const int threads = thread_counts[k % 4];
-            if (!same_candidates_every_step(scene, 0, threads)) {
-                ++candidate_mismatches;
-                std::fprintf(stderr, "clustered scene %llu: candidate sets differ (%d threads)\n",
-                             static_cast<unsigned long long>(k), threads);
-            }
-            if (run_hash(scene, {.pair_search = PairSearch::grid, .threads = threads}) != run_hash(scene, {.pair_search = PairSearch::brute_force, .threads = 1})) {
-                ++run_mismatches;
-                std::fprintf(stderr, "clustered scene %llu: runs differ\n", static_cast<unsigned long long>(k));
-            }
-        }
-        CHECK_EQ(candidate_mismatches, 0);
-        CHECK_EQ(run_mismatches, 0);
-    }}});
+    static constexpr int forced_grids[] = {1, 2, 4, 7, 16, 64};
+    static constexpr int thread_counts[] = {1, 2, 3, 8};
+    return check::run(
+        argc, argv, "test_grid_vs_brute",
+        {{"random scenes",
+          [] {
+              for (std::uint64_t k = 0; k < 200; ++k) {
+                  const random_scenes::TestScene scene = random_scenes::make(k);
+                  const int forced = forced_grids[k % 6];
+                  const int threads = thread_counts[(k / 6) % 4];
+                  const std::optional<int> grid = k % 2 == 0 ? std::nullopt : std::optional<int>(forced);
+                  const check::Context context("random scene ", k, ", grid ", grid.value_or(0),
+                                               " (0: sized from the motion), ", threads, " threads");
+                  CHECK(same_candidates_every_step(scene, grid, threads));
+                  // Whole runs, hashed after every step: brute on 1 thread against the
+                  // grid (auto and forced) and brute on several threads.
+                  const std::uint64_t reference =
+                      run_hash(scene, {.pair_search = PairSearch::brute_force, .threads = 1});
+                  CHECK_EQ(run_hash(scene, {.pair_search = PairSearch::grid, .threads = threads}), reference);
+                  CHECK_EQ(run_hash(scene, {.pair_search = PairSearch::grid,
+                                            .grid_cells = forced,
+                                            .threads = thread_counts[k % 4]}),
+                           reference);
+                  CHECK_EQ(run_hash(scene, {.threads = threads}), reference);
+                  CHECK_EQ(run_hash(scene, {.pair_search = PairSearch::brute_force, .threads = threads}), reference);
+              }
+          }},
+         // Clusters of fast particles crowd a few cells, and many of their paths
+         // are too long for a cell: cut into pieces, set aside as large boxes, or
+         // (when the pieces would overflow the buffers) recounted as large.
+         {"clustered scenes", [] {
+              for (std::uint64_t k = 0; k < 12; ++k) {
+                  const random_scenes::TestScene scene = random_scenes::make_clustered(k);
+                  const int threads = thread_counts[k % 4];
+                  const check::Context context("clustered scene ", k, ", ", threads, " threads");
+                  CHECK(same_candidates_every_step(scene, std::nullopt, threads));
+                  CHECK_EQ(run_hash(scene, {.pair_search = PairSearch::grid, .threads = threads}),
+                           run_hash(scene, {.pair_search = PairSearch::brute_force, .threads = 1}));
+              }
+          }}});
 }

@@ -30,26 +30,48 @@ std::string reference(double value) {
 }  // namespace
 
 int main(int argc, char** argv) {
-    return check::run(argc, argv, "test_number_format", {{"fixed and short formats", [] {
-        // Hand-picked: zeros, ties of the 8th decimal (exact binary halves),
-        // carries, negatives that round to zero, large and huge magnitudes.
-        const double cases[] = {0.0, -0.0, 1.0, -1.0, 0.5, 0x1p-9, 0x1p-30, 0.000000005, 0.000000015, -0.000000004,
-                                -0.000000005, 0.999999995, 9.999999995, 19999.0, 20000.0 - 1e-12, 1e15 + 0.5,
-                                0x1p52, 0x1p53 + 2, 1e150, -1e150, 123456.123456789, 3.0000000049999999};
-        for (const double value : cases) CHECK_EQ(fast(value), reference(value));
-        CHECK_EQ(fast(-0.0), std::string("0.00000000"));
-        CHECK_EQ(fast(-0.000000001), std::string("0.00000000"));
+    return check::run(argc, argv, "test_number_format",
+                      {{"fixed and short formats", [] {
+                            // Hand-picked: zeros, ties of the 8th decimal (exact binary halves),
+                            // carries, negatives that round to zero, large and huge magnitudes.
+                            const double cases[] = {0.0,
+                                                    -0.0,
+                                                    1.0,
+                                                    -1.0,
+                                                    0.5,
+                                                    0x1p-9,
+                                                    0x1p-30,
+                                                    0.000000005,
+                                                    0.000000015,
+                                                    -0.000000004,
+                                                    -0.000000005,
+                                                    0.999999995,
+                                                    9.999999995,
+                                                    19999.0,
+                                                    20000.0 - 1e-12,
+                                                    1e15 + 0.5,
+                                                    0x1p52,
+                                                    0x1p53 + 2,
+                                                    1e150,
+                                                    -1e150,
+                                                    123456.123456789,
+                                                    3.0000000049999999};
+                            for (const double value : cases) CHECK_EQ(fast(value), reference(value));
+                            CHECK_EQ(fast(-0.0), std::string("0.00000000"));
+                            CHECK_EQ(fast(-0.000000001), std::string("0.00000000"));
 
-        // Random values over many scales, and values with few binary digits (the
-        // ones that produce exact ties).
-        SplitMix64 rng(7);
-        int mismatches = 0;
-        for (int k = 0; k < 400000; ++k) {
-            const double scale = std::ldexp(1.0, static_cast<int>(rng.next() % 80) - 30);
-            double value = (rng.uniform() - 0.5) * scale;
-            if (k % 4 == 0) value = std::ldexp(std::round(value * 1024.0), -10 - static_cast<int>(rng.next() % 30));
-            if (fast(value) != reference(value)) ++mismatches;
-        }
-        CHECK_EQ(mismatches, 0);
-    }}});
+                            // Random values over many scales, and values with few binary digits (the
+                            // ones that produce exact ties).
+                            SplitMix64 rng(7);
+                            int mismatches = 0;
+                            for (int k = 0; k < 400000; ++k) {
+                                const double scale = std::ldexp(1.0, static_cast<int>(rng.next() % 80) - 30);
+                                double value = (rng.uniform() - 0.5) * scale;
+                                if (k % 4 == 0)
+                                    value =
+                                        std::ldexp(std::round(value * 1024.0), -10 - static_cast<int>(rng.next() % 30));
+                                if (fast(value) != reference(value)) ++mismatches;
+                            }
+                            CHECK_EQ(mismatches, 0);
+                        }}});
 }

@@ -53,7 +53,10 @@ void stepped_options_are_checked() {
 
     CHECK_EQ(stepped({}), "");
     CHECK_EQ(stepped({.pair_search = PairSearch::grid, .grid_cells = max_grid_cells}), "");
-    CHECK_EQ(stepped({.pair_search = PairSearch::grid, .grid_cells = 1, .threads = 3, .substeps = 7,
+    CHECK_EQ(stepped({.pair_search = PairSearch::grid,
+                      .grid_cells = 1,
+                      .threads = 3,
+                      .substeps = 7,
                       .sort_by_position_every = 0}),
              "");
 }

@@ -48,8 +48,8 @@ std::string format_double(double value) {
 
 std::vector<Case> all_cases() {
     const std::string examples = PARTICLESIM_EXAMPLES_DIR;
-    const char* example_names[] = {"corner",     "crossing", "default",  "faster_than_box", "glancing_line",
-                                   "head_on",    "newtons_cradle", "square", "triangle", "wall_then_pair"};
+    const char* example_names[] = {"corner",  "crossing",       "default", "faster_than_box", "glancing_line",
+                                   "head_on", "newtons_cradle", "square",  "triangle",        "wall_then_pair"};
     const std::vector<std::vector<std::string>> step_settings = {
         {"--broadphase", "brute", "-t", "1"}, {"--broadphase", "grid", "-t", "1"}, {"--broadphase", "grid", "-t", "2"},
         {"--grid", "4", "-t", "2"},           {"--substeps", "3", "-t", "2"},      {"--engine", "exact"}};
@@ -119,14 +119,16 @@ int main(int argc, char** argv) {
     if (generate) argc = 1;
     const std::vector<Case> cases = all_cases();
     if (generate) {
-        for (const Case& c : cases) std::printf("    0x%016" PRIx64 "ULL,  // %s\n", output_hash(simcli, c), c.name.c_str());
+        for (const Case& c : cases)
+            std::printf("    0x%016" PRIx64 "ULL,  // %s\n", output_hash(simcli, c), c.name.c_str());
         return 0;
     }
-    return check::run(argc, argv, "test_output_hashes", {{"simcli output unchanged", [&] {
-                          CHECK_EQ(cases.size(), std::size(expected_output_hashes));
-                          for (std::size_t k = 0; k < cases.size() && k < std::size(expected_output_hashes); ++k) {
-                              const check::Context context("running simcli on ", cases[k].name);
-                              CHECK_EQ(output_hash(simcli, cases[k]), expected_output_hashes[k]);
-                          }
-                      }}});
+    return check::run(argc, argv, "test_output_hashes",
+                      {{"simcli output unchanged", [&] {
+                            CHECK_EQ(cases.size(), std::size(expected_output_hashes));
+                            for (std::size_t k = 0; k < cases.size() && k < std::size(expected_output_hashes); ++k) {
+                                const check::Context context("running simcli on ", cases[k].name);
+                                CHECK_EQ(output_hash(simcli, cases[k]), expected_output_hashes[k]);
+                            }
+                        }}});
 }

@@ -115,9 +115,8 @@ void bounce_and_stop_at_wall() {
 
 int main(int argc, char** argv) {
     return check::run(argc, argv, "test_physics",
-                     {
-                      {"wall times", wall_times},
-                      {"contact times", contact_times},
-                      {"exchange conserves energy and momentum", exchange_conserves_energy_and_momentum},
-                      {"bounce and stop at wall", bounce_and_stop_at_wall}});
+                      {{"wall times", wall_times},
+                       {"contact times", contact_times},
+                       {"exchange conserves energy and momentum", exchange_conserves_energy_and_momentum},
+                       {"bounce and stop at wall", bounce_and_stop_at_wall}});
 }

@@ -3,8 +3,8 @@
 
 #include "check.hpp"
 
-#include "physics.hpp"
 #include "particlesim/random_scene.hpp"
+#include "physics.hpp"
 
 #include <chrono>
 #include <cmath>
@@ -93,14 +93,16 @@ void too_full_fails_fast() {
 }  // namespace
 
 int main(int argc, char** argv) {
-    return check::run(argc, argv, "test_random_scene", {{"random scenes", [] {
-        reproducible_by_seed();
-        const World paper{20000.0, 1.0};
-        valid_and_in_range(3000, paper, {});
-        valid_and_in_range(2000, World{200.0, 1.0}, {42, SpeedRange{0.1, 1.0}});  // area fraction 0.16
-        valid_and_in_range(100, World{1.0, 1e-9}, {1, {}});
-        too_full_fails_fast();
-        CHECK(default_speed_range(paper).min == 2500.0 && default_speed_range(paper).max == 5000.0);
-        CHECK(default_speed_range(World{16.0, 1.0}).min == 2.0);
-    }}});
+    return check::run(
+        argc, argv, "test_random_scene",
+        {{"random scenes", [] {
+              reproducible_by_seed();
+              const World paper{20000.0, 1.0};
+              valid_and_in_range(3000, paper, {});
+              valid_and_in_range(2000, World{200.0, 1.0}, {42, SpeedRange{0.1, 1.0}});  // area fraction 0.16
+              valid_and_in_range(100, World{1.0, 1e-9}, {1, {}});
+              too_full_fails_fast();
+              CHECK(default_speed_range(paper).min == 2500.0 && default_speed_range(paper).max == 5000.0);
+              CHECK(default_speed_range(World{16.0, 1.0}).min == 2.0);
+          }}});
 }

@@ -3,8 +3,8 @@
 
 #include "check.hpp"
 
-#include "random.hpp"
 #include "particlesim/stepped_simulation.hpp"
+#include "random.hpp"
 #include "step_pipeline.hpp"
 
 #include <algorithm>
@@ -31,8 +31,8 @@ void order_encodes_the_tie_rules() {
     order_candidates(candidates, none, scratch, {}, {}, 1);
     // Sorted by time, walls before pairs at equal time, then by indices; the
     // duplicate (0, 2) found twice by a search is kept once.
-    const std::vector<Collision> expected{Collision::pair(0.3, 3, 4), Collision::wall(0.5, 1), Collision::pair(0.5, 0, 2),
-                                          Collision::pair(0.5, 1, 2)};
+    const std::vector<Collision> expected{Collision::pair(0.3, 3, 4), Collision::wall(0.5, 1),
+                                          Collision::pair(0.5, 0, 2), Collision::pair(0.5, 1, 2)};
     CHECK(candidates == expected);
 
     std::vector<std::uint32_t> collision_of(5, 0);
@@ -137,8 +137,9 @@ void parallel_order_equals_one_sort() {
     for (int k = 0; k < 150000; ++k) {
         const double time = static_cast<double>(rng.next() % 64) / 64.0;
         const auto i = static_cast<std::uint32_t>(rng.next() % 500);
-        drawn.push_back(rng.next() % 3 == 0 ? Collision::wall(time, i)
-                                            : Collision::pair(time, i, i + 1 + static_cast<std::uint32_t>(rng.next() % 3)));
+        drawn.push_back(rng.next() % 3 == 0
+                            ? Collision::wall(time, i)
+                            : Collision::pair(time, i, i + 1 + static_cast<std::uint32_t>(rng.next() % 3)));
     }
     std::vector<Collision> expected = drawn;
     std::sort(expected.begin(), expected.end());
@@ -156,13 +157,13 @@ void parallel_order_equals_one_sort() {
 
 int main(int argc, char** argv) {
     return check::run(argc, argv, "test_rules",
-                     {
-                      {"order encodes the tie rules", order_encodes_the_tie_rules},
-                      {"parallel order equals one sort", parallel_order_equals_one_sort},
-                      {"wall beats pair at equal time", wall_beats_pair_at_equal_time},
-                      {"lowest indices win among equal pairs", lowest_indices_win_among_equal_pairs},
-                      {"collision near wall stops at wall then passes through", collision_near_wall_stops_at_wall_then_passes_through},
-                      {"overlapping and receding separate freely", overlapping_and_receding_separate_freely},
-                      {"coincident centres never collide", coincident_centres_never_collide},
-                      {"invalid scenes are refused", invalid_scenes_are_refused}});
+                      {{"order encodes the tie rules", order_encodes_the_tie_rules},
+                       {"parallel order equals one sort", parallel_order_equals_one_sort},
+                       {"wall beats pair at equal time", wall_beats_pair_at_equal_time},
+                       {"lowest indices win among equal pairs", lowest_indices_win_among_equal_pairs},
+                       {"collision near wall stops at wall then passes through",
+                        collision_near_wall_stops_at_wall_then_passes_through},
+                       {"overlapping and receding separate freely", overlapping_and_receding_separate_freely},
+                       {"coincident centres never collide", coincident_centres_never_collide},
+                       {"invalid scenes are refused", invalid_scenes_are_refused}});
 }

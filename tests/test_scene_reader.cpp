@@ -109,8 +109,5 @@ void bad_particles() {
 
 int main(int argc, char** argv) {
     return check::run(argc, argv, "test_scene_reader",
-                     {
-                      {"valid scenes", valid_scenes},
-                      {"bad headers", bad_headers},
-                      {"bad particles", bad_particles}});
+                      {{"valid scenes", valid_scenes}, {"bad headers", bad_headers}, {"bad particles", bad_particles}});
 }

@@ -21,16 +21,20 @@ void adversarial_scenes() {
     for (const stress_scenes::StressScene& scene : stress_scenes::all()) {
         for (const int substeps : {1, 4}) {
             for (const PairSearch search : {PairSearch::brute_force, PairSearch::grid}) {
-                SteppedSimulation stepped(scene.world, scene.particles, {.pair_search = search, .threads = 2, .substeps = substeps});
+                SteppedSimulation stepped(scene.world, scene.particles,
+                                          {.pair_search = search, .threads = 2, .substeps = substeps});
                 const double drift = stress_scenes::run_checked(stepped, scene.world, scene.steps);
                 CHECK(drift <= max_drift);
-                if (!(drift <= max_drift)) std::fprintf(stderr, "  %s (stepped, K = %d): drift %g\n", scene.name.c_str(), substeps, drift);
+                if (!(drift <= max_drift))
+                    std::fprintf(stderr, "  %s (stepped, K = %d): drift %g\n", scene.name.c_str(), substeps, drift);
             }
         }
         // The exact engine takes what it can: no overlaps, a bounded number of events.
-        const double events = estimated_events_per_step(scene.world, scene.particles) * static_cast<double>(scene.steps);
+        const double events =
+            estimated_events_per_step(scene.world, scene.particles) * static_cast<double>(scene.steps);
         if (scene.overlapping || events > 1e7) {
-            std::printf("%s: exact engine skipped (%s)\n", scene.name.c_str(), scene.overlapping ? "overlaps" : "too many events");
+            std::printf("%s: exact engine skipped (%s)\n", scene.name.c_str(),
+                        scene.overlapping ? "overlaps" : "too many events");
             continue;
         }
         ExactSimulation exact(scene.world, scene.particles);
@@ -74,8 +78,7 @@ void crowded_box_quick() {
 
 int main(int argc, char** argv) {
     return check::run(argc, argv, "test_stability",
-                     {
-                      {"adversarial scenes", adversarial_scenes},
-                      {"exact engine refuses what would hang", exact_engine_refuses_what_would_hang},
-                      {"crowded box quick", crowded_box_quick}});
+                      {{"adversarial scenes", adversarial_scenes},
+                       {"exact engine refuses what would hang", exact_engine_refuses_what_would_hang},
+                       {"crowded box quick", crowded_box_quick}});
 }

@@ -75,7 +75,8 @@ using States = example_scenes::States;
 
 // Every state of a run sorted each step against one never sorted, and the
 // final states of runs sorted every 3 steps (kept sorted between steps).
-void same_as_unsorted(const char* name, const World& params, std::int64_t steps, const std::vector<Particle>& particles) {
+void same_as_unsorted(const char* name, const World& params, std::int64_t steps,
+                      const std::vector<Particle>& particles) {
     const check::Context context(name);
     Scene scene;
     scene.world = params;
@@ -100,21 +101,24 @@ void same_as_unsorted(const char* name, const World& params, std::int64_t steps,
 }  // namespace
 
 int main(int argc, char** argv) {
-    return check::run(argc, argv, "test_storage_order", {{"storage order changes no result", [] {
-        sorts_by_rows_and_restores_exactly();
-        for (const char* name : {"corner.in", "crossing.in", "faster_than_box.in", "glancing_line.in", "head_on.in",
-                                 "newtons_cradle.in", "square.in", "triangle.in", "wall_then_pair.in"}) {
-            const Scene scene = example_scenes::load(name);
-            same_as_unsorted(name, scene.world, scene.steps, scene.particles);
-        }
-        // Symmetric and tied scenes: ties must still go by the user's indices.
-        for (const stress_scenes::StressScene& s : stress_scenes::all()) same_as_unsorted(s.name.c_str(), s.world, s.steps, s.particles);
-        stress_scenes::StressScene crowded = stress_scenes::crowded_box();
-        crowded.steps = 300;
-        same_as_unsorted(crowded.name.c_str(), crowded.world, crowded.steps, crowded.particles);
-        for (std::uint64_t k = 0; k < 60; ++k) {
-            const random_scenes::TestScene scene = random_scenes::make(k);
-            same_as_unsorted("random scene", scene.world, scene.steps, scene.particles);
-        }
-    }}});
+    return check::run(argc, argv, "test_storage_order",
+                      {{"storage order changes no result", [] {
+                            sorts_by_rows_and_restores_exactly();
+                            for (const char* name :
+                                 {"corner.in", "crossing.in", "faster_than_box.in", "glancing_line.in", "head_on.in",
+                                  "newtons_cradle.in", "square.in", "triangle.in", "wall_then_pair.in"}) {
+                                const Scene scene = example_scenes::load(name);
+                                same_as_unsorted(name, scene.world, scene.steps, scene.particles);
+                            }
+                            // Symmetric and tied scenes: ties must still go by the user's indices.
+                            for (const stress_scenes::StressScene& s : stress_scenes::all())
+                                same_as_unsorted(s.name.c_str(), s.world, s.steps, s.particles);
+                            stress_scenes::StressScene crowded = stress_scenes::crowded_box();
+                            crowded.steps = 300;
+                            same_as_unsorted(crowded.name.c_str(), crowded.world, crowded.steps, crowded.particles);
+                            for (std::uint64_t k = 0; k < 60; ++k) {
+                                const random_scenes::TestScene scene = random_scenes::make(k);
+                                same_as_unsorted("random scene", scene.world, scene.steps, scene.particles);
+                            }
+                        }}});
 }

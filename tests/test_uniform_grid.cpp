@@ -16,10 +16,10 @@ void sizing() {
     // rounding: one fewer, each wider than the minimum.
     CHECK_EQ(UniformGrid::cells_per_side(20.0, 2.0, 100.0), 9);
     CHECK_EQ(UniformGrid::cells_per_side(20.0, 1.9, 100.0), 10);
-    CHECK_EQ(UniformGrid::cells_per_side(20.0, 2.0, 4.7), 4);           // the maximum wins
-    CHECK_EQ(UniformGrid::cells_per_side(20.0, 50.0, 100.0), 1);        // never fewer than one
-    CHECK_EQ(UniformGrid::cells_per_side(20.0, 0.0, 33.0), 33);         // no minimum size
-    CHECK_EQ(UniformGrid::cells_per_side(1.0, 1e-12, 1e12), 65536);     // capped for 32-bit cell indices
+    CHECK_EQ(UniformGrid::cells_per_side(20.0, 2.0, 4.7), 4);        // the maximum wins
+    CHECK_EQ(UniformGrid::cells_per_side(20.0, 50.0, 100.0), 1);     // never fewer than one
+    CHECK_EQ(UniformGrid::cells_per_side(20.0, 0.0, 33.0), 33);      // no minimum size
+    CHECK_EQ(UniformGrid::cells_per_side(1.0, 1e-12, 1e12), 65536);  // capped for 32-bit cell indices
     CHECK_EQ(UniformGrid::cells_per_side(20.0, 1.0, 0.0), 1);
     for (const double extent : {1.0, 3.0, 1e-9, 1e6, 12345.678}) {
         for (const double min_cell : {1e-3, 0.1, 0.37, 1.0}) {

@@ -61,7 +61,8 @@ private:
 
 // Runs `steps` steps of the engine and records them.
 template <Engine E>
-RunRecord record_run(E& engine, std::int64_t steps, std::span<const std::int64_t> checkpoint_steps = default_checkpoints) {
+RunRecord record_run(E& engine, std::int64_t steps,
+                     std::span<const std::int64_t> checkpoint_steps = default_checkpoints) {
     RunRecorder recorder(engine.world(), engine.particles(), checkpoint_steps);
     run(engine, steps, [&](std::int64_t step, std::span<const Particle> particles) {
         recorder.observe(step, particles, engine.last_step());

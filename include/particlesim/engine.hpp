@@ -32,7 +32,7 @@ struct StepCounts {
 
 template <typename E>
 concept Engine = requires(E& engine, const E& observed) {
-    engine.step();  // one whole step
+    engine.step();                                                               // one whole step
     { observed.particles() } -> std::convertible_to<std::span<const Particle>>;  // in the user's order
     { observed.world() } -> std::convertible_to<const World&>;
     { observed.steps_done() } -> std::convertible_to<std::int64_t>;
@@ -42,7 +42,7 @@ concept Engine = requires(E& engine, const E& observed) {
 
 // Runs `steps` steps; after each, calls observe(step number, particles).
 template <Engine E, typename Observer>
-    requires std::invocable<Observer&, std::int64_t, std::span<const Particle>>
+requires std::invocable<Observer&, std::int64_t, std::span<const Particle>>
 void run(E& engine, std::int64_t steps, Observer&& observe) {
     for (std::int64_t s = 0; s < steps; ++s) {
         engine.step();

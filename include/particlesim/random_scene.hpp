@@ -25,7 +25,7 @@ SpeedRange default_speed_range(const World& world);
 
 struct RandomSceneOptions {
     std::uint64_t seed = default_seed;
-    std::optional<SpeedRange> speeds;  // default_speed_range() when empty
+    std::optional<SpeedRange> speeds = std::nullopt;  // default_speed_range() when empty
 };
 
 // The box cannot hold that many non-overlapping disks in reasonable time.

@@ -95,19 +95,19 @@ inline int run(int argc, char** argv, const char* suite, std::initializer_list<C
 
 // Each operand is evaluated once, and the message is built only on failure.
 #define CHECK(condition) ::check::record(static_cast<bool>(condition), __FILE__, __LINE__, #condition)
-#define CHECK_EQ(a, b)                                                                                   \
-    do {                                                                                                 \
-        const auto check_a_ = (a);                                                                       \
-        const auto check_b_ = (b);                                                                       \
-        const bool check_ok_ = check_a_ == check_b_;                                                     \
-        ::check::record(check_ok_, __FILE__, __LINE__,                                                   \
+#define CHECK_EQ(a, b)                                                                                    \
+    do {                                                                                                  \
+        const auto check_a_ = (a);                                                                        \
+        const auto check_b_ = (b);                                                                        \
+        const bool check_ok_ = check_a_ == check_b_;                                                      \
+        ::check::record(check_ok_, __FILE__, __LINE__,                                                    \
                         check_ok_ ? std::string() : ::check::describe(#a " == " #b, check_a_, check_b_)); \
     } while (false)
-#define CHECK_NEAR(a, b, tolerance)                                                                      \
-    do {                                                                                                 \
-        const double check_a_ = (a);                                                                     \
-        const double check_b_ = (b);                                                                     \
-        const bool check_ok_ = std::fabs(check_a_ - check_b_) <= (tolerance);                            \
-        ::check::record(check_ok_, __FILE__, __LINE__,                                                   \
+#define CHECK_NEAR(a, b, tolerance)                                                                       \
+    do {                                                                                                  \
+        const double check_a_ = (a);                                                                      \
+        const double check_b_ = (b);                                                                      \
+        const bool check_ok_ = std::fabs(check_a_ - check_b_) <= (tolerance);                             \
+        ::check::record(check_ok_, __FILE__, __LINE__,                                                    \
                         check_ok_ ? std::string() : ::check::describe(#a " ~= " #b, check_a_, check_b_)); \
     } while (false)

@@ -2,8 +2,8 @@
 // Random test scenes across the regimes that matter: sparse and dense boxes,
 // slow particles and particles faster than the box per step, overlapping starts.
 
-#include "random.hpp"
 #include "particlesim/random_scene.hpp"
+#include "random.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -32,9 +32,10 @@ inline TestScene make(std::uint64_t k) {
     if (regime == 0 || regime == 3) {
         // Non-overlapping random scene with the rules' generator.
         const double max_speed = regime == 3 ? speed_scale : box_size / 4.0;
-        const std::size_t fits = std::min<std::size_t>(count, static_cast<std::size_t>(0.3 * box_size * box_size / 3.2));
-        scene.particles = make_random_particles(std::max<std::size_t>(fits, 2), scene.world,
-                                                {k, SpeedRange{0.0, max_speed}});
+        const std::size_t fits =
+            std::min<std::size_t>(count, static_cast<std::size_t>(0.3 * box_size * box_size / 3.2));
+        scene.particles =
+            make_random_particles(std::max<std::size_t>(fits, 2), scene.world, {k, SpeedRange{0.0, max_speed}});
         return scene;
     }
     // Positions anywhere (overlaps allowed), velocities of the regime's scale;

@@ -9,7 +9,8 @@
 
 namespace state_hash {
 
-inline std::uint64_t hash(std::span<const particlesim::Particle> particles, std::uint64_t seed = 14695981039346656037ULL) {
+inline std::uint64_t hash(std::span<const particlesim::Particle> particles,
+                          std::uint64_t seed = 14695981039346656037ULL) {
     std::uint64_t h = seed;
     const auto mix = [&h](const void* data, std::size_t size) {
         const auto* bytes = static_cast<const unsigned char*>(data);

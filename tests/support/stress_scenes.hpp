@@ -3,8 +3,8 @@
 // in the benchmark tree), and the check every step of them must pass.
 
 #include "particlesim/accuracy.hpp"
-#include "random.hpp"
 #include "particlesim/random_scene.hpp"
+#include "random.hpp"
 
 #include <cmath>
 #include <string>
@@ -63,7 +63,8 @@ inline std::vector<StressScene> all() {
     {
         // Everything on one wall, pressing into it, touching neighbours.
         StressScene s{"everything against one wall", {400.0, 1.0}, 300, {}};
-        for (int k = 0; k < 150; ++k) s.particles.push_back(disk(1.0, 2.0 + 2.0 * k, -0.5 - rng.uniform(), rng.uniform() - 0.5));
+        for (int k = 0; k < 150; ++k)
+            s.particles.push_back(disk(1.0, 2.0 + 2.0 * k, -0.5 - rng.uniform(), rng.uniform() - 0.5));
         scenes.push_back(std::move(s));
     }
     {
@@ -80,8 +81,8 @@ inline std::vector<StressScene> all() {
         }
         for (int k = 0; k < 12; ++k) {
             const double angle = 2.0 * 3.14159265358979 * k / 12.0;
-            s.particles.push_back(disk(150.0 + 20.0 * std::cos(angle), 150.0 + 20.0 * std::sin(angle), -2.0 * std::cos(angle),
-                                       -2.0 * std::sin(angle)));
+            s.particles.push_back(disk(150.0 + 20.0 * std::cos(angle), 150.0 + 20.0 * std::sin(angle),
+                                       -2.0 * std::cos(angle), -2.0 * std::sin(angle)));
         }
         scenes.push_back(std::move(s));
     }
