@@ -246,7 +246,7 @@ ExactSimulation make_exact_engine(const Scene& scene, std::vector<Particle> part
     }
 }
 
-int run(int argc, char** argv) {
+int run_cli(int argc, char** argv) {
     const std::optional<CliOptions> options = parse_arguments(argc, argv);
     if (!options) return 0;
     const std::string name = options->scene_path == "-" ? "<stdin>" : options->scene_path;
@@ -281,7 +281,7 @@ int run(int argc, char** argv) {
 int main(int argc, char** argv) {
     std::signal(SIGPIPE, SIG_IGN);  // a closed pipe is a write error (exit 1), not a signal
     try {
-        return run(argc, argv);
+        return run_cli(argc, argv);
     } catch (const BadInput& e) {
         std::fprintf(stderr, "simcli: %s\n", e.what());
         return exit_bad_input;

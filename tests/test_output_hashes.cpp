@@ -116,7 +116,6 @@ std::uint64_t output_hash(const std::string& simcli, const Case& c) {
 int main(int argc, char** argv) {
     const bool generate = argc > 1 && std::strcmp(argv[1], "--generate") == 0;
     const std::string simcli = generate && argc > 2 ? argv[2] : SIMCLI_PATH;
-    if (generate) argc = 1;
     const std::vector<Case> cases = all_cases();
     if (generate) {
         for (const Case& c : cases)
