@@ -94,8 +94,9 @@ CellRegion cells_reaching(const SweptBox& box, const UniformGrid& grid) {
 }
 
 // Always inlined: it runs for every binned box, and a call costs as much as it does.
-[[gnu::always_inline]] inline FloatBox float_bounds(const SweptBox& box) {
-    return {float_at_most(box.min_x), float_at_most(box.min_y), float_at_least(box.max_x), float_at_least(box.max_y)};
+[[gnu::always_inline]] inline FloatBox float_bounds(const SweptBox& box, double scale) {
+    return {float_at_most(box.min_x * scale), float_at_most(box.min_y * scale), float_at_least(box.max_x * scale),
+            float_at_least(box.max_y * scale)};
 }
 
 }  // namespace
@@ -137,6 +138,7 @@ GridLayout GridSearch::choose_layout(const PairSearchInput& in, std::optional<in
     const double box_size = in.box.side;
     GridLayout layout;
     layout.reach = in.box.lower + relative_margin * (box_size + max_speed * in.duration);
+    layout.float_scale = std::ldexp(1.0, -std::ilogb(box_size));
     const double mean_sweep = length_sum / static_cast<double>(std::max<std::int64_t>(present, 1));
     const double diameter = 2.0 * layout.reach;
     const auto slices_for = [&](double slice_sweep) {
@@ -299,7 +301,7 @@ void GridSearch::bin_slice(const PairSearchInput& in, int slice, SliceWorkspace&
         const auto place = [&](std::int64_t i, std::uint32_t cell, const SweptBox& box) {
             const std::uint32_t at = next[cell]++;
             ws.by_cell[at] = static_cast<std::uint32_t>(i);
-            ws.boxes_by_cell.set(at, float_bounds(box));
+            ws.boxes_by_cell.set(at, float_bounds(box, layout_.float_scale));
             ws.states_by_cell[at] = pair_test_state(in, static_cast<std::uint32_t>(i));
         };
         // The pieces in a loop of their own: the main loop stays short enough
@@ -394,7 +396,7 @@ void GridSearch::test_large_pairs(const PairSearchInput& in, const SliceWorkspac
         ThreadCandidates& found = out[thread];
         const std::uint32_t a = ws.large[k];
         const SweptBox& box = ws.large_boxes[k];
-        const FloatBox bounds = float_bounds(box);
+        const FloatBox bounds = float_bounds(box, layout_.float_scale);
         const PairTestState state = pair_test_state(in, a);
         const CellRegion region = cells_reaching(box, grid);
         for (int cy = region.y_first; cy <= region.y_last; ++cy) {

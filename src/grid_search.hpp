@@ -28,6 +28,10 @@ struct GridLayout {
     UniformGrid grid;
     int slices = 1;
     double reach = 0.0;  // r plus the rounding margin added around each path
+    // The power of two that brings L into [1, 2): float bounds are taken of
+    // scaled coordinates, so they keep their precision at every scale of the
+    // accepted range (float alone spans only 1e-38 to 3e38).
+    double float_scale = 1.0;
 };
 
 // A particle's path within one time slice, widened by the layout's reach.

@@ -64,4 +64,10 @@ std::string format_short(double value) {
     return std::string(text, result.ptr);
 }
 
+std::string format_brief(double value) {
+    char text[32];
+    const auto result = std::to_chars(text, text + sizeof text, value, std::chars_format::general, 4);
+    return std::string(text, result.ptr);
+}
+
 }  // namespace particlesim

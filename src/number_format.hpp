@@ -6,14 +6,18 @@
 
 namespace particlesim {
 
-// Room that write_fixed8 may need: sign, 151 integer digits (|x| <= 1e150), point, 8 decimals.
-inline constexpr std::size_t max_fixed8_length = 168;
+// Room that write_fixed8 may need for any finite double: sign, 309 integer
+// digits (DBL_MAX is about 1.8e308), point, 8 decimals.
+inline constexpr std::size_t max_fixed8_length = 320;
 
 // Writes `value` exactly as printf("%.8f") would, except that a result of
 // -0.00000000 is written as 0.00000000 (io.md). Returns the end.
 char* write_fixed8(char* out, double value);
 
-// The shortest text that reads back as `value` (for messages).
+// The shortest text that reads back as `value` (for messages quoting an input).
 std::string format_short(double value);
+
+// Four significant digits (for messages quoting a derived figure).
+std::string format_brief(double value);
 
 }  // namespace particlesim

@@ -4,6 +4,7 @@
 // engine calls these and nothing else, so engines cannot disagree on physics.
 
 #include "box.hpp"
+#include "double_double.hpp"
 #include "particlesim/particle.hpp"
 
 #include <algorithm>
@@ -50,7 +51,10 @@ inline double contact_time(const Vec2& dp, const Vec2& dv, double contact_dist_s
     // either a touching start (C <= 0) or a real crossing (disc > 0; not a
     // graze). Decided without branches: most pairs a search tests recede or
     // miss, in no pattern a branch predictor could learn.
-    const bool approaching = (a != 0.0) & (half_b < 0.0);
+    // "A == 0" of the rules is tested on dv itself: A can underflow to 0 for a
+    // tiny nonzero dv, and then a touching pair would wrongly stay apart.
+    const bool moving = (dv.x() != 0.0) | (dv.y() != 0.0);
+    const bool approaching = moving & (half_b < 0.0);
     const bool touching = c <= 0.0;
     if (!(approaching & (touching | (quarter_disc > 0.0)))) return never;
     if (touching) return 0.0;
@@ -91,22 +95,23 @@ inline void bounce_off_wall(Particle& particle, const WallHit& hit, const Box& b
 // Elastic collision of equal masses at contact positions pi, pj: exchange the
 // velocity components along the line of centres, keep the tangential ones.
 // ((vj - vi).n) n is computed as ((vj - vi).d / d.d) d, with no unit normal
-// and in extended precision, so that the only rounding left is the final one
-// to double, which is unbiased: energy drifts as a random walk instead of
+// and in double-double precision, so that the only rounding left is the final
+// one to double, which is unbiased: energy drifts as a random walk instead of
 // steadily, as it does with a unit normal or double intermediates
-// (docs/accuracy.md, "Stability", and bench/results/*/stress.csv).
+// (docs/accuracy.md, "Stability"). Double-double rounds the same on every IEEE
+// machine, so the bytes do not depend on the platform.
 inline void exchange_normal_velocities(const Vec2& pi, const Vec2& pj, Vec2& vi, Vec2& vj) {
-    using Wide = long double;
-    const Wide dx = static_cast<Wide>(pj.x()) - pi.x();
-    const Wide dy = static_cast<Wide>(pj.y()) - pi.y();
-    const Wide dist_sq = dx * dx + dy * dy;
-    if (!(dist_sq > 0.0L)) return;  // unreachable for valid radii; never divide by zero
-    const Wide along =
-        ((static_cast<Wide>(vj.x()) - vi.x()) * dx + (static_cast<Wide>(vj.y()) - vi.y()) * dy) / dist_sq;
-    const Wide ex = along * dx;
-    const Wide ey = along * dy;
-    vi = Vec2(static_cast<double>(vi.x() + ex), static_cast<double>(vi.y() + ey));
-    vj = Vec2(static_cast<double>(vj.x() - ex), static_cast<double>(vj.y() - ey));
+    const DoubleDouble dx = two_sum(pj.x(), -pi.x());
+    const DoubleDouble dy = two_sum(pj.y(), -pi.y());
+    const DoubleDouble dist_sq = dx * dx + dy * dy;
+    if (!(dist_sq.hi > 0.0)) return;  // unreachable for valid radii; never divide by zero
+    const DoubleDouble dvx = two_sum(vj.x(), -vi.x());
+    const DoubleDouble dvy = two_sum(vj.y(), -vi.y());
+    const DoubleDouble along = (dvx * dx + dvy * dy) / dist_sq;
+    const DoubleDouble ex = along * dx;
+    const DoubleDouble ey = along * dy;
+    vi = Vec2(rounded_sum(vi.x(), ex), rounded_sum(vi.y(), ey));
+    vj = Vec2(rounded_sum(vj.x(), -ex), rounded_sum(vj.y(), -ey));
 }
 
 // The rest of a step after a collision: move for `remaining`, but stop on a

@@ -1,7 +1,9 @@
 #include "particlesim/random_scene.hpp"
 
 #include "box.hpp"
+#include "number_format.hpp"
 #include "random.hpp"
+#include "scene_checks.hpp"
 #include "uniform_grid.hpp"
 
 #include <algorithm>
@@ -73,8 +75,12 @@ Vec2 random_direction(SplitMix64& rng) {
 
 std::vector<Particle> make_random_particles(std::size_t count, const World& world, const RandomSceneOptions& options) {
     const SpeedRange speeds = options.speeds.value_or(default_speed_range(world));
-    if (!(std::isfinite(speeds.min) && std::isfinite(speeds.max) && 0.0 <= speeds.min && speeds.min <= speeds.max)) {
-        throw std::invalid_argument("make_random_particles: speed range must satisfy 0 <= min <= max < inf");
+    require_valid_scene("particlesim::make_random_particles", world, {});
+    if (!(0.0 <= speeds.min && speeds.min <= speeds.max && speeds.max <= max_magnitude)) {
+        throw std::invalid_argument(
+            "particlesim::make_random_particles: speed range must satisfy 0 <= min <= max <= 1e60 (the accepted "
+            "range); the default range reaches L/(8r) = " +
+            format_brief(default_speed_range(world).max));
     }
     const Box box = Box::of(world);
     const double area_fraction =
@@ -86,8 +92,8 @@ std::vector<Particle> make_random_particles(std::size_t count, const World& worl
 
     const auto too_full = [&](std::uint64_t attempts) {
         return SceneTooFull("cannot place " + std::to_string(count) + " non-overlapping disks of radius " +
-                            std::to_string(world.radius) + " in a box of side " + std::to_string(world.box_size) +
-                            " (area fraction " + std::to_string(area_fraction) + ", gave up after " +
+                            format_short(world.radius) + " in a box of side " + format_short(world.box_size) +
+                            " (area fraction " + format_brief(area_fraction) + ", gave up after " +
                             std::to_string(attempts) + " attempts)");
     };
     if (hopeless) throw too_full(0);

@@ -1,6 +1,7 @@
 #include "particlesim/scene.hpp"
 
 #include "number_format.hpp"
+#include "particlesim/random_scene.hpp"
 
 #include <unistd.h>
 
@@ -33,6 +34,29 @@ std::size_t max_particle_count() {
 
 using Text = std::string;
 
+// A token as it appears in a message: in quotes, with every byte that would
+// not show (controls, NUL, anything outside ASCII) written as \xNN.
+Text quoted(std::string_view token) {
+    Text text = "\"";
+    for (const char c : token) {
+        const auto byte = static_cast<unsigned char>(c);
+        if (byte >= 0x20 && byte < 0x7f && c != '"' && c != '\\') {
+            text += c;
+        } else {
+            constexpr char digits[] = "0123456789ABCDEF";
+            text += "\\x";
+            text += digits[byte >> 4];
+            text += digits[byte & 15];
+        }
+    }
+    return text + "\"";
+}
+
+// Accepts one leading '+', as C's strtod and Python's float() do.
+std::string_view without_plus(std::string_view token) {
+    return token.size() > 1 && token[0] == '+' && token[1] != '-' && token[1] != '+' ? token.substr(1) : token;
+}
+
 // Splits the input into lines of whitespace-separated tokens, refusing a line
 // longer than max_line_length instead of buffering it.
 class TokenLines {
@@ -59,14 +83,22 @@ private:
         for (int c; (c = source.sbumpc()) != std::char_traits<char>::eof();) {
             any = true;
             if (c == '\n') break;
-            if (line_.size() >= max_line_length) {
+            // The length excludes the line ending: one '\r' may follow a full line.
+            if (line_.size() >= max_line_length && !(c == '\r' && line_.size() == max_line_length)) {
                 throw InputError(number_ + 1, "line is longer than " + std::to_string(max_line_length) + " characters");
             }
             line_.push_back(static_cast<char>(c));
         }
         if (!any) return false;
+        if (number_ == 0) skip_byte_order_mark();
         ++number_;
         return true;
+    }
+
+    // Editors on Windows start UTF-8 files with EF BB BF; it is not part of the scene.
+    void skip_byte_order_mark() {
+        constexpr std::string_view mark = "\xEF\xBB\xBF";
+        if (std::string_view(line_).starts_with(mark)) line_.erase(0, mark.size());
     }
 
     void split() {
@@ -115,31 +147,47 @@ private:
     long line_ = 0;
 };
 
-std::uint64_t parse_count(std::string_view token, std::string_view what, long line) {
+std::uint64_t parse_count(std::string_view text, std::string_view what, long line) {
+    const std::string_view token = without_plus(text);
     std::uint64_t value = 0;
     const bool digits_only =
         !token.empty() && std::all_of(token.begin(), token.end(), [](char c) { return c >= '0' && c <= '9'; });
     const auto [end, error] = std::from_chars(token.data(), token.data() + token.size(), value);
-    if (!digits_only)
-        throw InputError(line, Text(what) + ": expected a non-negative integer, found \"" + Text(token) + "\"");
+    if (!digits_only) throw InputError(line, Text(what) + ": expected a non-negative integer, found " + quoted(text));
     if (error != std::errc{} || end != token.data() + token.size()) {
         throw InputError(line, Text(what) + " = " + Text(token) + " is too large");
     }
     return value;
 }
 
-double parse_real(std::string_view token, std::string_view what, long line) {
+double parse_real(std::string_view text, std::string_view what, long line) {
+    const std::string_view token = without_plus(text);
     double value = 0.0;
     const auto [end, error] = std::from_chars(token.data(), token.data() + token.size(), value);
-    if (error != std::errc{} || end != token.data() + token.size() || !std::isfinite(value)) {
-        if (error == std::errc::result_out_of_range)
-            throw InputError(line, Text(what) + " = " + Text(token) + " is out of range");
-        throw InputError(line, Text(what) + ": expected a finite number, found \"" + Text(token) + "\"");
+    const bool whole_token = end == token.data() + token.size();
+    if (error == std::errc::result_out_of_range && whole_token) {
+        throw InputError(line, Text(what) + " = " + Text(token) +
+                                   " is beyond the range of a double (and of the accepted range, magnitudes "
+                                   "at most 1e60)");
     }
+    if (error != std::errc{} || !whole_token || !std::isfinite(value))
+        throw InputError(line, Text(what) + ": expected a finite number, found " + quoted(text));
     if (std::fabs(value) > max_magnitude) {
-        throw InputError(line, Text(what) + " = " + Text(token) + " exceeds the limit of 1e150 in magnitude");
+        throw InputError(line, Text(what) + " = " + Text(token) +
+                                   " is beyond the accepted range (magnitudes at most 1e60; docs/accepted-range.md)");
     }
     return value + 0.0;  // -0 is read as 0
+}
+
+// L and r: positive and inside the accepted range.
+double parse_length(std::string_view text, std::string_view what, long line) {
+    const double value = parse_real(text, what, line);
+    if (!(value > 0.0)) throw InputError(line, Text(what) + " = " + format_short(value) + " must be > 0");
+    if (value < min_length) {
+        throw InputError(line, Text(what) + " = " + format_short(value) +
+                                   " is below the accepted range (L and r at least 1e-60; docs/accepted-range.md)");
+    }
+    return value;
 }
 
 void read_header(HeaderTokens& header, Scene& scene, SceneLines& lines) {
@@ -155,15 +203,12 @@ void read_header(HeaderTokens& header, Scene& scene, SceneLines& lines) {
     scene.particle_count = static_cast<std::size_t>(count);
 
     const std::string_view box_text = header.take("L (box side)");
-    world.box_size = parse_real(box_text, "L", header.line());
+    world.box_size = parse_length(box_text, "L", header.line());
     lines.box_size = header.line();
-    if (!(world.box_size > 0.0))
-        throw InputError(header.line(), "L = " + format_short(world.box_size) + " must be > 0");
 
     const std::string_view radius_text = header.take("r (radius)");
-    world.radius = parse_real(radius_text, "r", header.line());
+    world.radius = parse_length(radius_text, "r", header.line());
     lines.radius = header.line();
-    if (!(world.radius > 0.0)) throw InputError(header.line(), "r = " + format_short(world.radius) + " must be > 0");
     if (!(2.0 * world.radius <= world.box_size)) {
         throw InputError(header.line(), "r = " + format_short(world.radius) +
                                             " is too large: 2r must be <= L = " + format_short(world.box_size));
@@ -183,40 +228,80 @@ void read_header(HeaderTokens& header, Scene& scene, SceneLines& lines) {
     } else if (mode == "perf") {
         scene.mode = OutputMode::perf;
     } else {
-        throw InputError(header.line(), "output mode: expected print or perf, found \"" + Text(mode) + "\"");
+        throw InputError(header.line(), "output mode: expected print or perf, found " + quoted(mode));
     }
 }
 
-void read_particle(const std::vector<std::string_view>& fields, long line, Scene& scene, std::vector<long>& seen_on) {
+// The particle lines in the order they were read. Memory grows with the lines
+// actually present, never with the header's N: only once all N are there is
+// anything of size N allocated (to put them in index order).
+struct ListedParticles {
+    std::vector<Particle> particles;
+    std::vector<std::uint32_t> indices;
+    std::vector<long> lines;
+};
+
+void read_particle(const std::vector<std::string_view>& fields, long line, const Scene& scene,
+                   ListedParticles& listed) {
     if (fields.size() != 5) {
         throw InputError(line,
                          "a particle line has 5 fields \"i x y vx vy\", this one has " + std::to_string(fields.size()));
     }
     const std::uint64_t index = parse_count(fields[0], "particle index", line);
     if (index >= scene.particle_count) {
-        throw InputError(line, "particle index " + Text(fields[0]) + " is outside [0, " +
+        throw InputError(line, "particle index " + std::to_string(index) + " is outside [0, " +
                                    std::to_string(scene.particle_count - 1) + "]");
     }
-    if (seen_on[index] != 0) {
-        throw InputError(line, "particle " + std::to_string(index) + " is listed twice (first on line " +
-                                   std::to_string(seen_on[index]) + ")");
-    }
-    seen_on[index] = line;
-
     const std::string label = "particle " + std::to_string(index) + ": ";
     const World& world = scene.world;
-    Particle& p = scene.particles[index];
     const char* names[] = {"x", "y", "vx", "vy"};
     double values[4];
     for (int k = 0; k < 4; ++k) values[k] = parse_real(fields[k + 1], label + names[k], line);
     for (int k = 0; k < 2; ++k) {
         if (values[k] < world.lower() || values[k] > world.upper()) {
-            throw InputError(line, label + names[k] + " = " + Text(fields[k + 1]) + " is outside [" +
+            throw InputError(line, label + names[k] + " = " + format_short(values[k]) + " is outside [" +
                                        format_short(world.lower()) + ", " + format_short(world.upper()) + "]");
         }
     }
+    Particle p;
     p.position = Vec2(values[0], values[1]);
     p.velocity = Vec2(values[2], values[3]);
+    listed.particles.push_back(p);
+    listed.indices.push_back(static_cast<std::uint32_t>(index));
+    listed.lines.push_back(line);
+}
+
+// All N lines are there: each index once, then index order.
+void put_in_index_order(ListedParticles& listed, Scene& scene, std::vector<long>* particle_lines) {
+    constexpr std::uint32_t unseen = 0xffffffffU;
+    std::vector<std::uint32_t> read_as(scene.particle_count, unseen);
+    for (std::uint32_t k = 0; k < listed.indices.size(); ++k) {
+        std::uint32_t& first = read_as[listed.indices[k]];
+        if (first != unseen) {
+            throw InputError(listed.lines[k], "particle " + std::to_string(listed.indices[k]) +
+                                                  " is listed twice (first on line " +
+                                                  std::to_string(listed.lines[first]) + ")");
+        }
+        first = k;
+    }
+    scene.particles.resize(scene.particle_count);
+    if (particle_lines != nullptr) particle_lines->resize(scene.particle_count);
+    for (std::size_t i = 0; i < scene.particle_count; ++i) {
+        scene.particles[i] = listed.particles[read_as[i]];
+        if (particle_lines != nullptr) (*particle_lines)[i] = listed.lines[read_as[i]];
+    }
+}
+
+// A random scene draws speeds up to max(L/(8r), L/4): refused when that
+// leaves the accepted range (a tiny r in a large box).
+void check_random_speeds(const Scene& scene, const SceneLines& lines) {
+    const double fastest = default_speed_range(scene.world).max;
+    if (fastest > max_magnitude) {
+        throw InputError(lines.radius, "a random scene with L = " + format_short(scene.world.box_size) +
+                                           " and r = " + format_short(scene.world.radius) +
+                                           " draws speeds up to L/(8r) = " + format_brief(fastest) +
+                                           ", beyond the accepted range (at most 1e60); list the particles instead");
+    }
 }
 
 }  // namespace
@@ -227,30 +312,29 @@ Scene read_scene(std::istream& input, SceneLines* header_lines) {
     HeaderTokens header(lines);
     SceneLines read_on;
     read_header(header, scene, read_on);
-    if (header_lines != nullptr) *header_lines = read_on;
 
-    std::vector<long> seen_on;  // line of each particle, 0 while unseen
-    std::size_t listed = 0;
+    ListedParticles listed;
     if (header.line_has_more())
         throw InputError(header.line(), "unexpected text after the output mode; particles go on lines of their own");
     while (lines.next()) {
-        if (listed == scene.particle_count) {
+        if (listed.particles.size() == scene.particle_count) {
             throw InputError(lines.number(),
                              scene.particle_count == 0
                                  ? "N = 0, but a particle line follows"
                                  : "more than N = " + std::to_string(scene.particle_count) + " particle lines");
         }
-        if (listed == 0) {
-            scene.particles.resize(scene.particle_count);
-            seen_on.assign(scene.particle_count, 0);
-        }
-        read_particle(lines.tokens(), lines.number(), scene, seen_on);
-        ++listed;
+        read_particle(lines.tokens(), lines.number(), scene, listed);
     }
-    if (listed != 0 && listed != scene.particle_count) {
+    if (!listed.particles.empty() && listed.particles.size() != scene.particle_count) {
         throw InputError(std::max(lines.number(), 1L), "expected N = " + std::to_string(scene.particle_count) +
-                                                           " particle lines or none, found " + std::to_string(listed));
+                                                           " particle lines or none, found " +
+                                                           std::to_string(listed.particles.size()));
     }
+    if (!listed.particles.empty()) {
+        put_in_index_order(listed, scene, header_lines != nullptr ? &read_on.particles : nullptr);
+    }
+    if (scene.is_random()) check_random_speeds(scene, read_on);
+    if (header_lines != nullptr) *header_lines = std::move(read_on);
     return scene;
 }
 

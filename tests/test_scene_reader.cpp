@@ -77,8 +77,8 @@ void bad_headers() {
     expect_error("10\n0\n", 2, "L = 0 must be > 0");
     expect_error("10\nnan\n", 2, "expected a finite number");
     expect_error("10\ninf\n", 2, "expected a finite number");
-    expect_error("10\n1e999\n", 2, "out of range");
-    expect_error("10\n1e200\n", 2, "exceeds the limit");
+    expect_error("10\n1e999\n", 2, "beyond the range of a double");
+    expect_error("10\n1e200\n", 2, "L = 1e200 is beyond the accepted range (magnitudes at most 1e60");
     expect_error("10\n20\n0\n", 3, "r = 0 must be > 0");
     expect_error("10\n20\n10.5\n", 3, "2r must be <= L = 20");
     expect_error("10\n20\n1\n-1\n", 4, "S: expected a non-negative integer");
@@ -105,9 +105,83 @@ void bad_particles() {
     expect_error(header + std::string(5000, '1') + "\n", 6, "longer than");
 }
 
+// Issue 12, item 2: the accepted range (docs/accepted-range.md).
+void accepted_range() {
+    CHECK(read("1 1e60 1e-60 1 perf\n0 5e59 5e59 1e60 -1e60\n").ok);
+    expect_error("1 1e60 1e-61 1 perf\n", 1, "r = 1e-61 is below the accepted range (L and r at least 1e-60");
+    expect_error("1 2e60 1 1 perf\n", 1, "L = 2e60 is beyond the accepted range");
+    expect_error("1 1e-310 1e-311 1 perf\n", 1, "L = 1e-310 is below the accepted range");
+    expect_error("1 20 1 1 perf\n0 5 5 1.5e60 0\n", 2, "particle 0: vx = 1.5e60 is beyond the accepted range");
+    // Item 1: a random scene whose speeds (up to L/(8r)) would leave the range
+    // is refused on the line of r, not run into infinities.
+    expect_error("3\n20000\n1e-300\n1\nprint\n", 3, "r = 1e-300 is below the accepted range");
+    expect_error("3\n20000\n1e-57\n1\nprint\n", 3, "draws speeds up to L/(8r) = 2.5e+60");
+    expect_error("3\n1e10\n1e-60\n1\nprint\n", 3, "beyond the accepted range (at most 1e60)");
+    // Listed particles may be that fast or slow; only the random draw is refused.
+    CHECK(read("1\n20000\n1e-55\n1\nprint\n0 5 5 1e59 1e-300\n").ok);
+    CHECK(read("3\n1\n1e-50\n1\nprint\n").ok);
+}
+
+// Issue 12, item 5: what every C and Python reader accepts, and messages a person can read.
+void friendly_input() {
+    const Outcome plus = read("+2 +20 +1 +5 print\n+0 +5 +5 +1e-1 -0\n1 15 12 +.5 0\n");
+    CHECK(plus.ok);
+    CHECK_EQ(plus.scene.particle_count, 2U);
+    CHECK_EQ(plus.scene.particles[1].velocity.x(), 0.5);
+    expect_error("++2 20 1 5 perf\n", 1, "found \"++2\"");
+    expect_error("+-2 20 1 5 perf\n", 1, "found \"+-2\"");
+    expect_error("1 20 1 5 perf\n0 5 5 +-1 0\n", 2, "vx: expected a finite number, found \"+-1\"");
+
+    const Outcome marked = read(
+        "\xEF\xBB\xBF"
+        "1 20 1 5 perf\n0 5 5 0 0\n");
+    CHECK(marked.ok);
+    // Only at the start of the file; elsewhere the bytes are shown escaped.
+    expect_error(
+        "1 20 1 5 perf\n\xEF\xBB\xBF"
+        "0 5 5 0 0\n",
+        2, "found \"\\xEF\\xBB\\xBF0\"");
+    expect_error(std::string("1 2\0"
+                             "0 1 5 perf\n",
+                             15),
+                 1, "L: expected a finite number, found \"2\\x000\"");
+    expect_error("1 20 1 5 p\x01rint\n", 1, "found \"p\\x01rint\"");
+
+    // A line's length does not count its line ending.
+    const std::string full_line = "0 5 5 0 0" + std::string(max_line_length - 9, ' ');
+    CHECK_EQ(full_line.size(), max_line_length);
+    CHECK(read("1 20 1 5 perf\n" + full_line + "\r\n").ok);
+    CHECK(read("1 20 1 5 perf\n" + full_line + "\n").ok);
+    expect_error("1 20 1 5 perf\n" + full_line + " \r\n", 2, "longer than 4096");
+    expect_error("1 20 1 5 perf\n" + full_line + "\r\r\n", 2, "longer than 4096");
+
+    // Numbers in messages are readable whatever their size.
+    expect_error("1 20 1 5 perf\n0 1e-300 5 0 0\n", 2, "x = 1e-300 is outside [1, 19]");
+}
+
+// Issue 12, item 3: memory follows the input, not the header's claim.
+void memory_follows_the_input() {
+    const Outcome o = read("90000000 20000 1 10 perf\n0 1 1 1 1\n");
+    CHECK(!o.ok);
+    CHECK(o.message.find("expected N = 90000000 particle lines or none, found 1") != std::string::npos);
+    // Lines are remembered for messages about the scene.
+    SceneLines lines;
+    std::istringstream in("2 20 1 5 perf\n\n1 15 12 0 0\n0 5 5 0 0\n");
+    const Scene scene = read_scene(in, &lines);
+    CHECK_EQ(scene.particles.size(), 2U);
+    CHECK_EQ(lines.particles.size(), 2U);
+    CHECK_EQ(lines.particles[0], 4L);
+    CHECK_EQ(lines.particles[1], 3L);
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
     return check::run(argc, argv, "test_scene_reader",
-                      {{"valid scenes", valid_scenes}, {"bad headers", bad_headers}, {"bad particles", bad_particles}});
+                      {{"valid scenes", valid_scenes},
+                       {"bad headers", bad_headers},
+                       {"bad particles", bad_particles},
+                       {"accepted range", accepted_range},
+                       {"friendly input", friendly_input},
+                       {"memory follows the input", memory_follows_the_input}});
 }

@@ -2,8 +2,9 @@
 // A scene as io.md defines its input: the world, the number of steps, the
 // output mode, and either the listed particles or, when none are listed, the
 // number of particles to draw. read_scene() checks all of it before anything
-// runs; memory stays bounded whatever the input (lines are capped in length,
-// N is checked against what this machine can hold before anything is allocated).
+// runs; memory stays bounded by the input's size whatever the header claims
+// (lines are capped in length; nothing of size N is allocated before N
+// particle lines have been read; N is checked against what this machine can hold).
 
 #include "particlesim/particle.hpp"
 #include "particlesim/world.hpp"
@@ -29,14 +30,16 @@ struct Scene {
     [[nodiscard]] bool is_random() const { return particles.empty() && particle_count > 0; }
 };
 
-// Where each header value was read (1-based lines), for messages about the
-// scene that come after reading it (a random scene that cannot be placed).
+// Where each value was read (1-based lines), for messages about the scene
+// that come after reading it (a random scene that cannot be placed, two
+// listed disks that overlap where the exact engine needs them apart).
 struct SceneLines {
     long particle_count = 0;
     long box_size = 0;
     long radius = 0;
     long steps = 0;
     long mode = 0;
+    std::vector<long> particles;  // the line of each listed particle, in index order
 };
 
 // What is wrong, and on which line (1-based) of the input.
@@ -49,9 +52,6 @@ private:
     long line_;
 };
 
-// Coordinates, sizes and velocities are limited to this magnitude so that
-// every square the physics forms stays finite.
-inline constexpr double max_magnitude = 1e150;
 inline constexpr std::size_t max_line_length = 4096;
 
 // Throws InputError naming the first problem found. `lines`, when given,

@@ -5,6 +5,15 @@
 
 namespace particlesim {
 
+// The accepted range: L and r in [min_length, max_magnitude], every position
+// and velocity component at most max_magnitude in magnitude. Inside it no
+// formula of either engine overflows or underflows harmfully, so a scene and
+// the same scene scaled by 2^k give the same collisions and exactly the
+// scaled states (docs/accepted-range.md works it out). Readers refuse, and
+// engines throw std::invalid_argument for, anything outside it.
+inline constexpr double min_length = 1e-60;
+inline constexpr double max_magnitude = 1e60;
+
 struct World {
     double box_size = 0.0;  // L
     double radius = 0.0;    // r

@@ -1,0 +1,65 @@
+#pragma once
+// Unevaluated sums hi + lo of two doubles (about 106 bits), built only on
+// IEEE operations that every conforming machine rounds identically: +, -, *,
+// / and std::fma (correctly rounded by definition). So a result computed with
+// them is the same double on x86-64, aarch64 and everywhere else, which
+// `long double` (80, 128 or 64 bits depending on the platform) is not.
+// Needs -ffp-contract=off, which the library is built with.
+
+#include <cmath>
+
+namespace particlesim {
+
+struct DoubleDouble {
+    double hi = 0.0;
+    double lo = 0.0;
+};
+
+// a + b exactly (Knuth's TwoSum).
+inline DoubleDouble two_sum(double a, double b) {
+    const double sum = a + b;
+    const double b_part = sum - a;
+    const double a_part = sum - b_part;
+    return {sum, (a - a_part) + (b - b_part)};
+}
+
+// a * b exactly (barring underflow): the fma yields the product's rounding error.
+inline DoubleDouble two_product(double a, double b) {
+    const double product = a * b;
+    return {product, std::fma(a, b, -product)};
+}
+
+inline DoubleDouble renormalized(double hi, double lo) {
+    const double sum = hi + lo;
+    return {sum, lo - (sum - hi)};
+}
+
+inline DoubleDouble operator+(const DoubleDouble& a, const DoubleDouble& b) {
+    const DoubleDouble high = two_sum(a.hi, b.hi);
+    const DoubleDouble low = two_sum(a.lo, b.lo);
+    const DoubleDouble partial = renormalized(high.hi, high.lo + low.hi);
+    return renormalized(partial.hi, partial.lo + low.lo);
+}
+
+inline DoubleDouble operator-(const DoubleDouble& a) { return {-a.hi, -a.lo}; }
+
+inline DoubleDouble operator*(const DoubleDouble& a, const DoubleDouble& b) {
+    const DoubleDouble high = two_product(a.hi, b.hi);
+    return renormalized(high.hi, high.lo + (a.hi * b.lo + a.lo * b.hi));
+}
+
+inline DoubleDouble operator/(const DoubleDouble& a, const DoubleDouble& b) {
+    // One Newton correction of the double quotient: q + (a - q b) / b.
+    const double quotient = a.hi / b.hi;
+    const DoubleDouble remainder = a + -(DoubleDouble{quotient, 0.0} * b);
+    const double correction = (remainder.hi + remainder.lo) / b.hi;
+    return renormalized(quotient, correction);
+}
+
+// The double nearest to a + b (up to the last of ~106 bits).
+inline double rounded_sum(double a, const DoubleDouble& b) {
+    const DoubleDouble high = two_sum(a, b.hi);
+    return high.hi + (high.lo + b.lo);
+}
+
+}  // namespace particlesim
