@@ -3,8 +3,10 @@
 #include "box.hpp"
 #include "cell_list.hpp"
 #include "event_calendar.hpp"
+#include "number_format.hpp"
 #include "options_check.hpp"
 #include "physics.hpp"
+#include "saved_state.hpp"
 #include "scene_checks.hpp"
 #include "uniform_grid.hpp"
 
@@ -21,7 +23,22 @@ OverlappingStart::OverlappingStart(std::uint32_t first, std::uint32_t second)
       first_(first),
       second_(second) {}
 
+TooManyEvents::TooManyEvents(std::int64_t step, std::uint64_t events, double predicted)
+    : std::runtime_error("step " + std::to_string(step) + ": the exact engine has processed " + std::to_string(events) +
+                         " events in this step, against about " + format_brief(predicted) +
+                         " predicted from the speeds and density; stopped rather than run on for hours (disks "
+                         "trapped in a gap far narrower than their radius bounce without end)"),
+      step_(step),
+      events_(events),
+      predicted_(predicted) {}
+
 namespace {
+
+// A step may take this many events beyond the prediction before it counts
+// as runaway: generous (dense clusters collide far more often than an ideal
+// gas), yet reached within about a second.
+constexpr double runaway_floor = 1e6;
+constexpr double runaway_factor = 100.0;
 
 // Cells at least a diameter wide, so that a contact is always between
 // neighbouring cells. Wider cells mean fewer crossing events but more pair
@@ -52,6 +69,31 @@ UniformGrid neighbour_grid(const World& world, std::size_t particle_count, std::
 // collision partner is always a neighbour (cells are wider than a diameter).
 class ExactSimulation::Engine {
 public:
+    struct Crossing {
+        double time = never;
+        std::uint32_t cell = 0;  // the cell entered
+    };
+    struct PairPrediction {
+        Event event{never, EventKind::pair, 0, 0};
+        std::uint32_t partner = 0;
+        std::uint32_t partner_version = 0;  // the partner's version when predicted
+    };
+
+    // One particle of a saved run: everything save() writes for it.
+    struct SavedParticle {
+        Particle particle;
+        double stamp = 0.0;
+        std::uint32_t cell = 0;
+        double wall_time = never;
+        Crossing crossing;
+        PairPrediction pair;
+    };
+    struct SavedRun {
+        std::int64_t steps_done = 0;
+        StepCounts totals;
+        std::vector<SavedParticle> particles;  // grows with the input, whatever its header says
+    };
+
     Engine(const World& world, std::vector<Particle> particles, const ExactOptions& options)
         : world_(world),
           box_(Box::of(world)),
@@ -64,7 +106,9 @@ public:
           last_event_step_(particles_.size(), -1),
           last_repeat_step_(particles_.size(), -1),
           snapshot_(particles_),
-          queue_(count(), Event{never, EventKind::cell_crossing, 0, 0}) {
+          queue_(count(), Event{never, EventKind::cell_crossing, 0, 0}),
+          predicted_events_(estimated_events_per_step(world, particles_)),
+          event_budget_(runaway_floor + runaway_factor * (predicted_events_ + static_cast<double>(count()))) {
         for (std::uint32_t i = 0; i < count(); ++i) {
             cells_.insert(i, cells_.grid().cell_of(particles_[i].position));
         }
@@ -78,11 +122,124 @@ public:
         }
     }
 
+    // Continues from the state save() wrote (read by read_saved()); the queue
+    // is rebuilt from the predictions.
+    Engine(const World& world, const SavedRun& saved, const ExactOptions& options)
+        : world_(world),
+          box_(Box::of(world)),
+          particles_(saved.particles.size()),
+          cells_(neighbour_grid(world, saved.particles.size(), options.cells_per_side), saved.particles.size()),
+          stamp_(particles_.size(), 0.0),
+          wall_time_(particles_.size(), never),
+          crossing_(particles_.size()),
+          pair_(particles_.size()),
+          last_event_step_(particles_.size(), -1),
+          last_repeat_step_(particles_.size(), -1),
+          snapshot_(particles_.size()),
+          queue_(count(), Event{never, EventKind::cell_crossing, 0, 0}),
+          now_(static_cast<double>(saved.steps_done)),
+          steps_done_(saved.steps_done),
+          totals_(saved.totals),
+          predicted_events_(0.0),
+          event_budget_(0.0) {
+        const std::uint64_t cells = cells_.grid().cell_count();
+        const auto fail = [](const std::string& why) {
+            throw std::invalid_argument("particlesim::ExactSimulation::restore: the saved state is damaged (" + why +
+                                        ")");
+        };
+        for (std::uint32_t i = 0; i < count(); ++i) {
+            const SavedParticle& in = saved.particles[i];
+            const Particle& p = in.particle;
+            if (!(p.position.x() >= box_.lower && p.position.x() <= box_.upper && p.position.y() >= box_.lower &&
+                  p.position.y() <= box_.upper))
+                fail("a centre outside [r, L - r]");
+            if (!(std::isfinite(p.velocity.x()) && std::isfinite(p.velocity.y()))) fail("a velocity is not finite");
+            if (!(in.stamp >= 0.0 && in.stamp <= now_)) fail("a time stamp outside the run");
+            if (in.cell >= cells || in.crossing.cell >= cells) fail("a cell outside the grid");
+            if (in.pair.event.i >= count() || in.pair.event.j >= count() || in.pair.partner >= count())
+                fail("a particle index outside the scene");
+            particles_[i] = p;
+            stamp_[i] = in.stamp;
+            cells_.insert(i, in.cell);
+            wall_time_[i] = in.wall_time;
+            crossing_[i] = in.crossing;
+            pair_[i] = in.pair;
+        }
+        predicted_events_ = estimated_events_per_step(world, particles_);
+        event_budget_ = runaway_floor + runaway_factor * (predicted_events_ + static_cast<double>(count()));
+        for (std::uint32_t i = 0; i < count(); ++i) reschedule(i);
+        take_snapshot();
+    }
+
+    static SavedRun read_saved(SavedStateReader& in) {
+        SavedRun run;
+        const std::uint64_t count = in.count(0xfffffffeU);
+        const double now = in.real();
+        run.steps_done = static_cast<std::int64_t>(in.count(max_exact_steps));
+        if (now != static_cast<double>(run.steps_done)) in.fail("time and step disagree");
+        run.totals.particle_collisions = in.count(UINT64_MAX);
+        run.totals.wall_collisions = in.count(UINT64_MAX);
+        run.totals.pair_tests = in.count(UINT64_MAX);
+        for (std::uint64_t i = 0; i < count; ++i) {
+            SavedParticle p;
+            const double x = in.real(), y = in.real(), vx = in.real(), vy = in.real();
+            p.particle.position = Vec2(x, y);
+            p.particle.velocity = Vec2(vx, vy);
+            p.particle.particle_collisions = in.count(UINT64_MAX);
+            p.particle.wall_collisions = in.count(UINT64_MAX);
+            p.stamp = in.real();
+            p.cell = static_cast<std::uint32_t>(in.count(UINT32_MAX));
+            p.wall_time = in.real();
+            p.crossing.time = in.real();
+            p.crossing.cell = static_cast<std::uint32_t>(in.count(UINT32_MAX));
+            p.pair.event.time = in.real();
+            p.pair.event.i = static_cast<std::uint32_t>(in.count(UINT32_MAX));
+            p.pair.event.j = static_cast<std::uint32_t>(in.count(UINT32_MAX));
+            p.pair.partner = static_cast<std::uint32_t>(in.count(UINT32_MAX));
+            p.pair.partner_version = static_cast<std::uint32_t>(in.count(UINT32_MAX));
+            run.particles.push_back(p);
+        }
+        return run;
+    }
+
+    void save(std::ostream& out) const {
+        save_number(out, std::uint64_t{count()});
+        save_number(out, now_);
+        save_number(out, static_cast<std::uint64_t>(steps_done_));
+        save_number(out, totals_.particle_collisions);
+        save_number(out, totals_.wall_collisions);
+        save_number(out, totals_.pair_tests);
+        out << '\n';
+        for (std::uint32_t i = 0; i < count(); ++i) {
+            const Particle& p = particles_[i];
+            for (const double value : {p.position.x(), p.position.y(), p.velocity.x(), p.velocity.y()}) {
+                save_number(out, value);
+            }
+            save_number(out, p.particle_collisions);
+            save_number(out, p.wall_collisions);
+            save_number(out, stamp_[i]);
+            save_number(out, std::uint64_t{cells_.cell_of_particle(i)});
+            save_number(out, wall_time_[i]);
+            save_number(out, crossing_[i].time);
+            save_number(out, std::uint64_t{crossing_[i].cell});
+            save_number(out, pair_[i].event.time);
+            save_number(out, std::uint64_t{pair_[i].event.i});
+            save_number(out, std::uint64_t{pair_[i].event.j});
+            save_number(out, std::uint64_t{pair_[i].partner});
+            save_number(out, std::uint64_t{pair_[i].partner_version});
+            out << '\n';
+        }
+    }
+
     void step() {
+        if (steps_done_ >= max_exact_steps) throw std::overflow_error("the exact engine's clock ends at 2^53 steps");
         const double end = static_cast<double>(steps_done_ + 1);
         last_step_ = {};
         several_events_ = 0;
+        std::uint64_t events = 0;
         while (!queue_.empty() && queue_.earliest().time <= end) {
+            if (static_cast<double>(++events) > event_budget_)
+                throw TooManyEvents(steps_done_ + 1, events - 1, predicted_events_);
             const std::uint32_t owner = queue_.earliest_owner();
             const Event event = queue_.earliest();
             if (event.kind == EventKind::pair && pair_partner_moved(owner)) {
@@ -111,16 +268,6 @@ public:
     std::uint64_t several_events() const { return several_events_; }
 
 private:
-    struct Crossing {
-        double time = never;
-        std::uint32_t cell = 0;  // the cell entered
-    };
-    struct PairPrediction {
-        Event event{never, EventKind::pair, 0, 0};
-        std::uint32_t partner = 0;
-        std::uint32_t partner_version = 0;  // the partner's version when predicted
-    };
-
     std::uint32_t count() const { return static_cast<std::uint32_t>(particles_.size()); }
 
     // Changes exactly when the velocity does: at each of the particle's collisions.
@@ -318,6 +465,8 @@ private:
     StepCounts last_step_;
     StepCounts totals_;
     std::uint64_t several_events_ = 0;
+    double predicted_events_;  // per step
+    double event_budget_;      // per step
 };
 
 namespace {
@@ -335,6 +484,25 @@ std::vector<Particle> checked(const World& world, std::vector<Particle> particle
 
 ExactSimulation::ExactSimulation(const World& world, std::vector<Particle> particles, const ExactOptions& options)
     : engine_(std::make_unique<Engine>(world, checked(world, std::move(particles), options), options)) {}
+
+ExactSimulation::ExactSimulation(std::unique_ptr<Engine> engine) : engine_(std::move(engine)) {}
+
+ExactSimulation ExactSimulation::restore(const World& world, std::istream& saved, const ExactOptions& options) {
+    require_valid_scene("particlesim::ExactSimulation::restore", world, {});
+    if (options.cells_per_side) {
+        OptionsCheck("particlesim::ExactOptions")
+            .in_range("cells_per_side", *options.cells_per_side, 1, max_grid_cells);
+    }
+    SavedStateReader reader(saved, "particlesim::ExactSimulation::restore");
+    reader.expect("exact-engine-state");
+    reader.expect("1");
+    return ExactSimulation(std::make_unique<Engine>(world, Engine::read_saved(reader), options));
+}
+
+void ExactSimulation::save(std::ostream& out) const {
+    out << "exact-engine-state 1\n";
+    engine_->save(out);
+}
 
 ExactSimulation::~ExactSimulation() = default;
 ExactSimulation::ExactSimulation(ExactSimulation&&) noexcept = default;

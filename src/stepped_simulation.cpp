@@ -6,6 +6,7 @@
 #include "grid_search.hpp"
 #include "options_check.hpp"
 #include "pair_search.hpp"
+#include "saved_state.hpp"
 #include "scene_checks.hpp"
 #include "step_pipeline.hpp"
 #include "storage_order.hpp"
@@ -65,6 +66,12 @@ public:
         for (ThreadCandidates& thread : thread_candidates_) {
             thread.found.reserve(count / static_cast<std::size_t>(threads_) + 64);
         }
+    }
+
+    // A saved run's step count and totals (its particles came to the constructor).
+    void continue_from(std::int64_t steps_done, const StepCounts& totals) {
+        steps_done_ = steps_done;
+        totals_ = totals;
     }
 
     void step() {
@@ -142,6 +149,51 @@ private:
 
 SteppedSimulation::SteppedSimulation(const World& world, std::vector<Particle> particles, const SteppedOptions& options)
     : engine_(std::make_unique<Engine>(world, std::move(particles), options)) {}
+
+SteppedSimulation SteppedSimulation::restore(const World& world, std::istream& saved, const SteppedOptions& options) {
+    SavedStateReader in(saved, "particlesim::SteppedSimulation::restore");
+    in.expect("stepped-engine-state");
+    in.expect("1");
+    const std::uint64_t count = in.count(0xfffffffeU);
+    const auto steps_done = static_cast<std::int64_t>(in.count(INT64_MAX));
+    StepCounts totals;
+    totals.particle_collisions = in.count(UINT64_MAX);
+    totals.wall_collisions = in.count(UINT64_MAX);
+    totals.pair_tests = in.count(UINT64_MAX);
+    std::vector<Particle> particles;  // grows with the input, whatever its header says
+    for (std::uint64_t i = 0; i < count; ++i) {
+        Particle p;
+        const double x = in.real(), y = in.real(), vx = in.real(), vy = in.real();
+        p.position = Vec2(x, y);
+        p.velocity = Vec2(vx, vy);
+        p.particle_collisions = in.count(UINT64_MAX);
+        p.wall_collisions = in.count(UINT64_MAX);
+        particles.push_back(p);
+    }
+    SteppedSimulation simulation(world, std::move(particles), options);
+    simulation.engine_->continue_from(steps_done, totals);
+    return simulation;
+}
+
+void SteppedSimulation::save(std::ostream& out) const {
+    const std::span<const Particle> particles = this->particles();
+    out << "stepped-engine-state 1\n";
+    save_number(out, std::uint64_t{particles.size()});
+    save_number(out, static_cast<std::uint64_t>(steps_done()));
+    save_number(out, totals().particle_collisions);
+    save_number(out, totals().wall_collisions);
+    save_number(out, totals().pair_tests);
+    out << '\n';
+    for (const Particle& p : particles) {
+        for (const double value : {p.position.x(), p.position.y(), p.velocity.x(), p.velocity.y()}) {
+            save_number(out, value);
+        }
+        save_number(out, p.particle_collisions);
+        save_number(out, p.wall_collisions);
+        out << '\n';
+    }
+}
+
 SteppedSimulation::~SteppedSimulation() = default;
 SteppedSimulation::SteppedSimulation(SteppedSimulation&&) noexcept = default;
 SteppedSimulation& SteppedSimulation::operator=(SteppedSimulation&&) noexcept = default;

@@ -10,8 +10,10 @@
 #include "particlesim/world.hpp"
 
 #include <cstdint>
+#include <istream>
 #include <memory>
 #include <optional>
+#include <ostream>
 #include <span>
 #include <stdexcept>
 #include <vector>
@@ -31,6 +33,26 @@ private:
     std::uint32_t second_;
 };
 
+// A step needed far more events than the scene's speeds and density predict:
+// typically disks trapped in a gap so narrow that they bounce millions of
+// times a step. Thrown by step() instead of running on for hours; the
+// simulation cannot continue after it.
+class TooManyEvents : public std::runtime_error {
+public:
+    TooManyEvents(std::int64_t step, std::uint64_t events, double predicted);
+    [[nodiscard]] std::int64_t step() const { return step_; }  // 1-based: the step that was running
+    [[nodiscard]] std::uint64_t events() const { return events_; }
+    [[nodiscard]] double predicted() const { return predicted_; }
+
+private:
+    std::int64_t step_;
+    std::uint64_t events_;
+    double predicted_;
+};
+
+// Whole steps the exact engine can count: its clock is a double.
+inline constexpr std::int64_t max_exact_steps = std::int64_t{1} << 53;
+
 struct ExactOptions {
     // Cells per side of the neighbour search, >= 1 (1 tests every pair).
     // Empty: sized from the scene. Every value gives the same events.
@@ -47,7 +69,16 @@ public:
     ExactSimulation(ExactSimulation&&) noexcept;
     ExactSimulation& operator=(ExactSimulation&&) noexcept;
 
-    // Processes every event up to and including the next whole step.
+    // Continues a run saved by save() bit for bit; throws std::invalid_argument
+    // for a saved state that does not fit `world` or is damaged.
+    static ExactSimulation restore(const World& world, std::istream& saved, const ExactOptions& options = {});
+    // Writes the whole state at the last whole step (every particle at its
+    // own time stamp, every prediction) as text, exactly.
+    void save(std::ostream& out) const;
+
+    // Processes every event up to and including the next whole step. Throws
+    // TooManyEvents when the step needs more than 1e6 + 100 x (predicted
+    // events + N) events, and std::overflow_error past max_exact_steps.
     void step();
 
     // The state at the last whole step; positions clamped into [r, L - r].
@@ -62,6 +93,7 @@ public:
 
 private:
     class Engine;
+    explicit ExactSimulation(std::unique_ptr<Engine> engine);
     std::unique_ptr<Engine> engine_;
 };
 

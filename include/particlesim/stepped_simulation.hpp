@@ -8,8 +8,10 @@
 #include "particlesim/world.hpp"
 
 #include <cstdint>
+#include <istream>
 #include <memory>
 #include <optional>
+#include <ostream>
 #include <span>
 #include <vector>
 
@@ -47,6 +49,14 @@ public:
     ~SteppedSimulation();
     SteppedSimulation(SteppedSimulation&&) noexcept;
     SteppedSimulation& operator=(SteppedSimulation&&) noexcept;
+
+    // Continues a run saved by save() bit for bit (with the same substeps;
+    // searches and threads may differ: they never change a result). Throws
+    // std::invalid_argument for a saved state that does not fit `world` or is damaged.
+    static SteppedSimulation restore(const World& world, std::istream& saved, const SteppedOptions& options = {});
+    // Writes the state after the last whole step (particles, steps done,
+    // totals) as text, exactly: the step rules need nothing else to go on.
+    void save(std::ostream& out) const;
 
     // One whole step: `substeps` micro-steps under the step rules.
     void step();

@@ -1,0 +1,73 @@
+#pragma once
+// The text both engines save their state in (a checkpoint), and read back:
+// whitespace-separated tokens, every double in the shortest form that reads
+// back to the same bits ("inf" for never), so a saved state is exact and the
+// same on every platform. Reading checks every token: a damaged or hostile
+// file is refused with std::invalid_argument, never trusted.
+
+#include <charconv>
+#include <cmath>
+#include <cstdint>
+#include <iomanip>
+#include <istream>
+#include <ostream>
+#include <stdexcept>
+#include <string>
+#include <string_view>
+
+namespace particlesim {
+
+inline void save_number(std::ostream& out, double value) {
+    char text[32];
+    out << std::string_view(text, static_cast<std::size_t>(std::to_chars(text, text + sizeof text, value).ptr - text))
+        << ' ';
+}
+
+inline void save_number(std::ostream& out, std::uint64_t value) {
+    char text[24];
+    out << std::string_view(text, static_cast<std::size_t>(std::to_chars(text, text + sizeof text, value).ptr - text))
+        << ' ';
+}
+
+class SavedStateReader {
+public:
+    SavedStateReader(std::istream& in, const char* what) : in_(in), what_(what) {}
+
+    void expect(std::string_view word) {
+        const std::string token = next();
+        if (token != word) fail("expected \"" + std::string(word) + "\"");
+    }
+
+    double real() {
+        const std::string token = next();
+        double value = 0.0;
+        const auto [end, error] = std::from_chars(token.data(), token.data() + token.size(), value);
+        if (error != std::errc{} || end != token.data() + token.size() || std::isnan(value)) fail("bad number");
+        return value;
+    }
+
+    std::uint64_t count(std::uint64_t max) {
+        const std::string token = next();
+        std::uint64_t value = 0;
+        const auto [end, error] = std::from_chars(token.data(), token.data() + token.size(), value);
+        if (error != std::errc{} || end != token.data() + token.size() || value > max) fail("bad count");
+        return value;
+    }
+
+    [[noreturn]] void fail(const std::string& why) const {
+        throw std::invalid_argument(std::string(what_) + ": the saved state is damaged (" + why + ")");
+    }
+
+private:
+    std::string next() {
+        std::string token;
+        if (!(in_ >> std::setw(65) >> token)) fail("it ends early");
+        if (token.size() > 64) fail("a token is too long");
+        return token;
+    }
+
+    std::istream& in_;
+    const char* what_;
+};
+
+}  // namespace particlesim
