@@ -40,6 +40,11 @@ namespace {
 constexpr double runaway_floor = 1e6;
 constexpr double runaway_factor = 100.0;
 
+double event_budget(const ExactOptions& options, double predicted, std::size_t count) {
+    if (options.max_events_per_step) return static_cast<double>(*options.max_events_per_step);
+    return runaway_floor + runaway_factor * (predicted + static_cast<double>(count));
+}
+
 // Cells at least a diameter wide, so that a contact is always between
 // neighbouring cells. Wider cells mean fewer crossing events but more pair
 // tests per event, so: about 4 particles per cell in a sparse box, and no
@@ -108,7 +113,7 @@ public:
           snapshot_(particles_),
           queue_(count(), Event{never, EventKind::cell_crossing, 0, 0}),
           predicted_events_(estimated_events_per_step(world, particles_)),
-          event_budget_(runaway_floor + runaway_factor * (predicted_events_ + static_cast<double>(count()))) {
+          event_budget_(event_budget(options, predicted_events_, count())) {
         for (std::uint32_t i = 0; i < count(); ++i) {
             cells_.insert(i, cells_.grid().cell_of(particles_[i].position));
         }
@@ -166,7 +171,7 @@ public:
             pair_[i] = in.pair;
         }
         predicted_events_ = estimated_events_per_step(world, particles_);
-        event_budget_ = runaway_floor + runaway_factor * (predicted_events_ + static_cast<double>(count()));
+        event_budget_ = event_budget(options, predicted_events_, count());
         for (std::uint32_t i = 0; i < count(); ++i) reschedule(i);
         take_snapshot();
     }
@@ -471,11 +476,15 @@ private:
 
 namespace {
 
+void check_options(const ExactOptions& options) {
+    const OptionsCheck check("particlesim::ExactOptions");
+    if (options.cells_per_side) check.in_range("cells_per_side", *options.cells_per_side, 1, max_grid_cells);
+    if (options.max_events_per_step && *options.max_events_per_step == 0)
+        check.fail("max_events_per_step must be >= 1");
+}
+
 std::vector<Particle> checked(const World& world, std::vector<Particle> particles, const ExactOptions& options) {
-    if (options.cells_per_side) {
-        OptionsCheck("particlesim::ExactOptions")
-            .in_range("cells_per_side", *options.cells_per_side, 1, max_grid_cells);
-    }
+    check_options(options);
     require_valid_scene("particlesim::ExactSimulation", world, particles);
     return particles;
 }
@@ -489,10 +498,7 @@ ExactSimulation::ExactSimulation(std::unique_ptr<Engine> engine) : engine_(std::
 
 ExactSimulation ExactSimulation::restore(const World& world, std::istream& saved, const ExactOptions& options) {
     require_valid_scene("particlesim::ExactSimulation::restore", world, {});
-    if (options.cells_per_side) {
-        OptionsCheck("particlesim::ExactOptions")
-            .in_range("cells_per_side", *options.cells_per_side, 1, max_grid_cells);
-    }
+    check_options(options);
     SavedStateReader reader(saved, "particlesim::ExactSimulation::restore");
     reader.expect("exact-engine-state");
     reader.expect("1");

@@ -58,6 +58,8 @@ char* write_fixed8(char* out, double value) {
     return drop_negative_zero(begin, end);
 }
 
+char* write_shortest(char* out, double value) { return std::to_chars(out, out + 32, value + 0.0).ptr; }
+
 std::string format_short(double value) {
     char text[32];
     const auto result = std::to_chars(text, text + sizeof text, value);

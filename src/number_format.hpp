@@ -14,6 +14,9 @@ inline constexpr std::size_t max_fixed8_length = 320;
 // -0.00000000 is written as 0.00000000 (io.md). Returns the end.
 char* write_fixed8(char* out, double value);
 
+// The shortest text that reads back as `value` (at most 24 characters); -0 as 0.
+char* write_shortest(char* out, double value);
+
 // The shortest text that reads back as `value` (for messages quoting an input).
 std::string format_short(double value);
 

@@ -17,7 +17,7 @@ constexpr std::size_t max_line_length = 4 * 21 + 4 * (max_fixed8_length + 1) + 1
 
 }  // namespace
 
-StateWriter::StateWriter(std::FILE* out) : out_(out), buffer_(buffer_size) {}
+StateWriter::StateWriter(std::FILE* out, NumberFormat format) : out_(out), format_(format), buffer_(buffer_size) {}
 
 void StateWriter::write_state(std::int64_t step, std::span<const Particle> particles) {
     write_block(step, particles, false);
@@ -41,7 +41,7 @@ void StateWriter::write_block(std::int64_t step, std::span<const Particle> parti
         const Particle& p = particles[i];
         for (const double value : {p.position.x(), p.position.y(), p.velocity.x(), p.velocity.y()}) {
             *out++ = ' ';
-            out = write_fixed8(out, value);
+            out = format_ == NumberFormat::fixed8 ? write_fixed8(out, value) : write_shortest(out, value);
         }
         if (with_counters) {
             *out++ = ' ';

@@ -207,6 +207,20 @@ void bad_input() {
                     "simcli: <stdin>:1: ", "more particles than this machine can hold");
     expect_rejected({}, "500\n20\n1\n1\nperf\n", "simcli: <stdin>:1: ", "cannot place 500 non-overlapping disks");
     expect_rejected({}, std::string(100000, '7'), "simcli: <stdin>:1: ", "longer than");
+    // Issue 12, finding 1: a random scene whose speeds would leave the accepted
+    // range is refused on the line of r, instead of printing NUL bytes.
+    expect_rejected({}, "3\n20000\n1e-300\n1\nprint\n", "simcli: <stdin>:3: ", "below the accepted range");
+    expect_rejected({}, "3\n1e10\n1e-55\n1\nprint\n", "simcli: <stdin>:3: ", "draws speeds up to L/(8r) = 1.25e+64");
+    // Finding 5: readable numbers, escaped bytes, no message cut at a NUL.
+    expect_rejected({}, "200\n1e-8\n1e-9\n1\nperf\n",
+                    "simcli: <stdin>:1: ", "radius 1e-09 in a box of side 1e-08 (area fraction 6.283");
+    expect_rejected({}, "1\n1e-50\n2e-51\n1\nperf\n0 1e-50 5e-51 0 0\n",
+                    "simcli: <stdin>:6: ", "x = 1e-50 is outside [2e-51, 8e-51]");
+    expect_rejected({},
+                    std::string("1 2\0"
+                                "0 1 1 perf\n",
+                                14),
+                    "simcli: <stdin>:1: ", "\"2\\x000\"");
     // Binary garbage is just bad input.
     expect_rejected({}, std::string("\x01\x02\xff\xfe\n", 5), "simcli: <stdin>:1: ", "expected a non-negative integer");
 }
@@ -219,15 +233,28 @@ void exact_engine() {
     CHECK(r.out == expected_output(scene, example_scenes::run_exact(scene)));
     CHECK(r.out.find("1 0 95.00000000 50.00000000 0.00000000 0.00000000\n") != std::string::npos);
     // Overlapping disks have no exact ground truth; touching ones do.
-    expect_rejected({"--engine", "exact"}, "2 20 1 1 perf\n0 5 5 0 0\n1 6 5 0 0\n",
-                    "simcli: <stdin>: particles 0 and 1 overlap", "no two disks overlap");
+    // Every refusal names its line: the first particle of an overlapping pair,
+    // the line of S for a run that would not end.
+    expect_rejected({"--engine", "exact"}, "2 20 1 1 perf\n1 6 5 0 0\n0 5 5 0 0\n",
+                    "simcli: <stdin>:3: particles 0 and 1 overlap", "no two disks overlap");
     CHECK_EQ(simcli_run({"--engine", "exact"}, "2 20 1 1 perf\n0 5 5 0 0\n1 7 5 0 0\n").status, 0);
     // A disk far faster than the box bounces ~1e9 times a step: refused, not hung.
-    expect_rejected({"--engine", "exact"}, "1 20 1 100 perf\n0 5 5 1e10 3\n",
-                    "simcli: <stdin>: the exact engine would need", "use fewer steps or the step engine");
+    expect_rejected({"--engine", "exact"}, "1 20 1\n100 perf\n0 5 5 1e10 3\n",
+                    "simcli: <stdin>:2: the exact engine would need", "use fewer steps or the step engine");
     // A moving disk that fills the box would bounce forever at one instant.
-    expect_rejected({"--engine", "exact"}, "1 2 1 1 perf\n0 1 1 1 0\n", "simcli: <stdin>: the exact engine would need",
-                    "inf");
+    expect_rejected({"--engine", "exact"}, "1 2 1 1 perf\n0 1 1 1 0\n",
+                    "simcli: <stdin>:1: the exact engine would need", "inf");
+    expect_rejected({"--engine", "exact"}, "1 20 1 9007199254740993 perf\n0 5 5 0 0\n",
+                    "simcli: <stdin>:1: S = 9007199254740993", "at most 2^53 steps");
+    // Issue 12, finding 3: two disks in a 1e-9 gap pass the start estimate
+    // (1.5 events a step) but bounce ~1e9 times a step: stopped within a
+    // second, exit 1, naming the step and the event count against the prediction.
+    const Result trapped =
+        simcli_run({"--engine", "exact"}, "2\n4.000000001\n1\n1\nprint\n0 1 2 1 0\n1 3.000000001 2 -1 0\n");
+    CHECK_EQ(trapped.status, 1);
+    CHECK(one_line(trapped.err));
+    CHECK(trapped.err.find("simcli: step 1: the exact engine has processed") == 0);
+    CHECK(trapped.err.find("predicted") != std::string::npos);
     CHECK_EQ(simcli_run({"--engine", "step"}, "1 2 1 3 perf\n0 1 1 1 0\n").status, 0);
 }
 

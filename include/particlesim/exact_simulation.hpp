@@ -57,6 +57,9 @@ struct ExactOptions {
     // Cells per side of the neighbour search, >= 1 (1 tests every pair).
     // Empty: sized from the scene. Every value gives the same events.
     std::optional<int> cells_per_side = std::nullopt;
+    // The most events a step may take before step() throws TooManyEvents, >= 1.
+    // Empty: 1e6 + 100 x (predicted events per step + N), reached within about a second.
+    std::optional<std::uint64_t> max_events_per_step = std::nullopt;
 };
 
 class ExactSimulation {
@@ -77,8 +80,8 @@ public:
     void save(std::ostream& out) const;
 
     // Processes every event up to and including the next whole step. Throws
-    // TooManyEvents when the step needs more than 1e6 + 100 x (predicted
-    // events + N) events, and std::overflow_error past max_exact_steps.
+    // TooManyEvents when the step needs more than max_events_per_step events,
+    // and std::overflow_error past max_exact_steps.
     void step();
 
     // The state at the last whole step; positions clamped into [r, L - r].

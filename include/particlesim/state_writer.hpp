@@ -18,9 +18,13 @@ public:
     using std::runtime_error::runtime_error;
 };
 
+// How numbers are written: io.md's %.8f, or (--exact-numbers) the shortest
+// text that reads back to the same double, for boxes far from the 8-decimal scale.
+enum class NumberFormat { fixed8, shortest };
+
 class StateWriter {
 public:
-    explicit StateWriter(std::FILE* out);  // not owned; not closed
+    explicit StateWriter(std::FILE* out, NumberFormat format = NumberFormat::fixed8);  // `out`: not owned; not closed
 
     // "s i x y vx vy" for every particle.
     void write_state(std::int64_t step, std::span<const Particle> particles);
@@ -34,6 +38,7 @@ private:
     void drain();
 
     std::FILE* out_;
+    NumberFormat format_;
     std::vector<char> buffer_;
     std::size_t used_ = 0;
 };

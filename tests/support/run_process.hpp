@@ -3,6 +3,7 @@
 // status, standard output and standard error (for tests of simcli).
 
 #include <fcntl.h>
+#include <signal.h>
 #include <spawn.h>
 #include <sys/wait.h>
 #include <unistd.h>
@@ -28,10 +29,16 @@ inline std::string slurp(const std::string& path) {
     return text.str();
 }
 
+// A signal sent to the child `after_ms` milliseconds after its start (none when 0).
+struct Signal {
+    int number = 0;
+    int after_ms = 0;
+};
+
 // `stdout_path` empty: captured; otherwise the child's stdout goes there
 // (e.g. /dev/full). `close_stdout_pipe`: stdout is a pipe nobody reads.
 inline Result run(const std::string& program, const std::vector<std::string>& args, const std::string& input = "",
-                  const std::string& stdout_path = "", bool close_stdout_pipe = false) {
+                  const std::string& stdout_path = "", bool close_stdout_pipe = false, Signal signal = {}) {
     char dir_template[] = "/tmp/particlesim-test-XXXXXX";
     const std::string dir = mkdtemp(dir_template);
     const std::string in_path = dir + "/in", out_path = dir + "/out", err_path = dir + "/err";
@@ -61,6 +68,10 @@ inline Result run(const std::string& program, const std::vector<std::string>& ar
         if (close_stdout_pipe) {
             close(pipe_fds[0]);  // nobody will read: the child's writes fail with EPIPE
             close(pipe_fds[1]);
+        }
+        if (signal.number != 0) {
+            usleep(static_cast<useconds_t>(signal.after_ms) * 1000);
+            kill(pid, signal.number);
         }
         int status = 0;
         waitpid(pid, &status, 0);

@@ -1,0 +1,208 @@
+#include "cli_options.hpp"
+
+#include "particlesim/engine.hpp"
+#include "particlesim/version.hpp"
+
+#include <getopt.h>
+
+#include <charconv>
+#include <cstdio>
+#include <string_view>
+
+namespace simcli {
+
+namespace {
+
+using particlesim::PairSearch;
+
+constexpr std::uint64_t max_substeps = 1u << 20;
+
+constexpr const char* usage_text =
+    R"(usage: simcli [OPTIONS] [SCENE]           SCENE: a scene file; '-' or absent: stdin
+       simcli --resume CHECKPOINT [OPTIONS]
+
+Simulates N hard disks bouncing elastically in a square box, in discrete steps.
+
+  -o, --output FILE                write the output to FILE instead of stdout (a regular
+                                   FILE is replaced only when the run succeeds)
+  -t, --threads N                  worker threads (default: OpenMP's default)
+      --seed N                     seed of a random scene (default 3210)
+      --broadphase auto|brute|grid pair search (default auto); all give identical output
+      --grid G                     the grid search with a G x G grid (1 <= G <= 4096;
+                                   4 = the 4 x 4 grid of L/4 cells); not with --broadphase brute
+      --substeps K                 K micro-steps per step (default 1)
+      --engine step|exact          exact = continuous-time event-driven engine
+                                   (one thread; needs a start without overlaps)
+      --exact-numbers              numbers in the shortest form that reads back to the
+                                   same double, instead of 8 decimals
+      --checkpoint FILE            write the run's exact state to FILE on SIGINT/SIGTERM
+                                   (then exit 130 / 143, keeping the output written so far)
+      --checkpoint-every K           and after every K steps
+      --resume FILE                continue a checkpointed run bit for bit; writes the
+                                   steps after the checkpoint (append them to the first part)
+      --progress / --quiet         force / silence the progress line on stderr (default:
+                                   on a terminal, for runs longer than about two seconds)
+      --stats                      a summary on stderr after the run: steps per
+                                   second, collisions, energy drift, pair tests
+  -h, --help                       this text, exit 0
+      --version                    the version, exit 0
+
+Exit status: 0 success, 1 failure while running (output not writable, a runaway
+exact step), 2 bad usage or bad input, 130 / 143 interrupted by SIGINT / SIGTERM.
+)";
+
+std::uint64_t parse_unsigned(std::string_view option, std::string_view text, std::uint64_t min, std::uint64_t max) {
+    std::uint64_t value = 0;
+    const auto [end, error] = std::from_chars(text.data(), text.data() + text.size(), value);
+    if (text.empty() || error != std::errc{} || end != text.data() + text.size() || value < min || value > max) {
+        throw BadInput(std::string(option) + ": expected an integer in [" + std::to_string(min) + ", " +
+                       std::to_string(max) + "], found \"" + std::string(text) + "\"");
+    }
+    return value;
+}
+
+enum LongOnly {
+    opt_seed = 256,
+    opt_broadphase,
+    opt_grid,
+    opt_substeps,
+    opt_engine,
+    opt_stats,
+    opt_version,
+    opt_exact_numbers,
+    opt_checkpoint,
+    opt_checkpoint_every,
+    opt_resume,
+    opt_progress,
+    opt_quiet,
+};
+
+// What was given, before the rules between options are checked.
+struct Given {
+    bool step_engine_options = false;  // --broadphase, --grid or --substeps
+    bool substeps = false;
+    bool engine = false;
+    bool seed = false;
+    bool progress = false;
+    bool quiet = false;
+    std::optional<PairSearch> pair_search;
+};
+
+void check_combinations(CliOptions& options, const Given& given) {
+    if (options.engine == EngineChoice::exact && given.step_engine_options) {
+        throw BadInput("--broadphase, --grid and --substeps belong to the step engine, not to --engine exact");
+    }
+    // --grid G is a grid search with a G x G grid; it contradicts only --broadphase brute.
+    if (options.stepped.grid_cells && given.pair_search == PairSearch::brute_force) {
+        throw BadInput("--grid G is the grid search, not with --broadphase brute");
+    }
+    options.stepped.pair_search =
+        options.stepped.grid_cells ? PairSearch::grid : given.pair_search.value_or(PairSearch::automatic);
+    if (given.progress && given.quiet) throw BadInput("--progress and --quiet contradict each other");
+    if (options.checkpoint_every && !options.checkpoint_path) {
+        throw BadInput("--checkpoint-every K needs --checkpoint FILE");
+    }
+    if (options.resume_path) {
+        if (options.scene_path != "-") throw BadInput("--resume continues a checkpoint; it takes no scene file");
+        if (given.engine || given.substeps || given.seed || options.numbers != particlesim::NumberFormat::fixed8) {
+            throw BadInput(
+                "--engine, --substeps, --seed and --exact-numbers come from the checkpoint; not with --resume");
+        }
+    }
+}
+
+}  // namespace
+
+std::optional<CliOptions> parse_arguments(int argc, char** argv) {
+    static const option long_options[] = {{"output", required_argument, nullptr, 'o'},
+                                          {"threads", required_argument, nullptr, 't'},
+                                          {"seed", required_argument, nullptr, opt_seed},
+                                          {"broadphase", required_argument, nullptr, opt_broadphase},
+                                          {"grid", required_argument, nullptr, opt_grid},
+                                          {"substeps", required_argument, nullptr, opt_substeps},
+                                          {"engine", required_argument, nullptr, opt_engine},
+                                          {"stats", no_argument, nullptr, opt_stats},
+                                          {"exact-numbers", no_argument, nullptr, opt_exact_numbers},
+                                          {"checkpoint", required_argument, nullptr, opt_checkpoint},
+                                          {"checkpoint-every", required_argument, nullptr, opt_checkpoint_every},
+                                          {"resume", required_argument, nullptr, opt_resume},
+                                          {"progress", no_argument, nullptr, opt_progress},
+                                          {"quiet", no_argument, nullptr, opt_quiet},
+                                          {"help", no_argument, nullptr, 'h'},
+                                          {"version", no_argument, nullptr, opt_version},
+                                          {nullptr, 0, nullptr, 0}};
+    CliOptions options;
+    Given given;
+    opterr = 0;  // our own one-line messages
+    for (int c; (c = getopt_long(argc, argv, ":o:t:h", long_options, nullptr)) != -1;) {
+        const std::string_view value = optarg != nullptr ? optarg : "";
+        switch (c) {
+        case 'o': options.output_path = std::string(value); break;
+        case 't': options.stepped.threads = static_cast<int>(parse_unsigned("--threads", value, 1, 1024)); break;
+        case opt_seed:
+            given.seed = true;
+            options.random.seed = parse_unsigned("--seed", value, 0, UINT64_MAX);
+            break;
+        case opt_broadphase:
+            given.step_engine_options = true;
+            if (value == "auto") {
+                given.pair_search = PairSearch::automatic;
+            } else if (value == "brute") {
+                given.pair_search = PairSearch::brute_force;
+            } else if (value == "grid") {
+                given.pair_search = PairSearch::grid;
+            } else {
+                throw BadInput("--broadphase: expected auto, brute or grid, found \"" + std::string(value) + "\"");
+            }
+            break;
+        case opt_grid:
+            given.step_engine_options = true;
+            options.stepped.grid_cells =
+                static_cast<int>(parse_unsigned("--grid", value, 1, particlesim::max_grid_cells));
+            break;
+        case opt_substeps:
+            given.step_engine_options = true;
+            given.substeps = true;
+            options.stepped.substeps = static_cast<int>(parse_unsigned("--substeps", value, 1, max_substeps));
+            break;
+        case opt_engine:
+            given.engine = true;
+            if (value == "step") {
+                options.engine = EngineChoice::step;
+            } else if (value == "exact") {
+                options.engine = EngineChoice::exact;
+            } else {
+                throw BadInput("--engine: expected step or exact, found \"" + std::string(value) + "\"");
+            }
+            break;
+        case opt_stats: options.stats = true; break;
+        case opt_exact_numbers: options.numbers = particlesim::NumberFormat::shortest; break;
+        case opt_checkpoint: options.checkpoint_path = std::string(value); break;
+        case opt_checkpoint_every:
+            options.checkpoint_every =
+                static_cast<std::int64_t>(parse_unsigned("--checkpoint-every", value, 1, INT64_MAX));
+            break;
+        case opt_resume: options.resume_path = std::string(value); break;
+        case opt_progress:
+            given.progress = true;
+            options.progress = ProgressChoice::forced;
+            break;
+        case opt_quiet:
+            given.quiet = true;
+            options.progress = ProgressChoice::silenced;
+            break;
+        case 'h': std::fputs(usage_text, stdout); return std::nullopt;
+        case opt_version: std::printf("simcli %s\n", particlesim::version); return std::nullopt;
+        case ':': throw BadInput(std::string("option ") + argv[optind - 1] + " needs a value (see simcli --help)");
+        default: throw BadInput(std::string("unknown option ") + argv[optind - 1] + " (see simcli --help)");
+        }
+    }
+    if (argc - optind > 1)
+        throw BadInput("expected at most one scene file, found " + std::to_string(argc - optind) +
+                       " (see simcli --help)");
+    if (argc - optind == 1) options.scene_path = argv[optind];
+    check_combinations(options, given);
+    return options;
+}
+
+}  // namespace simcli

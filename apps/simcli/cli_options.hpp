@@ -1,0 +1,42 @@
+#pragma once
+// simcli's command line (io.md "simcli"): parsed and checked in one place,
+// before anything is read or run.
+
+#include "checkpoint.hpp"
+#include "progress_line.hpp"
+
+#include "particlesim/random_scene.hpp"
+#include "particlesim/state_writer.hpp"
+#include "particlesim/stepped_simulation.hpp"
+
+#include <cstdint>
+#include <optional>
+#include <stdexcept>
+#include <string>
+
+namespace simcli {
+
+// Bad usage or bad input: one line on stderr, exit 2.
+class BadInput : public std::runtime_error {
+public:
+    using std::runtime_error::runtime_error;
+};
+
+struct CliOptions {
+    std::string scene_path = "-";
+    std::optional<std::string> output_path;
+    EngineChoice engine = EngineChoice::step;
+    bool stats = false;
+    particlesim::SteppedOptions stepped;  // searches and threads; substeps when not resuming
+    particlesim::RandomSceneOptions random;
+    particlesim::NumberFormat numbers = particlesim::NumberFormat::fixed8;
+    std::optional<std::string> checkpoint_path;
+    std::optional<std::int64_t> checkpoint_every;
+    std::optional<std::string> resume_path;
+    ProgressChoice progress = ProgressChoice::automatic;
+};
+
+// Nothing when --help or --version has been answered. Throws BadInput.
+std::optional<CliOptions> parse_arguments(int argc, char** argv);
+
+}  // namespace simcli

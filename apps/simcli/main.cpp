@@ -1,0 +1,237 @@
+// simcli: reads a scene (or a checkpoint), runs it, writes the states (io.md).
+// Thin by design: arguments -> scene -> engine -> output; the library does
+// the work. The pieces around the run live beside this file: the command
+// line, the output file, checkpoints, interrupts and the progress line.
+
+#include "checkpoint.hpp"
+#include "cli_options.hpp"
+#include "interrupts.hpp"
+#include "output_file.hpp"
+#include "progress_line.hpp"
+
+#include "particlesim/particlesim.hpp"
+
+#include <cerrno>
+#include <chrono>
+#include <csignal>
+#include <cstdio>
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+#include <iostream>
+#include <optional>
+#include <stdexcept>
+#include <string>
+
+namespace {
+
+using namespace particlesim;
+using namespace simcli;
+
+constexpr int exit_failure = 1;
+constexpr int exit_bad_input = 2;
+
+// Beyond this many estimated events the exact engine would run for hours (or
+// forever: a disk that fills the box, speeds far above the box per step).
+constexpr double exact_event_limit = 2e9;
+
+// A run stopped by SIGINT or SIGTERM, after a clean flush: exit 128 + signal.
+class Interrupted : public std::runtime_error {
+public:
+    Interrupted(int signal, const std::string& message) : std::runtime_error(message), signal_(signal) {}
+    [[nodiscard]] int signal() const { return signal_; }
+
+private:
+    int signal_;
+};
+
+struct RunStats {
+    double seconds = 0.0;
+    StepCounts totals;
+    double initial_energy = 0.0;
+    double final_energy = 0.0;
+};
+
+// Runs `engine` from its current step to settings.steps, writing the states.
+template <Engine E>
+RunStats write_run(E& engine, const RunSettings& settings, const CliOptions& options) {
+    RunStats stats;
+    stats.initial_energy = total_kinetic_energy(engine.particles());
+    const std::int64_t first_step = engine.steps_done();
+    OutputFile output(options.output_path);
+    StateWriter writer(output.stream(), settings.numbers);
+    // A resumed run goes on where the first part of its output ends.
+    if (first_step == 0) writer.write_state(0, engine.particles());
+    const bool print = settings.mode == OutputMode::print;
+    const auto start = std::chrono::steady_clock::now();
+    {
+        ProgressLine progress(options.progress, first_step, settings.steps);
+        catch_interrupts();
+        for (std::int64_t step = first_step; step < settings.steps;) {
+            engine.step();
+            ++step;
+            if (print && step < settings.steps) writer.write_state(step, engine.particles());
+            progress.update(step);
+            const int signal = pending_interrupt();
+            const bool due = options.checkpoint_every && step % *options.checkpoint_every == 0;
+            if (options.checkpoint_path && (signal != 0 || due)) {
+                writer.flush();  // the output holds every block up to `step`, the checkpoint goes on from there
+                write_checkpoint(*options.checkpoint_path, settings, [&](std::ostream& out) { engine.save(out); });
+            }
+            if (signal != 0) {
+                writer.flush();  // whole blocks only: what stdout shows ends at a step
+                std::string message =
+                    "interrupted after step " + std::to_string(step) + " of " + std::to_string(settings.steps);
+                if (options.checkpoint_path) {
+                    output.commit();  // the first part of the run; --resume writes the rest
+                    message += "; the output holds steps up to " + std::to_string(step) +
+                               "; continue with: simcli --resume " + *options.checkpoint_path;
+                } else {
+                    message += options.output_path ? "; " + *options.output_path + " left as it was" : "";
+                }
+                throw Interrupted(signal, message);
+            }
+        }
+    }
+    writer.write_final(settings.steps, engine.particles());
+    writer.flush();
+    output.commit();
+    stats.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    stats.totals = engine.totals();
+    stats.final_energy = total_kinetic_energy(engine.particles());
+    return stats;
+}
+
+void print_stats(const char* engine, const RunStats& stats, std::int64_t steps) {
+    const double per_step = steps > 0 ? 1.0 / static_cast<double>(steps) : 0.0;
+    std::fprintf(stderr, "stats: engine %s, %lld steps in %.6f s (%.6g steps/s)\n", engine,
+                 static_cast<long long>(steps), stats.seconds,
+                 stats.seconds > 0.0 ? static_cast<double>(steps) / stats.seconds : 0.0);
+    std::fprintf(stderr, "stats: %llu particle collisions, %llu wall collisions\n",
+                 static_cast<unsigned long long>(stats.totals.particle_collisions),
+                 static_cast<unsigned long long>(stats.totals.wall_collisions));
+    std::fprintf(stderr, "stats: relative energy drift %+.16e\n",
+                 relative_energy_drift(stats.initial_energy, stats.final_energy));
+    std::fprintf(stderr, "stats: %.6g candidate pairs tested per step\n",
+                 static_cast<double>(stats.totals.pair_tests) * per_step);
+}
+
+template <Engine E>
+void run_and_report(E& engine, const RunSettings& settings, const CliOptions& options) {
+    const RunStats stats = write_run(engine, settings, options);
+    if (options.stats) print_stats(settings.engine == EngineChoice::exact ? "exact" : "step", stats, settings.steps);
+}
+
+Scene read_input(const std::string& path, const std::string& name, SceneLines& lines) {
+    if (path == "-") return read_scene(std::cin, &lines);
+    std::error_code error;
+    if (std::filesystem::is_directory(path, error)) throw BadInput(name + ": is a directory");
+    std::ifstream file(path, std::ios::binary);
+    if (!file) throw BadInput(name + ": cannot open: " + std::strerror(errno));
+    return read_scene(file, &lines);
+}
+
+std::string at_line(const std::string& name, long line) { return name + ":" + std::to_string(line) + ": "; }
+
+ExactSimulation make_exact_engine(const Scene& scene, std::vector<Particle> particles, const std::string& name,
+                                  const SceneLines& lines) {
+    if (scene.steps > max_exact_steps) {
+        throw BadInput(at_line(name, lines.steps) + "S = " + std::to_string(scene.steps) +
+                       " is beyond the exact engine's clock (at most 2^53 steps)");
+    }
+    const double events = estimated_events_per_step(scene.world, particles) * static_cast<double>(scene.steps);
+    if (!(events <= exact_event_limit)) {
+        char message[200];
+        std::snprintf(message, sizeof message,
+                      "the exact engine would need about %.3g events for this scene (limit %.3g); "
+                      "use fewer steps or the step engine",
+                      events, exact_event_limit);
+        throw BadInput(at_line(name, lines.steps) + message);
+    }
+    try {
+        return ExactSimulation(scene.world, std::move(particles));
+    } catch (const OverlappingStart& e) {
+        const long line = lines.particles.empty() ? lines.particle_count : lines.particles[e.first()];
+        throw BadInput(at_line(name, line) + e.what());
+    }
+}
+
+void run_scene(const CliOptions& options) {
+    const std::string name = options.scene_path == "-" ? "<stdin>" : options.scene_path;
+    Scene scene;
+    SceneLines lines;
+    std::vector<Particle> particles;
+    try {
+        scene = read_input(options.scene_path, name, lines);
+        particles = scene.is_random() ? make_random_particles(scene.particle_count, scene.world, options.random)
+                                      : std::move(scene.particles);
+    } catch (const InputError& e) {
+        throw BadInput(at_line(name, e.line()) + e.what());
+    } catch (const SceneTooFull& e) {
+        throw BadInput(at_line(name, lines.particle_count) + e.what());
+    }
+    const RunSettings settings{scene.world,    scene.steps, scene.mode, options.engine, options.stepped.substeps,
+                               options.numbers};
+    if (options.engine == EngineChoice::exact) {
+        ExactSimulation engine = make_exact_engine(scene, std::move(particles), name, lines);
+        lines = {};  // the particles' lines were kept for the messages above only
+        run_and_report(engine, settings, options);
+    } else {
+        lines = {};
+        SteppedSimulation engine(scene.world, std::move(particles), options.stepped);
+        run_and_report(engine, settings, options);
+    }
+}
+
+void resume_run(const CliOptions& options) {
+    const std::string& path = *options.resume_path;
+    Checkpoint checkpoint;
+    try {
+        checkpoint = read_checkpoint(path);
+    } catch (const std::invalid_argument& e) {
+        throw BadInput(e.what());
+    }
+    const RunSettings& settings = checkpoint.settings;
+    try {
+        if (settings.engine == EngineChoice::exact) {
+            ExactSimulation engine = ExactSimulation::restore(settings.world, *checkpoint.engine_state);
+            run_and_report(engine, settings, options);
+        } else {
+            SteppedOptions stepped = options.stepped;
+            stepped.substeps = settings.substeps;
+            SteppedSimulation engine = SteppedSimulation::restore(settings.world, *checkpoint.engine_state, stepped);
+            run_and_report(engine, settings, options);
+        }
+    } catch (const std::invalid_argument& e) {
+        throw BadInput(path + ": " + e.what());
+    }
+}
+
+int run_cli(int argc, char** argv) {
+    const std::optional<CliOptions> options = parse_arguments(argc, argv);
+    if (!options) return 0;
+    if (options->resume_path) {
+        resume_run(*options);
+    } else {
+        run_scene(*options);
+    }
+    return 0;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+    std::signal(SIGPIPE, SIG_IGN);  // a closed pipe is a write error (exit 1), not a signal
+    try {
+        return run_cli(argc, argv);
+    } catch (const BadInput& e) {
+        std::fprintf(stderr, "simcli: %s\n", e.what());
+        return exit_bad_input;
+    } catch (const Interrupted& e) {
+        std::fprintf(stderr, "simcli: %s\n", e.what());
+        return 128 + e.signal();
+    } catch (const std::exception& e) {  // OutputError, TooManyEvents and any other failure while running
+        std::fprintf(stderr, "simcli: %s\n", e.what());
+        return exit_failure;
+    }
+}

@@ -1,0 +1,87 @@
+#include "output_file.hpp"
+
+#include "particlesim/state_writer.hpp"
+
+#include <fcntl.h>
+#include <sys/stat.h>
+#include <unistd.h>
+
+#include <cerrno>
+#include <cstring>
+
+namespace simcli {
+
+namespace {
+
+using particlesim::OutputError;
+
+std::string temporary_beside(const std::string& path) {
+    const std::size_t slash = path.rfind('/');
+    const std::string directory = slash == std::string::npos ? "" : path.substr(0, slash + 1);
+    const std::string name = slash == std::string::npos ? path : path.substr(slash + 1);
+    return directory + "." + name + ".simcli-" + std::to_string(getpid()) + ".tmp";
+}
+
+[[noreturn]] void fail(const std::string& path, const char* doing) {
+    throw OutputError(path + ": cannot " + doing + ": " + std::strerror(errno));
+}
+
+}  // namespace
+
+OutputFile::OutputFile(const std::optional<std::string>& path) {
+    if (!path) {
+        stream_ = stdout;
+        return;
+    }
+    path_ = *path;
+    struct stat existing {};
+    const bool exists = stat(path_.c_str(), &existing) == 0;
+    if (exists && !S_ISREG(existing.st_mode)) {
+        stream_ = std::fopen(path_.c_str(), "wb");  // a device, a pipe, a terminal: in place
+        if (stream_ == nullptr) fail(path_, "open for writing");
+        return;
+    }
+    temporary_ = temporary_beside(path_);
+    const int fd =
+        open(temporary_.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC, exists ? existing.st_mode & 07777 : 0666);
+    if (fd < 0) fail(path_, "create a temporary file beside it");
+    if (exists) fchmod(fd, existing.st_mode & 07777);  // the umask must not narrow what the user had
+    stream_ = fdopen(fd, "wb");
+    if (stream_ == nullptr) {
+        close(fd);
+        unlink(temporary_.c_str());
+        fail(path_, "open for writing");
+    }
+}
+
+OutputFile::~OutputFile() {
+    if (committed_ || stream_ == stdout || stream_ == nullptr) return;
+    std::fclose(stream_);
+    if (!temporary_.empty()) unlink(temporary_.c_str());
+}
+
+void OutputFile::commit() {
+    if (stream_ == stdout) {
+        if (std::fflush(stdout) != 0) fail("the output", "write");
+        committed_ = true;
+        return;
+    }
+    committed_ = true;
+    // On disk before the rename, so that a crash cannot leave FILE empty.
+    const bool written = std::fflush(stream_) == 0 && (temporary_.empty() || fsync(fileno(stream_)) == 0);
+    const int write_error = errno;
+    const bool closed = std::fclose(stream_) == 0;
+    if (!written || !closed) {
+        if (!temporary_.empty()) unlink(temporary_.c_str());
+        errno = written ? errno : write_error;
+        fail(path_, "write");
+    }
+    if (!temporary_.empty() && std::rename(temporary_.c_str(), path_.c_str()) != 0) {
+        const int rename_error = errno;
+        unlink(temporary_.c_str());
+        errno = rename_error;
+        fail(path_, "replace with the finished output");
+    }
+}
+
+}  // namespace simcli

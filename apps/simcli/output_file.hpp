@@ -1,0 +1,33 @@
+#pragma once
+// Where simcli writes its states. A regular file (or a new path) is written
+// to a temporary file beside it and renamed over it only by commit(): a run
+// that fails or is interrupted never leaves a truncated FILE, and an old FILE
+// stays as it was. Anything else (stdout, /dev/null, a pipe, a terminal) is
+// written directly: a rename must never replace a device.
+
+#include <cstdio>
+#include <optional>
+#include <string>
+
+namespace simcli {
+
+class OutputFile {
+public:
+    // stdout when `path` is empty. Throws particlesim::OutputError.
+    explicit OutputFile(const std::optional<std::string>& path);
+    ~OutputFile();  // without commit(): closes and removes the temporary file
+    OutputFile(const OutputFile&) = delete;
+    OutputFile& operator=(const OutputFile&) = delete;
+
+    [[nodiscard]] std::FILE* stream() const { return stream_; }
+    // Closes the output and puts it in place. Throws particlesim::OutputError.
+    void commit();
+
+private:
+    std::FILE* stream_ = nullptr;
+    std::string path_;       // empty for stdout
+    std::string temporary_;  // empty when written directly
+    bool committed_ = false;
+};
+
+}  // namespace simcli
