@@ -1,12 +1,10 @@
 #pragma once
 // Unevaluated sums hi + lo of two doubles (about 106 bits), built only on
-// IEEE operations that every conforming machine rounds identically: +, -, *,
-// / and std::fma (correctly rounded by definition). So a result computed with
-// them is the same double on x86-64, aarch64 and everywhere else, which
-// `long double` (80, 128 or 64 bits depending on the platform) is not.
+// IEEE operations that every conforming machine rounds identically: +, -, *
+// and /. So a result computed with them is the same double on x86-64, aarch64
+// and everywhere else, which `long double` (80, 128 or 64 bits depending on
+// the platform) is not.
 // Needs -ffp-contract=off, which the library is built with.
-
-#include <cmath>
 
 namespace particlesim {
 
@@ -23,10 +21,24 @@ inline DoubleDouble two_sum(double a, double b) {
     return {sum, (a - a_part) + (b - b_part)};
 }
 
-// a * b exactly (barring underflow): the fma yields the product's rounding error.
+// The high and low halves of a double, 26 bits each (Veltkamp's split).
+inline DoubleDouble split(double a) {
+    constexpr double splitter = 134217729.0;  // 2^27 + 1
+    const double scaled = splitter * a;
+    const double high = scaled - (scaled - a);
+    return {high, a - high};
+}
+
+// a * b exactly (Dekker's product), barring overflow and underflow, which the
+// accepted range excludes (docs/accepted-range.md). The same bits as
+// std::fma(a, b, -a * b), without a call into libm on machines whose
+// baseline has no fused multiply-add.
 inline DoubleDouble two_product(double a, double b) {
     const double product = a * b;
-    return {product, std::fma(a, b, -product)};
+    const DoubleDouble x = split(a);
+    const DoubleDouble y = split(b);
+    const double error = ((x.hi * y.hi - product) + x.hi * y.lo + x.lo * y.hi) + x.lo * y.lo;
+    return {product, error};
 }
 
 inline DoubleDouble renormalized(double hi, double lo) {

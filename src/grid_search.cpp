@@ -46,6 +46,10 @@ constexpr std::size_t slice_parallel_below = 50000;
 // ten million times that, and still far below any cell size it could disturb.
 constexpr double relative_margin = 1e-8;
 
+// Boxes whose side is within 2^+-100 are put in float as they are; beyond,
+// scaled into [1, 2) first (float spans only 1e-38 to 3e38).
+constexpr int float_safe_exponent = 100;
+
 // Automatic layouts cut slices so that a typical path in a slice is this many
 // particle spacings long. Fewer, longer slices bin fewer boxes but test more
 // pairs; 4/3 was the fastest from N = 1000 to 32000 (see docs/benchmarks.md).
@@ -95,8 +99,11 @@ CellRegion cells_reaching(const SweptBox& box, const UniformGrid& grid) {
 
 // Always inlined: it runs for every binned box, and a call costs as much as it does.
 [[gnu::always_inline]] inline FloatBox float_bounds(const SweptBox& box, double scale) {
-    return {float_at_most(box.min_x * scale), float_at_most(box.min_y * scale), float_at_least(box.max_x * scale),
-            float_at_least(box.max_y * scale)};
+    if (scale != 1.0) {  // the same way for every box of a step: predicted
+        return {float_at_most(box.min_x * scale), float_at_most(box.min_y * scale), float_at_least(box.max_x * scale),
+                float_at_least(box.max_y * scale)};
+    }
+    return {float_at_most(box.min_x), float_at_most(box.min_y), float_at_least(box.max_x), float_at_least(box.max_y)};
 }
 
 }  // namespace
@@ -138,7 +145,10 @@ GridLayout GridSearch::choose_layout(const PairSearchInput& in, std::optional<in
     const double box_size = in.box.side;
     GridLayout layout;
     layout.reach = in.box.lower + relative_margin * (box_size + max_speed * in.duration);
-    layout.float_scale = std::ldexp(1.0, -std::ilogb(box_size));
+    // Floats keep 24 bits of any coordinate between 1e-30 and 1e30 of L: only
+    // boxes beyond that are scaled.
+    const int exponent = std::ilogb(box_size);
+    layout.float_scale = std::abs(exponent) > float_safe_exponent ? std::ldexp(1.0, -exponent) : 1.0;
     const double mean_sweep = length_sum / static_cast<double>(std::max<std::int64_t>(present, 1));
     const double diameter = 2.0 * layout.reach;
     const auto slices_for = [&](double slice_sweep) {

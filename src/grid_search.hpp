@@ -28,9 +28,9 @@ struct GridLayout {
     UniformGrid grid;
     int slices = 1;
     double reach = 0.0;  // r plus the rounding margin added around each path
-    // The power of two that brings L into [1, 2): float bounds are taken of
-    // scaled coordinates, so they keep their precision at every scale of the
-    // accepted range (float alone spans only 1e-38 to 3e38).
+    // 1, or for a box far from 1 the power of two that brings L into [1, 2):
+    // float bounds are taken of scaled coordinates, so they keep their
+    // precision at every scale of the accepted range.
     double float_scale = 1.0;
 };
 

@@ -53,7 +53,8 @@ inline double contact_time(const Vec2& dp, const Vec2& dv, double contact_dist_s
     // miss, in no pattern a branch predictor could learn.
     // "A == 0" of the rules is tested on dv itself: A can underflow to 0 for a
     // tiny nonzero dv, and then a touching pair would wrongly stay apart.
-    const bool moving = dv.x() != 0.0 || dv.y() != 0.0;
+    // |dvx| + |dvy| is 0 only when dv is (a sum of magnitudes cannot cancel).
+    const bool moving = std::fabs(dv.x()) + std::fabs(dv.y()) != 0.0;
     const bool approaching = moving & (half_b < 0.0);
     const bool touching = c <= 0.0;
     if (!(approaching & (touching | (quarter_disc > 0.0)))) return never;
