@@ -49,7 +49,7 @@ void check_resumes_exactly(Make&& make, Restore&& restore, std::int64_t steps, s
 }
 
 void stepped_engine_resumes_bit_for_bit() {
-    for (std::uint64_t k = 0; k < 20; ++k) {
+    for (std::uint64_t k = 0; k < 10; ++k) {
         const random_scenes::TestScene scene = random_scenes::make(k);
         for (const int substeps : {1, 3}) {
             check::Context context("scene ", k, ", substeps ", substeps);
