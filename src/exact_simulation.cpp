@@ -99,21 +99,9 @@ public:
         std::vector<SavedParticle> particles;  // grows with the input, whatever its header says
     };
 
+    // A scene to run from its start: every prediction made here.
     Engine(const World& world, std::vector<Particle> particles, const ExactOptions& options)
-        : world_(world),
-          box_(Box::of(world)),
-          particles_(std::move(particles)),
-          cells_(neighbour_grid(world, particles_.size(), options.cells_per_side), particles_.size()),
-          stamp_(particles_.size(), 0.0),
-          wall_time_(particles_.size(), never),
-          crossing_(particles_.size()),
-          pair_(particles_.size()),
-          last_event_step_(particles_.size(), -1),
-          last_repeat_step_(particles_.size(), -1),
-          snapshot_(particles_),
-          queue_(count(), Event{never, EventKind::cell_crossing, 0, 0}),
-          predicted_events_(estimated_events_per_step(world, particles_)),
-          event_budget_(event_budget(options, predicted_events_, count())) {
+        : Engine(world, std::move(particles), options, Unpredicted{}) {
         for (std::uint32_t i = 0; i < count(); ++i) {
             cells_.insert(i, cells_.grid().cell_of(particles_[i].position));
         }
@@ -128,25 +116,12 @@ public:
     }
 
     // Continues from the state save() wrote (read by read_saved()); the queue
-    // is rebuilt from the predictions.
+    // is rebuilt from the saved predictions.
     Engine(const World& world, const SavedRun& saved, const ExactOptions& options)
-        : world_(world),
-          box_(Box::of(world)),
-          particles_(saved.particles.size()),
-          cells_(neighbour_grid(world, saved.particles.size(), options.cells_per_side), saved.particles.size()),
-          stamp_(particles_.size(), 0.0),
-          wall_time_(particles_.size(), never),
-          crossing_(particles_.size()),
-          pair_(particles_.size()),
-          last_event_step_(particles_.size(), -1),
-          last_repeat_step_(particles_.size(), -1),
-          snapshot_(particles_.size()),
-          queue_(count(), Event{never, EventKind::cell_crossing, 0, 0}),
-          now_(static_cast<double>(saved.steps_done)),
-          steps_done_(saved.steps_done),
-          totals_(saved.totals),
-          predicted_events_(0.0),
-          event_budget_(0.0) {
+        : Engine(world, particles_of(saved), options, Unpredicted{}) {
+        now_ = static_cast<double>(saved.steps_done);
+        steps_done_ = saved.steps_done;
+        totals_ = saved.totals;
         const std::uint64_t cells = cells_.grid().cell_count();
         const auto fail = [](const std::string& why) {
             throw std::invalid_argument("particlesim::ExactSimulation::restore: the saved state is damaged (" + why +
@@ -163,15 +138,12 @@ public:
             if (in.cell >= cells || in.crossing.cell >= cells) fail("a cell outside the grid");
             if (in.pair.event.i >= count() || in.pair.event.j >= count() || in.pair.partner >= count())
                 fail("a particle index outside the scene");
-            particles_[i] = p;
             stamp_[i] = in.stamp;
             cells_.insert(i, in.cell);
             wall_time_[i] = in.wall_time;
             crossing_[i] = in.crossing;
             pair_[i] = in.pair;
         }
-        predicted_events_ = estimated_events_per_step(world, particles_);
-        event_budget_ = event_budget(options, predicted_events_, count());
         for (std::uint32_t i = 0; i < count(); ++i) reschedule(i);
         take_snapshot();
     }
@@ -273,6 +245,32 @@ public:
     std::uint64_t several_events() const { return several_events_; }
 
 private:
+    struct Unpredicted {};
+
+    // Every member sized for the particles; no cell filled, nothing predicted.
+    Engine(const World& world, std::vector<Particle> particles, const ExactOptions& options, Unpredicted)
+        : world_(world),
+          box_(Box::of(world)),
+          particles_(std::move(particles)),
+          cells_(neighbour_grid(world, particles_.size(), options.cells_per_side), particles_.size()),
+          stamp_(particles_.size(), 0.0),
+          wall_time_(particles_.size(), never),
+          crossing_(particles_.size()),
+          pair_(particles_.size()),
+          last_event_step_(particles_.size(), -1),
+          last_repeat_step_(particles_.size(), -1),
+          snapshot_(particles_),
+          queue_(count(), Event{never, EventKind::cell_crossing, 0, 0}),
+          predicted_events_(estimated_events_per_step(world, particles_)),
+          event_budget_(event_budget(options, predicted_events_, count())) {}
+
+    static std::vector<Particle> particles_of(const SavedRun& saved) {
+        std::vector<Particle> particles;
+        particles.reserve(saved.particles.size());
+        for (const SavedParticle& p : saved.particles) particles.push_back(p.particle);
+        return particles;
+    }
+
     std::uint32_t count() const { return static_cast<std::uint32_t>(particles_.size()); }
 
     // Changes exactly when the velocity does: at each of the particle's collisions.
