@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cstdio>
+#include <string>
 
 namespace simcli {
 
@@ -12,6 +13,23 @@ namespace {
 constexpr double quiet_start_seconds = 2.0;
 constexpr double terminal_interval_seconds = 0.25;
 constexpr double plain_interval_seconds = 5.0;
+
+// "42 s", "17 min", "3.5 h", "12 days", "2.9e+11 years": a person's units.
+std::string duration_text(double seconds) {
+    char text[48];
+    if (seconds < 120.0) {
+        std::snprintf(text, sizeof text, "%.0f s", seconds);
+    } else if (seconds < 7200.0) {
+        std::snprintf(text, sizeof text, "%.0f min", seconds / 60.0);
+    } else if (seconds < 172800.0) {
+        std::snprintf(text, sizeof text, "%.1f h", seconds / 3600.0);
+    } else if (seconds < 3.16e7) {
+        std::snprintf(text, sizeof text, "%.0f days", seconds / 86400.0);
+    } else {
+        std::snprintf(text, sizeof text, "%.3g years", seconds / 3.156e7);
+    }
+    return text;
+}
 
 }  // namespace
 
@@ -42,9 +60,10 @@ void ProgressLine::redraw(std::int64_t step) {
     shown_ = true;
     const double total = static_cast<double>(last_step_ - first_step_);
     const double left = rate > 0.0 ? (total - done) / rate : 0.0;
-    std::fprintf(stderr, "%ssimcli: step %lld of %lld (%.1f %%), %.4g steps/s, about %.0f s left%s",
+    std::fprintf(stderr, "%ssimcli: step %lld of %lld (%.1f %%), %.4g steps/s, about %s left%s",
                  on_terminal_ ? "\r\033[K" : "", static_cast<long long>(step), static_cast<long long>(last_step_),
-                 total > 0.0 ? 100.0 * done / total : 100.0, rate, left, on_terminal_ ? "" : "\n");
+                 total > 0.0 ? 100.0 * done / total : 100.0, rate, duration_text(left).c_str(),
+                 on_terminal_ ? "" : "\n");
     std::fflush(stderr);
 }
 
