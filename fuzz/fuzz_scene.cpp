@@ -3,6 +3,9 @@
 // invariants (every centre in [r, L - r], finite numbers, counters that add
 // up) and the promise of identical bytes across searches and threads. Its
 // output must be well-formed text (no NUL, one line per particle and step).
+// The same bytes also go to both engines' restore(), which must refuse a
+// damaged saved state cleanly; and a run saved halfway and restored must go
+// on exactly like the uninterrupted one.
 // Build and run: scripts/fuzz.sh SECONDS.
 
 #include "particlesim/particlesim.hpp"
@@ -78,8 +81,49 @@ std::string output_of(E& engine, std::int64_t steps) {
 
 }  // namespace
 
+// Any bytes as a saved state: refused with std::invalid_argument, or restored
+// into an engine that then runs a step within the rules.
+template <typename E>
+void restore_any(const std::string& bytes) {
+    const World world{20.0, 1.0};
+    std::istringstream saved(bytes);
+    try {
+        E engine = E::restore(world, saved);
+        if (engine.particles().size() > max_particles) return;
+        engine.step();
+        check_state(world, engine.particles());
+    } catch (const std::invalid_argument&) {
+    } catch (const TooManyEvents&) {
+    }
+}
+
+// A run saved after `first` steps and restored ends exactly where the whole run ends.
+template <typename E, typename Make, typename Restore>
+void check_save_and_restore(Make&& make, Restore&& restore, std::int64_t first, std::int64_t steps) {
+    E whole = make();
+    run(whole, steps);
+    E part = make();
+    run(part, first);
+    std::stringstream saved;
+    part.save(saved);
+    E resumed = restore(saved);
+    run(resumed, steps - first);
+    const auto a = whole.particles();
+    const auto b = resumed.particles();
+    require(a.size() == b.size(), "a restored run lost particles");
+    for (std::size_t i = 0; i < a.size(); ++i) {
+        require(std::memcmp(&a[i].position, &b[i].position, sizeof(Vec2)) == 0 &&
+                    std::memcmp(&a[i].velocity, &b[i].velocity, sizeof(Vec2)) == 0 &&
+                    a[i].particle_collisions == b[i].particle_collisions,
+                "a restored run went another way");
+    }
+}
+
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
-    std::istringstream input(std::string(reinterpret_cast<const char*>(data), size));
+    const std::string bytes(reinterpret_cast<const char*>(data), size);
+    restore_any<SteppedSimulation>(bytes);
+    restore_any<ExactSimulation>(bytes);
+    std::istringstream input(bytes);
     Scene scene;
     try {
         scene = read_scene(input);
@@ -114,10 +158,23 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     require(output_of(substeps, scene.steps) == output_of(substeps_grid, scene.steps),
             "the grid changed the output with substeps");
 
+    const std::int64_t half = scene.steps / 2;
+    check_save_and_restore<SteppedSimulation>(
+        [&] { return SteppedSimulation(scene.world, particles, {.threads = 1, .substeps = 2}); },
+        [&](std::istream& saved) {
+            return SteppedSimulation::restore(scene.world, saved, {.threads = 2, .substeps = 2});
+        },
+        half, scene.steps);
+
     if (estimated_events_per_step(scene.world, particles) * static_cast<double>(scene.steps) <= max_exact_events) {
+        const ExactOptions options{.max_events_per_step = 200000};
         try {
-            ExactSimulation exact(scene.world, particles, {.max_events_per_step = 200000});
+            ExactSimulation exact(scene.world, particles, options);
             output_of(exact, scene.steps);
+            check_save_and_restore<ExactSimulation>(
+                [&] { return ExactSimulation(scene.world, particles, options); },
+                [&](std::istream& saved) { return ExactSimulation::restore(scene.world, saved, options); }, half,
+                scene.steps);
         } catch (const OverlappingStart&) {
         } catch (const TooManyEvents&) {  // the runaway guard: a clear stop, not a hang
         }
