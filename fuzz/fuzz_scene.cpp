@@ -167,7 +167,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
         half, scene.steps);
 
     if (estimated_events_per_step(scene.world, particles) * static_cast<double>(scene.steps) <= max_exact_events) {
-        const ExactOptions options{.max_events_per_step = 200000};
+        const ExactOptions options{.max_events_per_step = 20000};
         try {
             ExactSimulation exact(scene.world, particles, options);
             output_of(exact, scene.steps);
