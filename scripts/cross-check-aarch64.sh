@@ -43,13 +43,16 @@ compare() {  # compare NAME SCENE ARGS...
 
 for scene in "$source_dir"/examples/*.in; do
   name=$(basename "$scene")
-  compare "$name" "$scene"
+  compare "$name" "$scene" -t 2
+  # The default scene (1000 disks, 1000 steps) takes 10 to 20 s a run under
+  # qemu: once is enough, the random scenes below cover the rest.
+  [ "$name" = default.in ] && continue
   compare "$name" "$scene" --substeps 3 -t 2
   compare "$name" "$scene" --engine exact
 done
 # Random scenes from dilute to crowded, many collisions each (simcli draws them).
 printf '300 60 1 40 print\n' >"$scratch/crowded.in"
-printf '2000 400 1.5 30 print\n' >"$scratch/gas.in"
+printf '2000 400 1.5 12 print\n' >"$scratch/gas.in"
 printf '50 30 1 200 print\n' >"$scratch/small.in"
 for seed in 1 2 3 4; do
   for scene in crowded gas small; do
