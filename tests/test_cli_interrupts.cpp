@@ -182,7 +182,7 @@ void progress_line() {
     CHECK(forced.err.find(" steps/s, about ") != std::string::npos);
     CHECK(forced.out.find("0 0 ") == 0);  // nothing of it on stdout
     // Issue 12, finding 3: a resting disk for 2^63 - 1 steps now shows its (very long) way.
-    const Result endless = simcli_run({"--progress"}, "1 20 1 9223372036854775807 perf\n0 5 5 0 0\n", {SIGINT, 2600});
+    const Result endless = simcli_run({"--progress"}, "1 20 1 9223372036854775807 perf\n0 5 5 0 0\n", {SIGINT, 3000});
     CHECK_EQ(endless.status, 130);
     CHECK(endless.err.find("simcli: step ") == 0);
     CHECK(endless.err.find(" years left") != std::string::npos);
