@@ -84,9 +84,9 @@ public:
         std::uint32_t partner_version = 0;  // the partner's version when predicted
     };
 
-    // One particle of a saved run: everything save() writes for it.
-    struct SavedParticle {
-        Particle particle;
+    // What save() writes for a particle besides its state: its time stamp,
+    // its cell and its three predictions.
+    struct SavedPredictions {
         double stamp = 0.0;
         std::uint32_t cell = 0;
         double wall_time = never;
@@ -96,7 +96,9 @@ public:
     struct SavedRun {
         std::int64_t steps_done = 0;
         StepCounts totals;
-        std::vector<SavedParticle> particles;  // grows with the input, whatever its header says
+        // Both grow with the input, whatever its header says.
+        std::vector<Particle> particles;  // each at its own stamp
+        std::vector<SavedPredictions> predictions;
     };
 
     // A scene to run from its start: every prediction made here.
@@ -115,10 +117,11 @@ public:
         }
     }
 
-    // Continues from the state save() wrote (read by read_saved()); the queue
-    // is rebuilt from the saved predictions.
-    Engine(const World& world, const SavedRun& saved, const ExactOptions& options)
-        : Engine(world, particles_of(saved), options, Unpredicted{}) {
+    // Continues from the state save() wrote (read by read_saved(), its
+    // particles checked by require_valid_scene()); the queue is rebuilt from
+    // the saved predictions.
+    Engine(const World& world, SavedRun saved, const ExactOptions& options)
+        : Engine(world, std::move(saved.particles), options, Unpredicted{}) {
         now_ = static_cast<double>(saved.steps_done);
         steps_done_ = saved.steps_done;
         totals_ = saved.totals;
@@ -128,12 +131,7 @@ public:
                                         ")");
         };
         for (std::uint32_t i = 0; i < count(); ++i) {
-            const SavedParticle& in = saved.particles[i];
-            const Particle& p = in.particle;
-            if (!(p.position.x() >= box_.lower && p.position.x() <= box_.upper && p.position.y() >= box_.lower &&
-                  p.position.y() <= box_.upper))
-                fail("a centre outside [r, L - r]");
-            if (!(std::isfinite(p.velocity.x()) && std::isfinite(p.velocity.y()))) fail("a velocity is not finite");
+            const SavedPredictions& in = saved.predictions[i];
             if (!(in.stamp >= 0.0 && in.stamp <= now_)) fail("a time stamp outside the run");
             if (in.cell >= cells || in.crossing.cell >= cells) fail("a cell outside the grid");
             if (in.pair.event.i >= count() || in.pair.event.j >= count() || in.pair.partner >= count())
@@ -154,16 +152,10 @@ public:
         const double now = in.real();
         run.steps_done = static_cast<std::int64_t>(in.count(max_exact_steps));
         if (now != static_cast<double>(run.steps_done)) in.fail("time and step disagree");
-        run.totals.particle_collisions = in.count(UINT64_MAX);
-        run.totals.wall_collisions = in.count(UINT64_MAX);
-        run.totals.pair_tests = in.count(UINT64_MAX);
+        run.totals = read_counts(in);
         for (std::uint64_t i = 0; i < count; ++i) {
-            SavedParticle p;
-            const double x = in.real(), y = in.real(), vx = in.real(), vy = in.real();
-            p.particle.position = Vec2(x, y);
-            p.particle.velocity = Vec2(vx, vy);
-            p.particle.particle_collisions = in.count(UINT64_MAX);
-            p.particle.wall_collisions = in.count(UINT64_MAX);
+            run.particles.push_back(read_particle(in));
+            SavedPredictions p;
             p.stamp = in.real();
             p.cell = static_cast<std::uint32_t>(in.count(UINT32_MAX));
             p.wall_time = in.real();
@@ -174,7 +166,7 @@ public:
             p.pair.event.j = static_cast<std::uint32_t>(in.count(UINT32_MAX));
             p.pair.partner = static_cast<std::uint32_t>(in.count(UINT32_MAX));
             p.pair.partner_version = static_cast<std::uint32_t>(in.count(UINT32_MAX));
-            run.particles.push_back(p);
+            run.predictions.push_back(p);
         }
         return run;
     }
@@ -183,17 +175,10 @@ public:
         save_number(out, std::uint64_t{count()});
         save_number(out, now_);
         save_number(out, static_cast<std::uint64_t>(steps_done_));
-        save_number(out, totals_.particle_collisions);
-        save_number(out, totals_.wall_collisions);
-        save_number(out, totals_.pair_tests);
+        save_counts(out, totals_);
         out << '\n';
         for (std::uint32_t i = 0; i < count(); ++i) {
-            const Particle& p = particles_[i];
-            for (const double value : {p.position.x(), p.position.y(), p.velocity.x(), p.velocity.y()}) {
-                save_number(out, value);
-            }
-            save_number(out, p.particle_collisions);
-            save_number(out, p.wall_collisions);
+            save_particle(out, particles_[i]);
             save_number(out, stamp_[i]);
             save_number(out, std::uint64_t{cells_.cell_of_particle(i)});
             save_number(out, wall_time_[i]);
@@ -263,13 +248,6 @@ private:
           queue_(count(), Event{never, EventKind::cell_crossing, 0, 0}),
           predicted_events_(estimated_events_per_step(world, particles_)),
           event_budget_(event_budget(options, predicted_events_, count())) {}
-
-    static std::vector<Particle> particles_of(const SavedRun& saved) {
-        std::vector<Particle> particles;
-        particles.reserve(saved.particles.size());
-        for (const SavedParticle& p : saved.particles) particles.push_back(p.particle);
-        return particles;
-    }
 
     std::uint32_t count() const { return static_cast<std::uint32_t>(particles_.size()); }
 
@@ -495,12 +473,13 @@ ExactSimulation::ExactSimulation(const World& world, std::vector<Particle> parti
 ExactSimulation::ExactSimulation(std::unique_ptr<Engine> engine) : engine_(std::move(engine)) {}
 
 ExactSimulation ExactSimulation::restore(const World& world, std::istream& saved, const ExactOptions& options) {
-    require_valid_scene("particlesim::ExactSimulation::restore", world, {});
     check_options(options);
     SavedStateReader reader(saved, "particlesim::ExactSimulation::restore");
     reader.expect("exact-engine-state");
     reader.expect("1");
-    return ExactSimulation(std::make_unique<Engine>(world, Engine::read_saved(reader), options));
+    Engine::SavedRun run = Engine::read_saved(reader);
+    require_valid_scene("particlesim::ExactSimulation::restore", world, run.particles);
+    return ExactSimulation(std::make_unique<Engine>(world, std::move(run), options));
 }
 
 void ExactSimulation::save(std::ostream& out) const {

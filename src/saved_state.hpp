@@ -5,6 +5,9 @@
 // same on every platform. Reading checks every token: a damaged or hostile
 // file is refused with std::invalid_argument, never trusted.
 
+#include "particlesim/engine.hpp"
+#include "particlesim/particle.hpp"
+
 #include <charconv>
 #include <cmath>
 #include <cstdint>
@@ -69,5 +72,37 @@ private:
     std::istream& in_;
     const char* what_;
 };
+
+// The parts both engines save alike: their totals, and a particle's state.
+inline void save_counts(std::ostream& out, const StepCounts& counts) {
+    save_number(out, counts.particle_collisions);
+    save_number(out, counts.wall_collisions);
+    save_number(out, counts.pair_tests);
+}
+
+inline StepCounts read_counts(SavedStateReader& in) {
+    StepCounts counts;
+    counts.particle_collisions = in.count(UINT64_MAX);
+    counts.wall_collisions = in.count(UINT64_MAX);
+    counts.pair_tests = in.count(UINT64_MAX);
+    return counts;
+}
+
+inline void save_particle(std::ostream& out, const Particle& p) {
+    for (const double value : {p.position.x(), p.position.y(), p.velocity.x(), p.velocity.y()}) save_number(out, value);
+    save_number(out, p.particle_collisions);
+    save_number(out, p.wall_collisions);
+}
+
+// Read as saved; whether it fits a world is the engine's check (require_valid_scene).
+inline Particle read_particle(SavedStateReader& in) {
+    Particle p;
+    const double x = in.real(), y = in.real(), vx = in.real(), vy = in.real();
+    p.position = Vec2(x, y);
+    p.velocity = Vec2(vx, vy);
+    p.particle_collisions = in.count(UINT64_MAX);
+    p.wall_collisions = in.count(UINT64_MAX);
+    return p;
+}
 
 }  // namespace particlesim

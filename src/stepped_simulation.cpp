@@ -156,20 +156,9 @@ SteppedSimulation SteppedSimulation::restore(const World& world, std::istream& s
     in.expect("1");
     const std::uint64_t count = in.count(0xfffffffeU);
     const auto steps_done = static_cast<std::int64_t>(in.count(INT64_MAX));
-    StepCounts totals;
-    totals.particle_collisions = in.count(UINT64_MAX);
-    totals.wall_collisions = in.count(UINT64_MAX);
-    totals.pair_tests = in.count(UINT64_MAX);
+    const StepCounts totals = read_counts(in);
     std::vector<Particle> particles;  // grows with the input, whatever its header says
-    for (std::uint64_t i = 0; i < count; ++i) {
-        Particle p;
-        const double x = in.real(), y = in.real(), vx = in.real(), vy = in.real();
-        p.position = Vec2(x, y);
-        p.velocity = Vec2(vx, vy);
-        p.particle_collisions = in.count(UINT64_MAX);
-        p.wall_collisions = in.count(UINT64_MAX);
-        particles.push_back(p);
-    }
+    for (std::uint64_t i = 0; i < count; ++i) particles.push_back(read_particle(in));
     SteppedSimulation simulation(world, std::move(particles), options);
     simulation.engine_->continue_from(steps_done, totals);
     return simulation;
@@ -180,16 +169,10 @@ void SteppedSimulation::save(std::ostream& out) const {
     out << "stepped-engine-state 1\n";
     save_number(out, std::uint64_t{particles.size()});
     save_number(out, static_cast<std::uint64_t>(steps_done()));
-    save_number(out, totals().particle_collisions);
-    save_number(out, totals().wall_collisions);
-    save_number(out, totals().pair_tests);
+    save_counts(out, totals());
     out << '\n';
     for (const Particle& p : particles) {
-        for (const double value : {p.position.x(), p.position.y(), p.velocity.x(), p.velocity.y()}) {
-            save_number(out, value);
-        }
-        save_number(out, p.particle_collisions);
-        save_number(out, p.wall_collisions);
+        save_particle(out, p);
         out << '\n';
     }
 }
