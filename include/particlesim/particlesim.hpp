@@ -8,6 +8,7 @@
 #include "particlesim/random_scene.hpp"
 #include "particlesim/scene.hpp"
 #include "particlesim/state_writer.hpp"
+#include "particlesim/step_check.hpp"
 #include "particlesim/stepped_simulation.hpp"
 #include "particlesim/version.hpp"
 #include "particlesim/world.hpp"

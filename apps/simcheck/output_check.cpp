@@ -1,0 +1,239 @@
+#include "output_check.hpp"
+
+#include "particlesim/random_scene.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <span>
+
+namespace simcheck {
+
+namespace {
+
+using namespace particlesim;
+
+constexpr std::size_t notes_kept = 20;
+
+double slack(double value, double uncertainty) { return uncertainty + std::fabs(value) * 0x1p-51; }
+
+// One block of the output: N lines of `step`, in index order, with counters
+// exactly when it is the final block; or what is wrong with its shape.
+class BlockReader {
+public:
+    BlockReader(OutputReader& output, std::size_t count) : output_(output), particles_(count), lines_(count) {}
+
+    std::optional<Finding> read(std::int64_t step, bool final_block) {
+        OutputLine line;
+        for (std::size_t i = 0; i < particles_.size(); ++i) {
+            if (!output_.next(line)) {
+                return Finding{step, output_.lines_read(),
+                               "the output ends (after line " + std::to_string(output_.lines_read()) + ") before particle " +
+                                   std::to_string(i) + " of step " + std::to_string(step),
+                               std::nullopt, std::nullopt};
+            }
+            if (line.step != step || line.index != i) {
+                return Finding{step, line.line,
+                               "line " + std::to_string(line.line) + " reads \"" + line.text + "\" where particle " +
+                                   std::to_string(i) + " of step " + std::to_string(step) +
+                                   " belongs: a line is missing, repeated or out of order",
+                               std::nullopt, std::nullopt};
+            }
+            if (line.has_counters != final_block) {
+                return Finding{step, line.line,
+                               final_block ? "line " + std::to_string(line.line) +
+                                                 " has no counters: the lines of the final block end with pc wc"
+                                           : "line " + std::to_string(line.line) +
+                                                 " has counters, which only the final block's lines have",
+                               std::nullopt, std::nullopt};
+            }
+            particles_[i] = line.particle;
+            lines_[i] = line.line;
+        }
+        return std::nullopt;
+    }
+
+    std::optional<Finding> expect_end(std::int64_t last_step) {
+        OutputLine line;
+        if (!output_.next(line)) return std::nullopt;
+        return Finding{last_step, line.line,
+                       "the output goes on after the final block: line " + std::to_string(line.line) + " reads \"" +
+                           line.text + "\"",
+                       std::nullopt, std::nullopt};
+    }
+
+    std::vector<Particle>& particles() { return particles_; }
+    [[nodiscard]] long line_of(std::size_t particle) const { return lines_[particle]; }
+
+private:
+    OutputReader& output_;
+    std::vector<Particle> particles_;
+    std::vector<long> lines_;
+};
+
+std::optional<Finding> check_initial_block(const Scene& scene, const BlockReader& block,
+                                           std::span<const Particle> printed, double uncertainty) {
+    const auto fits = [&](double value, double wanted) { return std::fabs(value - wanted) <= slack(value, uncertainty); };
+    const World& world = scene.world;
+    const SpeedRange speeds = default_speed_range(world);
+    for (std::size_t i = 0; i < printed.size(); ++i) {
+        const Particle& p = printed[i];
+        const auto finding = [&](const std::string& what, std::optional<Particle> expected) {
+            return Finding{0, block.line_of(i), "particle " + std::to_string(i) + ": " + what, expected, p};
+        };
+        if (!scene.is_random()) {
+            const Particle& given = scene.particles[i];
+            if (!(fits(p.position.x(), given.position.x()) && fits(p.position.y(), given.position.y()) &&
+                  fits(p.velocity.x(), given.velocity.x()) && fits(p.velocity.y(), given.velocity.y()))) {
+                return finding("the initial state is not the scene's", given);
+            }
+            continue;
+        }
+        for (int axis = 0; axis < 2; ++axis) {
+            const double value = p.position[axis];
+            if (value < world.lower() - slack(value, uncertainty) || value > world.upper() + slack(value, uncertainty)) {
+                return finding("the random start puts it outside [r, L - r]", std::nullopt);
+            }
+        }
+        // rules.md "Random scenes": speeds between L/(8r) and L/4.
+        const double speed = p.velocity.norm();
+        const double speed_slack = 2.0 * slack(speed, uncertainty);
+        if (speed < speeds.min - speed_slack || speed > speeds.max + speed_slack) {
+            return finding("its random speed " + std::to_string(speed) + " is outside [" + std::to_string(speeds.min) +
+                               ", " + std::to_string(speeds.max) + "], the range of rules.md \"Random scenes\"",
+                           std::nullopt);
+        }
+    }
+    return std::nullopt;
+}
+
+std::string count_text(std::uint64_t low, std::uint64_t high) {
+    return low == high ? std::to_string(low) : "between " + std::to_string(low) + " and " + std::to_string(high);
+}
+
+// The final counters against the collisions the rules allow over the run.
+std::optional<Finding> check_counters(const BlockReader& block, std::span<const Particle> printed,
+                                      std::span<const CollisionRange> totals, std::int64_t step) {
+    for (std::size_t i = 0; i < printed.size(); ++i) {
+        const CollisionRange& t = totals[i];
+        const Particle& p = printed[i];
+        std::string what;
+        if (p.particle_collisions < t.particle_min || p.particle_collisions > t.particle_max) {
+            what = "pc = " + std::to_string(p.particle_collisions) + ", but the rules give it " +
+                   count_text(t.particle_min, t.particle_max) + " collisions with particles";
+        } else if (p.wall_collisions < t.wall_min || p.wall_collisions > t.wall_max) {
+            what = "wc = " + std::to_string(p.wall_collisions) + ", but the rules give it " +
+                   count_text(t.wall_min, t.wall_max) + " collisions with walls";
+        }
+        if (!what.empty()) {
+            return Finding{step, block.line_of(i), "particle " + std::to_string(i) + ": the final block's " + what,
+                           std::nullopt, std::nullopt};
+        }
+    }
+    return std::nullopt;
+}
+
+Report broken(Report report, Finding finding) {
+    report.verdict = Verdict::breaks_rules;
+    report.finding = std::move(finding);
+    return report;
+}
+
+void add_notes(Report& report, std::int64_t step, const std::vector<std::string>& notes) {
+    for (const std::string& note : notes) {
+        if (report.within_rounding.size() < notes_kept) report.within_rounding.emplace_back(step, note);
+    }
+    report.within_rounding_count += notes.size();
+}
+
+}  // namespace
+
+Report check_output(const Scene& scene, OutputReader& output, const StepCheckOptions& options) {
+    Report report;
+    const std::size_t count = scene.particle_count;
+    const std::int64_t steps = scene.steps;
+    report.particles = count;
+    report.steps = steps;
+    StepChecker checker(scene.world, options);
+
+    BlockReader block(output, count);
+    if (auto wrong = block.read(0, false)) return broken(report, *wrong);
+    report.uncertainty = output.style() == NumberStyle::fixed8 ? fixed8_uncertainty : 0.0;
+    std::vector<Particle> previous = block.particles();
+    if (auto wrong = check_initial_block(scene, block, previous, report.uncertainty)) return broken(report, *wrong);
+    // The first step starts from the scene's own numbers where it lists them.
+    double previous_uncertainty = report.uncertainty;
+    if (!scene.is_random()) {
+        previous = scene.particles;
+        previous_uncertainty = 0.0;
+    }
+
+    std::vector<CollisionRange> totals(count);
+    const auto compare = [&](std::int64_t step, const StepCheck& check) -> std::optional<Finding> {
+        if (check.violation) {
+            const RuleViolation& v = *check.violation;
+            return Finding{step, block.line_of(v.particle), v.what, v.expected, v.printed};
+        }
+        add_notes(report, step, check.within_rounding);
+        for (std::size_t i = 0; i < count; ++i) {
+            totals[i].particle_min += check.collisions[i].particle_min;
+            totals[i].particle_max += check.collisions[i].particle_max;
+            totals[i].wall_min += check.collisions[i].wall_min;
+            totals[i].wall_max += check.collisions[i].wall_max;
+        }
+        return std::nullopt;
+    };
+
+    if (scene.mode == OutputMode::print && steps > 0) {
+        for (std::int64_t step = 1; step <= steps; ++step) {
+            if (auto wrong = block.read(step, step == steps)) return broken(report, *wrong);
+            const StepCheck check = checker.check({previous, previous_uncertainty}, {block.particles(), report.uncertainty});
+            if (auto wrong = compare(step, check)) return broken(report, *wrong);
+            previous.swap(block.particles());
+            previous_uncertainty = report.uncertainty;
+            report.steps_checked = step;
+        }
+        const std::span<const Particle> last = previous;
+        if (auto wrong = check_counters(block, last, totals, steps)) return broken(report, *wrong);
+        if (auto wrong = block.expect_end(steps)) return broken(report, *wrong);
+        return report;
+    }
+
+    // perf mode (or no steps): the final block alone, judged from the start.
+    if (auto wrong = block.read(steps, true)) return broken(report, *wrong);
+    if (auto wrong = block.expect_end(steps)) return broken(report, *wrong);
+    const StepChecker::Run run = checker.run({previous, previous_uncertainty}, steps);
+    if (run.undecided_from) {
+        report.verdict = Verdict::no_verdict;
+        report.reason = "a perf-mode output shows only the first and the last state, and from step " +
+                        std::to_string(*run.undecided_from) + " on the rules may go more than one way within rounding (" +
+                        run.undecided_why +
+                        "), so correct programs may end anywhere; a print-mode output of the same scene is checked "
+                        "step by step";
+        return report;
+    }
+    const std::vector<Particle>& last = block.particles();
+    for (std::size_t i = 0; i < count; ++i) {
+        const Particle& p = last[i];
+        bool fine = true;
+        for (int axis = 0; axis < 2; ++axis) {
+            const auto inside = [&](double value, double low, double high) {
+                return low - slack(value, report.uncertainty) <= value && value <= high + slack(value, report.uncertainty);
+            };
+            fine = fine && inside(p.position[axis], run.lower[i].position[axis], run.upper[i].position[axis]);
+            fine = fine && inside(p.velocity[axis], run.lower[i].velocity[axis], run.upper[i].velocity[axis]);
+        }
+        if (!fine) {
+            Particle expected;
+            expected.position = 0.5 * (run.lower[i].position + run.upper[i].position);
+            expected.velocity = 0.5 * (run.lower[i].velocity + run.upper[i].velocity);
+            return broken(report, Finding{steps, block.line_of(i),
+                                          "particle " + std::to_string(i) + ": the final state is not where the rules take it after " +
+                                              std::to_string(steps) + " steps (every decision on the way is decided)",
+                                          expected, p});
+        }
+    }
+    if (auto wrong = check_counters(block, last, run.collisions, steps)) return broken(report, *wrong);
+    return report;
+}
+
+}  // namespace simcheck

@@ -1,0 +1,46 @@
+#pragma once
+// Checks a whole output against a scene, block by block: the initial state
+// against the scene, each printed step against one step of the rules from the
+// step before (particlesim::StepChecker), the final counters against the
+// collisions the steps show, and the output's shape (every line, once, in
+// order). A perf-mode output, with nothing between its first and last block,
+// is judged from the initial state as long as the rules stay decided.
+
+#include "output_reader.hpp"
+
+#include "particlesim/scene.hpp"
+#include "particlesim/step_check.hpp"
+
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace simcheck {
+
+enum class Verdict { conforms, breaks_rules, no_verdict };
+
+struct Finding {
+    std::int64_t step = 0;
+    long line = 0;  // of the output, 0 when none applies
+    std::string what;
+    std::optional<particlesim::Particle> expected;
+    std::optional<particlesim::Particle> printed;
+};
+
+struct Report {
+    Verdict verdict = Verdict::conforms;
+    std::optional<Finding> finding;  // breaks_rules
+    std::string reason;              // no_verdict
+    std::size_t particles = 0;
+    std::int64_t steps = 0;
+    std::int64_t steps_checked = 0;  // one by one (print mode)
+    double uncertainty = 0.0;        // of each printed number
+    std::vector<std::pair<std::int64_t, std::string>> within_rounding;  // the first few
+    std::size_t within_rounding_count = 0;
+};
+
+Report check_output(const particlesim::Scene& scene, OutputReader& output, const particlesim::StepCheckOptions& options);
+
+}  // namespace simcheck

@@ -1,0 +1,130 @@
+#include "report.hpp"
+
+#include <cmath>
+#include <cstdio>
+#include <string>
+
+namespace simcheck {
+
+namespace {
+
+using particlesim::Particle;
+
+// Printed as the output prints numbers, with one more digit where it helps.
+std::string number(double value) {
+    char text[64];
+    std::snprintf(text, sizeof text, std::fabs(value) < 1e15 ? "%.9f" : "%.17g", value);
+    return text;
+}
+
+std::string state_text(const Particle& p) {
+    return "x " + number(p.position.x()) + "  y " + number(p.position.y()) + "  vx " + number(p.velocity.x()) +
+           "  vy " + number(p.velocity.y());
+}
+
+std::string json_string(const std::string& text) {
+    std::string out = "\"";
+    for (const char c : text) {
+        if (c == '"' || c == '\\') {
+            out += '\\';
+            out += c;
+        } else if (static_cast<unsigned char>(c) < 0x20) {
+            char escaped[8];
+            std::snprintf(escaped, sizeof escaped, "\\u%04x", static_cast<unsigned char>(c));
+            out += escaped;
+        } else {
+            out += c;
+        }
+    }
+    return out + "\"";
+}
+
+std::string json_number(double value) {
+    char text[40];
+    std::snprintf(text, sizeof text, "%.17g", value);
+    return text;
+}
+
+std::string json_state(const Particle& p) {
+    std::string out = "[";
+    for (const double value : {p.position.x(), p.position.y(), p.velocity.x(), p.velocity.y()}) {
+        if (out.size() > 1) out += ", ";
+        out += json_number(value);
+    }
+    return out + "]";
+}
+
+const char* verdict_name(Verdict verdict) {
+    switch (verdict) {
+        case Verdict::conforms: return "conforms";
+        case Verdict::breaks_rules: return "breaks_rules";
+        case Verdict::no_verdict: return "no_verdict";
+    }
+    return "";
+}
+
+}  // namespace
+
+void write_text_report(std::FILE* out, const Report& report, const ReportContext& context) {
+    if (report.verdict == Verdict::breaks_rules) {
+        const Finding& f = *report.finding;
+        std::fprintf(out, "step %lld: %s\n", static_cast<long long>(f.step), f.what.c_str());
+        if (f.line > 0) std::fprintf(out, "  at line %ld of %s\n", f.line, context.output_name.c_str());
+        if (f.expected) std::fprintf(out, "  expected  %s\n", state_text(*f.expected).c_str());
+        if (f.printed) std::fprintf(out, "  printed   %s\n", state_text(*f.printed).c_str());
+        if (f.expected && f.printed) {
+            std::fprintf(out, "  (printed numbers are read as known within %g; \"expected\" is the middle of what "
+                              "the rules allow)\n",
+                         report.uncertainty);
+        }
+        return;
+    }
+    if (report.verdict == Verdict::no_verdict) {
+        std::fprintf(out, "no verdict: %s\n", report.reason.c_str());
+        return;
+    }
+    std::fprintf(out, "conforms: %zu particles, %lld steps, checked against %s", report.particles,
+                 static_cast<long long>(report.steps), context.rules.c_str());
+    std::fprintf(out, report.steps_checked > 0 ? " step by step" : " from the initial state");
+    std::fprintf(out, "; printed numbers read as known within %g\n", report.uncertainty);
+    if (report.within_rounding_count > 0) {
+        std::fprintf(out, "%zu decision(s) of the rules were within that rounding; either outcome was accepted:\n",
+                     report.within_rounding_count);
+        for (const auto& [step, what] : report.within_rounding) {
+            std::fprintf(out, "  step %lld: %s\n", static_cast<long long>(step), what.c_str());
+        }
+        if (report.within_rounding_count > report.within_rounding.size()) std::fprintf(out, "  ...\n");
+    }
+}
+
+void write_json_report(std::FILE* out, const Report& report, const ReportContext& context) {
+    std::string json = "{\"verdict\": \"" + std::string(verdict_name(report.verdict)) + "\"";
+    json += ", \"rules\": " + json_string(context.rules);
+    json += ", \"particles\": " + std::to_string(report.particles);
+    json += ", \"steps\": " + std::to_string(report.steps);
+    json += ", \"steps_checked\": " + std::to_string(report.steps_checked);
+    json += ", \"uncertainty\": " + json_number(report.uncertainty);
+    if (report.finding) {
+        const Finding& f = *report.finding;
+        json += ", \"step\": " + std::to_string(f.step) + ", \"line\": " + std::to_string(f.line);
+        json += ", \"message\": " + json_string("step " + std::to_string(f.step) + ": " + f.what);
+        if (f.expected) json += ", \"expected\": " + json_state(*f.expected);
+        if (f.printed) json += ", \"printed\": " + json_state(*f.printed);
+    }
+    if (report.verdict == Verdict::no_verdict) json += ", \"reason\": " + json_string(report.reason);
+    json += ", \"within_rounding_count\": " + std::to_string(report.within_rounding_count);
+    json += ", \"within_rounding\": [";
+    for (std::size_t k = 0; k < report.within_rounding.size(); ++k) {
+        if (k > 0) json += ", ";
+        json += "{\"step\": " + std::to_string(report.within_rounding[k].first) +
+                ", \"what\": " + json_string(report.within_rounding[k].second) + "}";
+    }
+    json += "]}\n";
+    std::fputs(json.c_str(), out);
+}
+
+void write_json_unreadable(std::FILE* out, const std::string& message) {
+    std::fprintf(out, "{\"verdict\": \"unreadable\", \"message\": %s}\n", json_string(message).c_str());
+}
+
+}  // namespace simcheck

@@ -1,0 +1,99 @@
+#pragma once
+// Checks one step of any program's output against the rules, for graders and
+// for people writing their own simulator (docs/checking.md). A whole output
+// cannot be compared with ours: two correct programs that round differently
+// drift apart on a crowded scene within a few dozen steps. So each step is
+// judged from the program's own previous printed state: one step of the
+// rules is applied to every state within the printing's uncertainty of it,
+// and the printed next state must be one they lead to. A decision of the
+// rules that lies within that uncertainty (t <= 1, a graze, a tie, a wall
+// reached within the rest of the step) allows either outcome.
+
+#include "particlesim/particle.hpp"
+#include "particlesim/world.hpp"
+
+#include <cstdint>
+#include <memory>
+#include <optional>
+#include <span>
+#include <string>
+#include <vector>
+
+namespace particlesim {
+
+// A state as a program printed it (counters are ignored).
+struct PrintedState {
+    std::span<const Particle> particles;
+    // How far each printed number may be from the value the program held:
+    // 0.5e-8 for io.md's %.8f, 0 for exact numbers (a scene, --exact-numbers).
+    double uncertainty = 0.0;
+};
+
+inline constexpr double fixed8_uncertainty = 0.5e-8;
+
+enum class CheckedRules {
+    stepped,  // rules.md "One step" (with substeps)
+    exact,    // continuous-time hard disks (simcli --engine exact)
+};
+
+struct StepCheckOptions {
+    CheckedRules rules = CheckedRules::stepped;
+    int substeps = 1;  // micro-steps per step of the stepped rules, >= 1
+};
+
+// The collisions a particle may have had in the step, as far as decided.
+struct CollisionRange {
+    std::uint64_t particle_min = 0;
+    std::uint64_t particle_max = 0;
+    std::uint64_t wall_min = 0;
+    std::uint64_t wall_max = 0;
+};
+
+struct RuleViolation {
+    std::uint32_t particle = 0;
+    std::string what;   // in a person's words: "particles 3 and 7 meet at t = 0.4172 and ..."
+    Particle expected;  // the middle of what the rules allow
+    Particle printed;
+};
+
+struct StepCheck {
+    std::optional<RuleViolation> violation;  // the first particle the step gets wrong
+    // Decisions within the uncertainty, where either outcome was accepted.
+    std::vector<std::string> within_rounding;
+    // Per particle (when there is no violation).
+    std::vector<CollisionRange> collisions;
+};
+
+class StepChecker {
+public:
+    // Throws std::invalid_argument for a bad world or option.
+    explicit StepChecker(const World& world, const StepCheckOptions& options = {});
+    ~StepChecker();
+    StepChecker(StepChecker&&) noexcept;
+    StepChecker& operator=(StepChecker&&) noexcept;
+
+    // Whether `after` is one step of the rules from `before` (same number of
+    // particles, in index order). Throws std::invalid_argument when `before`
+    // is not a valid state, or (exact rules) when its disks overlap beyond
+    // its uncertainty: no step of the rules starts there.
+    [[nodiscard]] StepCheck check(const PrintedState& before, const PrintedState& after);
+
+    // The stepped rules run for `steps` steps from `start` (a perf-mode
+    // output has nothing in between): the bounds of every state they may
+    // reach and the collision counts, or the first step from which a decision
+    // is within rounding and the run may go more than one way.
+    struct Run {
+        std::vector<Particle> lower;  // componentwise bounds of the final state
+        std::vector<Particle> upper;
+        std::vector<CollisionRange> collisions;  // totals over the run
+        std::optional<std::int64_t> undecided_from;
+        std::string undecided_why;
+    };
+    [[nodiscard]] Run run(const PrintedState& start, std::int64_t steps);
+
+private:
+    class Impl;
+    std::unique_ptr<Impl> impl_;
+};
+
+}  // namespace particlesim
