@@ -27,7 +27,10 @@ bool matches(const UncertainParticle& allowed, const Particle& printed, double u
            fits(allowed.vx, printed.velocity.x()) && fits(allowed.vy, printed.velocity.y());
 }
 
-std::string time_text(const Uncertain& time) { return "t = " + format_brief(time.mid()); }
+std::string time_text(const Uncertain& time) {
+    if (!std::isfinite(time.hi)) return "a time within rounding of the step";
+    return "t = " + format_brief(time.mid());
+}
 
 std::string describe(const PossibleCollision& c, std::uint32_t particle) {
     if (c.kind == CollisionKind::wall) {
@@ -207,6 +210,14 @@ private:
                 if (matches(f.outcome, after.particles[p], after.uncertainty)) matched_[p].push_back(f.candidate);
             }
         }
+        // A particle that no fate explains on its own comes first; then one
+        // whose collision its partner's printed state does not show.
+        for (std::uint32_t p = 0; p < count; ++p) {
+            if (matched_[p].empty()) {
+                result.violation = explain(p, after);
+                return result;
+            }
+        }
         drop_one_sided_pairs();
         for (std::uint32_t p = 0; p < count; ++p) {
             if (matched_[p].empty()) {
@@ -291,6 +302,11 @@ private:
         }
         const PossibleCollision& c = step_.candidates()[static_cast<std::size_t>(expected->candidate)];
         const std::string rule = describe(c, particle);
+        if (printed_matches(expected->candidate)) {
+            v.what = rule + ", but only particle " + std::to_string(particle) + "'s printed state shows it: particle " +
+                     std::to_string(c.other(particle)) + "'s does not follow from it";
+            return v;
+        }
         if (printed_matches(-1)) {
             v.what = rule + (c.kind == CollisionKind::wall ? ", and the output lets it pass" : ", and the output lets them pass");
             return v;

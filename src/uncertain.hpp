@@ -79,7 +79,13 @@ inline Uncertain operator+(const Uncertain& a, const Uncertain& b) {
 
 inline Uncertain operator-(const Uncertain& a, const Uncertain& b) { return a + -b; }
 
+inline bool is_exact_zero(const Uncertain& a) { return a.lo == 0.0 && a.hi == 0.0; }
+
 inline Uncertain operator*(const Uncertain& a, const Uncertain& b) {
+    // Every formula gives 0 * x = 0 exactly (x is bounded).
+    if ((is_exact_zero(a) && std::isfinite(b.magnitude())) || (is_exact_zero(b) && std::isfinite(a.magnitude()))) {
+        return Uncertain::exact(0.0);
+    }
     if (a.is_exact() && b.is_exact()) {
         const DoubleDouble product = two_product(a.lo, b.lo);
         if (product.lo == 0.0) return Uncertain::exact(product.hi);
@@ -93,6 +99,7 @@ inline Uncertain operator*(const Uncertain& a, const Uncertain& b) {
 // Unbounded when the divisor may be zero.
 inline Uncertain operator/(const Uncertain& a, const Uncertain& b) {
     if (b.lo <= 0.0 && b.hi >= 0.0) return Uncertain::everything();
+    if (is_exact_zero(a)) return Uncertain::exact(0.0);
     if (a.is_exact() && b.is_exact()) {
         const double quotient = a.lo / b.lo;
         const DoubleDouble back = two_product(quotient, b.lo);

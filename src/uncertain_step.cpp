@@ -34,8 +34,13 @@ AxisWall axis_wall(const Uncertain& position, const Uncertain& velocity, const B
     if (velocity.lo > 0.0) return {not_negative((Uncertain::exact(box.upper) - position) / velocity), box.upper};
     if (velocity.hi < 0.0) return {not_negative((Uncertain::exact(box.lower) - position) / velocity), box.lower};
     if (velocity.lo == 0.0 && velocity.hi == 0.0) return {};
-    // Its sign is within rounding: it may reach the nearer wall at any time.
-    return {Uncertain{0.0, infinity}, position.mid() < 0.5 * box.side ? box.lower : box.upper};
+    // Its sign is within rounding: it may creep to either wall, no sooner
+    // than its distance over the fastest speed allowed.
+    const double to_lower = (position.lo - box.lower) / -velocity.lo;
+    const double to_upper = (box.upper - position.hi) / velocity.hi;
+    const bool lower_first = velocity.lo < 0.0 && (!(velocity.hi > 0.0) || to_lower <= to_upper);
+    const double earliest = std::max(0.0, lower_first ? to_lower : to_upper) * (1.0 - 0x1p-40);
+    return {Uncertain{earliest, infinity}, lower_first ? box.lower : box.upper};
 }
 
 struct WallReach {

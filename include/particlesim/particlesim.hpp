@@ -7,6 +7,7 @@
 #include "particlesim/particle.hpp"
 #include "particlesim/random_scene.hpp"
 #include "particlesim/scene.hpp"
+#include "particlesim/scene_families.hpp"
 #include "particlesim/state_writer.hpp"
 #include "particlesim/step_check.hpp"
 #include "particlesim/stepped_simulation.hpp"

@@ -1,0 +1,125 @@
+#include "suite.hpp"
+
+#include "particlesim/particlesim.hpp"
+
+#include <cerrno>
+#include <charconv>
+#include <cstdio>
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+#include <stdexcept>
+#include <vector>
+
+namespace simgen {
+
+namespace {
+
+using namespace particlesim;
+
+struct SuiteCase {
+    const char* name;
+    SceneFamily family;
+    SceneFamilyOptions options;
+    const char* exercises;
+};
+
+SceneFamilyOptions with(std::size_t particles, std::int64_t steps, OutputMode mode = OutputMode::print) {
+    SceneFamilyOptions options;
+    options.particles = particles;
+    options.steps = steps;
+    options.mode = mode;
+    return options;
+}
+
+// From the smallest scene that shows a rule to scenes where only a fast,
+// exact search keeps up.
+std::vector<SuiteCase> suite_cases(std::uint64_t seed) {
+    std::vector<SuiteCase> cases{
+        {"cradle", SceneFamily::cradle, with(3, 14),
+         "one collision per particle per step: the momentum crosses a touching row one disk per step; resting "
+         "touching disks (A = 0) never collide"},
+        {"ties", SceneFamily::ties, with(0, 6),
+         "exact ties: wall before pair, lowest indices first, exact corners, t = 1 is a candidate, stopping at a "
+         "wall reached exactly at the end of the step"},
+        {"walls", SceneFamily::walls, with(24, 20),
+         "disks starting on walls (wall collisions at t = 0) and pairs starting in contact"},
+        {"line", SceneFamily::line, with(16, 60),
+         "a row moving together into a wall: chains of head-on collisions, overlaps left by one-per-step"},
+        {"fast", SceneFamily::fast, with(20, 10),
+         "speeds of several box sides per step: the wall cut, stopping at walls after collisions"},
+        {"random-small", SceneFamily::random, with(50, 50),
+         "the rules' random scene (as simcli draws it) in a small box: many collisions per step"},
+        {"gas", SceneFamily::gas, with(200, 50), "a gas at area fraction 0.3"},
+        {"lattice", SceneFamily::lattice, with(300, 30),
+         "a dense perturbed lattice: several candidates per particle, overlaps carried into the next step"},
+        {"clusters", SceneFamily::clusters, with(400, 60), "dense clusters colliding in an empty box"},
+        {"random-default", SceneFamily::random, with(1000, 100),
+         "the default scene of the exercise (N = 1000, L = 20000, r = 1), 100 steps"},
+        {"gas-large", SceneFamily::gas, with(2000, 40, OutputMode::perf),
+         "2000 disks in perf mode: only the final block, with the counters"},
+    };
+    cases[5].options.box_size = 200.0;
+    for (SuiteCase& c : cases) c.options.seed = seed;
+    return cases;
+}
+
+std::string shortest(double value) {
+    char text[32];
+    return std::string(text, std::to_chars(text, text + sizeof text, value).ptr);
+}
+
+void write_expected_output(const Scene& scene, const std::string& path) {
+    std::FILE* file = std::fopen(path.c_str(), "wb");
+    if (!file) throw std::runtime_error(path + ": cannot write: " + std::strerror(errno));
+    try {
+        SteppedOptions reference;
+        reference.pair_search = PairSearch::brute_force;
+        reference.threads = 1;
+        SteppedSimulation engine(scene.world, scene.particles, reference);
+        StateWriter writer(file);
+        writer.write_state(0, engine.particles());
+        const bool print = scene.mode == OutputMode::print;
+        particlesim::run(engine, scene.steps, [&](std::int64_t step, std::span<const Particle> particles) {
+            if (print && step < scene.steps) writer.write_state(step, particles);
+        });
+        writer.write_final(scene.steps, engine.particles());
+        writer.flush();
+    } catch (...) {
+        std::fclose(file);
+        throw;
+    }
+    if (std::fclose(file) != 0) throw std::runtime_error(path + ": cannot write: " + std::strerror(errno));
+}
+
+}  // namespace
+
+void write_suite(const std::string& directory, std::uint64_t seed) {
+    std::filesystem::create_directories(directory);
+    std::ofstream manifest(directory + "/manifest.tsv");
+    manifest << "case\tfamily\tparticles\tbox\tradius\tsteps\tmode\texercises\n";
+    int number = 0;
+    for (const SuiteCase& c : suite_cases(seed)) {
+        ++number;
+        const Scene scene = make_family_scene(c.family, c.options);
+        char prefix[8];
+        std::snprintf(prefix, sizeof prefix, "%02d-", number);
+        const std::string stem = directory + "/" + prefix + c.name;
+        {
+            std::ofstream in(stem + ".in");
+            write_scene(in, scene);
+            if (!in) throw std::runtime_error(stem + ".in: cannot write");
+        }
+        write_expected_output(scene, stem + ".out");
+        const char* family = "";
+        for (const SceneFamilyInfo& info : scene_families()) {
+            if (info.family == c.family) family = info.name;
+        }
+        manifest << prefix << c.name << '\t' << family << '\t' << scene.particle_count << '\t'
+                 << shortest(scene.world.box_size) << '\t' << shortest(scene.world.radius) << '\t' << scene.steps << '\t'
+                 << (scene.mode == OutputMode::print ? "print" : "perf") << '\t' << c.exercises << '\n';
+    }
+    if (!manifest.flush()) throw std::runtime_error(directory + "/manifest.tsv: cannot write");
+}
+
+}  // namespace simgen

@@ -1,0 +1,62 @@
+#pragma once
+// Families of test scenes for people who write or grade their own simulator
+// (simgen; docs/checking.md). Every scene lists its particles explicitly and
+// is reproducible from its options and seed; write_scene() writes each number
+// in the shortest text that reads back to the same double, so a scene means
+// the same to every program that reads it.
+
+#include "particlesim/random_scene.hpp"
+#include "particlesim/scene.hpp"
+
+#include <cstdint>
+#include <optional>
+#include <ostream>
+#include <string>
+#include <string_view>
+#include <vector>
+
+namespace particlesim {
+
+enum class SceneFamily {
+    random,    // the rules' random scene: what simcli draws for the same N, L, r and seed
+    gas,       // random disks at a given area fraction and speed range
+    lattice,   // a perturbed triangular lattice: denser than random placement reaches
+    line,      // the original design's worst case: N disks in a row moving together
+    cradle,    // Newton's cradle: a row of touching disks at rest, one moving into it
+    clusters,  // dense clusters in an empty box, drifting into each other
+    ties,      // simultaneous collisions by construction, in exact numbers: every tie rule
+    fast,      // speeds of several box sides per step
+    walls,     // disks starting on the walls, and pairs starting in contact
+};
+
+struct SceneFamilyInfo {
+    SceneFamily family;
+    const char* name;
+    const char* description;
+};
+
+// Every family, in the order above.
+const std::vector<SceneFamilyInfo>& scene_families();
+std::optional<SceneFamily> scene_family_named(std::string_view name);
+
+// What a family may be asked for; each leaves what it fixes itself alone
+// (the ties family, for example, has its own particles and box).
+struct SceneFamilyOptions {
+    std::optional<std::size_t> particles;  // N
+    std::int64_t steps = 100;
+    OutputMode mode = OutputMode::print;
+    std::uint64_t seed = default_seed;
+    double radius = 1.0;
+    std::optional<double> box_size;       // random, fast, walls
+    std::optional<double> area_fraction;  // gas, clusters
+    std::optional<SpeedRange> speeds;     // length per step
+};
+
+// Throws std::invalid_argument for options the family cannot honour, and
+// SceneTooFull when the disks do not fit.
+Scene make_family_scene(SceneFamily family, const SceneFamilyOptions& options);
+
+// io.md's input format with every particle listed: "N L r S mode" and "i x y vx vy".
+void write_scene(std::ostream& out, const Scene& scene);
+
+}  // namespace particlesim

@@ -1,0 +1,190 @@
+// The library's step checker on hand-built steps worked out on paper (r = 1),
+// each with the right next state (accepted) and classic wrong ones (caught,
+// with the reason in words), and decisions that lie within rounding.
+
+#include "check.hpp"
+
+#include "particlesim/step_check.hpp"
+
+#include <string>
+#include <vector>
+
+using namespace particlesim;
+
+namespace {
+
+Particle disk(double x, double y, double vx, double vy) {
+    Particle p;
+    p.position = Vec2(x, y);
+    p.velocity = Vec2(vx, vy);
+    return p;
+}
+
+StepCheck check_exact(double box, const std::vector<Particle>& before, const std::vector<Particle>& after,
+                      const StepCheckOptions& options = {}) {
+    StepChecker checker(World{box, 1.0}, options);
+    return checker.check({before, 0.0}, {after, fixed8_uncertainty});
+}
+
+bool says(const StepCheck& check, const std::string& words) {
+    return check.violation && check.violation->what.find(words) != std::string::npos;
+}
+
+void head_on_pair() {
+    // Centres 4 apart closing at 4 per step: contact (distance 2) at t = 0.5,
+    // at x = 6 and 8; the velocities swap and each goes back for 0.5.
+    const std::vector<Particle> before{disk(5, 10, 2, 0), disk(9, 10, -2, 0)};
+    const StepCheck right = check_exact(20, before, {disk(5, 10, -2, 0), disk(9, 10, 2, 0)});
+    CHECK(!right.violation);
+    CHECK(right.within_rounding.empty());
+    CHECK_EQ(right.collisions[0].particle_min, 1U);
+    CHECK_EQ(right.collisions[1].particle_max, 1U);
+    CHECK_EQ(right.collisions[0].wall_max, 0U);
+    // Passing through each other: both at x = 7 with their old velocities.
+    const StepCheck passing = check_exact(20, before, {disk(7, 10, 2, 0), disk(7, 10, -2, 0)});
+    CHECK(says(passing, "particles 0 and 1 meet at t = 0.5, and the output lets them pass"));
+    CHECK_EQ(passing.violation->particle, 0U);
+    CHECK_EQ(passing.violation->expected.position.x(), 5.0);
+    // Off by 1e-6 in one coordinate: beyond the printing's 5e-9.
+    const StepCheck off = check_exact(20, before, {disk(5, 10, -2, 0), disk(9, 10.000001, 2, 0)});
+    CHECK(off.violation && off.violation->particle == 1);
+    // Within the printing: 3e-9 off.
+    CHECK(!check_exact(20, before, {disk(5, 10, -2, 0), disk(9, 10.000000003, 2, 0)}).violation);
+}
+
+void stop_at_the_wall() {
+    // Disk 0 at x = 5 moving -2 meets disk 1 resting at x = 2 at t = 0.5 (x = 4
+    // and 2); disk 1 takes the velocity -2 and reaches the wall x = 1 at
+    // exactly the end of the step: it stops there, velocity unchanged.
+    const std::vector<Particle> before{disk(5, 52, -2, 0), disk(2, 52, 0, 0)};
+    CHECK(!check_exact(64, before, {disk(4, 52, 0, 0), disk(1, 52, -2, 0)}).violation);
+    // Reflected at once instead of stopping.
+    const StepCheck reflected = check_exact(64, before, {disk(4, 52, 0, 0), disk(1, 52, 2, 0)});
+    CHECK(says(reflected, "must stop at the wall (x = 1) and bounce at t = 0 of the next step"));
+    CHECK_EQ(reflected.violation->particle, 1U);
+}
+
+void exact_corner() {
+    // From (2, 2) at (-2, -2) the corner (1, 1) is reached at t = 0.5 on both
+    // axes: both components flip, and the rest of the step brings it back.
+    const std::vector<Particle> before{disk(2, 2, -2, -2)};
+    const StepCheck right = check_exact(64, before, {disk(2, 2, 2, 2)});
+    CHECK(!right.violation);
+    CHECK_EQ(right.collisions[0].wall_min, 1U);
+    // Only vx flipped: it then sits on the bottom wall (stopped there).
+    const StepCheck one_axis = check_exact(64, before, {disk(2, 1, 2, -2)});
+    CHECK(says(one_axis, "reaches the corner at t = 0.5: both vx and vy flip, but the output flips only vx"));
+}
+
+void wall_wins_a_tie() {
+    // Disk 0 reaches the wall x = 1 at t = 0.5, and disk 1 (from (1, 11)
+    // downwards) touches it there at the same time: the wall comes first, so
+    // disk 0 bounces back to (2, 8) and disk 1 passes on to (1, 9).
+    const std::vector<Particle> before{disk(2, 8, -2, 0), disk(1, 11, 0, -2)};
+    CHECK(!check_exact(64, before, {disk(2, 8, 2, 0), disk(1, 9, 0, -2)}).violation);
+    // The pair first: at contact (1, 8) and (1, 10) the normal is vertical, so
+    // disk 0 keeps vx = -2 and takes vy = -2, disk 1 stops; disk 0 sits on the
+    // wall x = 1 moving into it, so it stops there at once (1, 8).
+    const StepCheck pair_first = check_exact(64, before, {disk(1, 8, -2, -2), disk(1, 10, 0, 0)});
+    CHECK(says(pair_first, "the output carries out another collision first"));
+    CHECK(says(pair_first, "a tie"));
+}
+
+void lowest_indices_win() {
+    // Disk 0 rests at x = 32; disks 1 and 2 reach it from both sides at t = 0.5.
+    // Pair (0, 1) comes first: 0 takes +2 and passes into disk 2's path; disk
+    // 2 is free and moves on to x = 33, overlapping disk 0 (left for the next step).
+    const std::vector<Particle> before{disk(32, 32, 0, 0), disk(29, 32, 2, 0), disk(35, 32, -2, 0)};
+    CHECK(!check_exact(64, before, {disk(33, 32, 2, 0), disk(30, 32, 0, 0), disk(33, 32, -2, 0)}).violation);
+    const StepCheck wrong = check_exact(64, before, {disk(31, 32, -2, 0), disk(31, 32, 2, 0), disk(34, 32, 0, 0)});
+    CHECK(wrong.violation.has_value());
+}
+
+void overlapping_pair_collides_at_zero() {
+    // Centres 1.5 apart, approaching: a collision at t = 0 (rules.md, C <= 0).
+    // At t = 0 the velocities swap along x, then each moves a whole step.
+    const std::vector<Particle> before{disk(10, 10, 1, 0), disk(11.5, 10, -1, 0)};
+    CHECK(!check_exact(20, before, {disk(9, 10, -1, 0), disk(12.5, 10, 1, 0)}).violation);
+    const StepCheck never = check_exact(20, before, {disk(11, 10, 1, 0), disk(10.5, 10, -1, 0)});
+    CHECK(says(never, "overlap at the start of the step and approach each other, so they collide at t = 0"));
+}
+
+void contact_at_t_one_within_rounding() {
+    // Printed centres 4 apart closing at 2 per step: contact at t = 1, but the
+    // printed numbers are known within 5e-9, so t may be just beyond 1: both
+    // the collision (velocities swapped at x = 11 and 13) and none are right.
+    const std::vector<Particle> before{disk(10, 10, 1, 0), disk(14, 10, -1, 0)};
+    StepChecker checker(World{40, 1.0});
+    const StepCheck collided =
+        checker.check({before, fixed8_uncertainty}, {std::vector{disk(11, 10, -1, 0), disk(13, 10, 1, 0)}, fixed8_uncertainty});
+    const StepCheck passed =
+        checker.check({before, fixed8_uncertainty}, {std::vector{disk(11, 10, 1, 0), disk(13, 10, -1, 0)}, fixed8_uncertainty});
+    CHECK(!collided.violation);
+    CHECK(!passed.violation);
+    CHECK(!passed.within_rounding.empty());
+    CHECK_EQ(passed.collisions[0].particle_max, 0U);
+    CHECK_EQ(collided.collisions[0].particle_min, 1U);
+    // From exact numbers t = 1 is decided: the contact is a candidate.
+    const StepCheck exact_passed =
+        checker.check({before, 0.0}, {std::vector{disk(11, 10, 1, 0), disk(13, 10, -1, 0)}, fixed8_uncertainty});
+    CHECK(says(exact_passed, "meet at t = 1, and the output lets them pass"));
+}
+
+void substeps() {
+    // Two micro-steps of 0.5: a disk 0.75 from the wall at speed 1 bounces in
+    // the second micro-step (its t = 0.5 there) and is back at x = 1.5... with
+    // x0 = 2.75, v = -1: after 0.5 at 2.25, then wall in 1.25 > 0.5: x = 1.75.
+    const std::vector<Particle> before{disk(2.75, 5, -1, 0)};
+    StepChecker checker(World{10, 1.0}, {CheckedRules::stepped, 2});
+    CHECK(!checker.check({before, 0.0}, {std::vector{disk(1.75, 5, -1, 0)}, fixed8_uncertainty}).violation);
+    CHECK(checker.check({before, 0.0}, {std::vector{disk(1.5, 5, -1, 0)}, fixed8_uncertainty}).violation.has_value());
+}
+
+void outside_the_box() {
+    const StepCheck outside = check_exact(20, {disk(10, 18, 0, 3)}, {disk(10, 21, 0, 3)});
+    CHECK(says(outside, "particle 0 is outside the box: y = 21 is beyond L - r = 19"));
+}
+
+void exact_rules() {
+    // Continuous time: disk 0 bounces off disk 1 at t = 0.5 and then off the
+    // wall at t = 1.5 - ... here: the pair at t = 0.5 as above, and disk 1
+    // (now at -2 from x = 2) reaches the wall at t = 1, exactly the end.
+    const std::vector<Particle> before{disk(5, 52, -2, 0), disk(2, 52, 0, 0)};
+    StepChecker checker(World{64, 1.0}, {CheckedRules::exact, 1});
+    CHECK(!checker.check({before, 0.0}, {std::vector{disk(4, 52, 0, 0), disk(1, 52, 2, 0)}, fixed8_uncertainty}).violation ||
+          !checker.check({before, 0.0}, {std::vector{disk(4, 52, 0, 0), disk(1, 52, -2, 0)}, fixed8_uncertainty}).violation);
+    // Passing through each other is not hard disks.
+    const StepCheck passing =
+        checker.check({before, 0.0}, {std::vector{disk(3, 52, -2, 0), disk(2, 52, 0, 0)}, fixed8_uncertainty});
+    CHECK(passing.violation.has_value());
+    // Nor is an overlap deeper than rounding.
+    const StepCheck overlap = checker.check({std::vector{disk(10, 10, 0, 0), disk(12, 10, 0, 0)}, 0.0},
+                                            {std::vector{disk(10, 10, 0, 0), disk(11, 10, 0, 0)}, fixed8_uncertainty});
+    CHECK(says(overlap, "particles 0 and 1 overlap"));
+}
+
+void perf_run() {
+    // Head-on pair over 3 steps, all decided from exact numbers.
+    StepChecker checker(World{20, 1.0});
+    const StepChecker::Run run = checker.run({std::vector{disk(5, 10, 2, 0), disk(9, 10, -2, 0)}, 0.0}, 3);
+    CHECK(!run.undecided_from);
+    CHECK_EQ(run.lower[0].position.x(), 1.0);  // x = 5, then bounced: 5 -> 3 -> 1 (stopped on the wall)
+    CHECK_EQ(run.collisions[0].particle_min, 1U);
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+    return check::run(argc, argv, "test_step_check",
+                      {{"head-on pair", head_on_pair},
+                       {"stop at the wall", stop_at_the_wall},
+                       {"exact corner", exact_corner},
+                       {"wall wins a tie", wall_wins_a_tie},
+                       {"lowest indices win", lowest_indices_win},
+                       {"overlapping pair collides at t = 0", overlapping_pair_collides_at_zero},
+                       {"contact at t = 1 within rounding", contact_at_t_one_within_rounding},
+                       {"substeps", substeps},
+                       {"outside the box", outside_the_box},
+                       {"exact rules", exact_rules},
+                       {"perf run", perf_run}});
+}
