@@ -24,7 +24,8 @@ private:
     struct Bounds {
         std::vector<Particle> lower, upper;
         std::vector<CollisionRange> collisions;
-        double widest = 0.0;  // the largest spread of a position between the runs
+        double widest = 0.0;                  // the largest spread of a position between the runs
+        std::vector<std::uint32_t> unjudged;  // particles whose step is too chaotic to judge
     };
     // Runs the ensemble `steps` steps on, calling `after_step(s)` after each.
     template <typename AfterStep>

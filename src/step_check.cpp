@@ -180,9 +180,20 @@ private:
     }
 
     static std::string why_undecided(const PossibleCollision& c) {
-        const std::string what = describe(c, c.i);
-        if (c.exists == Tri::maybe) return what + " only within rounding (a graze, or t = 1 within rounding)";
-        return what + ", and whether it comes first is within rounding (a tie)";
+        const std::string who = c.kind == CollisionKind::wall
+                                    ? "particle " + std::to_string(c.i)
+                                    : "particles " + std::to_string(c.i) + " and " + std::to_string(c.j);
+        if (c.exists == Tri::maybe) {
+            if (c.kind == CollisionKind::wall && !std::isfinite(c.time.hi)) {
+                return who + " creeps along a wall: whether it reaches it in this step is within rounding";
+            }
+            if (c.kind == CollisionKind::wall) return who + " reaches the wall within rounding of the end of the step";
+            if (c.touching == Tri::maybe) return who + " touch within rounding: whether they collide at t = 0 is within rounding";
+            if (c.time.lo <= 1.0 && 1.0 <= c.time.hi) return who + " meet within rounding of the end of the step";
+            return who + " graze: whether they touch is within rounding";
+        }
+        return describe(c, c.i) + ", and whether it comes before another collision of " + (c.kind == CollisionKind::wall ? "it" : "theirs") +
+               " is within rounding (a near tie)";
     }
 
     StepCheck check_stepped(const PrintedState& before, const PrintedState& after) {
@@ -292,10 +303,16 @@ private:
                 return v;
             }
             for (const std::uint32_t k : step_.candidates_of(particle)) {
-                if (printed_matches(static_cast<int>(k))) {
-                    v.what += ", but the output carries out this one: " + describe(step_.candidates()[k], particle);
-                    return v;
+                if (!printed_matches(static_cast<int>(k))) continue;
+                const PossibleCollision& lost = step_.candidates()[k];
+                v.what += ": " + describe(lost, particle) + ", but ";
+                const PossibleCollision* winner = winner_over(lost);
+                v.what += winner ? describe(*winner, winner->i) + " comes first" : "that collision is not selected";
+                if (winner && winner->time.is_exact() && lost.time.is_exact() && winner->time.lo == lost.time.lo) {
+                    v.what += " (a tie: at equal times a wall comes before a particle, then the lowest indices win)";
                 }
+                v.what += "; the output carries it out";
+                return v;
             }
             v.what += " and moves freely, but the output changes its state";
             return v;
@@ -342,6 +359,17 @@ private:
         }
         v.what = rule + " (its one collision in this step), but " + mine + "'s printed state does not follow from it";
         return v;
+    }
+
+    // The accepted collision that takes a particle of `lost` before it.
+    const PossibleCollision* winner_over(const PossibleCollision& lost) const {
+        for (const std::uint32_t particle : {lost.i, lost.j}) {
+            for (const std::uint32_t k : step_.candidates_of(particle)) {
+                const PossibleCollision& c = step_.candidates()[k];
+                if (&c != &lost && c.accepted == Tri::yes) return &c;
+            }
+        }
+        return nullptr;
     }
 
     // "x" or "y" when the expected state sits on a wall it moves towards.

@@ -26,8 +26,9 @@ inline Tri tri_not(Tri a) { return a == Tri::yes ? Tri::no : (a == Tri::no ? Tri
 
 struct Uncertain {
     // How far another correct formula may land from ours, relative to the
-    // operands: 2^-44, about 500 units in the last place.
-    static constexpr double formula_allowance = 0x1p-44;
+    // operands: 2^-48, 32 units in the last place (a formula of a dozen
+    // operations, each off by at most half a unit, in whatever order).
+    static constexpr double formula_allowance = 0x1p-48;
 
     double lo = 0.0;
     double hi = 0.0;

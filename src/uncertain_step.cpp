@@ -24,6 +24,20 @@ Tri at_most(const Uncertain& a, const Uncertain& b) {
     return Tri::maybe;
 }
 
+// (B^2 - 4AC) / 4 = half_b^2 - A C computed in double: exact when every
+// product and the difference are; otherwise off by about a unit in the last
+// place of half_b^2.
+Uncertain textbook_cancellation(const Uncertain& quarter_disc, const Uncertain& half_b, const Uncertain& a,
+                                const Uncertain& c) {
+    if (quarter_disc.is_exact() && half_b.is_exact() && a.is_exact() && c.is_exact()) {
+        const DoubleDouble b_sq = two_product(half_b.lo, half_b.lo);
+        const DoubleDouble ac = two_product(a.lo, c.lo);
+        if (b_sq.lo == 0.0 && ac.lo == 0.0 && two_sum(b_sq.hi, -ac.hi).lo == 0.0) return quarter_disc;
+    }
+    const double scale = std::max(half_b.magnitude() * half_b.magnitude(), a.magnitude() * c.magnitude());
+    return Uncertain::widened(quarter_disc.lo, quarter_disc.hi, scale);
+}
+
 struct AxisWall {
     Uncertain time = Uncertain::exact(infinity);
     double wall = 0.0;
@@ -237,7 +251,10 @@ void UncertainStep::add_pair(std::uint32_t i, std::uint32_t j) {
     const Uncertain half_b = dpx * dvx + dpy * dvy;
     const Uncertain c = square(dpx) + square(dpy) - contact;
     const Uncertain cross = dpx * dvy - dpy * dvx;
-    const Uncertain quarter_disc = contact * relative_speed_sq - square(cross);
+    // Ours has no cancellation; the textbook B^2 - 4AC cancels terms of the
+    // size of B^2, and a correct program may use it: its rounding is allowed.
+    const Uncertain quarter_disc =
+        textbook_cancellation(contact * relative_speed_sq - square(cross), half_b, relative_speed_sq, c);
 
     const bool surely_moving = dvx.lo > 0.0 || dvx.hi < 0.0 || dvy.lo > 0.0 || dvy.hi < 0.0;
     const bool surely_resting = dvx.lo == 0.0 && dvx.hi == 0.0 && dvy.lo == 0.0 && dvy.hi == 0.0;
@@ -268,9 +285,10 @@ void UncertainStep::add_pair(std::uint32_t i, std::uint32_t j) {
 Tri UncertainStep::comes_before(const PossibleCollision& a, const PossibleCollision& b) const {
     if (a.time.hi < b.time.lo) return Tri::yes;
     if (b.time.hi < a.time.lo) return Tri::no;
-    if (a.time.is_exact() && b.time.is_exact()) {  // an exact tie: the rest of the key decides
-        return std::tie(a.kind, a.i, a.j) < std::tie(b.kind, b.i, b.j) ? Tri::yes : Tri::no;
-    }
+    // Bounds that only touch: at worst an exact tie, which the rest of the key decides.
+    const bool a_key_first = std::tie(a.kind, a.i, a.j) < std::tie(b.kind, b.i, b.j);
+    if (a.time.hi <= b.time.lo && a_key_first) return Tri::yes;
+    if (b.time.hi <= a.time.lo && !a_key_first) return Tri::no;
     return Tri::maybe;
 }
 

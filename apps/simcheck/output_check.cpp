@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <span>
 
 namespace simcheck {
@@ -20,11 +21,15 @@ double slack(double value, double uncertainty) { return uncertainty + std::fabs(
 // exactly when it is the final block; or what is wrong with its shape.
 class BlockReader {
 public:
-    BlockReader(OutputReader& output, std::size_t count) : output_(output), particles_(count), lines_(count) {}
+    // Nothing of size N is allocated before N lines have been read: a scene
+    // may claim millions of particles over an output of three lines.
+    BlockReader(OutputReader& output, std::size_t count) : output_(output), count_(count) {}
 
     std::optional<Finding> read(std::int64_t step, bool final_block) {
         OutputLine line;
-        for (std::size_t i = 0; i < particles_.size(); ++i) {
+        particles_.clear();
+        lines_.clear();
+        for (std::size_t i = 0; i < count_; ++i) {
             if (!output_.next(line)) {
                 return Finding{step, output_.lines_read(),
                                "the output ends (after line " + std::to_string(output_.lines_read()) + ") before particle " +
@@ -46,8 +51,8 @@ public:
                                                  " has counters, which only the final block's lines have",
                                std::nullopt, std::nullopt};
             }
-            particles_[i] = line.particle;
-            lines_[i] = line.line;
+            particles_.push_back(line.particle);
+            lines_.push_back(line.line);
         }
         return std::nullopt;
     }
@@ -66,6 +71,7 @@ public:
 
 private:
     OutputReader& output_;
+    std::size_t count_;
     std::vector<Particle> particles_;
     std::vector<long> lines_;
 };
@@ -132,6 +138,17 @@ std::optional<Finding> check_counters(const BlockReader& block, std::span<const 
     return std::nullopt;
 }
 
+// An unjudged step may have had any number of collisions: the maximum saturates.
+void add_counts(CollisionRange& total, const CollisionRange& step) {
+    const auto add = [](std::uint64_t a, std::uint64_t b) {
+        return a > std::numeric_limits<std::uint64_t>::max() - b ? std::numeric_limits<std::uint64_t>::max() : a + b;
+    };
+    total.particle_min = add(total.particle_min, step.particle_min);
+    total.particle_max = add(total.particle_max, step.particle_max);
+    total.wall_min = add(total.wall_min, step.wall_min);
+    total.wall_max = add(total.wall_max, step.wall_max);
+}
+
 Report broken(Report report, Finding finding) {
     report.verdict = Verdict::breaks_rules;
     report.finding = std::move(finding);
@@ -143,6 +160,7 @@ void add_notes(Report& report, std::int64_t step, const std::vector<std::string>
         if (report.within_rounding.size() < notes_kept) report.within_rounding.emplace_back(step, note);
     }
     report.within_rounding_count += notes.size();
+    if (!notes.empty()) report.steps_within_rounding.push_back(step);
 }
 
 }  // namespace
@@ -167,7 +185,7 @@ Report check_output(const Scene& scene, OutputReader& output, const StepCheckOpt
         previous_uncertainty = 0.0;
     }
 
-    std::vector<CollisionRange> totals(count);
+    std::vector<CollisionRange> totals(count);  // N lines are read by now
     const auto compare = [&](std::int64_t step, const StepCheck& check) -> std::optional<Finding> {
         if (check.violation) {
             const RuleViolation& v = *check.violation;
@@ -175,10 +193,7 @@ Report check_output(const Scene& scene, OutputReader& output, const StepCheckOpt
         }
         add_notes(report, step, check.within_rounding);
         for (std::size_t i = 0; i < count; ++i) {
-            totals[i].particle_min += check.collisions[i].particle_min;
-            totals[i].particle_max += check.collisions[i].particle_max;
-            totals[i].wall_min += check.collisions[i].wall_min;
-            totals[i].wall_max += check.collisions[i].wall_max;
+            add_counts(totals[i], check.collisions[i]);
         }
         return std::nullopt;
     };

@@ -39,6 +39,7 @@ struct Report {
     double uncertainty = 0.0;        // of each printed number
     std::vector<std::pair<std::int64_t, std::string>> within_rounding;  // the first few
     std::size_t within_rounding_count = 0;
+    std::vector<std::int64_t> steps_within_rounding;  // every step with such a decision, ascending
 };
 
 Report check_output(const particlesim::Scene& scene, OutputReader& output, const particlesim::StepCheckOptions& options);

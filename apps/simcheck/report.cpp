@@ -119,6 +119,10 @@ void write_json_report(std::FILE* out, const Report& report, const ReportContext
         json += "{\"step\": " + std::to_string(report.within_rounding[k].first) +
                 ", \"what\": " + json_string(report.within_rounding[k].second) + "}";
     }
+    json += "], \"steps_within_rounding\": [";
+    for (std::size_t k = 0; k < report.steps_within_rounding.size(); ++k) {
+        json += (k > 0 ? ", " : "") + std::to_string(report.steps_within_rounding[k]);
+    }
     json += "]}\n";
     std::fputs(json.c_str(), out);
 }

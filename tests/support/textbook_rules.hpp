@@ -218,15 +218,23 @@ inline std::string output(const particlesim::Scene& scene, const std::vector<par
         const auto& d = sim.disks();
         bool short_one = mistake == Mistake::counters_off_by_one;
         for (std::size_t i = 0; i < d.size(); ++i) {
-            std::string line = std::to_string(s) + " " + std::to_string(i) + " " + fixed8(d[i].x) + " " + fixed8(d[i].y) +
-                               " " + fixed8(d[i].vx) + " " + fixed8(d[i].vy);
+            std::string line = std::to_string(s);
+            line += ' ';
+            line += std::to_string(i);
+            for (const double value : {d[i].x, d[i].y, d[i].vx, d[i].vy}) {
+                line += ' ';
+                line += fixed8(value);
+            }
             if (final_block) {
                 unsigned long long pc = d[i].pc;
                 if (short_one && pc > 0) {
                     --pc;
                     short_one = false;
                 }
-                line += " " + std::to_string(pc) + " " + std::to_string(d[i].wc);
+                for (const unsigned long long counter : {pc, d[i].wc}) {
+                    line += ' ';
+                    line += std::to_string(counter);
+                }
             }
             line += "\n";
             const bool odd = s == odd_step && i == odd_particle && !final_block;
