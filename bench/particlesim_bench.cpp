@@ -7,6 +7,7 @@
 //   particlesim_bench accuracy [--quick]   run time against error (accuracy_benchmark.cpp)
 //   particlesim_bench exact    [--quick]   the exact engine's speed (accuracy_benchmark.cpp)
 //   particlesim_bench stress   [--quick]   1e6 steps of a crowded box (stress_benchmark.cpp)
+//   particlesim_bench divergence [--quick] two correct programs drifting apart (divergence_benchmark.cpp)
 //
 // Every time is the median of repeated runs measured in the same invocation.
 
@@ -237,8 +238,10 @@ int main(int argc, char** argv) {
         bench::exact_benchmark(quick);
     } else if (mode == "stress") {
         bench::stress_benchmark(quick);
+    } else if (mode == "divergence") {
+        bench::divergence_benchmark(quick);
     } else {
-        std::fprintf(stderr, "usage: particlesim_bench steps|simcli|accuracy|exact|stress [--quick]\n");
+        std::fprintf(stderr, "usage: particlesim_bench steps|simcli|accuracy|exact|stress|divergence [--quick]\n");
         return 2;
     }
     return 0;

@@ -3,7 +3,7 @@
 # plots under build/bench-results/<machine>/ (machine: first argument, or
 # hostname); with --update, under bench/results/<machine>/, replacing the
 # committed results. --quick runs a short version (smaller N, fewer repeats).
-# Further arguments pick modes (default: all): steps simcli accuracy exact stress.
+# Further arguments pick modes (default: all): steps simcli accuracy exact stress divergence.
 # Installs gnuplot-nox (for the plots) when missing.
 #   scripts/run-bench.sh cpp-2core                  # everything (about an hour)
 #   scripts/run-bench.sh cpp-2core "" accuracy      # just run time against error
@@ -19,7 +19,7 @@ scripts/ensure-deps.sh gnuplot-nox
 machine=${1:-$(hostname)}
 quick=${2:-}
 shift $(( $# < 2 ? $# : 2 ))
-modes=${*:-steps simcli accuracy exact stress}
+modes=${*:-steps simcli accuracy exact stress divergence}
 out=$results_root/$machine
 mkdir -p "$out"
 
@@ -40,4 +40,5 @@ for mode in $modes; do
 done
 [[ " $modes " == *" steps "* ]] && gnuplot -e "results='$out'" bench/plot_steps.gp
 [[ " $modes " == *" accuracy "* ]] && gnuplot -e "results='$out'" bench/plot_accuracy.gp
+[[ " $modes " == *" divergence "* ]] && gnuplot -e "results='$out'" bench/plot_divergence.gp
 echo "wrote $(for mode in $modes; do printf '%s ' "$out/$mode.csv"; done)and the plots"

@@ -46,6 +46,15 @@ std::string describe(const PossibleCollision& c, std::uint32_t particle) {
 }
 
 
+// A collision as the subject of a sentence.
+std::string event_name(const PossibleCollision& c) {
+    if (c.kind == CollisionKind::wall) {
+        const bool corner = c.on_x == Tri::yes && c.on_y == Tri::yes;
+        return "particle " + std::to_string(c.i) + "'s " + (corner ? "corner" : "wall") + " hit at " + time_text(c.time);
+    }
+    return "the meeting of particles " + std::to_string(c.i) + " and " + std::to_string(c.j) + " at " + time_text(c.time);
+}
+
 }  // namespace
 
 class StepChecker::Impl {
@@ -189,6 +198,10 @@ private:
             }
             if (c.kind == CollisionKind::wall) return who + " reaches the wall within rounding of the end of the step";
             if (c.touching == Tri::maybe) return who + " touch within rounding: whether they collide at t = 0 is within rounding";
+            if (c.approaching == Tri::maybe) {
+                return who + " move neither towards nor away from each other, within rounding: whether they collide is "
+                             "within rounding";
+            }
             if (c.time.lo <= 1.0 && 1.0 <= c.time.hi) return who + " meet within rounding of the end of the step";
             return who + " graze: whether they touch is within rounding";
         }
@@ -307,7 +320,7 @@ private:
                 const PossibleCollision& lost = step_.candidates()[k];
                 v.what += ": " + describe(lost, particle) + ", but ";
                 const PossibleCollision* winner = winner_over(lost);
-                v.what += winner ? describe(*winner, winner->i) + " comes first" : "that collision is not selected";
+                v.what += winner ? event_name(*winner) + " comes first" : "that collision is not selected";
                 if (winner && winner->time.is_exact() && lost.time.is_exact() && winner->time.lo == lost.time.lo) {
                     v.what += " (a tie: at equal times a wall comes before a particle, then the lowest indices win)";
                 }

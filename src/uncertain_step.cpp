@@ -279,6 +279,7 @@ void UncertainStep::add_pair(std::uint32_t i, std::uint32_t j) {
     pair.j = j;
     pair.exists = exists;
     pair.touching = touching;
+    pair.approaching = approaching;
     candidates_.push_back(pair);
 }
 

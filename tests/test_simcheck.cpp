@@ -277,8 +277,8 @@ void exact_ties_are_decided() {
     const Verdict by_index =
         run_simcheck(scene_text(ties), textbook::output(ties, ties.particles, textbook::Mistake::ties_by_index_only));
     CHECK(by_index.first_line.rfind("step 1: particle 2 has no collision in this step: particles 2 and 3 meet at t = "
-                                    "0.5, but particle 3 reaches the wall at t = 0.5 comes first (a tie: at equal "
-                                    "times a wall comes before a particle",
+                                    "0.5, but particle 3's wall hit at t = 0.5 comes first (a tie: at equal times a "
+                                    "wall comes before a particle",
                                     0) == 0);
     const Verdict corner =
         run_simcheck(scene_text(ties), textbook::output(ties, ties.particles, textbook::Mistake::corner_flips_one_axis));
