@@ -3,11 +3,11 @@
 
 namespace bench {
 
-void steps_benchmark(bool quick);     // time per step against N, the dense gas
-void simcli_benchmark(bool quick);    // whole simcli runs of the target scenes
-void accuracy_benchmark(bool quick);  // run time against error, K = 1 ... 64 and the exact engine
-void exact_benchmark(bool quick);     // the exact engine's collisions per second
-void stress_benchmark(bool quick);    // the long stability run: a crowded box for 1e6 steps
+void steps_benchmark(bool quick);       // time per step against N, the dense gas
+void simcli_benchmark(bool quick);      // whole simcli runs of the target scenes
+void accuracy_benchmark(bool quick);    // run time against error, K = 1 ... 64 and the exact engine
+void exact_benchmark(bool quick);       // the exact engine's collisions per second
+void stress_benchmark(bool quick);      // the long stability run: a crowded box for 1e6 steps
 void divergence_benchmark(bool quick);  // two correct programs drifting apart by chaos
 
 }  // namespace bench

@@ -100,8 +100,8 @@ void ExactStepCheck::measure_bounds(const PrintedState& start) {
         const Vec2 position_spread = upper.position - lower.position;
         const Vec2 velocity_spread = upper.velocity - lower.velocity;
         bounds_.widest = std::max(bounds_.widest, position_spread.maxCoeff());
-        if (states_.size() > 1 && std::max(position_spread.maxCoeff(), velocity_spread.maxCoeff()) >
-                                      judged_amplification * shift) {
+        if (states_.size() > 1 &&
+            std::max(position_spread.maxCoeff(), velocity_spread.maxCoeff()) > judged_amplification * shift) {
             bounds_.unjudged.push_back(static_cast<std::uint32_t>(p));
             constexpr double anything = std::numeric_limits<double>::infinity();
             lower.position = lower.velocity = Vec2::Constant(-anything);
@@ -124,8 +124,7 @@ StepCheck ExactStepCheck::check(const PrintedState& before, const PrintedState& 
     positions_.resize(after.particles.size());
     for (std::size_t p = 0; p < positions_.size(); ++p) positions_[p] = after.particles[p].position;
     const double diameter = 2.0 * box_.lower;
-    const double closest = diameter * (1.0 - overlap_tolerance) - 3.0 * after.uncertainty -
-                           0x1p-50 * world_.box_size;
+    const double closest = diameter * (1.0 - overlap_tolerance) - 3.0 * after.uncertainty - 0x1p-50 * world_.box_size;
     std::optional<std::pair<std::uint32_t, std::uint32_t>> overlap;
     for_each_close_pair(positions_, world_.box_size, closest, [&](std::uint32_t i, std::uint32_t j) {
         if (!overlap || std::make_pair(i, j) < *overlap) overlap = std::make_pair(i, j);
@@ -133,12 +132,11 @@ StepCheck ExactStepCheck::check(const PrintedState& before, const PrintedState& 
     if (overlap) {
         const auto [i, j] = *overlap;
         const double distance = (positions_[j] - positions_[i]).norm();
-        result.violation = RuleViolation{i,
-                                         "particles " + std::to_string(i) + " and " + std::to_string(j) +
-                                             " overlap: their centres are " + format_brief(distance) +
-                                             " apart, and hard disks never come closer than 2r = " +
-                                             format_short(diameter),
-                                         after.particles[i], after.particles[i]};
+        result.violation = RuleViolation{
+            i,
+            "particles " + std::to_string(i) + " and " + std::to_string(j) + " overlap: their centres are " +
+                format_brief(distance) + " apart, and hard disks never come closer than 2r = " + format_short(diameter),
+            after.particles[i], after.particles[i]};
         return result;
     }
 
@@ -147,12 +145,12 @@ StepCheck ExactStepCheck::check(const PrintedState& before, const PrintedState& 
     if (!bounds_.unjudged.empty()) {
         // One chaotic particle may have met any other in the step: none is judged.
         result.within_rounding.push_back(
-            "particle " + std::to_string(bounds_.unjudged.front()) +
-            " (and " + std::to_string(bounds_.unjudged.size() - 1) +
+            "particle " + std::to_string(bounds_.unjudged.front()) + " (and " +
+            std::to_string(bounds_.unjudged.size() - 1) +
             " more): hard disks started within rounding of the printed state part by over " +
             format_brief(judged_amplification) + " times the rounding in this step (chaos); the step is not judged");
-        result.collisions.assign(after.particles.size(),
-                                 {0, std::numeric_limits<std::uint64_t>::max(), 0, std::numeric_limits<std::uint64_t>::max()});
+        result.collisions.assign(after.particles.size(), {0, std::numeric_limits<std::uint64_t>::max(), 0,
+                                                          std::numeric_limits<std::uint64_t>::max()});
         return result;
     }
     for (std::uint32_t p = 0; p < after.particles.size(); ++p) {
@@ -163,16 +161,20 @@ StepCheck ExactStepCheck::check(const PrintedState& before, const PrintedState& 
         };
         bool fine = true;
         for (int axis = 0; axis < 2; ++axis) {
-            fine = fine && fits(printed.position[axis], bounds_.lower[p].position[axis], bounds_.upper[p].position[axis]);
-            fine = fine && fits(printed.velocity[axis], bounds_.lower[p].velocity[axis], bounds_.upper[p].velocity[axis]);
+            fine =
+                fine && fits(printed.position[axis], bounds_.lower[p].position[axis], bounds_.upper[p].position[axis]);
+            fine =
+                fine && fits(printed.velocity[axis], bounds_.lower[p].velocity[axis], bounds_.upper[p].velocity[axis]);
         }
         if (fine) continue;
         const Particle& expected = states_[0][p];
         const std::uint64_t events = expected.particle_collisions + expected.wall_collisions;
-        std::string what = "particle " + std::to_string(p) + ": continuous-time hard disks from the printed state before ";
-        what += events == 0 ? "move it freely in this step (no collision)"
-                            : "give it " + std::to_string(expected.particle_collisions) + " collision(s) with disks and " +
-                                  std::to_string(expected.wall_collisions) + " with walls in this step";
+        std::string what =
+            "particle " + std::to_string(p) + ": continuous-time hard disks from the printed state before ";
+        what += events == 0
+                    ? "move it freely in this step (no collision)"
+                    : "give it " + std::to_string(expected.particle_collisions) + " collision(s) with disks and " +
+                          std::to_string(expected.wall_collisions) + " with walls in this step";
         what += ", and the printed state does not follow";
         result.violation = RuleViolation{p, what, expected, printed};
         return result;

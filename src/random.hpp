@@ -3,6 +3,9 @@
 // of its bits to doubles, so that a seed gives the same scene on every
 // platform and standard library (std:: distributions differ between them).
 
+#include "particlesim/particle.hpp"
+
+#include <cmath>
 #include <cstdint>
 
 namespace particlesim {
@@ -24,5 +27,16 @@ public:
 private:
     std::uint64_t state_;
 };
+
+// A direction uniform in [0, 2 pi): a point drawn uniformly in the unit disk,
+// normalised. No trigonometry, so the same on every IEEE-754 platform.
+inline Vec2 random_direction(SplitMix64& rng) {
+    for (;;) {
+        const double x = 2.0 * rng.uniform() - 1.0;
+        const double y = 2.0 * rng.uniform() - 1.0;
+        const double norm_sq = x * x + y * y;
+        if (norm_sq <= 1.0 && norm_sq > 1e-12) return Vec2(x, y) / std::sqrt(norm_sq);
+    }
+}
 
 }  // namespace particlesim

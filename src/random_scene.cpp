@@ -62,15 +62,6 @@ private:
     std::vector<std::uint32_t> next_;
 };
 
-Vec2 random_direction(SplitMix64& rng) {
-    for (;;) {
-        const double x = 2.0 * rng.uniform() - 1.0;
-        const double y = 2.0 * rng.uniform() - 1.0;
-        const double norm_sq = x * x + y * y;
-        if (norm_sq <= 1.0 && norm_sq > 1e-12) return Vec2(x, y) / std::sqrt(norm_sq);
-    }
-}
-
 }  // namespace
 
 std::vector<Particle> make_random_particles(std::size_t count, const World& world, const RandomSceneOptions& options) {

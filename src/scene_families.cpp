@@ -14,15 +14,6 @@ namespace particlesim {
 
 namespace {
 
-Vec2 direction(SplitMix64& rng) {
-    for (;;) {
-        const double x = 2.0 * rng.uniform() - 1.0;
-        const double y = 2.0 * rng.uniform() - 1.0;
-        const double norm_sq = x * x + y * y;
-        if (norm_sq <= 1.0 && norm_sq > 1e-12) return Vec2(x, y) / std::sqrt(norm_sq);
-    }
-}
-
 Particle disk(double x, double y, double vx = 0.0, double vy = 0.0) {
     Particle p;
     p.position = Vec2(x, y);
@@ -41,7 +32,9 @@ Scene scene_of(const SceneFamilyOptions& options, double box_size, std::vector<P
     return scene;
 }
 
-SpeedRange speeds_or(const SceneFamilyOptions& options, SpeedRange fallback) { return options.speeds.value_or(fallback); }
+SpeedRange speeds_or(const SceneFamilyOptions& options, SpeedRange fallback) {
+    return options.speeds.value_or(fallback);
+}
 
 double area_fraction_or(const SceneFamilyOptions& options, double fallback, double most) {
     const double fraction = options.area_fraction.value_or(fallback);
@@ -54,13 +47,14 @@ double area_fraction_or(const SceneFamilyOptions& options, double fallback, doub
 
 // The side of a box that holds `count` disks at `fraction` of its area.
 double side_for(std::size_t count, double radius, double fraction) {
-    return std::sqrt(static_cast<double>(std::max<std::size_t>(count, 1)) * std::numbers::pi * radius * radius / fraction);
+    return std::sqrt(static_cast<double>(std::max<std::size_t>(count, 1)) * std::numbers::pi * radius * radius /
+                     fraction);
 }
 
 void give_random_velocities(std::vector<Particle>& particles, SpeedRange speeds, SplitMix64& rng) {
     for (Particle& p : particles) {
         const double speed = speeds.min + rng.uniform() * (speeds.max - speeds.min);
-        p.velocity = speed * direction(rng);
+        p.velocity = speed * random_direction(rng);
     }
 }
 
@@ -87,7 +81,8 @@ Scene lattice(const SceneFamilyOptions& o) {
     const double spacing = 2.0 * r * (1.0 + gap);
     const double row_height = spacing * std::sqrt(3.0) / 2.0;
     const double jitter = 0.3 * gap * r;
-    const auto columns = static_cast<std::size_t>(std::ceil(std::sqrt(static_cast<double>(count) * 2.0 / std::sqrt(3.0))));
+    const auto columns =
+        static_cast<std::size_t>(std::ceil(std::sqrt(static_cast<double>(count) * 2.0 / std::sqrt(3.0))));
     const std::size_t rows = (count + columns - 1) / std::max<std::size_t>(columns, 1);
     const double margin = r + jitter;
     const double box = 2.0 * margin + std::max(spacing * (static_cast<double>(columns) - 0.5),
@@ -221,16 +216,18 @@ Scene walls(const SceneFamilyOptions& o) {
     std::vector<Particle> particles;
     for (std::size_t k = 0; k < on_walls; ++k) {
         const double along = 3.0 * r + 4.0 * r * static_cast<double>(k / 4);
-        if (along > box - 3.0 * r) throw std::invalid_argument("particlesim::make_family_scene: the box is too small for the walls family");
+        if (along > box - 3.0 * r)
+            throw std::invalid_argument("particlesim::make_family_scene: the box is too small for the walls family");
         switch (k % 4) {
-            case 0: particles.push_back(disk(r, along)); break;
-            case 1: particles.push_back(disk(along, r)); break;
-            case 2: particles.push_back(disk(box - r, box - along)); break;
-            default: particles.push_back(disk(box - along, box - r)); break;
+        case 0: particles.push_back(disk(r, along)); break;
+        case 1: particles.push_back(disk(along, r)); break;
+        case 2: particles.push_back(disk(box - r, box - along)); break;
+        default: particles.push_back(disk(box - along, box - r)); break;
         }
     }
     for (double y = 5.0 * r; particles.size() < count; y += 4.0 * r) {
-        if (y > box - 5.0 * r) throw std::invalid_argument("particlesim::make_family_scene: the box is too small for the walls family");
+        if (y > box - 5.0 * r)
+            throw std::invalid_argument("particlesim::make_family_scene: the box is too small for the walls family");
         for (double x = 5.0 * r; x + 2.0 * r <= box - 5.0 * r && particles.size() < count; x += 6.0 * r) {
             particles.push_back(disk(x, y));
             if (particles.size() < count) particles.push_back(disk(x + 2.0 * r, y));
@@ -246,11 +243,13 @@ const std::vector<SceneFamilyInfo>& scene_families() {
     static const std::vector<SceneFamilyInfo> families{
         {SceneFamily::random, "random", "the rules' random scene, exactly as simcli draws it for N, L, r and --seed"},
         {SceneFamily::gas, "gas", "random disks at an area fraction (default 0.3), speeds 0.1 r to r per step"},
-        {SceneFamily::lattice, "lattice", "a perturbed triangular lattice, area fraction about 0.8: denser than random placement"},
+        {SceneFamily::lattice, "lattice",
+         "a perturbed triangular lattice, area fraction about 0.8: denser than random placement"},
         {SceneFamily::line, "line", "N disks in one row moving together into a wall: the original design's worst case"},
         {SceneFamily::cradle, "cradle", "Newton's cradle: a touching row at rest, one disk moving into it"},
         {SceneFamily::clusters, "clusters", "four dense clusters in an empty box, drifting into each other"},
-        {SceneFamily::ties, "ties", "simultaneous collisions in exact numbers: walls before pairs, lowest indices, corners, t = 1"},
+        {SceneFamily::ties, "ties",
+         "simultaneous collisions in exact numbers: walls before pairs, lowest indices, corners, t = 1"},
         {SceneFamily::fast, "fast", "speeds of 2 to 5 box sides per step"},
         {SceneFamily::walls, "walls", "disks starting on the walls and pairs starting in contact"},
     };
@@ -267,15 +266,15 @@ std::optional<SceneFamily> scene_family_named(std::string_view name) {
 Scene make_family_scene(SceneFamily family, const SceneFamilyOptions& options) {
     if (options.steps < 0) throw std::invalid_argument("particlesim::make_family_scene: steps must be >= 0");
     switch (family) {
-        case SceneFamily::random: return random_scene(options);
-        case SceneFamily::gas: return gas(options);
-        case SceneFamily::lattice: return lattice(options);
-        case SceneFamily::line: return line(options);
-        case SceneFamily::cradle: return cradle(options);
-        case SceneFamily::clusters: return clusters(options);
-        case SceneFamily::ties: return ties(options);
-        case SceneFamily::fast: return fast(options);
-        case SceneFamily::walls: return walls(options);
+    case SceneFamily::random: return random_scene(options);
+    case SceneFamily::gas: return gas(options);
+    case SceneFamily::lattice: return lattice(options);
+    case SceneFamily::line: return line(options);
+    case SceneFamily::cradle: return cradle(options);
+    case SceneFamily::clusters: return clusters(options);
+    case SceneFamily::ties: return ties(options);
+    case SceneFamily::fast: return fast(options);
+    case SceneFamily::walls: return walls(options);
     }
     throw std::invalid_argument("particlesim::make_family_scene: unknown family");
 }
@@ -290,8 +289,8 @@ void write_scene(std::ostream& out, const Scene& scene) {
         << (scene.mode == OutputMode::print ? "print" : "perf") << '\n';
     for (std::size_t i = 0; i < scene.particles.size(); ++i) {
         const Particle& p = scene.particles[i];
-        out << i << ' ' << shortest(p.position.x()) << ' ' << shortest(p.position.y()) << ' ' << shortest(p.velocity.x())
-            << ' ' << shortest(p.velocity.y()) << '\n';
+        out << i << ' ' << shortest(p.position.x()) << ' ' << shortest(p.position.y()) << ' '
+            << shortest(p.velocity.x()) << ' ' << shortest(p.velocity.y()) << '\n';
     }
 }
 

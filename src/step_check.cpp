@@ -45,14 +45,15 @@ std::string describe(const PossibleCollision& c, std::uint32_t particle) {
     return "particles " + std::to_string(c.i) + " and " + std::to_string(c.j) + " meet at " + time_text(c.time);
 }
 
-
 // A collision as the subject of a sentence.
 std::string event_name(const PossibleCollision& c) {
     if (c.kind == CollisionKind::wall) {
         const bool corner = c.on_x == Tri::yes && c.on_y == Tri::yes;
-        return "particle " + std::to_string(c.i) + "'s " + (corner ? "corner" : "wall") + " hit at " + time_text(c.time);
+        return "particle " + std::to_string(c.i) + "'s " + (corner ? "corner" : "wall") + " hit at " +
+               time_text(c.time);
     }
-    return "the meeting of particles " + std::to_string(c.i) + " and " + std::to_string(c.j) + " at " + time_text(c.time);
+    return "the meeting of particles " + std::to_string(c.i) + " and " + std::to_string(c.j) + " at " +
+           time_text(c.time);
 }
 
 }  // namespace
@@ -131,11 +132,11 @@ private:
                 const char* name = axis == 0 ? "x" : "y";
                 std::string what;
                 if (!(value >= box_.lower - slack)) {
-                    what = "particle " + std::to_string(p) + " is outside the box: " + name + " = " + format_short(value) +
-                           " is below r = " + format_short(box_.lower);
+                    what = "particle " + std::to_string(p) + " is outside the box: " + name + " = " +
+                           format_short(value) + " is below r = " + format_short(box_.lower);
                 } else if (!(value <= box_.upper + slack)) {
-                    what = "particle " + std::to_string(p) + " is outside the box: " + name + " = " + format_short(value) +
-                           " is beyond L - r = " + format_short(box_.upper);
+                    what = "particle " + std::to_string(p) + " is outside the box: " + name + " = " +
+                           format_short(value) + " is beyond L - r = " + format_short(box_.upper);
                 }
                 if (!what.empty()) {
                     Particle expected = printed;
@@ -158,8 +159,8 @@ private:
             add_counts(counts[p], fates_);
             next_[p] = fates_.front().outcome;
             for (const Fate& f : fates_) {
-                next_[p] = {hull(next_[p].x, f.outcome.x), hull(next_[p].y, f.outcome.y), hull(next_[p].vx, f.outcome.vx),
-                            hull(next_[p].vy, f.outcome.vy)};
+                next_[p] = {hull(next_[p].x, f.outcome.x), hull(next_[p].y, f.outcome.y),
+                            hull(next_[p].vx, f.outcome.vx), hull(next_[p].vy, f.outcome.vy)};
             }
         }
         state_.swap(next_);
@@ -197,16 +198,18 @@ private:
                 return who + " creeps along a wall: whether it reaches it in this step is within rounding";
             }
             if (c.kind == CollisionKind::wall) return who + " reaches the wall within rounding of the end of the step";
-            if (c.touching == Tri::maybe) return who + " touch within rounding: whether they collide at t = 0 is within rounding";
+            if (c.touching == Tri::maybe)
+                return who + " touch within rounding: whether they collide at t = 0 is within rounding";
             if (c.approaching == Tri::maybe) {
-                return who + " move neither towards nor away from each other, within rounding: whether they collide is "
-                             "within rounding";
+                return who +
+                       " move neither towards nor away from each other, within rounding: whether they collide is "
+                       "within rounding";
             }
             if (c.time.lo <= 1.0 && 1.0 <= c.time.hi) return who + " meet within rounding of the end of the step";
             return who + " graze: whether they touch is within rounding";
         }
-        return describe(c, c.i) + ", and whether it comes before another collision of " + (c.kind == CollisionKind::wall ? "it" : "theirs") +
-               " is within rounding (a near tie)";
+        return describe(c, c.i) + ", and whether it comes before another collision of " +
+               (c.kind == CollisionKind::wall ? "it" : "theirs") + " is within rounding (a near tie)";
     }
 
     StepCheck check_stepped(const PrintedState& before, const PrintedState& after) {
@@ -338,7 +341,8 @@ private:
             return v;
         }
         if (printed_matches(-1)) {
-            v.what = rule + (c.kind == CollisionKind::wall ? ", and the output lets it pass" : ", and the output lets them pass");
+            v.what = rule + (c.kind == CollisionKind::wall ? ", and the output lets it pass"
+                                                           : ", and the output lets them pass");
             return v;
         }
         for (const std::uint32_t k : step_.candidates_of(particle)) {
@@ -364,8 +368,8 @@ private:
             const bool reflected = (axis[0] == 'x' ? v.printed.velocity.x() * v.expected.velocity.x()
                                                    : v.printed.velocity.y() * v.expected.velocity.y()) < 0.0;
             if (reflected) {
-                v.what = rule + "; after it " + mine + " must stop at the wall (" + axis +
-                         " = " + format_short(axis[0] == 'x' ? v.expected.position.x() : v.expected.position.y()) +
+                v.what = rule + "; after it " + mine + " must stop at the wall (" + axis + " = " +
+                         format_short(axis[0] == 'x' ? v.expected.position.x() : v.expected.position.y()) +
                          ") and bounce at t = 0 of the next step, but the output bounces it within this step";
                 return v;
             }
@@ -416,7 +420,9 @@ StepChecker::~StepChecker() = default;
 StepChecker::StepChecker(StepChecker&&) noexcept = default;
 StepChecker& StepChecker::operator=(StepChecker&&) noexcept = default;
 
-StepCheck StepChecker::check(const PrintedState& before, const PrintedState& after) { return impl_->check(before, after); }
+StepCheck StepChecker::check(const PrintedState& before, const PrintedState& after) {
+    return impl_->check(before, after);
+}
 
 StepChecker::Run StepChecker::run(const PrintedState& start, std::int64_t steps) { return impl_->run(start, steps); }
 

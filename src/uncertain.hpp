@@ -46,7 +46,9 @@ struct Uncertain {
         return lo - tolerance <= value && value <= hi + tolerance;
     }
 
-    [[nodiscard]] Tri below_or_at(double limit) const { return hi <= limit ? Tri::yes : (lo > limit ? Tri::no : Tri::maybe); }
+    [[nodiscard]] Tri below_or_at(double limit) const {
+        return hi <= limit ? Tri::yes : (lo > limit ? Tri::no : Tri::maybe);
+    }
     [[nodiscard]] Tri below(double limit) const { return hi < limit ? Tri::yes : (lo >= limit ? Tri::no : Tri::maybe); }
     [[nodiscard]] Tri above(double limit) const { return lo > limit ? Tri::yes : (hi <= limit ? Tri::no : Tri::maybe); }
 

@@ -1,12 +1,12 @@
 #include "uncertain_step.hpp"
 
-#include "physics.hpp"
 #include "close_pairs.hpp"
+#include "physics.hpp"
 
+#include <omp.h>
 #include <algorithm>
 #include <cmath>
 #include <limits>
-#include <omp.h>
 #include <tuple>
 
 namespace particlesim {
@@ -237,7 +237,8 @@ void UncertainStep::find_candidate_pairs(std::span<const UncertainParticle> befo
                         [&](std::uint32_t i, std::uint32_t j) { pair_keys_.push_back(key(i, j)); });
     std::sort(pair_keys_.begin(), pair_keys_.end());
     pair_keys_.erase(std::unique(pair_keys_.begin(), pair_keys_.end()), pair_keys_.end());
-    for (const std::uint64_t k : pair_keys_) add_pair(static_cast<std::uint32_t>(k >> 32), static_cast<std::uint32_t>(k));
+    for (const std::uint64_t k : pair_keys_)
+        add_pair(static_cast<std::uint32_t>(k >> 32), static_cast<std::uint32_t>(k));
 }
 
 // rules.md "Pair candidate", every decision three-valued.
@@ -336,7 +337,8 @@ void UncertainStep::select() {
 }
 
 std::span<const std::uint32_t> UncertainStep::candidates_of(std::uint32_t particle) const {
-    return std::span<const std::uint32_t>(listed_).subspan(offsets_[particle], offsets_[particle + 1] - offsets_[particle]);
+    return std::span<const std::uint32_t>(listed_).subspan(offsets_[particle],
+                                                           offsets_[particle + 1] - offsets_[particle]);
 }
 
 bool UncertainStep::may_be_free(std::uint32_t particle) const {
@@ -388,7 +390,8 @@ void UncertainStep::fates_of(std::uint32_t particle, std::vector<Fate>& out) con
     out.clear();
     if (may_be_free(particle)) out.push_back({-1, outcome(particle, -1)});
     for (const std::uint32_t k : candidates_of(particle)) {
-        if (candidates_[k].accepted != Tri::no) out.push_back({static_cast<int>(k), outcome(particle, static_cast<int>(k))});
+        if (candidates_[k].accepted != Tri::no)
+            out.push_back({static_cast<int>(k), outcome(particle, static_cast<int>(k))});
     }
 }
 

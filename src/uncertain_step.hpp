@@ -32,13 +32,13 @@ struct PossibleCollision {
     Uncertain time;
     CollisionKind kind = CollisionKind::wall;
     std::uint32_t i = 0;
-    std::uint32_t j = 0;      // the other particle of a pair
-    Tri exists = Tri::no;     // a candidate at all (time within the step, ...)
+    std::uint32_t j = 0;        // the other particle of a pair
+    Tri exists = Tri::no;       // a candidate at all (time within the step, ...)
     Tri touching = Tri::no;     // a pair touching or overlapping at the start
     Tri approaching = Tri::no;  // a pair moving towards each other (B < 0)
-    Tri on_x = Tri::no;       // a wall reached on x at `time` (both: a corner)
+    Tri on_x = Tri::no;         // a wall reached on x at `time` (both: a corner)
     Tri on_y = Tri::no;
-    Tri accepted = Tri::no;   // selected by the greedy walk in (t, kind, i, j) order
+    Tri accepted = Tri::no;  // selected by the greedy walk in (t, kind, i, j) order
 
     [[nodiscard]] std::uint32_t other(std::uint32_t particle) const { return particle == i ? j : i; }
 };

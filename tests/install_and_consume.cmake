@@ -16,7 +16,8 @@ run_step(${CMAKE_COMMAND} --install "${BUILD_DIR}" --prefix "${prefix}")
 
 # The public API, and nothing else.
 set(public_headers accuracy.hpp engine.hpp exact_simulation.hpp particle.hpp particlesim.hpp random_scene.hpp
-                   scene.hpp state_writer.hpp stepped_simulation.hpp version.hpp world.hpp)
+                   scene.hpp scene_families.hpp state_writer.hpp step_check.hpp stepped_simulation.hpp version.hpp
+                   world.hpp)
 file(GLOB installed RELATIVE "${prefix}/include/particlesim" "${prefix}/include/particlesim/*")
 list(SORT installed)
 if(NOT installed STREQUAL public_headers)
@@ -24,7 +25,7 @@ if(NOT installed STREQUAL public_headers)
 endif()
 set(required lib/libparticlesim.a lib/cmake/particlesim/particlesimConfig.cmake)
 if(APPS_BUILT)
-  list(APPEND required bin/simcli)
+  list(APPEND required bin/simcli bin/simgen bin/simcheck)
 endif()
 foreach(file IN LISTS required)
   if(NOT EXISTS "${prefix}/${file}")

@@ -108,7 +108,8 @@ std::vector<Scene> test_scenes(int random_count) {
             scenes.push_back(family_scene(info.family, seed, n, 30));
         }
     }
-    for (int k = 0; k < random_count; ++k) scenes.push_back(as_scene(random_scenes::make(static_cast<std::uint64_t>(k))));
+    for (int k = 0; k < random_count; ++k)
+        scenes.push_back(as_scene(random_scenes::make(static_cast<std::uint64_t>(k))));
     return scenes;
 }
 
@@ -136,7 +137,8 @@ Divergence divergence(const std::string& a, const std::string& b, double materia
         for (double v; na >> v;) va.push_back(v);
         for (double v; nb >> v;) vb.push_back(v);
         bool big = va.size() != vb.size() || va.empty() || va[0] != vb[0] || va[1] != vb[1];
-        for (std::size_t k = 2; k < std::min(va.size(), vb.size()) && !big; ++k) big = std::fabs(va[k] - vb[k]) > material;
+        for (std::size_t k = 2; k < std::min(va.size(), vb.size()) && !big; ++k)
+            big = std::fabs(va[k] - vb[k]) > material;
         if (big) {
             d.material = step;
             break;
@@ -165,7 +167,8 @@ void correct_outputs_pass() {
         const auto& variant = variants[k % variants.size()];
         const std::string ours = run_simcli(text, variant);
         const bool substeps = variant[0] == "--substeps";
-        const Verdict v = run_simcheck(text, ours, substeps ? std::vector<std::string>{"--substeps", "3"} : std::vector<std::string>{});
+        const Verdict v = run_simcheck(
+            text, ours, substeps ? std::vector<std::string>{"--substeps", "3"} : std::vector<std::string>{});
         if (v.status != 0) std::fprintf(stderr, "scene %zu (%s): %s\n", k, variant[0].c_str(), v.out.c_str());
         CHECK_EQ(v.status, 0);
         const std::string theirs = textbook::output(scene, scene.particles);
@@ -175,7 +178,8 @@ void correct_outputs_pass() {
         checked += 2;
         if (!substeps && divergence(ours, theirs, 1e-3).material >= 0) ++diverged;
     }
-    std::printf("correct outputs: %d checked, textbook and simcli diverge beyond 1e-3 on %d scenes\n", checked, diverged);
+    std::printf("correct outputs: %d checked, textbook and simcli diverge beyond 1e-3 on %d scenes\n", checked,
+                diverged);
     // The point of checking step by step: correct programs drift apart.
     CHECK(diverged >= 10);
     CHECK(checked >= 200);
@@ -207,11 +211,10 @@ void exact_engine_outputs_pass() {
 
 void mistakes_are_caught_where_they_show() {
     using textbook::Mistake;
-    const std::vector<Mistake> mistakes{Mistake::no_stop_at_wall,         Mistake::ties_by_index_only,
-                                        Mistake::overlaps_never_collide,  Mistake::two_collisions_per_step,
-                                        Mistake::corner_flips_one_axis,   Mistake::pruned_search,
-                                        Mistake::counters_off_by_one,     Mistake::dropped_line,
-                                        Mistake::repeated_line};
+    const std::vector<Mistake> mistakes{
+        Mistake::no_stop_at_wall,         Mistake::ties_by_index_only,    Mistake::overlaps_never_collide,
+        Mistake::two_collisions_per_step, Mistake::corner_flips_one_axis, Mistake::pruned_search,
+        Mistake::counters_off_by_one,     Mistake::dropped_line,          Mistake::repeated_line};
     // What the first line of the report must say, beyond the step.
     const std::map<Mistake, std::string> words{
         {Mistake::no_stop_at_wall, "must stop at the wall"},
@@ -263,9 +266,10 @@ void mistakes_are_caught_where_they_show() {
                          static_cast<long long>(d.material), v.status, v.first_line.c_str());
             CHECK(false);
         }
-        std::printf("%s: shown on %d scenes, caught at its step on %d (in its own words on %d), within rounding "
-                    "there on %d\n",
-                    textbook::mistake_name(mistake), shown, caught, worded, within_rounding);
+        std::printf(
+            "%s: shown on %d scenes, caught at its step on %d (in its own words on %d), within rounding "
+            "there on %d\n",
+            textbook::mistake_name(mistake), shown, caught, worded, within_rounding);
         CHECK(caught >= 1);
         if (words.count(mistake)) CHECK(worded >= 1);
     }
@@ -280,8 +284,8 @@ void exact_ties_are_decided() {
                                     "0.5, but particle 3's wall hit at t = 0.5 comes first (a tie: at equal times a "
                                     "wall comes before a particle",
                                     0) == 0);
-    const Verdict corner =
-        run_simcheck(scene_text(ties), textbook::output(ties, ties.particles, textbook::Mistake::corner_flips_one_axis));
+    const Verdict corner = run_simcheck(
+        scene_text(ties), textbook::output(ties, ties.particles, textbook::Mistake::corner_flips_one_axis));
     CHECK(corner.first_line.rfind("step 1: particle 10 reaches the corner at t = 0.5", 0) == 0);
     // From the scene's exact numbers nothing is left undecided in step 1
     // (later steps start from printed states, known within 5e-9).
@@ -315,7 +319,8 @@ void every_family_checks_cleanly() {
         CHECK_EQ(v.status, 0);
     }
     // The random family is the scene simcli draws for the same header and seed.
-    const run_process::Result gen = run_process::run(simgen, {"random", "-n", "300", "-L", "900", "-s", "20", "--seed", "42"});
+    const run_process::Result gen =
+        run_process::run(simgen, {"random", "-n", "300", "-L", "900", "-s", "20", "--seed", "42"});
     const std::string drawn = run_simcli("300 900 1 20 print\n", {"--seed", "42"});
     CHECK_EQ(run_simcli(gen.out, {}), drawn);
 }

@@ -57,11 +57,13 @@ void unreadable_lines_name_their_line() {
         {"0 0 5.00000000 10.00000000 2.00000000\n", "out.txt:1: expected \"s i x y vx vy\""},
         {"0 0 nan 10.00000000 2.00000000 0.00000000\n", "out.txt:1: x is not a finite number"},
         {"0 0 1e999 10.00000000 2.00000000 0.00000000\n", "out.txt:1: x is not a finite number"},
-        {"99999999999999999999 0 5.00000000 10.00000000 2.00000000 0.00000000\n", "out.txt:1: the step is not a whole number"},
+        {"99999999999999999999 0 5.00000000 10.00000000 2.00000000 0.00000000\n",
+         "out.txt:1: the step is not a whole number"},
         {"0 -1 5.00000000 10.00000000 2.00000000 0.00000000\n", "out.txt:1: the particle index is not a whole number"},
         {"0 0 5.0000000\x01 10.00000000 2.00000000 0.00000000\n", "out.txt:1: x is not a finite number"},
         {std::string("0 0 5.00000000 10\0.00000000 2.00000000 0.00000000\n", 52), "out.txt:1: "},
-        {pair_output.substr(0, pair_output.rfind("1 0\n")) + "1 99999999999999999999\n", "out.txt:6: wc is not a whole number"},
+        {pair_output.substr(0, pair_output.rfind("1 0\n")) + "1 99999999999999999999\n",
+         "out.txt:6: wc is not a whole number"},
         {std::string(1 << 20, '7'), "out.txt:1: the line is longer than 4096 characters"},
         {"0 0 -0.00000000 10.00000000 2.00000000 0.00000000\n", "out.txt:1: x is printed as -0.00000000"},
     };
@@ -83,7 +85,8 @@ void shape_errors_name_their_step() {
     const run_process::Result cut = check(pair_scene, pair_output.substr(0, pair_output.find("1 1 ")));
     CHECK_EQ(cut.status, 1);
     CHECK(cut.out.rfind("step 1: the output ends (after line 3) before particle 1 of step 1", 0) == 0);
-    const run_process::Result extra = check(pair_scene, pair_output + "3 0 1.00000000 1.00000000 0.00000000 0.00000000\n");
+    const run_process::Result extra =
+        check(pair_scene, pair_output + "3 0 1.00000000 1.00000000 0.00000000 0.00000000\n");
     CHECK_EQ(extra.status, 1);
     CHECK(extra.out.rfind("step 2: the output goes on after the final block: line 7", 0) == 0);
     std::string swapped = pair_output;

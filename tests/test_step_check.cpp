@@ -115,10 +115,10 @@ void contact_at_t_one_within_rounding() {
     // the collision (velocities swapped at x = 11 and 13) and none are right.
     const std::vector<Particle> before{disk(10, 10, 1, 0), disk(14, 10, -1, 0)};
     StepChecker checker(World{40, 1.0});
-    const StepCheck collided =
-        checker.check({before, fixed8_uncertainty}, {std::vector{disk(11, 10, -1, 0), disk(13, 10, 1, 0)}, fixed8_uncertainty});
-    const StepCheck passed =
-        checker.check({before, fixed8_uncertainty}, {std::vector{disk(11, 10, 1, 0), disk(13, 10, -1, 0)}, fixed8_uncertainty});
+    const StepCheck collided = checker.check(
+        {before, fixed8_uncertainty}, {std::vector{disk(11, 10, -1, 0), disk(13, 10, 1, 0)}, fixed8_uncertainty});
+    const StepCheck passed = checker.check({before, fixed8_uncertainty},
+                                           {std::vector{disk(11, 10, 1, 0), disk(13, 10, -1, 0)}, fixed8_uncertainty});
     CHECK(!collided.violation);
     CHECK(!passed.violation);
     CHECK(!passed.within_rounding.empty());
@@ -151,8 +151,10 @@ void exact_rules() {
     // (now at -2 from x = 2) reaches the wall at t = 1, exactly the end.
     const std::vector<Particle> before{disk(5, 52, -2, 0), disk(2, 52, 0, 0)};
     StepChecker checker(World{64, 1.0}, {CheckedRules::exact, 1});
-    CHECK(!checker.check({before, 0.0}, {std::vector{disk(4, 52, 0, 0), disk(1, 52, 2, 0)}, fixed8_uncertainty}).violation ||
-          !checker.check({before, 0.0}, {std::vector{disk(4, 52, 0, 0), disk(1, 52, -2, 0)}, fixed8_uncertainty}).violation);
+    CHECK(!checker.check({before, 0.0}, {std::vector{disk(4, 52, 0, 0), disk(1, 52, 2, 0)}, fixed8_uncertainty})
+               .violation ||
+          !checker.check({before, 0.0}, {std::vector{disk(4, 52, 0, 0), disk(1, 52, -2, 0)}, fixed8_uncertainty})
+               .violation);
     // Passing through each other is not hard disks.
     const StepCheck passing =
         checker.check({before, 0.0}, {std::vector{disk(3, 52, -2, 0), disk(2, 52, 0, 0)}, fixed8_uncertainty});

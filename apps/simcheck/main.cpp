@@ -161,9 +161,9 @@ int run(const Arguments& args) {
     }
     if (std::fflush(stdout) != 0) return exit_bad_input;
     switch (report.verdict) {
-        case Verdict::conforms: return exit_conforms;
-        case Verdict::breaks_rules: return exit_breaks_rules;
-        case Verdict::no_verdict: return exit_no_verdict;
+    case Verdict::conforms: return exit_conforms;
+    case Verdict::breaks_rules: return exit_breaks_rules;
+    case Verdict::no_verdict: return exit_no_verdict;
     }
     return exit_no_verdict;
 }

@@ -32,8 +32,8 @@ public:
         for (std::size_t i = 0; i < count_; ++i) {
             if (!output_.next(line)) {
                 return Finding{step, output_.lines_read(),
-                               "the output ends (after line " + std::to_string(output_.lines_read()) + ") before particle " +
-                                   std::to_string(i) + " of step " + std::to_string(step),
+                               "the output ends (after line " + std::to_string(output_.lines_read()) +
+                                   ") before particle " + std::to_string(i) + " of step " + std::to_string(step),
                                std::nullopt, std::nullopt};
             }
             if (line.step != step || line.index != i) {
@@ -78,7 +78,9 @@ private:
 
 std::optional<Finding> check_initial_block(const Scene& scene, const BlockReader& block,
                                            std::span<const Particle> printed, double uncertainty) {
-    const auto fits = [&](double value, double wanted) { return std::fabs(value - wanted) <= slack(value, uncertainty); };
+    const auto fits = [&](double value, double wanted) {
+        return std::fabs(value - wanted) <= slack(value, uncertainty);
+    };
     const World& world = scene.world;
     const SpeedRange speeds = default_speed_range(world);
     for (std::size_t i = 0; i < printed.size(); ++i) {
@@ -96,7 +98,8 @@ std::optional<Finding> check_initial_block(const Scene& scene, const BlockReader
         }
         for (int axis = 0; axis < 2; ++axis) {
             const double value = p.position[axis];
-            if (value < world.lower() - slack(value, uncertainty) || value > world.upper() + slack(value, uncertainty)) {
+            if (value < world.lower() - slack(value, uncertainty) ||
+                value > world.upper() + slack(value, uncertainty)) {
                 return finding("the random start puts it outside [r, L - r]", std::nullopt);
             }
         }
@@ -201,7 +204,8 @@ Report check_output(const Scene& scene, OutputReader& output, const StepCheckOpt
     if (scene.mode == OutputMode::print && steps > 0) {
         for (std::int64_t step = 1; step <= steps; ++step) {
             if (auto wrong = block.read(step, step == steps)) return broken(report, *wrong);
-            const StepCheck check = checker.check({previous, previous_uncertainty}, {block.particles(), report.uncertainty});
+            const StepCheck check =
+                checker.check({previous, previous_uncertainty}, {block.particles(), report.uncertainty});
             if (auto wrong = compare(step, check)) return broken(report, *wrong);
             previous.swap(block.particles());
             previous_uncertainty = report.uncertainty;
@@ -220,8 +224,8 @@ Report check_output(const Scene& scene, OutputReader& output, const StepCheckOpt
     if (run.undecided_from) {
         report.verdict = Verdict::no_verdict;
         report.reason = "a perf-mode output shows only the first and the last state, and from step " +
-                        std::to_string(*run.undecided_from) + " on the rules may go more than one way within rounding (" +
-                        run.undecided_why +
+                        std::to_string(*run.undecided_from) +
+                        " on the rules may go more than one way within rounding (" + run.undecided_why +
                         "), so correct programs may end anywhere; a print-mode output of the same scene is checked "
                         "step by step";
         return report;
@@ -232,7 +236,8 @@ Report check_output(const Scene& scene, OutputReader& output, const StepCheckOpt
         bool fine = true;
         for (int axis = 0; axis < 2; ++axis) {
             const auto inside = [&](double value, double low, double high) {
-                return low - slack(value, report.uncertainty) <= value && value <= high + slack(value, report.uncertainty);
+                return low - slack(value, report.uncertainty) <= value &&
+                       value <= high + slack(value, report.uncertainty);
             };
             fine = fine && inside(p.position[axis], run.lower[i].position[axis], run.upper[i].position[axis]);
             fine = fine && inside(p.velocity[axis], run.lower[i].velocity[axis], run.upper[i].velocity[axis]);
@@ -242,7 +247,8 @@ Report check_output(const Scene& scene, OutputReader& output, const StepCheckOpt
             expected.position = 0.5 * (run.lower[i].position + run.upper[i].position);
             expected.velocity = 0.5 * (run.lower[i].velocity + run.upper[i].velocity);
             return broken(report, Finding{steps, block.line_of(i),
-                                          "particle " + std::to_string(i) + ": the final state is not where the rules take it after " +
+                                          "particle " + std::to_string(i) +
+                                              ": the final state is not where the rules take it after " +
                                               std::to_string(steps) + " steps (every decision on the way is decided)",
                                           expected, p});
         }

@@ -2,8 +2,8 @@
 
 #include <algorithm>
 #include <charconv>
-#include <cstring>
 #include <cmath>
+#include <cstring>
 #include <string_view>
 #include <system_error>
 #include <vector>
@@ -47,16 +47,16 @@ bool OutputReader::next(OutputLine& out) {
     // The next line: up to '\n', or the end of the input.
     std::size_t end = 0;
     for (std::size_t searched = begin_;;) {
-        const char* found = static_cast<const char*>(
-            std::memchr(window_.data() + searched, '\n', window_.size() - searched));
+        const char* found =
+            static_cast<const char*>(std::memchr(window_.data() + searched, '\n', window_.size() - searched));
         if (found) {
             end = static_cast<std::size_t>(found - window_.data());
             break;
         }
         searched = window_.size() - begin_;
         if (searched > particlesim::max_line_length) {
-            throw InputError(line_ + 1, "the line is longer than " + std::to_string(particlesim::max_line_length) +
-                                            " characters");
+            throw InputError(line_ + 1,
+                             "the line is longer than " + std::to_string(particlesim::max_line_length) + " characters");
         }
         if (!fill()) {
             if (window_.size() == begin_) return false;
@@ -66,8 +66,8 @@ bool OutputReader::next(OutputLine& out) {
         searched += begin_;
     }
     if (end - begin_ > particlesim::max_line_length) {
-        throw InputError(line_ + 1, "the line is longer than " + std::to_string(particlesim::max_line_length) +
-                                        " characters");
+        throw InputError(line_ + 1,
+                         "the line is longer than " + std::to_string(particlesim::max_line_length) + " characters");
     }
     ++line_;
     std::string_view text(window_.data() + begin_, end - begin_);
@@ -120,7 +120,8 @@ bool OutputReader::next(OutputLine& out) {
                                         "\" is not printed with 8 decimals (%.8f) like the first line");
         }
         if (style_ == NumberStyle::fixed8 && token == "-0.00000000") {
-            throw InputError(line_, std::string(names[k]) + " is printed as -0.00000000; io.md prints it as 0.00000000");
+            throw InputError(line_,
+                             std::string(names[k]) + " is printed as -0.00000000; io.md prints it as 0.00000000");
         }
     }
     out.particle = particlesim::Particle{};

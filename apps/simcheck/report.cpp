@@ -56,9 +56,9 @@ std::string json_state(const Particle& p) {
 
 const char* verdict_name(Verdict verdict) {
     switch (verdict) {
-        case Verdict::conforms: return "conforms";
-        case Verdict::breaks_rules: return "breaks_rules";
-        case Verdict::no_verdict: return "no_verdict";
+    case Verdict::conforms: return "conforms";
+    case Verdict::breaks_rules: return "breaks_rules";
+    case Verdict::no_verdict: return "no_verdict";
     }
     return "";
 }
@@ -73,8 +73,9 @@ void write_text_report(std::FILE* out, const Report& report, const ReportContext
         if (f.expected) std::fprintf(out, "  expected  %s\n", state_text(*f.expected).c_str());
         if (f.printed) std::fprintf(out, "  printed   %s\n", state_text(*f.printed).c_str());
         if (f.expected && f.printed) {
-            std::fprintf(out, "  (printed numbers are read as known within %g; \"expected\" is the middle of what "
-                              "the rules allow)\n",
+            std::fprintf(out,
+                         "  (printed numbers are read as known within %g; \"expected\" is the middle of what "
+                         "the rules allow)\n",
                          report.uncertainty);
         }
         return;

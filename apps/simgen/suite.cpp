@@ -117,8 +117,8 @@ void write_suite(const std::string& directory, std::uint64_t seed) {
             if (info.family == c.family) family = info.name;
         }
         manifest << prefix << c.name << '\t' << family << '\t' << scene.particle_count << '\t'
-                 << shortest(scene.world.box_size) << '\t' << shortest(scene.world.radius) << '\t' << scene.steps << '\t'
-                 << (scene.mode == OutputMode::print ? "print" : "perf") << '\t' << c.exercises << '\n';
+                 << shortest(scene.world.box_size) << '\t' << shortest(scene.world.radius) << '\t' << scene.steps
+                 << '\t' << (scene.mode == OutputMode::print ? "print" : "perf") << '\t' << c.exercises << '\n';
     }
     if (!manifest.flush()) throw std::runtime_error(directory + "/manifest.tsv: cannot write");
 }

@@ -34,16 +34,16 @@ enum class Mistake {
 
 inline const char* mistake_name(Mistake m) {
     switch (m) {
-        case Mistake::none: return "none";
-        case Mistake::no_stop_at_wall: return "no stop at the wall";
-        case Mistake::ties_by_index_only: return "ties broken by index only";
-        case Mistake::overlaps_never_collide: return "overlapping pairs never collide";
-        case Mistake::two_collisions_per_step: return "two collisions per step";
-        case Mistake::corner_flips_one_axis: return "a corner flips one axis";
-        case Mistake::pruned_search: return "a pruned search";
-        case Mistake::counters_off_by_one: return "counters off by one";
-        case Mistake::dropped_line: return "a dropped line";
-        case Mistake::repeated_line: return "a repeated line";
+    case Mistake::none: return "none";
+    case Mistake::no_stop_at_wall: return "no stop at the wall";
+    case Mistake::ties_by_index_only: return "ties broken by index only";
+    case Mistake::overlaps_never_collide: return "overlapping pairs never collide";
+    case Mistake::two_collisions_per_step: return "two collisions per step";
+    case Mistake::corner_flips_one_axis: return "a corner flips one axis";
+    case Mistake::pruned_search: return "a pruned search";
+    case Mistake::counters_off_by_one: return "counters off by one";
+    case Mistake::dropped_line: return "a dropped line";
+    case Mistake::repeated_line: return "a repeated line";
     }
     return "";
 }
@@ -96,7 +96,8 @@ private:
                 const double C = dx * dx + dy * dy - 4 * r_ * r_;
                 if (A == 0) continue;
                 if (C <= 0) {
-                    if (B < 0 && mistake_ != Mistake::overlaps_never_collide) candidates.push_back({0.0, 1, i, j, false, false});
+                    if (B < 0 && mistake_ != Mistake::overlaps_never_collide)
+                        candidates.push_back({0.0, 1, i, j, false, false});
                     continue;
                 }
                 if (B >= 0) continue;
