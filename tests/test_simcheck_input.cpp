@@ -53,6 +53,8 @@ void the_reference_output_conforms() {
 }
 
 void unreadable_lines_name_their_line() {
+    static constexpr char nul_line[] = "0 0 5.00000000 10\0.00000000 2.00000000 0.00000000\n";
+    const std::string with_nul(nul_line, sizeof nul_line - 1);
     const std::vector<std::pair<std::string, std::string>> cases{
         {"0 0 5.00000000 10.00000000 2.00000000\n", "out.txt:1: expected \"s i x y vx vy\""},
         {"0 0 nan 10.00000000 2.00000000 0.00000000\n", "out.txt:1: x is not a finite number"},
@@ -61,7 +63,7 @@ void unreadable_lines_name_their_line() {
          "out.txt:1: the step is not a whole number"},
         {"0 -1 5.00000000 10.00000000 2.00000000 0.00000000\n", "out.txt:1: the particle index is not a whole number"},
         {"0 0 5.0000000\x01 10.00000000 2.00000000 0.00000000\n", "out.txt:1: x is not a finite number"},
-        {std::string("0 0 5.00000000 10\0.00000000 2.00000000 0.00000000\n", 52), "out.txt:1: "},
+        {with_nul, "out.txt:1: "},
         {pair_output.substr(0, pair_output.rfind("1 0\n")) + "1 99999999999999999999\n",
          "out.txt:6: wc is not a whole number"},
         {std::string(1 << 20, '7'), "out.txt:1: the line is longer than 4096 characters"},

@@ -48,7 +48,9 @@ bool OutputReader::next(OutputLine& out) {
     std::size_t end = 0;
     for (std::size_t searched = begin_;;) {
         const char* found =
-            static_cast<const char*>(std::memchr(window_.data() + searched, '\n', window_.size() - searched));
+            searched < window_.size()
+                ? static_cast<const char*>(std::memchr(window_.data() + searched, '\n', window_.size() - searched))
+                : nullptr;
         if (found) {
             end = static_cast<std::size_t>(found - window_.data());
             break;
