@@ -9,7 +9,7 @@ cd "$(dirname "$0")/.."
 scripts/ensure-deps.sh clang-format
 # The heavier test tools: the aarch64 cross compiler and qemu (the same bytes
 # on another architecture), clang with libFuzzer and its OpenMP (a minute of fuzzing).
-scripts/ensure-deps.sh --optional g++-aarch64-linux-gnu qemu-user clang libclang-rt-dev libomp-dev
+scripts/ensure-deps.sh --optional g++-aarch64-linux-gnu qemu-user clang libclang-rt-dev libomp-dev chromium
 jobs=$(nproc)
 
 echo "== Release build and tests"

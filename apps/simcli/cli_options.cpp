@@ -6,6 +6,7 @@
 #include <getopt.h>
 
 #include <charconv>
+#include <cmath>
 #include <cstdio>
 #include <string_view>
 
@@ -42,6 +43,12 @@ Simulates N hard disks bouncing elastically in a square box, in discrete steps.
                                    steps after the checkpoint (append them to the first part)
       --progress / --quiet         force / silence the progress line on stderr (default:
                                    on a terminal, for runs longer than about two seconds)
+      --animate FILE.html          also write a self-contained page that plays the run
+      --animate-every K            one frame every K steps (default: automatic, the page
+                                   under about 50 MB); with --engine exact also 0.5, 0.25,
+                                   ... (1/k): frames between whole steps
+      --snapshot FILE.svg          also write one state as an SVG picture
+      --snapshot-step N              the state after step N (default: the last)
       --stats                      a summary on stderr after the run: steps per
                                    second, collisions, energy drift, pair tests
   -h, --help                       this text, exit 0
@@ -75,7 +82,27 @@ enum LongOnly {
     opt_resume,
     opt_progress,
     opt_quiet,
+    opt_animate,
+    opt_animate_every,
+    opt_snapshot,
+    opt_snapshot_step,
 };
+
+// --animate-every: a whole number of steps, or 1/k of a step (k up to 1000).
+double parse_animate_every(std::string_view text) {
+    double value = 0.0;
+    const auto [end, error] = std::from_chars(text.data(), text.data() + text.size(), value);
+    const bool number = !text.empty() && error == std::errc{} && end == text.data() + text.size();
+    const bool whole = number && value >= 1.0 && value <= 9e15 && value == std::floor(value);
+    const double parts = number && value > 0.0 ? 1.0 / value : 0.0;
+    const bool fraction = number && value > 0.0 && value < 1.0 && parts <= 1000.5 &&
+                          std::fabs(parts - std::round(parts)) < 1e-9 * parts;
+    if (!whole && !fraction) {
+        throw BadInput("--animate-every: expected a whole number of steps, or 1/k of a step (0.5, 0.25, 0.1, ...), "
+                       "found \"" + std::string(text) + "\"");
+    }
+    return value;
+}
 
 // What was given, before the rules between options are checked.
 struct Given {
@@ -86,6 +113,8 @@ struct Given {
     bool progress = false;
     bool quiet = false;
     std::optional<PairSearch> pair_search;
+    std::optional<double> animate_every;
+    std::optional<std::int64_t> snapshot_step;
 };
 
 void check_combinations(CliOptions& options, const Given& given) {
@@ -101,6 +130,16 @@ void check_combinations(CliOptions& options, const Given& given) {
     if (given.progress && given.quiet) throw BadInput("--progress and --quiet contradict each other");
     if (options.checkpoint_every && !options.checkpoint_path) {
         throw BadInput("--checkpoint-every K needs --checkpoint FILE");
+    }
+    if (given.animate_every && !options.animation) throw BadInput("--animate-every K needs --animate FILE.html");
+    if (options.animation) options.animation->every = given.animate_every;
+    if (given.animate_every && *given.animate_every < 1.0 && options.engine != EngineChoice::exact) {
+        throw BadInput("--animate-every below 1 needs --engine exact: the step rules have no state between steps");
+    }
+    if (given.snapshot_step && !options.snapshot_path) throw BadInput("--snapshot-step N needs --snapshot FILE.svg");
+    options.snapshot_step = given.snapshot_step;
+    if (options.resume_path && (options.animation || options.snapshot_path)) {
+        throw BadInput("--animate and --snapshot need the whole run; not with --resume");
     }
     if (options.resume_path) {
         if (options.scene_path != "-") throw BadInput("--resume continues a checkpoint; it takes no scene file");
@@ -128,6 +167,10 @@ std::optional<CliOptions> parse_arguments(int argc, char** argv) {
                                           {"resume", required_argument, nullptr, opt_resume},
                                           {"progress", no_argument, nullptr, opt_progress},
                                           {"quiet", no_argument, nullptr, opt_quiet},
+                                          {"animate", required_argument, nullptr, opt_animate},
+                                          {"animate-every", required_argument, nullptr, opt_animate_every},
+                                          {"snapshot", required_argument, nullptr, opt_snapshot},
+                                          {"snapshot-step", required_argument, nullptr, opt_snapshot_step},
                                           {"help", no_argument, nullptr, 'h'},
                                           {"version", no_argument, nullptr, opt_version},
                                           {nullptr, 0, nullptr, 0}};
@@ -190,6 +233,12 @@ std::optional<CliOptions> parse_arguments(int argc, char** argv) {
         case opt_quiet:
             given.quiet = true;
             options.progress = ProgressChoice::silenced;
+            break;
+        case opt_animate: options.animation = AnimationRequest{std::string(value), std::nullopt}; break;
+        case opt_animate_every: given.animate_every = parse_animate_every(value); break;
+        case opt_snapshot: options.snapshot_path = std::string(value); break;
+        case opt_snapshot_step:
+            given.snapshot_step = static_cast<std::int64_t>(parse_unsigned("--snapshot-step", value, 0, INT64_MAX));
             break;
         case 'h': std::fputs(usage_text, stdout); return std::nullopt;
         case opt_version: std::printf("simcli %s\n", particlesim::version); return std::nullopt;

@@ -2,6 +2,7 @@
 // simcli's command line (io.md "simcli"): parsed and checked in one place,
 // before anything is read or run.
 
+#include "animation.hpp"
 #include "checkpoint.hpp"
 #include "progress_line.hpp"
 
@@ -34,6 +35,9 @@ struct CliOptions {
     std::optional<std::int64_t> checkpoint_every;
     std::optional<std::string> resume_path;
     ProgressChoice progress = ProgressChoice::automatic;
+    std::optional<AnimationRequest> animation;
+    std::optional<std::string> snapshot_path;
+    std::optional<std::int64_t> snapshot_step;  // empty: the last step
 };
 
 // Nothing when --help or --version has been answered. Throws BadInput.

@@ -3,11 +3,13 @@
 // the work. The pieces around the run live beside this file: the command
 // line, the output file, checkpoints, interrupts and the progress line.
 
+#include "animation.hpp"
 #include "checkpoint.hpp"
 #include "cli_options.hpp"
 #include "interrupts.hpp"
 #include "output_file.hpp"
 #include "progress_line.hpp"
+#include "snapshot.hpp"
 
 #include "particlesim/particlesim.hpp"
 
@@ -52,9 +54,24 @@ struct RunStats {
     double final_energy = 0.0;
 };
 
+// What --animate and --snapshot collect while the run goes on.
+struct Pictures {
+    std::optional<Animation> animation;
+    std::optional<std::string> snapshot_path;
+    std::int64_t snapshot_step = 0;
+
+    template <Engine E>
+    void observe(std::int64_t step, const E& engine, const World& world) {
+        if (animation && animation->per_step() == 1 && animation->wants(step)) {
+            animation->add_frame(static_cast<double>(step), engine.particles(), engine.totals());
+        }
+        if (snapshot_path && step == snapshot_step) write_snapshot(*snapshot_path, world, engine.particles(), step);
+    }
+};
+
 // Runs `engine` from its current step to settings.steps, writing the states.
 template <Engine E>
-RunStats write_run(E& engine, const RunSettings& settings, const CliOptions& options) {
+RunStats write_run(E& engine, const RunSettings& settings, const CliOptions& options, Pictures& pictures) {
     RunStats stats;
     stats.initial_energy = total_kinetic_energy(engine.particles());
     const std::int64_t first_step = engine.steps_done();
@@ -62,6 +79,7 @@ RunStats write_run(E& engine, const RunSettings& settings, const CliOptions& opt
     StateWriter writer(output.stream(), settings.numbers);
     // A resumed run goes on where the first part of its output ends.
     if (first_step == 0) writer.write_state(0, engine.particles());
+    if (first_step == 0) pictures.observe(0, engine, settings.world);
     const bool print = settings.mode == OutputMode::print;
     const auto start = std::chrono::steady_clock::now();
     {
@@ -71,6 +89,7 @@ RunStats write_run(E& engine, const RunSettings& settings, const CliOptions& opt
             engine.step();
             ++step;
             if (print && step < settings.steps) writer.write_state(step, engine.particles());
+            pictures.observe(step, engine, settings.world);
             progress.update(step);
             const int signal = pending_interrupt();
             const bool due = options.checkpoint_every && step % *options.checkpoint_every == 0;
@@ -117,9 +136,25 @@ void print_stats(const char* engine, const RunStats& stats, std::int64_t steps) 
 }
 
 template <Engine E>
-void run_and_report(E& engine, const RunSettings& settings, const CliOptions& options) {
-    const RunStats stats = write_run(engine, settings, options);
+void run_and_report(E& engine, const RunSettings& settings, const CliOptions& options, Pictures& pictures) {
+    const RunStats stats = write_run(engine, settings, options, pictures);
     if (options.stats) print_stats(settings.engine == EngineChoice::exact ? "exact" : "step", stats, settings.steps);
+}
+
+// Frames between whole steps (--engine exact --animate-every 1/k): continuous
+// time has a state at every instant. A second run with every velocity divided
+// by k takes k of its steps for one of the real run, so its states at whole
+// steps are the real run's at multiples of 1/k (up to rounding).
+void record_between_steps(Animation& animation, const World& world, std::vector<Particle> start, std::int64_t steps) {
+    const int k = animation.per_step();
+    const double slowed = 1.0 / k;
+    for (Particle& p : start) p.velocity *= slowed;
+    ExactSimulation sampler(world, std::move(start));
+    animation.add_frame(0.0, sampler.particles(), sampler.totals(), slowed);
+    for (std::int64_t j = 1; j <= steps * k; ++j) {
+        sampler.step();
+        animation.add_frame(static_cast<double>(j) * slowed, sampler.particles(), sampler.totals(), slowed);
+    }
 }
 
 Scene read_input(const std::string& path, const std::string& name, SceneLines& lines) {
@@ -172,15 +207,33 @@ void run_scene(const CliOptions& options) {
     }
     const RunSettings settings{scene.world,    scene.steps, scene.mode, options.engine, options.stepped.substeps,
                                options.numbers};
-    if (options.engine == EngineChoice::exact) {
+    Pictures pictures;
+    if (options.snapshot_path) {
+        pictures.snapshot_path = options.snapshot_path;
+        pictures.snapshot_step = options.snapshot_step.value_or(scene.steps);
+        if (pictures.snapshot_step > scene.steps) {
+            throw BadInput(at_line(name, lines.steps) + "--snapshot-step " + std::to_string(pictures.snapshot_step) +
+                           " is beyond the scene's S = " + std::to_string(scene.steps) + " steps");
+        }
+    }
+    const bool exact = options.engine == EngineChoice::exact;
+    if (options.animation) {
+        pictures.animation.emplace(*options.animation, scene.world, particles.size(), scene.steps,
+                                   exact ? "exact" : "step", options.stepped.substeps);
+    }
+    const bool between_steps = pictures.animation && pictures.animation->per_step() > 1;
+    const std::vector<Particle> start = between_steps ? particles : std::vector<Particle>{};
+    if (exact) {
         ExactSimulation engine = make_exact_engine(scene, std::move(particles), name, lines);
         lines = {};  // the particles' lines were kept for the messages above only
-        run_and_report(engine, settings, options);
+        run_and_report(engine, settings, options, pictures);
     } else {
         lines = {};
         SteppedSimulation engine(scene.world, std::move(particles), options.stepped);
-        run_and_report(engine, settings, options);
+        run_and_report(engine, settings, options, pictures);
     }
+    if (between_steps) record_between_steps(*pictures.animation, scene.world, start, scene.steps);
+    if (pictures.animation) pictures.animation->write();
 }
 
 void resume_run(const CliOptions& options) {
@@ -192,15 +245,16 @@ void resume_run(const CliOptions& options) {
         throw BadInput(e.what());
     }
     const RunSettings& settings = checkpoint.settings;
+    Pictures no_pictures;  // --animate and --snapshot need the whole run
     try {
         if (settings.engine == EngineChoice::exact) {
             ExactSimulation engine = ExactSimulation::restore(settings.world, *checkpoint.engine_state);
-            run_and_report(engine, settings, options);
+            run_and_report(engine, settings, options, no_pictures);
         } else {
             SteppedOptions stepped = options.stepped;
             stepped.substeps = settings.substeps;
             SteppedSimulation engine = SteppedSimulation::restore(settings.world, *checkpoint.engine_state, stepped);
-            run_and_report(engine, settings, options);
+            run_and_report(engine, settings, options, no_pictures);
         }
     } catch (const std::invalid_argument& e) {
         throw BadInput(path + ": " + e.what());

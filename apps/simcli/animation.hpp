@@ -1,0 +1,76 @@
+#pragma once
+// simcli --animate FILE.html: collects frames of a run and writes one
+// self-contained page that plays it (the page's sources: apps/simcli/page/).
+// The run's data sits in the page as four script elements:
+//   run-meta    JSON: particles, box, radius, engine, substeps, steps, every,
+//               times (of each frame, in steps), speedMin, speedMax, countMax
+//   run-frames  base64 of little-endian float32: per frame, x y vx vy per particle
+//   run-series  base64 of little-endian float64: per frame, the particle and
+//               wall collisions since the frame before, the steps since it, and
+//               the kinetic energy
+//   run-hits    base64 of little-endian uint32: per frame, n and n triples
+//               (particle, its particle collisions, its wall collisions) since the frame before
+
+#include "particlesim/engine.hpp"
+#include "particlesim/particle.hpp"
+#include "particlesim/world.hpp"
+
+#include <cstdint>
+#include <optional>
+#include <span>
+#include <string>
+#include <vector>
+
+namespace simcli {
+
+// Pages stay under about this size unless --animate-every says otherwise.
+inline constexpr double animation_page_budget = 50e6;
+
+struct AnimationRequest {
+    std::string path;
+    // Steps from one frame to the next: a whole number, or (exact engine) a
+    // fraction 1/k of a step. Empty: automatic, within the budget.
+    std::optional<double> every;
+};
+
+class Animation {
+public:
+    // Says on stderr when it keeps one frame in K automatically.
+    Animation(const AnimationRequest& request, const particlesim::World& world, std::size_t particles,
+              std::int64_t steps, std::string engine, int substeps);
+
+    // Whole steps between frames (1 when frames are a fraction of a step apart).
+    [[nodiscard]] std::int64_t stride() const { return stride_; }
+    // Micro-frames per step: k for --animate-every 1/k, else 1.
+    [[nodiscard]] int per_step() const { return per_step_; }
+    [[nodiscard]] bool wants(std::int64_t step) const { return step % stride_ == 0 || step == steps_; }
+
+    // A frame at `time` (in steps); `totals` are the run's collisions so far.
+    // Velocities are divided by `velocity_scale` (a sampling run moves slower).
+    void add_frame(double time, std::span<const particlesim::Particle> particles,
+                   const particlesim::StepCounts& totals, double velocity_scale = 1.0);
+    // Writes the page (atomically, like -o). Throws particlesim::OutputError.
+    void write() const;
+
+private:
+    std::string path_;
+    particlesim::World world_;
+    std::size_t count_;
+    std::int64_t steps_;
+    std::string engine_;
+    int substeps_;
+    std::int64_t stride_ = 1;
+    int per_step_ = 1;
+    double every_ = 1.0;
+    std::vector<double> times_;
+    std::vector<float> frames_;
+    std::vector<double> series_;
+    std::vector<std::uint32_t> hits_;
+    std::vector<std::uint64_t> last_counters_;  // per particle: pc, wc at the last frame
+    particlesim::StepCounts last_totals_;
+    double last_time_ = 0.0;
+    double speed_min_ = 0.0;
+    double speed_max_ = 0.0;
+};
+
+}  // namespace simcli

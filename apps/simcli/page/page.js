@@ -1,0 +1,424 @@
+// The player of a simcli run (simcli --animate). Plain JavaScript, no
+// library: the page must open offline, forever, from one file. simcli embeds
+// this file at build time and writes the run's data beside it (run-meta,
+// run-frames, run-series, run-hits; formats in apps/simcli/animation.hpp).
+"use strict";
+
+(() => {
+  const errors = [];
+  window.addEventListener("error", (event) => errors.push(String(event.message)));
+  const openedAt = performance.now();
+
+  // ---- the run's data ----
+  const meta = JSON.parse(document.getElementById("run-meta").textContent);
+  const bytesOf = (id) => {
+    const element = document.getElementById(id);
+    const text = atob(element.textContent.trim());
+    element.textContent = ""; // decoded once: the DOM need not keep tens of megabytes of text
+    const bytes = new Uint8Array(text.length);
+    for (let k = 0; k < text.length; ++k) bytes[k] = text.charCodeAt(k);
+    return bytes.buffer;
+  };
+  const count = meta.particles;
+  const frameCount = meta.times.length;
+  const frames = new Float32Array(bytesOf("run-frames")); // frame-major: x, y, vx, vy per particle
+  const series = new Float64Array(bytesOf("run-series")); // per frame: particle hits, wall hits, steps, energy
+  const hitWords = new Uint32Array(bytesOf("run-hits"));
+  const hits = []; // per frame: [index, particle hits, wall hits, ...] since the frame before
+  for (let at = 0, f = 0; f < frameCount; ++f) {
+    const n = hitWords[at++];
+    hits.push(hitWords.subarray(at, at + 3 * n));
+    at += 3 * n;
+  }
+  const L = meta.box;
+  const r = meta.radius;
+
+  // ---- elements and settings ----
+  const $ = (id) => document.getElementById(id);
+  const box = $("box");
+  const ctx = box.getContext("2d");
+  const scrubber = $("scrubber");
+  scrubber.max = String(frameCount - 1);
+  $("run-title").textContent =
+    `${count} particles, L = ${L}, r = ${r}, ${meta.steps} steps, ` +
+    (meta.engine === "exact" ? "exact engine" : `step rules${meta.substeps > 1 ? `, ${meta.substeps} substeps` : ""}`) +
+    (meta.every !== 1 ? `, one frame every ${meta.every} step${meta.every === 1 ? "" : "s"}` : "");
+  const settings = { colour: "speed", trails: "none", showHits: true, showOverlaps: true, chosen: -1, fps: 20 };
+  let current = 0;
+  let playing = null;
+
+  // ---- geometry: world to canvas pixels, y upwards ----
+  const margin = 6;
+  const scale = (box.width - 2 * margin) / L;
+  const px = (x) => margin + x * scale;
+  const py = (y) => box.height - margin - y * scale;
+  const radiusPx = r * scale;
+  const asPoints = count > 20000 || radiusPx < 1;
+  const drawRadius = Math.max(radiusPx, 1.5); // tiny disks stay visible
+
+  // ---- colours ----
+  const stops = [[68, 1, 84], [59, 82, 139], [33, 145, 140], [94, 201, 98], [253, 231, 37]]; // viridis
+  const ramp = (t) => {
+    const s = Math.min(Math.max(t, 0), 1) * (stops.length - 1);
+    const k = Math.min(Math.floor(s), stops.length - 2);
+    const a = stops[k], b = stops[k + 1], w = s - k;
+    return `rgb(${Math.round(a[0] + (b[0] - a[0]) * w)},${Math.round(a[1] + (b[1] - a[1]) * w)},${Math.round(a[2] + (b[2] - a[2]) * w)})`;
+  };
+  const buckets = 32;
+  const bucketColours = Array.from({ length: buckets }, (_, k) => ramp(k / (buckets - 1)));
+  const fixedColour = "rgb(232,89,12)";
+
+  // Collisions so far of each particle at the current frame (kept incrementally).
+  const collisionsSoFar = new Float64Array(count);
+  let countedTo = 0;
+  const countTo = (f) => {
+    if (f < countedTo) {
+      collisionsSoFar.fill(0);
+      countedTo = 0;
+    }
+    for (; countedTo < f; ++countedTo) {
+      const h = hits[countedTo + 1];
+      for (let k = 0; k < h.length; k += 3) collisionsSoFar[h[k]] += h[k + 1] + h[k + 2];
+    }
+  };
+
+  const speedOf = (f, i) => Math.hypot(frames[(f * count + i) * 4 + 2], frames[(f * count + i) * 4 + 3]);
+  const bucketOf = (f, i) => {
+    if (settings.colour === "collisions") {
+      return Math.min(buckets - 1, Math.floor((collisionsSoFar[i] / Math.max(meta.countMax, 1)) * (buckets - 1)));
+    }
+    const span = meta.speedMax - meta.speedMin;
+    const t = span > 0 ? (speedOf(f, i) - meta.speedMin) / span : 0.5;
+    return Math.min(buckets - 1, Math.max(0, Math.floor(t * (buckets - 1) + 0.5)));
+  };
+
+  // ---- overlaps (the step rules allow them), through a grid of 2r cells ----
+  const overlapping = new Uint8Array(count);
+  const findOverlaps = (f) => {
+    overlapping.fill(0);
+    if (count > 50000) return -1;
+    const side = Math.max(1, Math.min(1024, Math.floor(L / (2 * r))));
+    const cell = L / side;
+    const heads = new Int32Array(side * side).fill(-1);
+    const next = new Int32Array(count);
+    const cellOf = (v) => Math.min(side - 1, Math.max(0, Math.floor(v / cell)));
+    for (let i = 0; i < count; ++i) {
+      const c = cellOf(frames[(f * count + i) * 4 + 1]) * side + cellOf(frames[(f * count + i) * 4]);
+      next[i] = heads[c];
+      heads[c] = i;
+    }
+    let pairs = 0;
+    const limit = 4 * r * r * (1 - 1e-6);
+    for (let i = 0; i < count; ++i) {
+      const x = frames[(f * count + i) * 4], y = frames[(f * count + i) * 4 + 1];
+      const cx = cellOf(x), cy = cellOf(y);
+      for (let gy = Math.max(cy - 1, 0); gy <= Math.min(cy + 1, side - 1); ++gy) {
+        for (let gx = Math.max(cx - 1, 0); gx <= Math.min(cx + 1, side - 1); ++gx) {
+          for (let j = heads[gy * side + gx]; j >= 0; j = next[j]) {
+            if (j <= i) continue;
+            const dx = frames[(f * count + j) * 4] - x, dy = frames[(f * count + j) * 4 + 1] - y;
+            if (dx * dx + dy * dy < limit) {
+              overlapping[i] = overlapping[j] = 1;
+              ++pairs;
+            }
+          }
+        }
+      }
+    }
+    return pairs;
+  };
+
+  // ---- drawing the box ----
+  const draw = (f) => {
+    countTo(f);
+    ctx.fillStyle = "#ffffff";
+    ctx.fillRect(0, 0, box.width, box.height);
+    ctx.strokeStyle = "#59636e";
+    ctx.lineWidth = 1;
+    ctx.strokeRect(px(0) - 0.5, py(L) - 0.5, L * scale + 1, L * scale + 1);
+    drawTrails(f);
+    const groups = Array.from({ length: buckets }, () => []);
+    for (let i = 0; i < count; ++i) groups[settings.colour === "fixed" ? 0 : bucketOf(f, i)].push(i);
+    groups.forEach((members, b) => {
+      if (members.length === 0) return;
+      ctx.fillStyle = settings.colour === "fixed" ? fixedColour : bucketColours[b];
+      ctx.beginPath();
+      for (const i of members) {
+        const x = px(frames[(f * count + i) * 4]), y = py(frames[(f * count + i) * 4 + 1]);
+        if (asPoints) {
+          ctx.rect(Math.floor(x) - 1, Math.floor(y) - 1, 3, 3); // whole pixels: crisp dots
+        } else {
+          ctx.moveTo(x + drawRadius, y);
+          ctx.arc(x, y, drawRadius, 0, 2 * Math.PI);
+        }
+      }
+      ctx.fill();
+    });
+    const ring = (i, colour, extra) => {
+      ctx.strokeStyle = colour;
+      ctx.beginPath();
+      ctx.arc(px(frames[(f * count + i) * 4]), py(frames[(f * count + i) * 4 + 1]), drawRadius + extra, 0, 2 * Math.PI);
+      ctx.stroke();
+    };
+    const overlaps = settings.showOverlaps ? findOverlaps(f) : 0;
+    if (settings.showOverlaps && overlaps > 0) {
+      ctx.lineWidth = 1.5;
+      for (let i = 0; i < count; ++i) if (overlapping[i]) ring(i, "#e03131", 0.5);
+    }
+    if (settings.showHits) {
+      // Flash what collided since the frame before: pairs in magenta, walls in blue.
+      ctx.lineWidth = 2;
+      const h = hits[f];
+      for (let k = 0; k < h.length; k += 3) ring(h[k], h[k + 1] > 0 ? "#d6336c" : "#1c7ed6", 3);
+    }
+    if (settings.chosen >= 0) {
+      ctx.lineWidth = 2;
+      ring(settings.chosen, "#000000", 5);
+    }
+    $("step-label").textContent = `frame ${f + 1} of ${frameCount}`;
+    $("time-label").textContent = `step ${formatTime(meta.times[f])} of ${meta.steps}`;
+    $("overlap-label").textContent = overlaps > 0 ? `${overlaps} overlapping pair${overlaps === 1 ? "" : "s"}` : "";
+    scrubber.value = String(f);
+    drawPlots(f);
+  };
+  const formatTime = (t) => (Number.isInteger(t) ? String(t) : t.toFixed(3));
+
+  const drawTrails = (f) => {
+    if (settings.trails === "none") return;
+    const members = settings.trails === "all" ? [...Array(Math.min(count, 5000)).keys()] : settings.chosen >= 0 ? [settings.chosen] : [];
+    const from = Math.max(0, f - 40);
+    ctx.strokeStyle = "rgba(89,99,110,0.55)";
+    ctx.lineWidth = 1;
+    ctx.beginPath();
+    for (const i of members) {
+      for (let g = from; g <= f; ++g) {
+        const x = px(frames[(g * count + i) * 4]), y = py(frames[(g * count + i) * 4 + 1]);
+        // A jump longer than half the box is a wall bounce between frames: no line across the box.
+        const far = g > from && Math.abs(frames[(g * count + i) * 4] - frames[((g - 1) * count + i) * 4]) > L / 2;
+        if (g === from || far) ctx.moveTo(x, y);
+        else ctx.lineTo(x, y);
+      }
+    }
+    ctx.stroke();
+  };
+
+  // ---- the plots beside the box ----
+  const perStep = (f, column) => {
+    const steps = series[f * 4 + 2];
+    return steps > 0 ? series[f * 4 + column] / steps : 0;
+  };
+  const plotLines = (canvas, lines, f, logY) => {
+    const c = canvas.getContext("2d");
+    const w = canvas.width, h = canvas.height, left = 58, bottom = 16;
+    c.clearRect(0, 0, w, h);
+    let low = Infinity, high = -Infinity;
+    for (const line of lines) for (let g = 1; g < frameCount; ++g) { low = Math.min(low, line.value(g)); high = Math.max(high, line.value(g)); }
+    if (!(high > low)) { low -= 1; high += 1; }
+    const x = (g) => left + ((w - left - 4) * (frameCount > 1 ? g / (frameCount - 1) : 0));
+    const y = (v) => h - bottom - ((h - bottom - 6) * (v - low)) / (high - low);
+    c.strokeStyle = "#d0d7de";
+    c.strokeRect(left, 4, w - left - 4, h - bottom - 4);
+    c.fillStyle = "#59636e";
+    c.font = "10px sans-serif";
+    c.fillText(high.toPrecision(6), 2, 12);
+    c.fillText(low.toPrecision(6), 2, h - bottom);
+    for (const line of lines) {
+      c.strokeStyle = line.colour;
+      c.beginPath();
+      for (let g = 1; g < frameCount; ++g) (g === 1 ? c.moveTo : c.lineTo).call(c, x(g), y(line.value(g)));
+      c.stroke();
+    }
+    c.strokeStyle = "#000000";
+    c.beginPath();
+    c.moveTo(x(f), 4);
+    c.lineTo(x(f), h - bottom);
+    c.stroke();
+  };
+  const drawPlots = (f) => {
+    plotLines($("collisions-plot"), [
+      { colour: "#d6336c", value: (g) => perStep(g, 0) },
+      { colour: "#1c7ed6", value: (g) => perStep(g, 1) },
+    ], f);
+    $("collisions-label").textContent = f > 0 ? `particles ${formatCount(perStep(f, 0))}, walls ${formatCount(perStep(f, 1))}` : "";
+    $("collisions-label").dataset.particle = String(perStep(f, 0));
+    $("collisions-label").dataset.wall = String(perStep(f, 1));
+    plotLines($("energy-plot"), [{ colour: "#2b8a3e", value: (g) => series[g * 4 + 3] }], f);
+    $("energy-label").textContent = `E = ${series[f * 4 + 3].toPrecision(8)}`;
+    drawSpeedHistogram(f);
+  };
+  const formatCount = (v) => (Number.isInteger(v) ? String(v) : v.toFixed(2));
+
+  const drawSpeedHistogram = (f) => {
+    const canvas = $("speed-plot");
+    const c = canvas.getContext("2d");
+    const w = canvas.width, h = canvas.height, bottom = 16;
+    c.clearRect(0, 0, w, h);
+    const bins = 30;
+    const counts = new Float64Array(bins);
+    let sumSq = 0;
+    const top = Math.max(meta.speedMax, 1e-300) * 1.05;
+    for (let i = 0; i < count; ++i) {
+      const v = speedOf(f, i);
+      sumSq += v * v;
+      counts[Math.min(bins - 1, Math.floor((v / top) * bins))] += 1;
+    }
+    // 2D Maxwell (Rayleigh) density with the same mean energy: p(v) = v / s^2 exp(-v^2 / 2 s^2), s^2 = <v^2> / 2.
+    const s2 = sumSq / count / 2;
+    const width = top / bins;
+    const expected = (v) => (s2 > 0 ? ((count * width * v) / s2) * Math.exp((-v * v) / (2 * s2)) : 0);
+    let high = 1;
+    for (let b = 0; b < bins; ++b) high = Math.max(high, counts[b], expected((b + 0.5) * width));
+    const bw = (w - 8) / bins;
+    c.fillStyle = "#91a7ff";
+    for (let b = 0; b < bins; ++b) {
+      const bh = ((h - bottom - 4) * counts[b]) / high;
+      c.fillRect(4 + b * bw, h - bottom - bh, bw - 1, bh);
+    }
+    c.strokeStyle = "#c92a2a";
+    c.beginPath();
+    for (let k = 0; k <= 100; ++k) {
+      const v = (top * k) / 100;
+      const yy = h - bottom - ((h - bottom - 4) * expected(v)) / high;
+      (k === 0 ? c.moveTo : c.lineTo).call(c, 4 + ((w - 8) * k) / 100, yy);
+    }
+    c.stroke();
+    c.fillStyle = "#59636e";
+    c.font = "10px sans-serif";
+    c.fillText("0", 4, h - 3);
+    c.fillText(`speed ${top.toPrecision(3)}`, w - 80, h - 3);
+  };
+
+  // ---- legend ----
+  const drawLegend = () => {
+    const bar = $("legend-bar").getContext("2d");
+    for (let k = 0; k < 220; ++k) {
+      bar.fillStyle = settings.colour === "fixed" ? fixedColour : ramp(k / 219);
+      bar.fillRect(k, 0, 1, 12);
+    }
+    const byCount = settings.colour === "collisions";
+    $("legend-low").textContent = settings.colour === "fixed" ? "" : byCount ? "0" : meta.speedMin.toPrecision(3);
+    $("legend-high").textContent = settings.colour === "fixed" ? "" : byCount ? String(meta.countMax) : meta.speedMax.toPrecision(3);
+    $("legend-name").textContent =
+      settings.colour === "fixed" ? "all disks" : byCount ? "collisions so far" : "speed (length per step)";
+  };
+
+  // ---- playing ----
+  const go = (f) => {
+    current = Math.min(Math.max(f, 0), frameCount - 1);
+    draw(current);
+  };
+  const pause = () => {
+    if (playing !== null) clearInterval(playing);
+    playing = null;
+    $("play").innerHTML = "&#x25B6;";
+  };
+  const play = () => {
+    pause();
+    if (current >= frameCount - 1) go(0);
+    $("play").innerHTML = "&#x275A;&#x275A;";
+    playing = setInterval(() => {
+      if (current >= frameCount - 1) pause();
+      else go(current + 1);
+    }, 1000 / settings.fps);
+  };
+  const toggle = () => (playing === null ? play() : pause());
+  const setSpeed = (fps) => {
+    settings.fps = fps;
+    $("speed").value = String(fps);
+    if (playing !== null) play();
+  };
+  const speeds = [2, 5, 10, 20, 40, 60];
+
+  $("play").addEventListener("click", toggle);
+  $("first").addEventListener("click", () => { pause(); go(0); });
+  $("last").addEventListener("click", () => { pause(); go(frameCount - 1); });
+  $("back").addEventListener("click", () => { pause(); go(current - 1); });
+  $("forward").addEventListener("click", () => { pause(); go(current + 1); });
+  scrubber.addEventListener("input", () => { pause(); go(Number(scrubber.value)); });
+  $("speed").addEventListener("change", () => setSpeed(Number($("speed").value)));
+  $("colour").addEventListener("change", () => { settings.colour = $("colour").value; drawLegend(); draw(current); });
+  $("trails").addEventListener("change", () => { settings.trails = $("trails").value; draw(current); });
+  $("show-hits").addEventListener("change", () => { settings.showHits = $("show-hits").checked; draw(current); });
+  $("show-overlaps").addEventListener("change", () => { settings.showOverlaps = $("show-overlaps").checked; draw(current); });
+  box.addEventListener("click", (event) => {
+    const rect = box.getBoundingClientRect();
+    const x = ((event.clientX - rect.left) * (box.width / rect.width) - margin) / scale;
+    const y = (box.height - margin - (event.clientY - rect.top) * (box.height / rect.height)) / scale;
+    let best = -1, bestDistance = Infinity;
+    for (let i = 0; i < count; ++i) {
+      const d = Math.hypot(frames[(current * count + i) * 4] - x, frames[(current * count + i) * 4 + 1] - y);
+      if (d < bestDistance) { best = i; bestDistance = d; }
+    }
+    settings.chosen = best;
+    $("chosen-label").textContent = best >= 0 ? `particle ${best} chosen` : "";
+    draw(current);
+  });
+  document.addEventListener("keydown", (event) => {
+    if (event.target instanceof HTMLSelectElement || event.target instanceof HTMLInputElement && event.target.type !== "range") return;
+    const cycle = (select) => { select.selectedIndex = (select.selectedIndex + 1) % select.options.length; select.dispatchEvent(new Event("change")); };
+    const handled = {
+      " ": toggle,
+      ArrowRight: () => { pause(); go(current + 1); },
+      ArrowLeft: () => { pause(); go(current - 1); },
+      Home: () => { pause(); go(0); },
+      End: () => { pause(); go(frameCount - 1); },
+      "+": () => setSpeed(speeds[Math.min(speeds.indexOf(settings.fps) + 1, speeds.length - 1)]),
+      "-": () => setSpeed(speeds[Math.max(speeds.indexOf(settings.fps) - 1, 0)]),
+      c: () => cycle($("colour")),
+      t: () => cycle($("trails")),
+    }[event.key];
+    if (handled) {
+      event.preventDefault();
+      handled();
+    }
+  });
+
+  drawLegend();
+  const start = /#frame=(\d+)/.exec(location.hash);
+  go(start ? Number(start[1]) : 0);
+  const openMs = performance.now(); // since the page began to load
+  const scriptMs = performance.now() - openedAt;
+
+  // ---- self-test, for the browser tests (tests/test_animation.cpp) ----
+  // #selftest={"frame":F,"on":[[x,y],...],"off":[[x,y],...]}: draws frame F in
+  // one colour and reports the colour at those world points, then drives the
+  // controls and reports what they did.
+  const probe = /#selftest=(.*)$/.exec(location.hash);
+  if (probe) {
+    const request = JSON.parse(decodeURIComponent(probe[1]));
+    // The pixel that contains the point (a disk at least 1.5 pixels in radius covers it whole).
+    const pixelAt = (x, y) => Array.from(ctx.getImageData(Math.floor(px(x)), Math.floor(py(y)), 1, 1).data.slice(0, 3));
+    const results = { frames: frameCount, openMs, scriptMs };
+    settings.colour = "fixed";
+    settings.showHits = false;
+    settings.showOverlaps = false;
+    go(request.frame);
+    results.on = request.on.map(([x, y]) => pixelAt(x, y));
+    results.off = request.off.map(([x, y]) => pixelAt(x, y));
+    results.shownFrame = current;
+    scrubber.value = String(request.scrubTo);
+    scrubber.dispatchEvent(new Event("input"));
+    results.afterScrub = current;
+    results.scrubbedOn = (request.scrubOn || []).map(([x, y]) => pixelAt(x, y));
+    document.dispatchEvent(new KeyboardEvent("keydown", { key: "ArrowRight" }));
+    results.afterRight = current;
+    document.dispatchEvent(new KeyboardEvent("keydown", { key: "ArrowLeft" }));
+    results.afterLeft = current;
+    results.collisions = [];
+    for (let f = 1; f < frameCount && f <= 200; ++f) {
+      go(f);
+      results.collisions.push([Number($("collisions-label").dataset.particle), Number($("collisions-label").dataset.wall)]);
+    }
+    go(0);
+    play();
+    setTimeout(() => {
+      results.afterPlay = current;
+      pause();
+      results.errors = errors;
+      results.resources = performance.getEntriesByType("resource").length;
+      const out = $("selftest");
+      out.textContent = JSON.stringify(results);
+      out.hidden = false;
+    }, 1000);
+  }
+})();

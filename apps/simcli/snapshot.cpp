@@ -1,0 +1,76 @@
+#include "snapshot.hpp"
+
+#include "output_file.hpp"
+
+#include "particlesim/state_writer.hpp"
+
+#include <algorithm>
+#include <array>
+#include <cerrno>
+#include <cmath>
+#include <cstdio>
+#include <cstring>
+
+namespace simcli {
+
+namespace {
+
+constexpr double picture_pixels = 720.0;
+
+// The same viridis ramp as the page.
+std::array<int, 3> ramp(double t) {
+    static constexpr int stops[5][3] = {{68, 1, 84}, {59, 82, 139}, {33, 145, 140}, {94, 201, 98}, {253, 231, 37}};
+    const double s = std::clamp(t, 0.0, 1.0) * 4.0;
+    const int k = std::min(static_cast<int>(s), 3);
+    const double w = s - k;
+    std::array<int, 3> rgb{};
+    for (int c = 0; c < 3; ++c) rgb[c] = static_cast<int>(std::lround(stops[k][c] + (stops[k + 1][c] - stops[k][c]) * w));
+    return rgb;
+}
+
+}  // namespace
+
+void write_snapshot(const std::string& path, const particlesim::World& world,
+                    std::span<const particlesim::Particle> particles, std::int64_t step) {
+    OutputFile file(path);
+    std::FILE* out = file.stream();
+    const double L = world.box_size;
+    const double pixel = L / picture_pixels;
+    // Disks smaller than a pixel are drawn as pixel-sized dots.
+    const double radius = std::max(world.radius, 0.75 * pixel);
+    const double margin = 4.0 * pixel;
+    double low = 0.0, high = 0.0;
+    for (std::size_t i = 0; i < particles.size(); ++i) {
+        const double speed = particles[i].velocity.norm();
+        low = i == 0 ? speed : std::min(low, speed);
+        high = i == 0 ? speed : std::max(high, speed);
+    }
+    const double caption = 28.0 * pixel;
+    std::fprintf(out,
+                 "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"%.0f\" height=\"%.0f\" viewBox=\"%.7g %.7g %.7g "
+                 "%.7g\">\n",
+                 picture_pixels + 8.0, picture_pixels + 8.0 + 28.0, -margin, -margin, L + 2 * margin,
+                 L + 2 * margin + caption);
+    std::fprintf(out, "<rect x=\"0\" y=\"0\" width=\"%.7g\" height=\"%.7g\" fill=\"#ffffff\" stroke=\"#59636e\" "
+                      "stroke-width=\"%.7g\"/>\n",
+                 L, L, pixel);
+    // y upwards, as in the box.
+    std::fprintf(out, "<g transform=\"matrix(1 0 0 -1 0 %.7g)\">\n", L);
+    for (const particlesim::Particle& p : particles) {
+        const double t = high > low ? (p.velocity.norm() - low) / (high - low) : 0.5;
+        const auto [red, green, blue] = ramp(t);
+        std::fprintf(out, "<circle cx=\"%.7g\" cy=\"%.7g\" r=\"%.7g\" fill=\"rgb(%d,%d,%d)\"/>\n", p.position.x(),
+                     p.position.y(), radius, red, green, blue);
+    }
+    std::fprintf(out, "</g>\n");
+    std::fprintf(out,
+                 "<text x=\"0\" y=\"%.7g\" font-family=\"sans-serif\" font-size=\"%.7g\" fill=\"#1f2328\">step %lld, "
+                 "%zu particles, L = %.6g, r = %.6g; colour: speed from %.4g (purple) to %.4g (yellow)</text>\n",
+                 L + margin + 18.0 * pixel, 13.0 * pixel, static_cast<long long>(step), particles.size(), L,
+                 world.radius, low, high);
+    std::fprintf(out, "</svg>\n");
+    if (std::ferror(out)) throw particlesim::OutputError(path + ": cannot write: " + std::strerror(errno));
+    file.commit();
+}
+
+}  // namespace simcli

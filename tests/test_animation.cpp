@@ -1,0 +1,317 @@
+// simcli's pictures in a real browser: pages written by --animate are opened
+// in headless Chromium, which drives them through their self-test hook and
+// reports back: the colour under each disk of the chosen frame (at positions
+// taken from simcli's own print output, so a wrong frame, axis or scale shows),
+// what play, the scrubber and the keys did, the collision counts the plot
+// shows (against the library's per-step counts), console errors and network
+// requests. Also the SVG of --snapshot. Exit 77 (skipped) without Chromium.
+
+#include "check.hpp"
+#include "mini_json.hpp"
+#include "run_process.hpp"
+
+#include "particlesim/particlesim.hpp"
+
+#include <chrono>
+#include <cmath>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <regex>
+#include <sstream>
+#include <string>
+#include <vector>
+
+using namespace particlesim;
+
+namespace {
+
+const std::string simcli = SIMCLI_PATH;
+
+std::string work_dir() {
+    static const std::string dir = [] {
+        char name[] = "/tmp/particlesim-animation-XXXXXX";
+        return std::string(mkdtemp(name));
+    }();
+    return dir;
+}
+
+std::string chromium_path() {
+    if (const char* given = std::getenv("CHROMIUM")) return given;
+    const char* path = std::getenv("PATH");
+    std::istringstream dirs(path ? path : "");
+    for (std::string dir; std::getline(dirs, dir, ':');) {
+        for (const char* name : {"chromium", "chromium-browser", "google-chrome"}) {
+            const std::string candidate = dir + "/" + name;
+            if (access(candidate.c_str(), X_OK) == 0) return candidate;
+        }
+    }
+    return "";
+}
+
+// Each step's particles, from a print-mode output.
+std::vector<std::vector<Particle>> read_states(const std::string& output) {
+    std::vector<std::vector<Particle>> states;
+    std::istringstream in(output);
+    std::int64_t step = 0;
+    std::size_t index = 0;
+    Particle p;
+    std::string line;
+    while (std::getline(in, line)) {
+        std::istringstream fields(line);
+        fields >> step >> index >> p.position.x() >> p.position.y() >> p.velocity.x() >> p.velocity.y();
+        if (static_cast<std::size_t>(step) >= states.size()) states.resize(static_cast<std::size_t>(step) + 1);
+        states[static_cast<std::size_t>(step)].push_back(p);
+    }
+    return states;
+}
+
+std::string percent_encoded(const std::string& text) {
+    std::string out;
+    for (const unsigned char c : text) {
+        if (std::isalnum(c)) {
+            out += static_cast<char>(c);
+        } else {
+            char code[4];
+            std::snprintf(code, sizeof code, "%%%02X", c);
+            out += code;
+        }
+    }
+    return out;
+}
+
+std::string points(const std::vector<Vec2>& list) {
+    std::string out = "[";
+    for (std::size_t k = 0; k < list.size(); ++k) {
+        char text[80];
+        std::snprintf(text, sizeof text, "%s[%.9g,%.9g]", k ? "," : "", list[k].x(), list[k].y());
+        out += text;
+    }
+    return out + "]";
+}
+
+struct PageRun {
+    mini_json::Value report;
+    double seconds = 0.0;
+    std::string log;
+};
+
+// Opens `page` with the self-test request; what the page reports about itself.
+PageRun open_page(const std::string& page, const std::string& request, int budget_ms = 8000) {
+    const std::string profile = work_dir() + "/profile";
+    const auto start = std::chrono::steady_clock::now();
+    const run_process::Result r = run_process::run(
+        chromium_path(), {"--headless", "--no-sandbox", "--disable-gpu", "--no-first-run", "--user-data-dir=" + profile,
+                          "--enable-logging=stderr", "--v=0", "--virtual-time-budget=" + std::to_string(budget_ms),
+                          "--dump-dom", "file://" + page + "#selftest=" + percent_encoded(request)});
+    PageRun run;
+    run.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    run.log = r.err;
+    const std::string opening = "<pre id=\"selftest\">";
+    const std::size_t begin = r.out.find(opening);
+    const std::size_t end = begin == std::string::npos ? begin : r.out.find("</pre>", begin);
+    if (end == std::string::npos) {
+        std::fprintf(stderr, "no self-test report from %s (status %d)\n%s\n", page.c_str(), r.status,
+                     r.err.substr(0, 2000).c_str());
+        CHECK(false);
+        return run;
+    }
+    // The DOM dump escapes quotes as &quot;.
+    std::string json;
+    for (std::size_t at = begin + opening.size(); at < end;) {
+        if (r.out.compare(at, 6, "&quot;") == 0) {
+            json += '"';
+            at += 6;
+        } else {
+            json += r.out[at++];
+        }
+    }
+    run.report = mini_json::parse(json);
+    return run;
+}
+
+bool colour_is(const mini_json::Value& pixel, int red, int green, int blue) {
+    return pixel[0].number == red && pixel[1].number == green && pixel[2].number == blue;
+}
+
+// Points inside the box at least `clearance` from every centre.
+std::vector<Vec2> empty_points(const std::vector<Particle>& particles, double box, double clearance, std::size_t wanted) {
+    std::vector<Vec2> found;
+    for (int k = 1; k < 40 && found.size() < wanted; ++k) {
+        for (int m = 1; m < 40 && found.size() < wanted; ++m) {
+            const Vec2 point(box * k / 40.0, box * m / 40.0);
+            bool clear = true;
+            for (const Particle& p : particles) clear = clear && (p.position - point).norm() > clearance;
+            if (clear) found.push_back(point);
+        }
+    }
+    return found;
+}
+
+std::string write_file(const std::string& name, const std::string& text) {
+    const std::string path = work_dir() + "/" + name;
+    std::ofstream(path, std::ios::binary) << text;
+    return path;
+}
+
+void the_page_shows_the_run() {
+    // A small box (L = 24, r = 1: a disk is 60 pixels wide) with collisions and walls.
+    const std::string scene = write_file("small.in",
+                                         "6 24 1 12 print\n"
+                                         "0 3 12 1.5 0\n1 12 12 0 0\n2 14 12 0 0\n3 16 12 0 0\n"
+                                         "4 6 4 0.75 0.5\n5 20 20 -1 -0.25\n");
+    const std::string page = work_dir() + "/small.html";
+    const run_process::Result out = run_process::run(simcli, {scene, "--animate", page});
+    CHECK_EQ(out.status, 0);
+    const auto states = read_states(out.out);
+    CHECK_EQ(states.size(), 13U);
+    const int frame = 6, scrub = 9;
+    std::vector<Vec2> on, scrubbed_on;
+    for (const Particle& p : states[frame]) on.push_back(p.position);
+    for (const Particle& p : states[scrub]) scrubbed_on.push_back(p.position);
+    const std::vector<Vec2> off = empty_points(states[frame], 24.0, 1.4, 12);
+    CHECK(off.size() >= 8);
+    const std::string request = "{\"frame\":" + std::to_string(frame) + ",\"on\":" + points(on) +
+                                ",\"off\":" + points(off) + ",\"scrubTo\":" + std::to_string(scrub) +
+                                ",\"scrubOn\":" + points(scrubbed_on) + "}";
+    const PageRun run = open_page(page, request);
+    const mini_json::Value& r = run.report;
+    if (r.kind != mini_json::Value::Kind::object) return;
+    CHECK_EQ(r["frames"].number, 13.0);
+    CHECK_EQ(r["shownFrame"].number, static_cast<double>(frame));
+    int orange = 0, white = 0, scrubbed = 0;
+    for (const auto& pixel : r["on"].items) orange += colour_is(pixel, 232, 89, 12);
+    for (const auto& pixel : r["off"].items) white += colour_is(pixel, 255, 255, 255);
+    for (const auto& pixel : r["scrubbedOn"].items) scrubbed += colour_is(pixel, 232, 89, 12);
+    CHECK_EQ(orange, 6);
+    CHECK_EQ(white, static_cast<int>(off.size()));
+    CHECK_EQ(r["afterScrub"].number, static_cast<double>(scrub));
+    CHECK_EQ(scrubbed, 6);
+    CHECK_EQ(r["afterRight"].number, static_cast<double>(scrub + 1));
+    CHECK_EQ(r["afterLeft"].number, static_cast<double>(scrub));
+    CHECK(r["afterPlay"].number > 0);  // a second of play at 20 frames a second
+    CHECK(r["errors"].items.empty());
+    CHECK_EQ(r["resources"].number, 0.0);
+    CHECK(run.log.find("Uncaught") == std::string::npos);
+    // The collisions plot: the library's counts, step by step.
+    std::istringstream in(run_process::slurp(scene));
+    const Scene parsed = read_scene(in);
+    SteppedSimulation engine(parsed.world, parsed.particles);
+    const auto& shown = r["collisions"].items;
+    CHECK_EQ(shown.size(), 12U);
+    int matching = 0, busy = 0;
+    for (std::size_t s = 0; s < shown.size(); ++s) {
+        engine.step();
+        matching += shown[s][0].number == static_cast<double>(engine.last_step().particle_collisions) &&
+                    shown[s][1].number == static_cast<double>(engine.last_step().wall_collisions);
+        busy += engine.last_step().particle_collisions + engine.last_step().wall_collisions > 0;
+    }
+    CHECK_EQ(matching, 12);
+    CHECK(busy >= 4);
+}
+
+void exact_engine_between_steps() {
+    // --animate-every 0.25: four frames a step; every fourth is a whole step of the run.
+    const std::string scene = write_file("exact.in", "3 24 1 8 print\n0 3 12 1.5 0\n1 12 12 0 0\n2 14 12 0 0\n");
+    const std::string page = work_dir() + "/exact.html";
+    const run_process::Result out = run_process::run(simcli, {scene, "--engine", "exact", "--animate", page,
+                                                              "--animate-every", "0.25"});
+    CHECK_EQ(out.status, 0);
+    const auto states = read_states(out.out);
+    std::vector<Vec2> on, scrubbed_on;
+    for (const Particle& p : states[5]) on.push_back(p.position);
+    for (const Particle& p : states[7]) scrubbed_on.push_back(p.position);
+    const std::string request = "{\"frame\":20,\"on\":" + points(on) + ",\"off\":[],\"scrubTo\":28,\"scrubOn\":" +
+                                points(scrubbed_on) + "}";
+    const mini_json::Value r = open_page(page, request).report;
+    if (r.kind != mini_json::Value::Kind::object) return;
+    CHECK_EQ(r["frames"].number, 33.0);
+    int orange = 0;
+    for (const auto& pixel : r["on"].items) orange += colour_is(pixel, 232, 89, 12);
+    for (const auto& pixel : r["scrubbedOn"].items) orange += colour_is(pixel, 232, 89, 12);
+    CHECK_EQ(orange, 6);
+    CHECK(r["errors"].items.empty());
+    // Refused where it means nothing: the step rules have no state between steps.
+    CHECK_EQ(run_process::run(simcli, {scene, "--animate", page, "--animate-every", "0.25"}).status, 2);
+    CHECK_EQ(run_process::run(simcli, {scene, "--animate-every", "2"}).status, 2);
+    CHECK_EQ(run_process::run(simcli, {scene, "--engine", "exact", "--animate", page, "--animate-every", "0.3"}).status, 2);
+}
+
+void large_runs_stay_in_budget() {
+    // The default scene (1000 particles, 1000 steps) keeps every frame and opens;
+    // 100 000 particles render as points; a long run keeps one frame in K and says so.
+    struct Case {
+        const char* name;
+        std::string scene;
+    };
+    const std::vector<Case> cases{{"default", "1000 20000 1 1000 perf\n"}, {"100k", "100000 40000 1 5 perf\n"}};
+    for (const Case& c : cases) {
+        const std::string page = work_dir() + "/" + c.name + ".html";
+        const run_process::Result out = run_process::run(simcli, {"--animate", page, "-o", "/dev/null"}, c.scene);
+        CHECK_EQ(out.status, 0);
+        const auto size = std::filesystem::file_size(page);
+        CHECK(size < 50'000'000);
+        // Probe 20 disks of the first frame (from the same scene drawn again).
+        std::istringstream in(c.scene);
+        const Scene scene = read_scene(in);
+        const auto particles = make_random_particles(scene.particle_count, scene.world);
+        std::vector<Vec2> on;
+        for (std::size_t i = 0; i < 20; ++i) on.push_back(particles[i * (particles.size() / 20)].position);
+        const PageRun run = open_page(page, "{\"frame\":0,\"on\":" + points(on) + ",\"off\":[],\"scrubTo\":1}", 20000);
+        const mini_json::Value& r = run.report;
+        if (r.kind != mini_json::Value::Kind::object) continue;
+        int orange = 0;
+        for (const auto& pixel : r["on"].items) orange += colour_is(pixel, 232, 89, 12);
+        CHECK_EQ(orange, 20);
+        CHECK(r["errors"].items.empty());
+        CHECK_EQ(r["resources"].number, 0.0);
+        std::printf("%s: page %.1f MB, %d frames, first frame drawn %.0f ms after the page began to load (script %.0f "
+                    "ms), chromium run %.1f s\n",
+                    c.name, static_cast<double>(size) / 1e6, static_cast<int>(r["frames"].number), r["openMs"].number,
+                    r["scriptMs"].number, run.seconds);
+    }
+    const std::string page = work_dir() + "/long.html";
+    const run_process::Result out =
+        run_process::run(simcli, {"--animate", page, "-o", "/dev/null"}, "50000 100000 1 40 perf\n");
+    CHECK_EQ(out.status, 0);
+    CHECK(out.err.find("simcli: --animate keeps one frame in ") != std::string::npos);
+    CHECK(std::filesystem::file_size(page) < 50'000'000);
+}
+
+void snapshot_is_the_state() {
+    const std::string scene = write_file("snap.in", "5 20 1 12 print\n0 4 10 0.5 0\n1 8 10 0 0\n2 10 10 0 0\n3 12 10 0 0\n4 14 10 0 0\n");
+    const std::string svg = work_dir() + "/snap.svg";
+    const run_process::Result out = run_process::run(simcli, {scene, "--snapshot", svg, "--snapshot-step", "9"});
+    CHECK_EQ(out.status, 0);
+    const auto states = read_states(out.out);
+    const std::string text = run_process::slurp(svg);
+    const std::regex circle("<circle cx=\"([^\"]+)\" cy=\"([^\"]+)\" r=\"([^\"]+)\"");
+    std::size_t k = 0;
+    for (auto it = std::sregex_iterator(text.begin(), text.end(), circle); it != std::sregex_iterator(); ++it, ++k) {
+        CHECK(k < 5);
+        if (k >= 5) break;
+        CHECK_NEAR(std::stod((*it)[1]), states[9][k].position.x(), 1e-5);
+        CHECK_NEAR(std::stod((*it)[2]), states[9][k].position.y(), 1e-5);
+        CHECK_EQ(std::stod((*it)[3]), 1.0);
+    }
+    CHECK_EQ(k, 5U);
+    CHECK(text.find(">step 9, 5 particles") != std::string::npos);
+    CHECK_EQ(run_process::run(simcli, {scene, "--snapshot", svg, "--snapshot-step", "13"}).status, 2);
+    CHECK_EQ(run_process::run(simcli, {scene, "--snapshot-step", "3"}).status, 2);
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+    if (chromium_path().empty()) {
+        std::printf("SKIPPED: no Chromium (install it with: apt-get install chromium; scripts/run-tests.sh does)\n");
+        return 77;
+    }
+    const int status = check::run(argc, argv, "test_animation",
+                                  {{"the page shows the run", the_page_shows_the_run},
+                                   {"exact engine between steps", exact_engine_between_steps},
+                                   {"large runs stay in budget", large_runs_stay_in_budget},
+                                   {"snapshot is the state", snapshot_is_the_state}});
+    std::filesystem::remove_all(work_dir());
+    return status;
+}
