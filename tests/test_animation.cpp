@@ -135,7 +135,8 @@ bool colour_is(const mini_json::Value& pixel, int red, int green, int blue) {
 }
 
 // Points inside the box at least `clearance` from every centre.
-std::vector<Vec2> empty_points(const std::vector<Particle>& particles, double box, double clearance, std::size_t wanted) {
+std::vector<Vec2> empty_points(const std::vector<Particle>& particles, double box, double clearance,
+                               std::size_t wanted) {
     std::vector<Vec2> found;
     for (int k = 1; k < 40 && found.size() < wanted; ++k) {
         for (int m = 1; m < 40 && found.size() < wanted; ++m) {
@@ -214,15 +215,15 @@ void exact_engine_between_steps() {
     // --animate-every 0.25: four frames a step; every fourth is a whole step of the run.
     const std::string scene = write_file("exact.in", "3 24 1 8 print\n0 3 12 1.5 0\n1 12 12 0 0\n2 14 12 0 0\n");
     const std::string page = work_dir() + "/exact.html";
-    const run_process::Result out = run_process::run(simcli, {scene, "--engine", "exact", "--animate", page,
-                                                              "--animate-every", "0.25"});
+    const run_process::Result out =
+        run_process::run(simcli, {scene, "--engine", "exact", "--animate", page, "--animate-every", "0.25"});
     CHECK_EQ(out.status, 0);
     const auto states = read_states(out.out);
     std::vector<Vec2> on, scrubbed_on;
     for (const Particle& p : states[5]) on.push_back(p.position);
     for (const Particle& p : states[7]) scrubbed_on.push_back(p.position);
-    const std::string request = "{\"frame\":20,\"on\":" + points(on) + ",\"off\":[],\"scrubTo\":28,\"scrubOn\":" +
-                                points(scrubbed_on) + "}";
+    const std::string request =
+        "{\"frame\":20,\"on\":" + points(on) + ",\"off\":[],\"scrubTo\":28,\"scrubOn\":" + points(scrubbed_on) + "}";
     const mini_json::Value r = open_page(page, request).report;
     if (r.kind != mini_json::Value::Kind::object) return;
     CHECK_EQ(r["frames"].number, 33.0);
@@ -234,7 +235,8 @@ void exact_engine_between_steps() {
     // Refused where it means nothing: the step rules have no state between steps.
     CHECK_EQ(run_process::run(simcli, {scene, "--animate", page, "--animate-every", "0.25"}).status, 2);
     CHECK_EQ(run_process::run(simcli, {scene, "--animate-every", "2"}).status, 2);
-    CHECK_EQ(run_process::run(simcli, {scene, "--engine", "exact", "--animate", page, "--animate-every", "0.3"}).status, 2);
+    CHECK_EQ(run_process::run(simcli, {scene, "--engine", "exact", "--animate", page, "--animate-every", "0.3"}).status,
+             2);
 }
 
 void large_runs_stay_in_budget() {
@@ -265,10 +267,11 @@ void large_runs_stay_in_budget() {
         CHECK_EQ(orange, 20);
         CHECK(r["errors"].items.empty());
         CHECK_EQ(r["resources"].number, 0.0);
-        std::printf("%s: page %.1f MB, %d frames, first frame drawn %.0f ms after the page began to load (script %.0f "
-                    "ms), chromium run %.1f s\n",
-                    c.name, static_cast<double>(size) / 1e6, static_cast<int>(r["frames"].number), r["openMs"].number,
-                    r["scriptMs"].number, run.seconds);
+        std::printf(
+            "%s: page %.1f MB, %d frames, first frame drawn %.0f ms after the page began to load (script %.0f "
+            "ms), chromium run %.1f s\n",
+            c.name, static_cast<double>(size) / 1e6, static_cast<int>(r["frames"].number), r["openMs"].number,
+            r["scriptMs"].number, run.seconds);
     }
     const std::string page = work_dir() + "/long.html";
     const run_process::Result out =
@@ -279,7 +282,8 @@ void large_runs_stay_in_budget() {
 }
 
 void snapshot_is_the_state() {
-    const std::string scene = write_file("snap.in", "5 20 1 12 print\n0 4 10 0.5 0\n1 8 10 0 0\n2 10 10 0 0\n3 12 10 0 0\n4 14 10 0 0\n");
+    const std::string scene =
+        write_file("snap.in", "5 20 1 12 print\n0 4 10 0.5 0\n1 8 10 0 0\n2 10 10 0 0\n3 12 10 0 0\n4 14 10 0 0\n");
     const std::string svg = work_dir() + "/snap.svg";
     const run_process::Result out = run_process::run(simcli, {scene, "--snapshot", svg, "--snapshot-step", "9"});
     CHECK_EQ(out.status, 0);

@@ -62,7 +62,9 @@ public:
     }
 
 private:
-    [[noreturn]] static void fail() { throw OutputError(std::string("cannot write the page: ") + std::strerror(errno)); }
+    [[noreturn]] static void fail() {
+        throw OutputError(std::string("cannot write the page: ") + std::strerror(errno));
+    }
     std::FILE* out_;
 };
 
@@ -76,7 +78,11 @@ std::string number(double value) {
 
 Animation::Animation(const AnimationRequest& request, const particlesim::World& world, std::size_t particles,
                      std::int64_t steps, std::string engine, int substeps)
-    : path_(request.path), world_(world), count_(particles), steps_(steps), engine_(std::move(engine)),
+    : path_(request.path),
+      world_(world),
+      count_(particles),
+      steps_(steps),
+      engine_(std::move(engine)),
       substeps_(substeps) {
     if (request.every && *request.every < 1.0) {
         per_step_ = static_cast<int>(std::lround(1.0 / *request.every));
@@ -108,7 +114,8 @@ void Animation::add_frame(double time, std::span<const Particle> particles, cons
         const Particle& p = particles[i];
         const double vx = p.velocity.x() / velocity_scale;
         const double vy = p.velocity.y() / velocity_scale;
-        for (const double value : {p.position.x(), p.position.y(), vx, vy}) frames_.push_back(static_cast<float>(value));
+        for (const double value : {p.position.x(), p.position.y(), vx, vy})
+            frames_.push_back(static_cast<float>(value));
         const double speed = std::hypot(vx, vy);
         if (times_.empty() && i == 0) speed_min_ = speed_max_ = speed;
         speed_min_ = std::min(speed_min_, speed);
@@ -122,8 +129,9 @@ void Animation::add_frame(double time, std::span<const Particle> particles, cons
         const std::uint64_t wc = particles[i].wall_collisions - last_counters_[2 * i + 1];
         if (pc == 0 && wc == 0) continue;
         constexpr std::uint64_t most = std::numeric_limits<std::uint32_t>::max();
-        frame_hits.insert(frame_hits.end(), {static_cast<std::uint32_t>(i), static_cast<std::uint32_t>(std::min(pc, most)),
-                                             static_cast<std::uint32_t>(std::min(wc, most))});
+        frame_hits.insert(frame_hits.end(),
+                          {static_cast<std::uint32_t>(i), static_cast<std::uint32_t>(std::min(pc, most)),
+                           static_cast<std::uint32_t>(std::min(wc, most))});
         last_counters_[2 * i] = particles[i].particle_collisions;
         last_counters_[2 * i + 1] = particles[i].wall_collisions;
     }
@@ -145,13 +153,14 @@ void Animation::write() const {
     page.text(page::before_data);
 
     std::uint64_t count_max = 0;
-    for (std::size_t i = 0; i < count_; ++i) count_max = std::max(count_max, last_counters_[2 * i] + last_counters_[2 * i + 1]);
-    std::string meta = "{\"version\": 1, \"particles\": " + std::to_string(count_) + ", \"box\": " + number(world_.box_size) +
-                       ", \"radius\": " + number(world_.radius) + ", \"engine\": \"" + engine_ +
-                       "\", \"substeps\": " + std::to_string(substeps_) + ", \"steps\": " + std::to_string(steps_) +
-                       ", \"every\": " + number(every_) + ", \"speedMin\": " + number(speed_min_) +
-                       ", \"speedMax\": " + number(speed_max_) + ", \"countMax\": " + std::to_string(count_max) +
-                       ", \"times\": [";
+    for (std::size_t i = 0; i < count_; ++i)
+        count_max = std::max(count_max, last_counters_[2 * i] + last_counters_[2 * i + 1]);
+    std::string meta = "{\"version\": 1, \"particles\": " + std::to_string(count_) +
+                       ", \"box\": " + number(world_.box_size) + ", \"radius\": " + number(world_.radius) +
+                       ", \"engine\": \"" + engine_ + "\", \"substeps\": " + std::to_string(substeps_) +
+                       ", \"steps\": " + std::to_string(steps_) + ", \"every\": " + number(every_) +
+                       ", \"speedMin\": " + number(speed_min_) + ", \"speedMax\": " + number(speed_max_) +
+                       ", \"countMax\": " + std::to_string(count_max) + ", \"times\": [";
     for (std::size_t f = 0; f < times_.size(); ++f) meta += (f > 0 ? ", " : "") + number(times_[f]);
     meta += "]}";
     page.text("<script id=\"run-meta\" type=\"application/json\">" + meta + "</script>\n");

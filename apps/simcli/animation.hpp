@@ -47,8 +47,8 @@ public:
 
     // A frame at `time` (in steps); `totals` are the run's collisions so far.
     // Velocities are divided by `velocity_scale` (a sampling run moves slower).
-    void add_frame(double time, std::span<const particlesim::Particle> particles,
-                   const particlesim::StepCounts& totals, double velocity_scale = 1.0);
+    void add_frame(double time, std::span<const particlesim::Particle> particles, const particlesim::StepCounts& totals,
+                   double velocity_scale = 1.0);
     // Writes the page (atomically, like -o). Throws particlesim::OutputError.
     void write() const;
 

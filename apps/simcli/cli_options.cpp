@@ -95,11 +95,13 @@ double parse_animate_every(std::string_view text) {
     const bool number = !text.empty() && error == std::errc{} && end == text.data() + text.size();
     const bool whole = number && value >= 1.0 && value <= 9e15 && value == std::floor(value);
     const double parts = number && value > 0.0 ? 1.0 / value : 0.0;
-    const bool fraction = number && value > 0.0 && value < 1.0 && parts <= 1000.5 &&
-                          std::fabs(parts - std::round(parts)) < 1e-9 * parts;
+    const bool fraction =
+        number && value > 0.0 && value < 1.0 && parts <= 1000.5 && std::fabs(parts - std::round(parts)) < 1e-9 * parts;
     if (!whole && !fraction) {
-        throw BadInput("--animate-every: expected a whole number of steps, or 1/k of a step (0.5, 0.25, 0.1, ...), "
-                       "found \"" + std::string(text) + "\"");
+        throw BadInput(
+            "--animate-every: expected a whole number of steps, or 1/k of a step (0.5, 0.25, 0.1, ...), "
+            "found \"" +
+            std::string(text) + "\"");
     }
     return value;
 }

@@ -24,7 +24,8 @@ std::array<int, 3> ramp(double t) {
     const int k = std::min(static_cast<int>(s), 3);
     const double w = s - k;
     std::array<int, 3> rgb{};
-    for (int c = 0; c < 3; ++c) rgb[c] = static_cast<int>(std::lround(stops[k][c] + (stops[k + 1][c] - stops[k][c]) * w));
+    for (int c = 0; c < 3; ++c)
+        rgb[c] = static_cast<int>(std::lround(stops[k][c] + (stops[k + 1][c] - stops[k][c]) * w));
     return rgb;
 }
 
@@ -51,8 +52,9 @@ void write_snapshot(const std::string& path, const particlesim::World& world,
                  "%.7g\">\n",
                  picture_pixels + 8.0, picture_pixels + 8.0 + 28.0, -margin, -margin, L + 2 * margin,
                  L + 2 * margin + caption);
-    std::fprintf(out, "<rect x=\"0\" y=\"0\" width=\"%.7g\" height=\"%.7g\" fill=\"#ffffff\" stroke=\"#59636e\" "
-                      "stroke-width=\"%.7g\"/>\n",
+    std::fprintf(out,
+                 "<rect x=\"0\" y=\"0\" width=\"%.7g\" height=\"%.7g\" fill=\"#ffffff\" stroke=\"#59636e\" "
+                 "stroke-width=\"%.7g\"/>\n",
                  L, L, pixel);
     // y upwards, as in the box.
     std::fprintf(out, "<g transform=\"matrix(1 0 0 -1 0 %.7g)\">\n", L);

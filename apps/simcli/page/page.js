@@ -55,6 +55,8 @@
   const radiusPx = r * scale;
   const asPoints = count > 20000 || radiusPx < 1;
   const drawRadius = Math.max(radiusPx, 1.5); // tiny disks stay visible
+  const dot = count > 50000 ? 2 : 3; // pixels a side of a dot, each on whole pixels
+  const dotOffset = Math.floor((dot - 1) / 2);
 
   // ---- colours ----
   const stops = [[68, 1, 84], [59, 82, 139], [33, 145, 140], [94, 201, 98], [253, 231, 37]]; // viridis
@@ -146,7 +148,7 @@
       for (const i of members) {
         const x = px(frames[(f * count + i) * 4]), y = py(frames[(f * count + i) * 4 + 1]);
         if (asPoints) {
-          ctx.rect(Math.floor(x) - 1, Math.floor(y) - 1, 3, 3); // whole pixels: crisp dots
+          ctx.rect(Math.floor(x) - dotOffset, Math.floor(y) - dotOffset, dot, dot);
         } else {
           ctx.moveTo(x + drawRadius, y);
           ctx.arc(x, y, drawRadius, 0, 2 * Math.PI);

@@ -1,0 +1,24 @@
+#!/usr/bin/env bash
+# Regenerates the pictures the README shows (docs/pictures/), all made by
+# simcli itself: the Newton's cradle over a few steps and the default scene
+# (--snapshot, SVG), and a screenshot of the default scene's page (--animate,
+# in headless Chromium). Installs what is missing, like the quick start.
+set -euo pipefail
+cd "$(dirname "$0")/.."
+scripts/ensure-deps.sh chromium
+cmake --preset release >/dev/null
+cmake --build --preset release --target simcli -j "$(nproc)" >/dev/null
+simcli=build/apps/simcli
+out=docs/pictures
+mkdir -p "$out"
+for step in 4 5 6 7 8; do
+  "$simcli" examples/newtons_cradle.in -o /dev/null --snapshot "$out/cradle-step-$step.svg" --snapshot-step "$step"
+done
+"$simcli" examples/default.in -o /dev/null --snapshot "$out/default-step-1000.svg"
+page=$(mktemp --suffix=.html)
+profile=$(mktemp -d)
+trap 'rm -rf "$page" "$profile"' EXIT
+"$simcli" examples/default.in -o /dev/null --animate "$page"
+chromium --headless --no-sandbox --disable-gpu --hide-scrollbars --user-data-dir="$profile" --window-size=1180,900 \
+  --virtual-time-budget=4000 --screenshot="$out/animation.png" "file://$page#frame=500" 2>/dev/null
+echo "wrote $out/cradle-step-{4..8}.svg, $out/default-step-1000.svg and $out/animation.png"
