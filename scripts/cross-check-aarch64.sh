@@ -54,7 +54,7 @@ done
 printf '300 60 1 40 print\n' >"$scratch/crowded.in"
 printf '2000 400 1.5 12 print\n' >"$scratch/gas.in"
 printf '50 30 1 200 print\n' >"$scratch/small.in"
-for seed in 1 2 3 4; do
+for seed in 1 2 3; do
   for scene in crowded gas small; do
     compare "$scene seed $seed" "$scratch/$scene.in" --seed "$seed" -t 2
     compare "$scene seed $seed" "$scratch/$scene.in" --seed "$seed" --engine exact

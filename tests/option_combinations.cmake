@@ -1,10 +1,14 @@
-# Every combination of the project's options configures; the combinations the
-# other builds of the suite do not cover are also built (at -O0, for speed):
-# the library alone, and the benchmarks without the apps.
+# Every combination of the build options configures, without the sanitizers
+# and with everything on (the sanitizers change flags, not what is built); the
+# combinations the other builds of the suite do not cover are also built (at
+# -O0, for speed): the library alone, and the benchmarks without the apps.
 # Inputs: SOURCE_DIR, WORK_DIR.
 file(REMOVE_RECURSE "${WORK_DIR}")
 set(options PARTICLESIM_BUILD_APPS PARTICLESIM_BUILD_TESTS PARTICLESIM_BUILD_BENCH PARTICLESIM_SANITIZE)
 foreach(mask RANGE 15)
+  if(mask GREATER_EQUAL 8 AND NOT mask EQUAL 15)
+    continue()
+  endif()
   set(args "")
   set(name "")
   set(bit 1)

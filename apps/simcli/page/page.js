@@ -407,10 +407,13 @@
     document.dispatchEvent(new KeyboardEvent("keydown", { key: "ArrowLeft" }));
     results.afterLeft = current;
     results.collisions = [];
-    for (let f = 1; f < frameCount && f <= 200; ++f) {
+    const drawingStarted = performance.now();
+    let drawn = 0;
+    for (let f = 1; f < frameCount && f <= 200; ++f, ++drawn) {
       go(f);
       results.collisions.push([Number($("collisions-label").dataset.particle), Number($("collisions-label").dataset.wall)]);
     }
+    results.drawMs = drawn > 0 ? (performance.now() - drawingStarted) / drawn : 0; // one frame, box and plots
     go(0);
     play();
     setTimeout(() => {
