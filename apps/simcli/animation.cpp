@@ -1,8 +1,6 @@
 #include "animation.hpp"
 
 #include "animation_page.hpp"
-#include "output_file.hpp"
-
 #include "particlesim/accuracy.hpp"
 #include "particlesim/state_writer.hpp"
 
@@ -78,7 +76,7 @@ std::string number(double value) {
 
 Animation::Animation(const AnimationRequest& request, const particlesim::World& world, std::size_t particles,
                      std::int64_t steps, std::string engine, int substeps)
-    : path_(request.path),
+    : file_(std::make_unique<OutputFile>(request.path)),
       world_(world),
       count_(particles),
       steps_(steps),
@@ -147,9 +145,8 @@ void Animation::add_frame(double time, std::span<const Particle> particles, cons
     times_.push_back(time);
 }
 
-void Animation::write() const {
-    OutputFile file(path_);
-    PageWriter page(file.stream());
+void Animation::write() {
+    PageWriter page(file_->stream());
     page.text(page::before_data);
 
     std::uint64_t count_max = 0;
@@ -180,7 +177,7 @@ void Animation::write() const {
     page.base64(bytes);
     page.text("</script>\n");
     page.text(page::after_data);
-    file.commit();
+    file_->commit();
 }
 
 }  // namespace simcli

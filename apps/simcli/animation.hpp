@@ -11,11 +11,14 @@
 //   run-hits    base64 of little-endian uint32: per frame, n and n triples
 //               (particle, its particle collisions, its wall collisions) since the frame before
 
+#include "output_file.hpp"
+
 #include "particlesim/engine.hpp"
 #include "particlesim/particle.hpp"
 #include "particlesim/world.hpp"
 
 #include <cstdint>
+#include <memory>
 #include <optional>
 #include <span>
 #include <string>
@@ -35,7 +38,9 @@ struct AnimationRequest {
 
 class Animation {
 public:
-    // Says on stderr when it keeps one frame in K automatically.
+    // Opens the page's file at once (a path that cannot be written fails
+    // before the run, not after it). Says on stderr when it keeps one frame in
+    // K automatically.
     Animation(const AnimationRequest& request, const particlesim::World& world, std::size_t particles,
               std::int64_t steps, std::string engine, int substeps);
 
@@ -50,10 +55,10 @@ public:
     void add_frame(double time, std::span<const particlesim::Particle> particles, const particlesim::StepCounts& totals,
                    double velocity_scale = 1.0);
     // Writes the page (atomically, like -o). Throws particlesim::OutputError.
-    void write() const;
+    void write();
 
 private:
-    std::string path_;
+    std::unique_ptr<OutputFile> file_;
     particlesim::World world_;
     std::size_t count_;
     std::int64_t steps_;
