@@ -20,7 +20,8 @@ done
 [ -x "$native" ] || { echo "no native simcli at $native" >&2; exit 1; }
 
 cmake -S "$source_dir" -B "$work" -DCMAKE_TOOLCHAIN_FILE="$source_dir/cmake/aarch64-linux-gnu.toolchain.cmake" \
-  -DCMAKE_BUILD_TYPE=Release -DPARTICLESIM_BUILD_TESTS=OFF -DPARTICLESIM_BUILD_BENCH=OFF >/dev/null
+  -DCMAKE_BUILD_TYPE=Release -DCMAKE_CXX_FLAGS_RELEASE="-O1 -DNDEBUG" -DPARTICLESIM_BUILD_TESTS=OFF \
+  -DPARTICLESIM_BUILD_BENCH=OFF >/dev/null
 cmake --build "$work" --target simcli -j "$(nproc)" >/dev/null
 foreign=(qemu-aarch64 -L /usr/aarch64-linux-gnu "$work/apps/simcli")
 file "$work/apps/simcli" 2>/dev/null | grep -q aarch64 || ! command -v file >/dev/null || { echo "not an aarch64 binary" >&2; exit 1; }
@@ -54,7 +55,7 @@ done
 printf '300 60 1 40 print\n' >"$scratch/crowded.in"
 printf '2000 400 1.5 12 print\n' >"$scratch/gas.in"
 printf '50 30 1 200 print\n' >"$scratch/small.in"
-for seed in 1 2 3; do
+for seed in 1 2; do
   for scene in crowded gas small; do
     compare "$scene seed $seed" "$scratch/$scene.in" --seed "$seed" -t 2
     compare "$scene seed $seed" "$scratch/$scene.in" --seed "$seed" --engine exact
