@@ -131,13 +131,23 @@ void contact_at_t_one_within_rounding() {
 }
 
 void substeps() {
-    // Two micro-steps of 0.5: a disk 0.75 from the wall at speed 1 bounces in
-    // the second micro-step (its t = 0.5 there) and is back at x = 1.5... with
-    // x0 = 2.75, v = -1: after 0.5 at 2.25, then wall in 1.25 > 0.5: x = 1.75.
-    const std::vector<Particle> before{disk(2.75, 5, -1, 0)};
-    StepChecker checker(World{10, 1.0}, {CheckedRules::stepped, 2});
-    CHECK(!checker.check({before, 0.0}, {std::vector{disk(1.75, 5, -1, 0)}, fixed8_uncertainty}).violation);
-    CHECK(checker.check({before, 0.0}, {std::vector{disk(1.5, 5, -1, 0)}, fixed8_uncertainty}).violation.has_value());
+    // Disk 0 at x = 2 moving -2 bounces off the wall x = 1 at t = 0.5; disk 1
+    // rests at x = 4. In one step that is disk 0's one collision: it goes back
+    // to x = 2 and passes into disk 1's place. In two micro-steps of 0.5, the
+    // second starts with disk 0 at x = 1 moving +2, 3 from disk 1: they touch at
+    // its end (t = 0.5) and swap velocities.
+    const std::vector<Particle> before{disk(2, 10, -2, 0), disk(4, 10, 0, 0)};
+    const std::vector<Particle> one_collision{disk(2, 10, 2, 0), disk(4, 10, 0, 0)};
+    const std::vector<Particle> two_collisions{disk(2, 10, 0, 0), disk(4, 10, 2, 0)};
+    StepChecker whole(World{20, 1.0});
+    StepChecker halves(World{20, 1.0}, {CheckedRules::stepped, 2});
+    CHECK(!whole.check({before, 0.0}, {one_collision, fixed8_uncertainty}).violation);
+    CHECK(whole.check({before, 0.0}, {two_collisions, fixed8_uncertainty}).violation.has_value());
+    const StepCheck split = halves.check({before, 0.0}, {two_collisions, fixed8_uncertainty});
+    CHECK(!split.violation);
+    CHECK_EQ(split.collisions[0].wall_min, 1U);
+    CHECK_EQ(split.collisions[0].particle_min, 1U);
+    CHECK(halves.check({before, 0.0}, {one_collision, fixed8_uncertainty}).violation.has_value());
 }
 
 void outside_the_box() {
@@ -146,14 +156,14 @@ void outside_the_box() {
 }
 
 void exact_rules() {
-    // Continuous time: disk 0 bounces off disk 1 at t = 0.5 and then off the
-    // wall at t = 1.5 - ... here: the pair at t = 0.5 as above, and disk 1
-    // (now at -2 from x = 2) reaches the wall at t = 1, exactly the end.
+    // Continuous time: disk 0 meets disk 1 at t = 0.5 and stops; disk 1 takes
+    // -2 from x = 2 and reaches the wall x = 1 at exactly t = 1, the end of the
+    // step: bounced or not yet, both are hard disks within rounding.
     const std::vector<Particle> before{disk(5, 52, -2, 0), disk(2, 52, 0, 0)};
     StepChecker checker(World{64, 1.0}, {CheckedRules::exact, 1});
     CHECK(!checker.check({before, 0.0}, {std::vector{disk(4, 52, 0, 0), disk(1, 52, 2, 0)}, fixed8_uncertainty})
-               .violation ||
-          !checker.check({before, 0.0}, {std::vector{disk(4, 52, 0, 0), disk(1, 52, -2, 0)}, fixed8_uncertainty})
+               .violation);
+    CHECK(!checker.check({before, 0.0}, {std::vector{disk(4, 52, 0, 0), disk(1, 52, -2, 0)}, fixed8_uncertainty})
                .violation);
     // Passing through each other is not hard disks.
     const StepCheck passing =
