@@ -158,10 +158,7 @@ private:
             if (fates_.size() > 1 && undecided && undecided->empty()) *undecided = why_undecided(p);
             add_counts(counts[p], fates_);
             next_[p] = fates_.front().outcome;
-            for (const Fate& f : fates_) {
-                next_[p] = {hull(next_[p].x, f.outcome.x), hull(next_[p].y, f.outcome.y),
-                            hull(next_[p].vx, f.outcome.vx), hull(next_[p].vy, f.outcome.vy)};
-            }
+            for (const Fate& f : fates_) next_[p] = hull(next_[p], f.outcome);
         }
         state_.swap(next_);
     }

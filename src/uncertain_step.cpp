@@ -83,10 +83,6 @@ WallReach wall_reach(const UncertainParticle& q, const Box& box) {
     return reach;
 }
 
-UncertainParticle hull(const UncertainParticle& a, const UncertainParticle& b) {
-    return {hull(a.x, b.x), hull(a.y, b.y), hull(a.vx, b.vx), hull(a.vy, b.vy)};
-}
-
 UncertainParticle clamped_into(UncertainParticle q, const Box& box) {
     q.x = clamped(q.x, box.lower, box.upper);
     q.y = clamped(q.y, box.lower, box.upper);
@@ -137,6 +133,10 @@ UncertainParticle rest_of_step(const UncertainParticle& q, const Uncertain& rema
 }
 
 }  // namespace
+
+UncertainParticle hull(const UncertainParticle& a, const UncertainParticle& b) {
+    return {hull(a.x, b.x), hull(a.y, b.y), hull(a.vx, b.vx), hull(a.vy, b.vy)};
+}
 
 UncertainParticle uncertain_particle(const Particle& particle, double uncertainty) {
     const auto around = [&](double value) {
@@ -393,14 +393,6 @@ void UncertainStep::fates_of(std::uint32_t particle, std::vector<Fate>& out) con
         if (candidates_[k].accepted != Tri::no)
             out.push_back({static_cast<int>(k), outcome(particle, static_cast<int>(k))});
     }
-}
-
-UncertainParticle UncertainStep::hull_of_fates(std::uint32_t particle) const {
-    std::vector<Fate> fates;
-    fates_of(particle, fates);
-    UncertainParticle result = fates.front().outcome;
-    for (const Fate& f : fates) result = hull(result, f.outcome);
-    return result;
 }
 
 }  // namespace particlesim

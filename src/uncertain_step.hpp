@@ -24,6 +24,8 @@ struct UncertainParticle {
 };
 
 UncertainParticle uncertain_particle(const Particle& particle, double uncertainty);
+// Componentwise: bounds holding both.
+UncertainParticle hull(const UncertainParticle& a, const UncertainParticle& b);
 Particle midpoint(const UncertainParticle& particle);
 
 // A collision the rules may accept, with its existence, its time and (for a
@@ -65,8 +67,6 @@ public:
     void fates_of(std::uint32_t particle, std::vector<Fate>& out) const;
     // The outcome of a given fate, also one the rules forbid (for reports).
     [[nodiscard]] UncertainParticle outcome(std::uint32_t particle, int candidate) const;
-    // Any other particle's outcome, whichever fate: the hull of all allowed.
-    [[nodiscard]] UncertainParticle hull_of_fates(std::uint32_t particle) const;
     [[nodiscard]] bool may_be_free(std::uint32_t particle) const;
 
 private:
