@@ -1,48 +1,52 @@
 #pragma once
-// Small OpenMP helpers: how many threads a piece of work deserves, and loops
-// that run without touching OpenMP at all when one thread is enough (even an
-// `if (false)` parallel region costs a team allocation and futex calls).
+// Parallel loops over the library's thread team (thread_team.hpp), and how
+// many threads a piece of work deserves. One thread runs the loop in place.
 
-#include <omp.h>
+#include "thread_team.hpp"
 
 #include <algorithm>
 #include <cstddef>
 #include <cstdint>
+#include <type_traits>
 
 namespace particlesim {
 
-// Below these amounts a parallel region costs more than it saves.
+// Below these amounts a parallel loop costs more than it saves.
 inline constexpr std::int64_t min_particles_per_thread = 2048;
 inline constexpr std::int64_t min_pair_work_per_thread = 4096;
 inline constexpr std::int64_t min_candidates_per_thread = 16384;
+
+// Threads when none are asked for: OpenMP's default (OMP_NUM_THREADS, else the cores this process may use).
+int default_thread_count();
 
 inline int worker_count(std::size_t available, std::int64_t work, std::int64_t min_work_per_thread) {
     const std::int64_t useful = std::max<std::int64_t>(1, work / min_work_per_thread);
     return static_cast<int>(std::min<std::int64_t>(static_cast<std::int64_t>(available), useful));
 }
 
-inline std::size_t current_thread() { return static_cast<std::size_t>(omp_get_thread_num()); }
-
-// body(i, thread) for i in [0, count): static schedule (even work per item).
+// body(i, thread) for i in [0, count), in chunks of `chunk` items claimed by
+// whichever of the `workers` threads is free (thread < workers).
 template <typename Body>
-void parallel_for(int workers, std::int64_t count, Body&& body) {
+void parallel_for_dynamic(int workers, std::int64_t count, std::int64_t chunk, Body&& body) {
     if (workers <= 1) {
         for (std::int64_t i = 0; i < count; ++i) body(i, std::size_t{0});
         return;
     }
-#pragma omp parallel for schedule(static) num_threads(workers)
-    for (std::int64_t i = 0; i < count; ++i) body(i, current_thread());
+    using Stored = std::remove_reference_t<Body>;
+    const auto run_chunk = [](void* context, std::int64_t first, std::int64_t last, std::size_t thread) {
+        Stored& stored = *static_cast<Stored*>(context);
+        for (std::int64_t i = first; i < last; ++i) stored(i, thread);
+    };
+    ThreadTeam::shared().run(workers, count, chunk, run_chunk,
+                             const_cast<void*>(static_cast<const void*>(std::addressof(body))));
 }
 
-// The same with a dynamic schedule, for items of uneven work.
+// The same for items of even work: eight chunks per thread, so that a thread
+// the system deschedules leaves its share to the others.
 template <typename Body>
-void parallel_for_dynamic(int workers, std::int64_t count, int chunk, Body&& body) {
-    if (workers <= 1) {
-        for (std::int64_t i = 0; i < count; ++i) body(i, std::size_t{0});
-        return;
-    }
-#pragma omp parallel for schedule(dynamic, chunk) num_threads(workers)
-    for (std::int64_t i = 0; i < count; ++i) body(i, current_thread());
+void parallel_for(int workers, std::int64_t count, Body&& body) {
+    const std::int64_t chunk = std::max<std::int64_t>(1, count / (8 * std::max(workers, 1)));
+    parallel_for_dynamic(workers, count, chunk, std::forward<Body>(body));
 }
 
 }  // namespace particlesim

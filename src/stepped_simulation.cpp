@@ -6,12 +6,11 @@
 #include "grid_search.hpp"
 #include "options_check.hpp"
 #include "pair_search.hpp"
+#include "parallel.hpp"
 #include "saved_state.hpp"
 #include "scene_checks.hpp"
 #include "step_pipeline.hpp"
 #include "storage_order.hpp"
-
-#include <omp.h>
 
 namespace particlesim {
 
@@ -52,7 +51,7 @@ public:
         sort_every_ =
             options_.sort_by_position_every.value_or(count >= sort_by_position_from ? automatic_sort_every : 0);
         if (sort_every_ > 0) storage_order_.reserve(count);
-        threads_ = options_.threads.value_or(omp_get_max_threads());
+        threads_ = options_.threads.value_or(default_thread_count());
         search_ = options_.pair_search;
         if (search_ == PairSearch::automatic) {
             search_ = count < brute_force_is_faster_below ? PairSearch::brute_force : PairSearch::grid;

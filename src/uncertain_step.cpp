@@ -1,9 +1,9 @@
 #include "uncertain_step.hpp"
 
 #include "close_pairs.hpp"
+#include "parallel.hpp"
 #include "physics.hpp"
 
-#include <omp.h>
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -222,7 +222,7 @@ void UncertainStep::find_candidate_pairs(std::span<const UncertainParticle> befo
     };
     // Pairs that meet within the step by their midpoints' paths...
     no_wall_.assign(count, never);
-    found_.resize(static_cast<std::size_t>(std::max(omp_get_max_threads(), 1)));
+    found_.resize(static_cast<std::size_t>(default_thread_count()));
     for (ThreadCandidates& thread : found_) thread.found.clear();
     const PairSearchInput input{midpoints_, no_wall_, widened, duration_};
     search_.find_pairs(input, std::nullopt, found_);

@@ -1,0 +1,121 @@
+// The thread team behind every parallel loop: each item runs exactly once, on
+// a participant below the loop's thread count, however loops follow, nest or
+// race each other; and workers really take part. Also built with
+// ThreadSanitizer (test_thread_team_tsan), which checks the team's hand-off
+// of loops between threads.
+
+#include "check.hpp"
+
+#include "../src/parallel.hpp"
+
+#include <atomic>
+#include <chrono>
+#include <cstdint>
+#include <thread>
+#include <vector>
+
+using namespace particlesim;
+
+namespace {
+
+// Runs one loop; checks every item ran once and each participant was in range.
+void check_one_loop(int workers, std::int64_t count, std::int64_t chunk) {
+    std::vector<std::atomic<int>> runs(static_cast<std::size_t>(count));
+    std::atomic<int> bad_participant{0};
+    parallel_for_dynamic(workers, count, chunk, [&](std::int64_t i, std::size_t thread) {
+        runs[static_cast<std::size_t>(i)].fetch_add(1, std::memory_order_relaxed);
+        if (thread >= static_cast<std::size_t>(std::max(workers, 1))) bad_participant.fetch_add(1);
+    });
+    int wrong = 0;
+    for (const std::atomic<int>& r : runs) wrong += r.load() != 1 ? 1 : 0;
+    CHECK_EQ(wrong, 0);
+    CHECK_EQ(bad_participant.load(), 0);
+}
+
+void every_item_runs_once() {
+    for (int workers : {1, 2, 3, 8}) {
+        for (std::int64_t count : {0, 1, 2, 7, 64, 1000, 100003}) {
+            for (std::int64_t chunk : {1, 3, 64, 5000}) {
+                check::Context context("workers " + std::to_string(workers) + ", count " + std::to_string(count) +
+                                       ", chunk " + std::to_string(chunk));
+                check_one_loop(workers, count, chunk);
+            }
+        }
+    }
+}
+
+// Thousands of short loops in a row: a worker late for one loop must neither
+// run items of the next one twice nor miss its end.
+void many_short_loops_in_a_row() {
+    std::vector<std::int64_t> slots(256);
+    std::int64_t wrong = 0;
+    for (int loop = 0; loop < 20000; ++loop) {
+        parallel_for(2, static_cast<std::int64_t>(slots.size()),
+                     [&](std::int64_t i, std::size_t) { slots[static_cast<std::size_t>(i)] += i + loop; });
+    }
+    for (std::size_t i = 0; i < slots.size(); ++i) {
+        const auto n = static_cast<std::int64_t>(i);
+        wrong += slots[i] != 20000 * n + 19999 * 20000 / 2 ? 1 : 0;
+    }
+    CHECK_EQ(wrong, 0);
+}
+
+// A loop started from inside a loop's body, or by a second thread while the
+// team is busy, runs on its own caller.
+void nested_and_concurrent_loops_are_complete() {
+    std::atomic<std::int64_t> inner_items{0};
+    std::atomic<int> bad_participant{0};
+    parallel_for_dynamic(2, 16, 1, [&](std::int64_t, std::size_t) {
+        parallel_for(2, 100, [&](std::int64_t, std::size_t thread) {
+            inner_items.fetch_add(1);
+            if (thread >= 2) bad_participant.fetch_add(1);
+        });
+    });
+    CHECK_EQ(inner_items.load(), 1600);
+    CHECK_EQ(bad_participant.load(), 0);
+
+    std::vector<std::int64_t> sums(4, 0);
+    std::vector<std::thread> callers;
+    for (std::size_t c = 0; c < sums.size(); ++c) {
+        callers.emplace_back([&sums, c] {
+            for (int loop = 0; loop < 500; ++loop) {
+                std::atomic<std::int64_t> sum{0};
+                parallel_for(2, 1000, [&](std::int64_t i, std::size_t) { sum.fetch_add(i); });
+                sums[c] += sum.load();
+            }
+        });
+    }
+    for (std::thread& caller : callers) caller.join();
+    for (const std::int64_t sum : sums) CHECK_EQ(sum, 500 * (999 * 1000 / 2));
+}
+
+// Item 0 waits until some other participant has run an item: it returns
+// only if a worker really joined (10 s is far beyond any scheduling delay).
+void a_worker_takes_part() {
+    std::atomic<bool> other_ran{false};
+    std::atomic<bool> waited_out{false};
+    parallel_for_dynamic(2, 64, 1, [&](std::int64_t i, std::size_t thread) {
+        if (thread != 0) other_ran.store(true);
+        if (i != 0 || thread != 0) return;
+        const auto give_up = std::chrono::steady_clock::now() + std::chrono::seconds(10);
+        while (!other_ran.load()) {
+            if (std::chrono::steady_clock::now() > give_up) {
+                waited_out.store(true);
+                return;
+            }
+            std::this_thread::yield();
+        }
+    });
+    CHECK(other_ran.load());
+    CHECK(!waited_out.load());
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+    return check::run(argc, argv, "test_thread_team",
+                      {{"every item runs once", every_item_runs_once},
+                       {"many short loops in a row", many_short_loops_in_a_row},
+                       {"nested and concurrent loops are complete", nested_and_concurrent_loops_are_complete},
+                       {"a worker takes part", a_worker_takes_part}});
+}
