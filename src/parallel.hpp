@@ -14,7 +14,6 @@ namespace particlesim {
 // Below these amounts a parallel loop costs more than it saves.
 inline constexpr std::int64_t min_particles_per_thread = 2048;
 inline constexpr std::int64_t min_pair_work_per_thread = 4096;
-inline constexpr std::int64_t min_candidates_per_thread = 16384;
 
 // Threads when none are asked for: OpenMP's default (OMP_NUM_THREADS, else the cores this process may use).
 int default_thread_count();

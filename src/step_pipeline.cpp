@@ -4,7 +4,6 @@
 #include "physics.hpp"
 
 #include <algorithm>
-#include <array>
 
 namespace particlesim {
 
@@ -21,94 +20,51 @@ void detect_wall_candidates(std::span<const Particle> particles, const Box& box,
     }
 }
 
-namespace {
-
-// Candidates sorted by stored indices are in the total order except within
-// runs of equal (t, kind), where the user's indices decide: such a run is
-// renamed to user indices, sorted, and renamed back.
-void order_ties_by_user_index(std::span<Collision> sorted, std::span<const std::uint32_t> user_index,
-                              std::span<const std::uint32_t> stored_index) {
-    const auto rename = [](std::span<Collision> run, std::span<const std::uint32_t> index) {
-        for (Collision& c : run) {
-            c.i = index[c.i];
-            if (c.kind == CollisionKind::pair) {
-                c.j = index[c.j];
-                if (c.i > c.j) std::swap(c.i, c.j);
-            }
-        }
+StepCounts select_collisions(std::vector<Collision>& candidates, std::span<const ThreadCandidates> found,
+                             const CandidateOrder& order, std::span<std::uint32_t> partner,
+                             std::span<double> collision_time, std::span<std::uint32_t> earliest) {
+    for (const ThreadCandidates& thread : found) {
+        candidates.insert(candidates.end(), thread.found.begin(), thread.found.end());
+    }
+    const auto is_free = [&](const Collision& c) {
+        return partner[c.i] == no_collision && (c.kind == CollisionKind::wall || partner[c.j] == no_collision);
     };
-    for (std::size_t first = 0; first < sorted.size();) {
-        std::size_t last = first + 1;
-        while (last < sorted.size() && sorted[last].time == sorted[first].time &&
-               sorted[last].kind == sorted[first].kind) {
-            ++last;
+    const auto claim = [&](std::uint32_t particle, std::uint32_t k) {
+        std::uint32_t& held = earliest[particle];
+        if (held == no_collision || order.before(candidates[k], candidates[held])) held = k;
+    };
+    StepCounts counts;
+    while (!candidates.empty()) {
+        const auto count = static_cast<std::uint32_t>(candidates.size());
+        for (std::uint32_t k = 0; k < count; ++k) {
+            claim(candidates[k].i, k);
+            if (candidates[k].kind == CollisionKind::pair) claim(candidates[k].j, k);
         }
-        if (last - first > 1) {
-            const std::span<Collision> run = sorted.subspan(first, last - first);
-            rename(run, user_index);
-            std::sort(run.begin(), run.end());
-            rename(run, stored_index);
-        }
-        first = last;
-    }
-}
-
-}  // namespace
-
-void order_candidates(std::vector<Collision>& candidates, std::span<ThreadCandidates> found,
-                      std::vector<Collision>& scratch, std::span<const std::uint32_t> user_index,
-                      std::span<const std::uint32_t> stored_index, int threads) {
-    std::int64_t count = static_cast<std::int64_t>(candidates.size());
-    for (const ThreadCandidates& thread : found) count += static_cast<std::int64_t>(thread.found.size());
-    // The merge keeps one cursor per list on the stack.
-    constexpr std::size_t max_merged_lists = 17;
-    const int workers = found.size() + 1 <= max_merged_lists
-                            ? worker_count(static_cast<std::size_t>(threads), count, min_candidates_per_thread)
-                            : 1;
-    if (workers <= 1) {
-        for (const ThreadCandidates& thread : found) {
-            candidates.insert(candidates.end(), thread.found.begin(), thread.found.end());
-        }
-        std::sort(candidates.begin(), candidates.end());
-    } else {
-        // Busy steps: the walls (moved to `scratch`) and each thread's list are
-        // sorted on several threads, then merged into `candidates`. No list
-        // is copied whole, so the memory stays that of the lists themselves.
-        scratch.assign(candidates.begin(), candidates.end());
-        const auto list = [&](std::size_t k) -> std::vector<Collision>& {
-            return k == 0 ? scratch : found[k - 1].found;
-        };
-        const std::size_t lists = found.size() + 1;
-        parallel_for_dynamic(workers, static_cast<std::int64_t>(lists), 1, [&](std::int64_t k, std::size_t) {
-            std::sort(list(static_cast<std::size_t>(k)).begin(), list(static_cast<std::size_t>(k)).end());
-        });
-        candidates.clear();
-        std::array<std::size_t, max_merged_lists> heads{};
-        while (true) {
-            std::size_t best = lists;
-            for (std::size_t k = 0; k < lists; ++k) {
-                if (heads[k] < list(k).size() && (best == lists || list(k)[heads[k]] < list(best)[heads[best]]))
-                    best = k;
+        for (std::uint32_t k = 0; k < count; ++k) {
+            const Collision& c = candidates[k];
+            if (earliest[c.i] != k) continue;
+            if (c.kind == CollisionKind::wall) {
+                partner[c.i] = wall_collision;
+                collision_time[c.i] = c.time;
+                ++counts.wall_collisions;
+            } else if (earliest[c.j] == k) {
+                partner[c.i] = c.j;
+                partner[c.j] = c.i;
+                collision_time[c.i] = c.time;
+                collision_time[c.j] = c.time;
+                ++counts.particle_collisions;
             }
-            if (best == lists) break;
-            candidates.push_back(list(best)[heads[best]++]);
         }
+        for (const Collision& c : candidates) {
+            earliest[c.i] = no_collision;
+            if (c.kind == CollisionKind::pair) earliest[c.j] = no_collision;
+        }
+        // Accepted candidates and those they rule out leave; the rest go on.
+        candidates.erase(
+            std::remove_if(candidates.begin(), candidates.end(), [&](const Collision& c) { return !is_free(c); }),
+            candidates.end());
     }
-    candidates.erase(std::unique(candidates.begin(), candidates.end()), candidates.end());
-    if (!user_index.empty()) order_ties_by_user_index(candidates, user_index, stored_index);
-}
-
-void select_collisions(std::span<const Collision> ordered, std::span<std::uint32_t> collision_of,
-                       std::vector<Collision>& accepted) {
-    accepted.clear();
-    for (const Collision& c : ordered) {
-        if (collision_of[c.i] != 0) continue;
-        if (c.kind == CollisionKind::pair && collision_of[c.j] != 0) continue;
-        accepted.push_back(c);
-        const auto number = static_cast<std::uint32_t>(accepted.size());
-        collision_of[c.i] = number;
-        if (c.kind == CollisionKind::pair) collision_of[c.j] = number;
-    }
+    return counts;
 }
 
 namespace {
@@ -133,34 +89,35 @@ void resolve_pair(Particle& a, Particle& b, double time, const Box& box, double 
 
 }  // namespace
 
-void resolve_collisions(std::span<Particle> particles, std::span<const std::uint32_t> collision_of,
-                        std::span<const Collision> accepted, const Box& box, double duration, int threads) {
+void resolve_collisions(std::span<Particle> particles, std::span<const std::uint32_t> partner,
+                        std::span<const double> collision_time, const Box& box, double duration, int threads) {
     const auto count = static_cast<std::int64_t>(particles.size());
     const int workers = worker_count(static_cast<std::size_t>(threads), count, min_particles_per_thread);
-    // In storage order, not in the accepted (time) order: a large scene is
-    // stored by position, so this walks memory instead of jumping through it.
-    // A pair is resolved once, at its particle c.i; accepted collisions share
-    // no particle, so they resolve independently.
+    // In storage order, reading only per-particle arrays: a large scene is
+    // stored by position, so this walks memory instead of jumping through
+    // it. A pair is resolved once, at its lower stored index; accepted
+    // collisions share no particle, so they resolve independently (and the
+    // exchange is symmetric, bit for bit, in its two particles).
     parallel_for(workers, count, [&](std::int64_t i, std::size_t) {
-        if (collision_of[i] == 0) return;
-        const Collision& c = accepted[collision_of[i] - 1];
-        if (c.kind == CollisionKind::wall) {
-            resolve_wall(particles[i], c.time, box, duration);
-        } else if (c.i == static_cast<std::uint32_t>(i)) {
-            resolve_pair(particles[c.i], particles[c.j], c.time, box, duration);
+        const std::uint32_t other = partner[i];
+        if (other == no_collision) return;
+        if (other == wall_collision) {
+            resolve_wall(particles[i], collision_time[i], box, duration);
+        } else if (static_cast<std::uint32_t>(i) < other) {
+            resolve_pair(particles[i], particles[other], collision_time[i], box, duration);
         }
     });
 }
 
-void advance_free_particles(std::span<Particle> particles, std::span<std::uint32_t> collision_of, const Box& box,
+void advance_free_particles(std::span<Particle> particles, std::span<std::uint32_t> partner, const Box& box,
                             double duration, int threads) {
     const auto count = static_cast<std::int64_t>(particles.size());
     const int workers = worker_count(static_cast<std::size_t>(threads), count, min_particles_per_thread);
     parallel_for(workers, count, [&](std::int64_t i, std::size_t) {
-        if (collision_of[i] == 0) {
+        if (partner[i] == no_collision) {
             move_freely(particles[i], duration, box);
         } else {
-            collision_of[i] = 0;
+            partner[i] = no_collision;
         }
     });
 }

@@ -1,7 +1,7 @@
 #pragma once
 // The stages of one step (rules.md "One step"), each a function with one job:
 //   detect  : wall candidates here, pair candidates in a pair search
-//   order   : sort by (t, kind, i, j)
+//   order   : (t, kind, i, j), compared where candidates share a particle
 //   select  : greedy, one collision per particle
 //   resolve : bounce / exchange, then the rest of the step stopping at walls
 //   advance : every particle without a collision moves freely
@@ -10,10 +10,13 @@
 #include "box.hpp"
 #include "collision.hpp"
 #include "pair_search.hpp"
+#include "particlesim/engine.hpp"
 #include "particlesim/particle.hpp"
 
+#include <algorithm>
 #include <cstdint>
 #include <span>
+#include <utility>
 #include <vector>
 
 namespace particlesim {
@@ -23,30 +26,58 @@ namespace particlesim {
 void detect_wall_candidates(std::span<const Particle> particles, const Box& box, double duration,
                             std::span<double> wall_time, std::vector<Collision>& candidates, int threads);
 
-// Appends the pair candidates found by each thread to `candidates`, sorts all
-// by the total order and removes the duplicates a pair search may produce.
-// Busy steps sort the lists on up to `threads` threads and merge them, with
-// the wall candidates moved to `scratch` meanwhile. When the particles are
-// not stored in the user's order, ties are broken by their user indices:
-// `user_index` maps stored places to user indices, `stored_index` back (see
-// StorageOrder); both empty when the two orders are the same. A pair's
-// stored indices may then come in either order.
-void order_candidates(std::vector<Collision>& candidates, std::span<ThreadCandidates> found,
-                      std::vector<Collision>& scratch, std::span<const std::uint32_t> user_index,
-                      std::span<const std::uint32_t> stored_index, int threads);
+// rules.md "Order" between two candidates: time, walls before pairs, then
+// the lowest user indices. `user_index` maps stored places to user indices
+// (StorageOrder); empty while the two orders are the same.
+class CandidateOrder {
+public:
+    explicit CandidateOrder(std::span<const std::uint32_t> user_index) : user_index_(user_index) {}
 
-// Accepts, in order, each candidate whose particles are still free, and
-// marks each of its particles with its number in `accepted` (from 1; 0 is
-// free).
-void select_collisions(std::span<const Collision> ordered, std::span<std::uint32_t> collision_of,
-                       std::vector<Collision>& accepted);
+    [[nodiscard]] bool before(const Collision& a, const Collision& b) const {
+        if (a.time != b.time) return a.time < b.time;
+        if (a.kind != b.kind) return a.kind < b.kind;
+        return user_indices(a) < user_indices(b);
+    }
+
+private:
+    [[nodiscard]] std::pair<std::uint32_t, std::uint32_t> user_indices(const Collision& c) const {
+        if (user_index_.empty()) return {c.i, c.j};
+        if (c.kind == CollisionKind::wall) return {user_index_[c.i], 0};
+        return std::minmax(user_index_[c.i], user_index_[c.j]);
+    }
+
+    std::span<const std::uint32_t> user_index_;
+};
+
+// What select_collisions leaves in `partner` for each particle: the other
+// particle's stored index, or one of these.
+inline constexpr std::uint32_t no_collision = 0xffffffffU;
+inline constexpr std::uint32_t wall_collision = 0xfffffffeU;
+
+// rules.md "Select" without sorting: the greedy pass over the ordered
+// candidates accepts a candidate exactly when no accepted one shares a
+// particle with it and comes first. A candidate that comes first among all
+// candidates of its particles is therefore accepted; the candidates that
+// share a particle with it are then out, and the same holds again among the
+// rest. Rounds of "accept every such candidate, drop what they rule out"
+// accept exactly the greedy pass's collisions, each round O(candidates).
+//
+// `candidates` holds the wall candidates on entry; each thread's pair
+// candidates are appended (duplicates are harmless: equal candidates keep
+// the first). Each particle gets its partner (or no_collision /
+// wall_collision) and, for an accepted collision, its time in
+// `collision_time`. `earliest` is scratch, one per particle, no_collision on
+// entry and exit. Returns the accepted collisions counted by kind.
+StepCounts select_collisions(std::vector<Collision>& candidates, std::span<const ThreadCandidates> found,
+                             const CandidateOrder& order, std::span<std::uint32_t> partner,
+                             std::span<double> collision_time, std::span<std::uint32_t> earliest);
 
 // Carries out every accepted collision and the rest of the step of its particles.
-void resolve_collisions(std::span<Particle> particles, std::span<const std::uint32_t> collision_of,
-                        std::span<const Collision> accepted, const Box& box, double duration, int threads);
+void resolve_collisions(std::span<Particle> particles, std::span<const std::uint32_t> partner,
+                        std::span<const double> collision_time, const Box& box, double duration, int threads);
 
-// Moves every particle without a collision, and clears the marks of the others.
-void advance_free_particles(std::span<Particle> particles, std::span<std::uint32_t> collision_of, const Box& box,
+// Moves every particle without a collision, and sets every partner back to no_collision.
+void advance_free_particles(std::span<Particle> particles, std::span<std::uint32_t> partner, const Box& box,
                             double duration, int threads);
 
 }  // namespace particlesim

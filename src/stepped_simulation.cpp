@@ -57,10 +57,10 @@ public:
             search_ = count < brute_force_is_faster_below ? PairSearch::brute_force : PairSearch::grid;
         }
         wall_time_.resize(count);
-        collision_of_.resize(count);
+        partner_.assign(count, no_collision);
+        earliest_.assign(count, no_collision);
         // Room for a busy step from the start, so that steps rarely need to grow it.
         candidates_.reserve(2 * count + 64);
-        accepted_.reserve(count);
         thread_candidates_.resize(static_cast<std::size_t>(threads_));
         for (ThreadCandidates& thread : thread_candidates_) {
             thread.found.reserve(count / static_cast<std::size_t>(threads_) + 64);
@@ -108,20 +108,15 @@ private:
         } else {
             grid_.find_pairs(input, options_.grid_cells, thread_candidates_);
         }
-        order_candidates(candidates_, thread_candidates_, merge_scratch_, storage_order_.user_index(),
-                         storage_order_.stored_index(), threads_);
-        select_collisions(candidates_, collision_of_, accepted_);
-        resolve_collisions(particles_, collision_of_, accepted_, box_, duration, threads_);
-        advance_free_particles(particles_, collision_of_, box_, duration, threads_);
+        const StepCounts accepted =
+            select_collisions(candidates_, thread_candidates_, CandidateOrder(storage_order_.user_index()), partner_,
+                              wall_time_, earliest_);
+        resolve_collisions(particles_, partner_, wall_time_, box_, duration, threads_);
+        advance_free_particles(particles_, partner_, box_, duration, threads_);
 
         for (const ThreadCandidates& thread : thread_candidates_) last_step_.pair_tests += thread.pair_tests;
-        for (const Collision& c : accepted_) {
-            if (c.kind == CollisionKind::pair) {
-                ++last_step_.particle_collisions;
-            } else {
-                ++last_step_.wall_collisions;
-            }
-        }
+        last_step_.particle_collisions += accepted.particle_collisions;
+        last_step_.wall_collisions += accepted.wall_collisions;
     }
 
     World world_;
@@ -133,11 +128,13 @@ private:
     std::vector<Particle> particles_;
     StorageOrder storage_order_;
 
+    // By particle: its first wall time, which the search reads; from the
+    // selection on, the time of its accepted collision (one array for both,
+    // in turn: 8 bytes a particle fewer).
     std::vector<double> wall_time_;
-    std::vector<std::uint32_t> collision_of_;  // by particle: its number in accepted_ (from 1), 0 if none
+    std::vector<std::uint32_t> partner_;   // by particle: its partner, no_collision or wall_collision
+    std::vector<std::uint32_t> earliest_;  // select_collisions' scratch
     std::vector<Collision> candidates_;
-    std::vector<Collision> merge_scratch_;  // the walls, while a busy step's lists are merged
-    std::vector<Collision> accepted_;
     std::vector<ThreadCandidates> thread_candidates_;
     GridSearch grid_;
 

@@ -32,8 +32,9 @@ std::vector<Collision> pair_candidates(const PairSearchInput& in, std::optional<
         grid.find_pairs(in, grid_cells, buffers);
     }
     std::vector<Collision> all;
-    std::vector<Collision> scratch;
-    order_candidates(all, buffers, scratch, {}, {}, threads);
+    for (const ThreadCandidates& thread : buffers) all.insert(all.end(), thread.found.begin(), thread.found.end());
+    std::sort(all.begin(), all.end());
+    all.erase(std::unique(all.begin(), all.end()), all.end());
     return all;
 }
 

@@ -24,26 +24,117 @@ Particle make(double x, double y, double vx, double vy) {
 }
 
 void order_encodes_the_tie_rules() {
-    std::vector<Collision> candidates{Collision::pair(0.5, 1, 2), Collision::wall(0.5, 1), Collision::pair(0.5, 0, 2),
-                                      Collision::pair(0.3, 3, 4), Collision::pair(0.5, 0, 2)};
-    std::vector<ThreadCandidates> none(1);
-    std::vector<Collision> scratch;
-    order_candidates(candidates, none, scratch, {}, {}, 1);
-    // Sorted by time, walls before pairs at equal time, then by indices; the
-    // duplicate (0, 2) found twice by a search is kept once.
-    const std::vector<Collision> expected{Collision::pair(0.3, 3, 4), Collision::wall(0.5, 1),
-                                          Collision::pair(0.5, 0, 2), Collision::pair(0.5, 1, 2)};
-    CHECK(candidates == expected);
+    const CandidateOrder order({});
+    // Time first, walls before pairs at equal time, then the lowest indices.
+    CHECK(order.before(Collision::pair(0.3, 3, 4), Collision::wall(0.5, 1)));
+    CHECK(order.before(Collision::wall(0.5, 1), Collision::pair(0.5, 0, 2)));
+    CHECK(order.before(Collision::pair(0.5, 0, 2), Collision::pair(0.5, 1, 2)));
+    CHECK(order.before(Collision::pair(0.5, 0, 3), Collision::pair(0.5, 1, 2)));
+    CHECK(order.before(Collision::wall(0.5, 0), Collision::wall(0.5, 1)));
+    CHECK(!order.before(Collision::pair(0.5, 0, 2), Collision::pair(0.5, 0, 2)));
+    // Stored out of the user's order, ties go by the user's indices: stored
+    // places 0, 1, 2 hold user particles 2, 0, 1.
+    const std::vector<std::uint32_t> user_index{2, 0, 1};
+    const CandidateOrder stored(user_index);
+    CHECK(stored.before(Collision::wall(0.5, 1), Collision::wall(0.5, 0)));
+    CHECK(stored.before(Collision::pair(0.5, 1, 2), Collision::pair(0.5, 0, 1)));  // users (0, 1) before (0, 2)
+    CHECK(stored.before(Collision::pair(0.4, 0, 1), Collision::pair(0.5, 1, 2)));  // time still first
+}
 
-    std::vector<std::uint32_t> collision_of(5, 0);
-    std::vector<Collision> accepted;
-    select_collisions(candidates, collision_of, accepted);
-    // (1, 2) loses: 1 already has its wall collision.
-    const std::vector<Collision> expected_accepted{Collision::pair(0.3, 3, 4), Collision::wall(0.5, 1),
-                                                   Collision::pair(0.5, 0, 2)};
-    CHECK(accepted == expected_accepted);
-    // Each particle is marked with its collision's number in `accepted`.
-    CHECK(collision_of == (std::vector<std::uint32_t>{3, 2, 3, 1, 1}));
+void selection_is_the_greedy_pass() {
+    // In order: (3, 4) at 0.3, the wall of 1 at 0.5, (0, 2) at 0.5 (found
+    // twice by a search), (1, 2) at 0.5. (1, 2) loses: 1 already has its wall.
+    std::vector<Collision> candidates{Collision::wall(0.5, 1)};
+    std::vector<ThreadCandidates> found(2);
+    found[0].found = {Collision::pair(0.5, 1, 2), Collision::pair(0.5, 0, 2)};
+    found[1].found = {Collision::pair(0.3, 3, 4), Collision::pair(0.5, 0, 2)};
+    std::vector<std::uint32_t> partner(5, no_collision);
+    std::vector<std::uint32_t> earliest(5, no_collision);
+    std::vector<double> time(5, -1.0);
+    const StepCounts counts = select_collisions(candidates, found, CandidateOrder({}), partner, time, earliest);
+    CHECK_EQ(counts.particle_collisions, 2U);
+    CHECK_EQ(counts.wall_collisions, 1U);
+    CHECK(partner == (std::vector<std::uint32_t>{2, wall_collision, 0, 4, 3}));
+    CHECK(time == (std::vector<double>{0.5, 0.5, 0.5, 0.3, 0.3}));
+    CHECK(earliest == std::vector<std::uint32_t>(5, no_collision));
+    CHECK(candidates.empty());
+
+    // A chain decided over rounds: (3, 4) at 0.1 comes first, so (2, 3) at
+    // 0.2 is out, so (1, 2) at 0.3 is accepted, so (0, 1) at 0.4 is out; 5
+    // is untouched.
+    std::vector<Collision> chain{Collision::pair(0.4, 0, 1), Collision::pair(0.3, 1, 2), Collision::pair(0.2, 2, 3),
+                                 Collision::pair(0.1, 3, 4)};
+    std::vector<std::uint32_t> chain_partner(6, no_collision);
+    std::vector<std::uint32_t> chain_earliest(6, no_collision);
+    std::vector<double> chain_time(6, -1.0);
+    select_collisions(chain, {}, CandidateOrder({}), chain_partner, chain_time, chain_earliest);
+    CHECK(chain_partner == (std::vector<std::uint32_t>{no_collision, 2, 1, 4, 3, no_collision}));
+}
+
+// The rounds against the greedy pass over sorted candidates, on random
+// candidate sets with many shared particles and exact ties, in the user's
+// order and stored out of it (ties then go by the user's indices), with the
+// candidates spread over several threads' lists.
+void selection_equals_greedy_on_random_candidates() {
+    SplitMix64 rng(11);
+    int wrong = 0;
+    for (int trial = 0; trial < 4000; ++trial) {
+        const std::uint32_t particles = 2 + static_cast<std::uint32_t>(rng.next() % 40);
+        std::vector<std::uint32_t> user_index(particles);
+        for (std::uint32_t i = 0; i < particles; ++i) user_index[i] = i;
+        const bool user_order = trial % 2 == 0;
+        if (!user_order) {
+            for (std::uint32_t i = particles - 1; i > 0; --i)
+                std::swap(user_index[i], user_index[rng.next() % (i + 1)]);
+        }
+        std::vector<Collision> walls;
+        std::vector<ThreadCandidates> found(1 + rng.next() % 3);
+        std::vector<Collision> all;
+        const int candidate_count = static_cast<int>(rng.next() % 80);
+        for (int k = 0; k < candidate_count; ++k) {
+            const double t = static_cast<double>(rng.next() % 8) / 8.0;  // many exact ties
+            const auto i = static_cast<std::uint32_t>(rng.next() % particles);
+            const auto j = static_cast<std::uint32_t>(rng.next() % particles);
+            if (rng.next() % 4 == 0 || i == j) {
+                walls.push_back(Collision::wall(t, i));
+                all.push_back(walls.back());
+            } else {
+                all.push_back(Collision::pair(t, std::min(i, j), std::max(i, j)));
+                found[rng.next() % found.size()].found.push_back(all.back());
+            }
+        }
+        // The rules' way, independently: rename to user indices, sort, walk.
+        std::vector<Collision> sorted;
+        for (Collision c : all) {
+            c.i = user_index[c.i];
+            if (c.kind == CollisionKind::pair) {
+                c.j = user_index[c.j];
+                if (c.i > c.j) std::swap(c.i, c.j);
+            }
+            sorted.push_back(c);
+        }
+        std::sort(sorted.begin(), sorted.end());
+        std::vector<std::uint32_t> stored_of(particles);
+        for (std::uint32_t i = 0; i < particles; ++i) stored_of[user_index[i]] = i;
+        std::vector<std::uint32_t> expected(particles, no_collision);
+        for (const Collision& c : sorted) {
+            const std::uint32_t a = stored_of[c.i];
+            if (expected[a] != no_collision) continue;
+            if (c.kind == CollisionKind::wall) {
+                expected[a] = wall_collision;
+            } else if (const std::uint32_t b = stored_of[c.j]; expected[b] == no_collision) {
+                expected[a] = b;
+                expected[b] = a;
+            }
+        }
+        std::vector<std::uint32_t> partner(particles, no_collision);
+        std::vector<std::uint32_t> earliest(particles, no_collision);
+        std::vector<double> time(particles, 0.0);
+        const CandidateOrder order(user_order ? std::span<const std::uint32_t>{} : std::span(user_index));
+        select_collisions(walls, found, order, partner, time, earliest);
+        wrong += partner != expected ? 1 : 0;
+    }
+    CHECK_EQ(wrong, 0);
 }
 
 void wall_beats_pair_at_equal_time() {
@@ -131,34 +222,11 @@ void invalid_scenes_are_refused() {
 // Busy steps sort in parallel parts and merge them: the result must be the
 // one sorted, duplicate-free list, whatever the thread count. Times are drawn
 // from few values, so ties and duplicates straddle the parts.
-void parallel_order_equals_one_sort() {
-    SplitMix64 rng(11);
-    std::vector<Collision> drawn;
-    for (int k = 0; k < 150000; ++k) {
-        const double time = static_cast<double>(rng.next() % 64) / 64.0;
-        const auto i = static_cast<std::uint32_t>(rng.next() % 500);
-        drawn.push_back(rng.next() % 3 == 0
-                            ? Collision::wall(time, i)
-                            : Collision::pair(time, i, i + 1 + static_cast<std::uint32_t>(rng.next() % 3)));
-    }
-    std::vector<Collision> expected = drawn;
-    std::sort(expected.begin(), expected.end());
-    expected.erase(std::unique(expected.begin(), expected.end()), expected.end());
-    for (const int threads : {1, 2, 3, 8}) {
-        // Half as walls already in the list, half as found by the threads.
-        std::vector<Collision> candidates(drawn.begin(), drawn.begin() + 75000);
-        std::vector<ThreadCandidates> found(static_cast<std::size_t>(threads));
-        for (std::size_t k = 75000; k < drawn.size(); ++k) found[k % found.size()].found.push_back(drawn[k]);
-        std::vector<Collision> scratch;
-        order_candidates(candidates, found, scratch, {}, {}, threads);
-        CHECK(candidates == expected);
-    }
-}
-
 int main(int argc, char** argv) {
     return check::run(argc, argv, "test_rules",
                       {{"order encodes the tie rules", order_encodes_the_tie_rules},
-                       {"parallel order equals one sort", parallel_order_equals_one_sort},
+                       {"selection is the greedy pass", selection_is_the_greedy_pass},
+                       {"selection equals greedy on random candidates", selection_equals_greedy_on_random_candidates},
                        {"wall beats pair at equal time", wall_beats_pair_at_equal_time},
                        {"lowest indices win among equal pairs", lowest_indices_win_among_equal_pairs},
                        {"collision near wall stops at wall then passes through",
