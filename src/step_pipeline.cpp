@@ -91,6 +91,7 @@ void resolve_pair(Particle& a, Particle& b, double time, const Box& box, double 
 
 void resolve_collisions(std::span<Particle> particles, std::span<const std::uint32_t> partner,
                         std::span<const double> collision_time, const Box& box, double duration, int threads) {
+    constexpr std::int64_t partner_lookahead = 32;
     const auto count = static_cast<std::int64_t>(particles.size());
     const int workers = worker_count(static_cast<std::size_t>(threads), count, min_particles_per_thread);
     // In storage order, reading only per-particle arrays: a large scene is
@@ -99,6 +100,10 @@ void resolve_collisions(std::span<Particle> particles, std::span<const std::uint
     // collisions share no particle, so they resolve independently (and the
     // exchange is symmetric, bit for bit, in its two particles).
     parallel_for(workers, count, [&](std::int64_t i, std::size_t) {
+        // A partner stored a row of cells ahead is a cache miss: fetch it early.
+        if (i + partner_lookahead < count && partner[i + partner_lookahead] < wall_collision) {
+            __builtin_prefetch(&particles[partner[i + partner_lookahead]]);
+        }
         const std::uint32_t other = partner[i];
         if (other == no_collision) return;
         if (other == wall_collision) {
