@@ -9,5 +9,7 @@ void accuracy_benchmark(bool quick);    // run time against error, K = 1 ... 64 
 void exact_benchmark(bool quick);       // the exact engine's collisions per second
 void stress_benchmark(bool quick);      // the long stability run: a crowded box for 1e6 steps
 void divergence_benchmark(bool quick);  // two correct programs drifting apart by chaos
+void loaded_benchmark(bool quick);      // simcli on 1 and 2 threads, quiet and beside a busy process
+void programs_benchmark(bool quick);    // simcli beside the original programs and EDMD (programs_benchmark.cpp)
 
 }  // namespace bench

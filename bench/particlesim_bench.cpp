@@ -8,6 +8,8 @@
 //   particlesim_bench exact    [--quick]   the exact engine's speed (accuracy_benchmark.cpp)
 //   particlesim_bench stress   [--quick]   1e6 steps of a crowded box (stress_benchmark.cpp)
 //   particlesim_bench divergence [--quick] two correct programs drifting apart (divergence_benchmark.cpp)
+//   particlesim_bench loaded   [--quick]   1 and 2 threads, quiet and beside a busy process (programs_benchmark.cpp)
+//   particlesim_bench programs [--quick]   beside the original programs and EDMD (programs_benchmark.cpp)
 //
 // Every time is the median of repeated runs measured in the same invocation.
 
@@ -240,8 +242,14 @@ int main(int argc, char** argv) {
         bench::stress_benchmark(quick);
     } else if (mode == "divergence") {
         bench::divergence_benchmark(quick);
+    } else if (mode == "loaded") {
+        bench::loaded_benchmark(quick);
+    } else if (mode == "programs") {
+        bench::programs_benchmark(quick);
     } else {
-        std::fprintf(stderr, "usage: particlesim_bench steps|simcli|accuracy|exact|stress|divergence [--quick]\n");
+        std::fprintf(stderr,
+                     "usage: particlesim_bench steps|simcli|accuracy|exact|stress|divergence|loaded|programs "
+                     "[--quick]\n");
         return 2;
     }
     return 0;

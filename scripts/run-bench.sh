@@ -3,7 +3,8 @@
 # plots under build/bench-results/<machine>/ (machine: first argument, or
 # hostname); with --update, under bench/results/<machine>/, replacing the
 # committed results. --quick runs a short version (smaller N, fewer repeats).
-# Further arguments pick modes (default: all): steps simcli accuracy exact stress divergence.
+# Further arguments pick modes (default: all): steps simcli accuracy exact stress divergence loaded programs
+# (programs and loaded read the other builds from the environment: bench/programs_benchmark.cpp).
 # Installs gnuplot-nox (for the plots) when missing.
 #   scripts/run-bench.sh cpp-2core                  # everything (about an hour)
 #   scripts/run-bench.sh cpp-2core "" accuracy      # just run time against error
@@ -19,7 +20,7 @@ scripts/ensure-deps.sh gnuplot-nox
 machine=${1:-$(hostname)}
 quick=${2:-}
 shift $(( $# < 2 ? $# : 2 ))
-modes=${*:-steps simcli accuracy exact stress divergence}
+modes=${*:-steps simcli accuracy exact stress divergence loaded programs}
 out=$results_root/$machine
 mkdir -p "$out"
 

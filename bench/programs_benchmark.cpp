@@ -1,0 +1,346 @@
+// Whole programs, timed side by side in one run:
+//   loaded   : simcli on 1 and 2 threads, quiet and beside a busy process
+//              that this harness starts and stops itself;
+//   programs : simcli against the original team's programs and an
+//              event-driven anchor, on the same scene files.
+// Other builds are given by environment variables, each optional (a missing
+// one is said on stderr and its rows left out):
+//   PARTICLESIM_BASELINE_SIMCLI  an earlier simcli, timed beside this one
+//   ORIGINAL_SEQUENTIAL          ariadn3/DiscreteParticleSimulator openmp/sequential
+//   ORIGINAL_OPENMP              its openmp/parallel (first argument: threads)
+//   EDMD_HARDDISKS               l09rin/EDMD Cylinder2D/harddisks.c (mdhdd)
+// docs/benchmarks.md gives the commands that build them outside the repository.
+
+#include "benchmarks.hpp"
+#include "run_process.hpp"
+#include "statistics.hpp"
+
+#include "particlesim/random_scene.hpp"
+#include "particlesim/scene.hpp"
+#include "particlesim/scene_families.hpp"
+
+#include <signal.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <fstream>
+#include <numbers>
+#include <optional>
+#include <sstream>
+#include <string>
+#include <vector>
+
+namespace bench {
+
+namespace {
+
+using namespace particlesim;
+
+struct Timed {
+    double seconds = -1.0;  // negative: the program failed
+    std::string out;
+    std::string err;
+};
+
+Timed run_timed(const std::vector<std::string>& command, const std::string& input = "") {
+    const auto start = std::chrono::steady_clock::now();
+    run_process::Result result = run_process::run(command.front(), {command.begin() + 1, command.end()}, input);
+    Timed timed;
+    timed.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    if (result.status != 0) timed.seconds = -1.0;
+    timed.out = std::move(result.out);
+    timed.err = std::move(result.err);
+    return timed;
+}
+
+// One busy process (a shell loop), as most users' machines have beside them.
+class BusyProcess {
+public:
+    BusyProcess() {
+        pid_ = fork();
+        if (pid_ == 0) {
+            execl("/bin/sh", "sh", "-c", "while :; do :; done", static_cast<char*>(nullptr));
+            _exit(127);
+        }
+        usleep(200000);  // let the scheduler see it
+    }
+    ~BusyProcess() {
+        if (pid_ <= 0) return;
+        kill(pid_, SIGKILL);
+        waitpid(pid_, nullptr, 0);
+    }
+    BusyProcess(const BusyProcess&) = delete;
+    BusyProcess& operator=(const BusyProcess&) = delete;
+
+private:
+    pid_t pid_ = -1;
+};
+
+std::string temporary_directory() {
+    char dir_template[] = "/tmp/particlesim-programs-XXXXXX";
+    const char* dir = mkdtemp(dir_template);
+    if (dir == nullptr) {
+        std::perror("mkdtemp");
+        std::exit(1);
+    }
+    return dir;
+}
+
+// A scene file with every particle listed, so that every program starts from the same state.
+std::string write_scene_file(const std::string& path, const World& world, std::size_t count, std::int64_t steps,
+                             std::optional<SpeedRange> speeds) {
+    Scene scene;
+    scene.world = world;
+    scene.steps = steps;
+    scene.mode = OutputMode::perf;
+    scene.particle_count = count;
+    RandomSceneOptions options;
+    options.speeds = speeds;
+    scene.particles = make_random_particles(count, world, options);
+    std::ofstream out(path);
+    write_scene(out, scene);
+    return path;
+}
+
+std::string slurp(const std::string& path) {
+    std::ifstream in(path);
+    std::ostringstream text;
+    text << in.rdbuf();
+    return text.str();
+}
+
+std::optional<std::string> program_from(const char* variable) {
+    const char* value = std::getenv(variable);
+    if (value == nullptr || *value == '\0') {
+        std::fprintf(stderr, "particlesim_bench: %s not set: its rows are left out\n", variable);
+        return std::nullopt;
+    }
+    return std::string(value);
+}
+
+// "stats: 123 particle collisions, 45 wall collisions" -> 168.
+double simcli_collisions(const std::string& err) {
+    unsigned long long pairs = 0;
+    unsigned long long walls = 0;
+    const std::size_t at = err.find("stats: ", err.find("stats: ") + 1);
+    if (at == std::string::npos ||
+        std::sscanf(err.c_str() + at, "stats: %llu particle collisions, %llu wall collisions", &pairs, &walls) != 2)
+        return -1.0;
+    return static_cast<double>(pairs + walls);
+}
+
+// The last "Collisions: N" that mdhdd prints.
+double edmd_collisions(const std::string& out) {
+    const std::size_t at = out.rfind("Collisions: ");
+    unsigned long long collisions = 0;
+    if (at == std::string::npos || std::sscanf(out.c_str() + at, "Collisions: %llu", &collisions) != 1) return -1.0;
+    return static_cast<double>(collisions);
+}
+
+struct Row {
+    std::string scene;
+    std::string program;
+    std::string load = "quiet";
+    std::vector<double> seconds;
+    double work = 0.0;  // particle-steps, or collisions
+    std::string work_unit;
+};
+
+void print_header() { std::printf("scene,program,load,runs,median_s,min_s,max_s,work,work_unit,work_per_s\n"); }
+
+void print_row(const Row& row) {
+    std::vector<double> ok;
+    for (const double s : row.seconds)
+        if (s >= 0.0) ok.push_back(s);
+    if (ok.empty()) {
+        std::printf("%s,%s,%s,0,failed,,,,,\n", row.scene.c_str(), row.program.c_str(), row.load.c_str());
+        return;
+    }
+    const double m = median(ok);
+    std::printf("%s,%s,%s,%zu,%.6f,%.6f,%.6f,%.6g,%s,%.6g\n", row.scene.c_str(), row.program.c_str(), row.load.c_str(),
+                ok.size(), m, *std::min_element(ok.begin(), ok.end()), *std::max_element(ok.begin(), ok.end()),
+                row.work, row.work_unit.c_str(), row.work > 0.0 ? row.work / m : 0.0);
+    std::fflush(stdout);
+}
+
+World dense_gas_world(std::size_t count) {
+    return World{std::sqrt(static_cast<double>(count) * std::numbers::pi / 0.3), 1.0};
+}
+
+}  // namespace
+
+void loaded_benchmark(bool quick) {
+#ifndef SIMCLI_PATH
+    (void)quick;
+    std::fprintf(stderr, "particlesim_bench loaded: built without simcli (PARTICLESIM_BUILD_APPS=OFF)\n");
+    std::exit(2);
+#else
+    const std::string dir = temporary_directory();
+    struct Case {
+        std::string scene;
+        std::string path;
+        double particle_steps;
+        int runs;
+    };
+    const World sparse{20000.0, 1.0};
+    const std::size_t gas_n = quick ? 100000 : 1000000;
+    std::vector<Case> cases{
+        {"default", write_scene_file(dir + "/default.in", sparse, 1000, 1000, std::nullopt), 1e6, quick ? 3 : 7},
+        {"N=32000 S=100", write_scene_file(dir + "/n32000.in", sparse, 32000, quick ? 20 : 100, std::nullopt),
+         32000.0 * (quick ? 20 : 100), 3},
+        {"dense gas S=20", write_scene_file(dir + "/gas.in", dense_gas_world(gas_n), gas_n, 20, SpeedRange{0.1, 1.0}),
+         static_cast<double>(gas_n) * 20, 3}};
+    std::vector<std::pair<std::string, std::string> > programs{{"simcli", SIMCLI_PATH}};
+    if (const auto baseline = program_from("PARTICLESIM_BASELINE_SIMCLI")) programs.emplace_back("baseline", *baseline);
+
+    print_header();
+    for (const Case& c : cases) {
+        std::vector<Row> rows;
+        for (const std::string load : {"quiet", "loaded"}) {
+            for (const auto& [name, path] : programs) {
+                for (const char* threads : {"1", "2"}) {
+                    rows.push_back({c.scene, name + " -t " + threads, load, {}, c.particle_steps, "particle-steps"});
+                }
+            }
+        }
+        // Rounds: every program and thread count quiet, then all again beside the busy process.
+        for (int round = 0; round < c.runs; ++round) {
+            std::size_t row = 0;
+            for (const bool loaded : {false, true}) {
+                std::optional<BusyProcess> busy;
+                if (loaded) busy.emplace();
+                for (const auto& [name, path] : programs) {
+                    for (const char* threads : {"1", "2"}) {
+                        rows[row++].seconds.push_back(
+                            run_timed({path, "-t", threads, c.path, "-o", "/dev/null"}).seconds);
+                    }
+                }
+            }
+        }
+        for (const Row& row : rows) print_row(row);
+    }
+#endif
+}
+
+void programs_benchmark(bool quick) {
+#ifndef SIMCLI_PATH
+    (void)quick;
+    std::fprintf(stderr, "particlesim_bench programs: built without simcli (PARTICLESIM_BUILD_APPS=OFF)\n");
+    std::exit(2);
+#else
+    const std::string simcli = SIMCLI_PATH;
+    const std::optional<std::string> baseline = program_from("PARTICLESIM_BASELINE_SIMCLI");
+    const std::optional<std::string> sequential = program_from("ORIGINAL_SEQUENTIAL");
+    const std::optional<std::string> openmp = program_from("ORIGINAL_OPENMP");
+    const std::optional<std::string> edmd = program_from("EDMD_HARDDISKS");
+    const std::string dir = temporary_directory();
+    const int runs = quick ? 3 : 5;
+    print_header();
+
+    // Stepped scenes: every program reads the same file (all particles listed).
+    struct SteppedCase {
+        std::string scene;
+        World world;
+        std::size_t count;
+        std::int64_t steps;
+        std::optional<SpeedRange> speeds;
+        bool original_too;  // the original programs keep N^2 / 2 pointers: up to N = 32000
+    };
+    const World sparse{20000.0, 1.0};
+    const std::size_t gas_n = quick ? 100000 : 1000000;
+    std::vector<SteppedCase> stepped{
+        {"default", sparse, 1000, 1000, std::nullopt, true},
+        {"N=4000 S=200", sparse, 4000, 200, std::nullopt, true},
+        {"N=32000 S=10", sparse, 32000, 10, std::nullopt, true},
+        {"dense gas S=20", dense_gas_world(gas_n), gas_n, 20, SpeedRange{0.1, 1.0}, false},
+        {"dense gas S=60", dense_gas_world(gas_n), gas_n, 60, SpeedRange{0.1, 1.0}, false}};
+    if (!quick) stepped.push_back({"N=32000 S=1000", sparse, 32000, 1000, std::nullopt, false});
+    for (const SteppedCase& c : stepped) {
+        const std::string path = write_scene_file(dir + "/scene.in", c.world, c.count, c.steps, c.speeds);
+        const std::string text = slurp(path);
+        struct Command {
+            std::string name;
+            std::vector<std::string> args;
+            bool stdin_scene;
+        };
+        std::vector<Command> commands;
+        for (const char* threads : {"1", "2"}) {
+            commands.push_back({std::string("simcli -t ") + threads, {simcli, "-t", threads, path}, false});
+            if (baseline)
+                commands.push_back({std::string("baseline -t ") + threads, {*baseline, "-t", threads, path}, false});
+        }
+        if (c.original_too && sequential) commands.push_back({"original sequential", {*sequential}, true});
+        if (c.original_too && openmp) commands.push_back({"original OpenMP 2 threads", {*openmp, "2"}, true});
+        const int case_runs = c.steps >= 1000 && c.count >= 32000 ? 1 : (c.count >= 1000000 ? 3 : runs);
+        std::vector<Row> rows;
+        for (const Command& command : commands) {
+            rows.push_back(
+                {c.scene, command.name, "quiet", {}, static_cast<double>(c.count * c.steps), "particle-steps"});
+        }
+        for (int round = 0; round < case_runs; ++round) {
+            for (std::size_t k = 0; k < commands.size(); ++k) {
+                rows[k].seconds.push_back(run_timed(commands[k].args, commands[k].stdin_scene ? text : "").seconds);
+            }
+        }
+        for (const Row& row : rows) print_row(row);
+    }
+
+    // The exact engine against EDMD's hard disks, area fraction 0.3. EDMD's
+    // box is periodic and its disks have diameter 1 and temperature 1: run
+    // for a time that gives about as many collisions as ours. Both rates are
+    // collisions over (run - the same program's run of length 0).
+    struct ExactCase {
+        std::size_t count;
+        std::int64_t steps;
+        double edmd_time;
+    };
+    std::vector<ExactCase> exact{{10000, 200, 43.0}, {100000, 20, 4.3}};
+    if (!quick) exact.push_back({1000000, 4, 0.9});
+    for (const ExactCase& c : exact) {
+        const std::string scene = "exact, " + std::to_string(c.count) + " disks, area fraction 0.3";
+        const World world = dense_gas_world(c.count);
+        const std::string path = write_scene_file(dir + "/exact.in", world, c.count, c.steps, SpeedRange{0.1, 1.0});
+        const std::string empty = write_scene_file(dir + "/exact0.in", world, c.count, 0, SpeedRange{0.1, 1.0});
+        const std::string edmd_input = dir + "/edmd.dat";
+        const std::string edmd_empty = dir + "/edmd0.dat";
+        const auto edmd_parameters = [&](const std::string& file, double time) {
+            std::ofstream out(file);
+            out << "N_particles " << c.count << "\narea_fraction 0.3\ninitial_configuration random\ntime " << time
+                << "\nsnapshots 1\nwrite_interval " << std::max(time, 1.0) << "\nseed 7\n";
+        };
+        edmd_parameters(edmd_input, c.edmd_time);
+        edmd_parameters(edmd_empty, 0.0);
+        Row ours{scene, "simcli --engine exact", "quiet", {}, 0.0, "collisions"};
+        Row theirs{scene, "EDMD mdhdd", "quiet", {}, 0.0, "collisions"};
+        Row ours_previous{scene, "baseline --engine exact", "quiet", {}, 0.0, "collisions"};
+        const int exact_runs = c.count >= 1000000 ? 3 : runs;
+        for (int round = 0; round < exact_runs; ++round) {
+            const auto time_simcli = [&](const std::string& program, Row& row) {
+                const Timed run = run_timed({program, "--engine", "exact", "--stats", path, "-o", "/dev/null"});
+                const Timed setup = run_timed({program, "--engine", "exact", empty, "-o", "/dev/null"});
+                row.work = simcli_collisions(run.err);
+                row.seconds.push_back(run.seconds < 0 || setup.seconds < 0 ? -1.0 : run.seconds - setup.seconds);
+            };
+            time_simcli(simcli, ours);
+            if (baseline) time_simcli(*baseline, ours_previous);
+            if (edmd) {
+                // mdhdd writes its snapshots into the working directory.
+                const std::string in_dir = "cd " + dir + " && exec " + *edmd + " ";
+                const Timed run = run_timed({"/bin/sh", "-c", in_dir + edmd_input});
+                const Timed setup = run_timed({"/bin/sh", "-c", in_dir + edmd_empty});
+                theirs.work = edmd_collisions(run.out);
+                theirs.seconds.push_back(run.seconds < 0 || setup.seconds < 0 ? -1.0 : run.seconds - setup.seconds);
+            }
+        }
+        print_row(ours);
+        if (baseline) print_row(ours_previous);
+        if (edmd) print_row(theirs);
+    }
+#endif
+}
+
+}  // namespace bench
