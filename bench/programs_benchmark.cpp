@@ -2,13 +2,15 @@
 //   loaded   : simcli on 1 and 2 threads, quiet and beside a busy process
 //              that this harness starts and stops itself;
 //   programs : simcli against the original team's programs and an
-//              event-driven anchor, on the same scene files.
+//              event-driven anchor, on the same scene files (the exact
+//              engine's default scene: whole runs, against the baseline only).
 // Other builds are given by environment variables, each optional (a missing
 // one is said on stderr and its rows left out):
 //   PARTICLESIM_BASELINE_SIMCLI  an earlier simcli, timed beside this one
 //   ORIGINAL_SEQUENTIAL          ariadn3/DiscreteParticleSimulator openmp/sequential
 //   ORIGINAL_OPENMP              its openmp/parallel (first argument: threads)
 //   EDMD_HARDDISKS               l09rin/EDMD Cylinder2D/harddisks.c (mdhdd)
+// PARTICLESIM_BENCH_ONLY=TEXT runs only the scenes whose name contains TEXT.
 // docs/benchmarks.md gives the commands that build them outside the repository.
 
 #include "benchmarks.hpp"
@@ -113,6 +115,11 @@ std::string slurp(const std::string& path) {
     return text.str();
 }
 
+bool wanted(const std::string& scene) {
+    const char* only = std::getenv("PARTICLESIM_BENCH_ONLY");
+    return only == nullptr || scene.find(only) != std::string::npos;
+}
+
 std::optional<std::string> program_from(const char* variable) {
     const char* value = std::getenv(variable);
     if (value == nullptr || *value == '\0') {
@@ -199,6 +206,7 @@ void loaded_benchmark(bool quick) {
 
     print_header();
     for (const Case& c : cases) {
+        if (!wanted(c.scene)) continue;
         std::vector<Row> rows;
         for (const std::string load : {"quiet", "loaded"}) {
             for (const auto& [name, path] : programs) {
@@ -260,6 +268,7 @@ void programs_benchmark(bool quick) {
         {"dense gas S=60", dense_gas_world(gas_n), gas_n, 60, SpeedRange{0.1, 1.0}, false}};
     if (!quick) stepped.push_back({"N=32000 S=1000", sparse, 32000, 1000, std::nullopt, false});
     for (const SteppedCase& c : stepped) {
+        if (!wanted(c.scene)) continue;
         const std::string path = write_scene_file(dir + "/scene.in", c.world, c.count, c.steps, c.speeds);
         const std::string text = slurp(path);
         struct Command {
@@ -301,7 +310,8 @@ void programs_benchmark(bool quick) {
     std::vector<ExactCase> exact{{10000, 200, 43.0}, {100000, 20, 4.3}};
     if (!quick) exact.push_back({1000000, 4, 0.9});
     for (const ExactCase& c : exact) {
-        const std::string scene = "exact, " + std::to_string(c.count) + " disks, area fraction 0.3";
+        const std::string scene = "exact N=" + std::to_string(c.count) + " area fraction 0.3";
+        if (!wanted(scene)) continue;
         const World world = dense_gas_world(c.count);
         const std::string path = write_scene_file(dir + "/exact.in", world, c.count, c.steps, SpeedRange{0.1, 1.0});
         const std::string empty = write_scene_file(dir + "/exact0.in", world, c.count, 0, SpeedRange{0.1, 1.0});
@@ -310,7 +320,7 @@ void programs_benchmark(bool quick) {
         const auto edmd_parameters = [&](const std::string& file, double time) {
             std::ofstream out(file);
             out << "N_particles " << c.count << "\narea_fraction 0.3\ninitial_configuration random\ntime " << time
-                << "\nsnapshots 1\nwrite_interval " << std::max(time, 1.0) << "\nseed 7\n";
+                << "\nsnapshots 1\nwrite_interval " << (time > 0.0 ? time : 1.0) << "\nseed 7\n";
         };
         edmd_parameters(edmd_input, c.edmd_time);
         edmd_parameters(edmd_empty, 0.0);
@@ -339,6 +349,25 @@ void programs_benchmark(bool quick) {
         print_row(ours);
         if (baseline) print_row(ours_previous);
         if (edmd) print_row(theirs);
+    }
+
+    // The exact engine on the default scene: walls, which EDMD's periodic box has not.
+    if (wanted("exact default scene")) {
+        const std::string path = write_scene_file(dir + "/default.in", sparse, 1000, 1000, std::nullopt);
+        std::vector<std::pair<std::string, std::string> > programs{{"simcli --engine exact", simcli}};
+        if (baseline) programs.emplace_back("baseline --engine exact", *baseline);
+        std::vector<Row> rows;
+        for (const auto& [name, program] : programs)
+            rows.push_back({"exact default scene", name, "quiet", {}, 0.0, "collisions"});
+        for (int round = 0; round < runs; ++round) {
+            for (std::size_t k = 0; k < programs.size(); ++k) {
+                const Timed run =
+                    run_timed({programs[k].second, "--engine", "exact", "--stats", path, "-o", "/dev/null"});
+                rows[k].work = simcli_collisions(run.err);
+                rows[k].seconds.push_back(run.seconds);
+            }
+        }
+        for (const Row& row : rows) print_row(row);
     }
 #endif
 }

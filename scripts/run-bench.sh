@@ -42,4 +42,5 @@ done
 [[ " $modes " == *" steps "* ]] && gnuplot -e "results='$out'" bench/plot_steps.gp
 [[ " $modes " == *" accuracy "* ]] && gnuplot -e "results='$out'" bench/plot_accuracy.gp
 [[ " $modes " == *" divergence "* ]] && gnuplot -e "results='$out'" bench/plot_divergence.gp
+[[ " $modes " == *" loaded "* ]] && gnuplot -e "results='$out'" bench/plot_loaded.gp
 echo "wrote $(for mode in $modes; do printf '%s ' "$out/$mode.csv"; done)and the plots"
