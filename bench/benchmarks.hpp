@@ -1,7 +1,12 @@
 #pragma once
 // The benchmark modes of particlesim_bench; each prints CSV on stdout.
 
+#include <string>
+
 namespace bench {
+
+// The simcli built beside the harness; exits naming `mode` when the apps were not built.
+std::string simcli_path(const char* mode);
 
 void steps_benchmark(bool quick);       // time per step against N, the dense gas
 void simcli_benchmark(bool quick);      // whole simcli runs of the target scenes

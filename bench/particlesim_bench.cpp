@@ -173,14 +173,19 @@ double time_command(const std::vector<std::string>& args) {
 
 }  // namespace
 
-void simcli_benchmark(bool quick) {
-#ifndef SIMCLI_PATH
-    (void)quick;
-    std::fprintf(stderr, "particlesim_bench simcli: built without simcli (PARTICLESIM_BUILD_APPS=OFF)\n");
-    std::exit(2);
+std::string simcli_path(const char* mode) {
+#ifdef SIMCLI_PATH
+    (void)mode;
+    return SIMCLI_PATH;
 #else
+    std::fprintf(stderr, "particlesim_bench %s: built without simcli (PARTICLESIM_BUILD_APPS=OFF)\n", mode);
+    std::exit(2);
+#endif
+}
+
+void simcli_benchmark(bool quick) {
+    const std::string simcli = simcli_path("simcli");
     std::printf("scene,options,runs,median_s,min_s,max_s\n");
-    const std::string simcli = SIMCLI_PATH;
     const std::string examples = PARTICLESIM_EXAMPLES_DIR;
     char dir_template[] = "/tmp/particlesim-bench-XXXXXX";
     const std::string dir = mkdtemp(dir_template);
@@ -222,7 +227,6 @@ void simcli_benchmark(bool quick) {
                     *std::max_element(seconds.begin(), seconds.end()));
         std::fflush(stdout);
     }
-#endif
 }
 
 }  // namespace bench

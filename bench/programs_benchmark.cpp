@@ -181,11 +181,7 @@ World dense_gas_world(std::size_t count) {
 }  // namespace
 
 void loaded_benchmark(bool quick) {
-#ifndef SIMCLI_PATH
-    (void)quick;
-    std::fprintf(stderr, "particlesim_bench loaded: built without simcli (PARTICLESIM_BUILD_APPS=OFF)\n");
-    std::exit(2);
-#else
+    const std::string simcli = simcli_path("loaded");
     const std::string dir = temporary_directory();
     struct Case {
         std::string scene;
@@ -201,7 +197,7 @@ void loaded_benchmark(bool quick) {
          32000.0 * (quick ? 20 : 100), 3},
         {"dense gas S=20", write_scene_file(dir + "/gas.in", dense_gas_world(gas_n), gas_n, 20, SpeedRange{0.1, 1.0}),
          static_cast<double>(gas_n) * 20, 3}};
-    std::vector<std::pair<std::string, std::string> > programs{{"simcli", SIMCLI_PATH}};
+    std::vector<std::pair<std::string, std::string> > programs{{"simcli", simcli}};
     if (const auto baseline = program_from("PARTICLESIM_BASELINE_SIMCLI")) programs.emplace_back("baseline", *baseline);
 
     print_header();
@@ -231,16 +227,10 @@ void loaded_benchmark(bool quick) {
         }
         for (const Row& row : rows) print_row(row);
     }
-#endif
 }
 
 void programs_benchmark(bool quick) {
-#ifndef SIMCLI_PATH
-    (void)quick;
-    std::fprintf(stderr, "particlesim_bench programs: built without simcli (PARTICLESIM_BUILD_APPS=OFF)\n");
-    std::exit(2);
-#else
-    const std::string simcli = SIMCLI_PATH;
+    const std::string simcli = simcli_path("programs");
     const std::optional<std::string> baseline = program_from("PARTICLESIM_BASELINE_SIMCLI");
     const std::optional<std::string> sequential = program_from("ORIGINAL_SEQUENTIAL");
     const std::optional<std::string> openmp = program_from("ORIGINAL_OPENMP");
@@ -369,7 +359,6 @@ void programs_benchmark(bool quick) {
         }
         for (const Row& row : rows) print_row(row);
     }
-#endif
 }
 
 }  // namespace bench
