@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <thread>
 
 namespace particlesim {
 
@@ -24,21 +25,14 @@ inline void cpu_relax() {
 }  // namespace
 
 ThreadTeam& ThreadTeam::shared() {
-    static ThreadTeam team;
-    return team;
-}
-
-ThreadTeam::~ThreadTeam() {
-    stopping_.store(true);
-    generation_.fetch_add(1, std::memory_order_release);
-    generation_.notify_all();
-    for (std::thread& worker : workers_) worker.join();
+    static ThreadTeam* const team = new ThreadTeam;
+    return *team;
 }
 
 void ThreadTeam::ensure_workers(int count) {
-    while (static_cast<int>(workers_.size()) < count) {
-        const std::size_t participant = workers_.size() + 1;
-        workers_.emplace_back([this, participant] { work(participant); });
+    for (; workers_ < count; ++workers_) {
+        const auto participant = static_cast<std::size_t>(workers_) + 1;
+        std::thread([this, participant] { work(participant); }).detach();
     }
 }
 
@@ -89,7 +83,6 @@ void ThreadTeam::work(std::size_t participant) {
                 generation_.wait(seen, std::memory_order_acquire);
             }
         }
-        if (stopping_.load()) return;
         seen = generation_.load(std::memory_order_acquire);
         // Joining and the closing of the loop are one atomic word: a worker
         // that joined is waited for, one too late leaves without touching it.

@@ -16,8 +16,6 @@
 #include <atomic>
 #include <cstddef>
 #include <cstdint>
-#include <thread>
-#include <vector>
 
 namespace particlesim {
 
@@ -27,11 +25,12 @@ public:
     // caller is participant 0, workers 1, 2, ...; it must not throw.
     using ChunkBody = void (*)(void* context, std::int64_t first, std::int64_t last, std::size_t participant);
 
-    // The process's team.
+    // The process's team. It is never destroyed: its sleeping workers end
+    // with the process, and a child forked after a loop (which has no
+    // workers, only the parent's record of them) runs its loops alone
+    // instead of waiting at exit for threads it does not have.
     static ThreadTeam& shared();
 
-    ThreadTeam() = default;
-    ~ThreadTeam();
     ThreadTeam(const ThreadTeam&) = delete;
     ThreadTeam& operator=(const ThreadTeam&) = delete;
 
@@ -42,13 +41,14 @@ public:
     void run(int participants, std::int64_t count, std::int64_t chunk, ChunkBody body, void* context);
 
 private:
+    ThreadTeam() = default;
+
     void ensure_workers(int count);
     void work(std::size_t participant);
     void claim_chunks(std::size_t participant);
 
     std::atomic<bool> running_{false};  // a loop is running
-    std::vector<std::thread> workers_;
-    std::atomic<bool> stopping_{false};
+    int workers_ = 0;                   // started, detached: each waits for loops until the process ends
 
     // The loop being run: written before generation_ is raised, read by workers that joined.
     ChunkBody body_ = nullptr;
