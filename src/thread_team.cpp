@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <system_error>
 #include <thread>
 
 namespace particlesim {
@@ -32,7 +33,11 @@ ThreadTeam& ThreadTeam::shared() {
 void ThreadTeam::ensure_workers(int count) {
     for (; workers_ < count; ++workers_) {
         const auto participant = static_cast<std::size_t>(workers_) + 1;
-        std::thread([this, participant] { work(participant); }).detach();
+        try {
+            std::thread([this, participant] { work(participant); }).detach();
+        } catch (const std::system_error&) {
+            return;  // out of threads: the loops run on those there are
+        }
     }
 }
 

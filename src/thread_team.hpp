@@ -10,8 +10,8 @@
 // makes the others wait at the barrier: two threads then took 2.2 times as
 // long as one (docs/benchmarks.md). Here every loop is shared out in chunks
 // that whoever is running claims, so a descheduled worker delays nobody but
-// its own chunk; idle workers spin for tens of microseconds (enough to carry
-// them across the serial stages of a step) and then sleep in the kernel.
+// its own chunk; idle workers spin for about 100 microseconds (enough to
+// carry them across the serial stages of a step) and then sleep in the kernel.
 
 #include <atomic>
 #include <cstddef>
@@ -35,7 +35,8 @@ public:
     ThreadTeam& operator=(const ThreadTeam&) = delete;
 
     // Runs items [0, count) in chunks of `chunk` on the caller and up to
-    // participants - 1 workers, and returns when all are done. A loop started
+    // participants - 1 workers (fewer if the system refuses more threads),
+    // and returns when all are done. A loop started
     // while the team runs another (from another thread, or from inside a
     // body) runs on its caller alone: results never depend on who ran what.
     void run(int participants, std::int64_t count, std::int64_t chunk, ChunkBody body, void* context);

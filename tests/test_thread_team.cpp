@@ -23,7 +23,7 @@
 using namespace particlesim;
 
 namespace {
-bool in_forked_child = false;
+[[maybe_unused]] bool in_forked_child = false;
 }  // namespace
 
 #ifdef __SANITIZE_ADDRESS__
