@@ -14,8 +14,8 @@
 // Every time is the median of repeated runs measured in the same invocation.
 
 #include "benchmarks.hpp"
-#include "run_process.hpp"
 #include "statistics.hpp"
+#include "timed_run.hpp"
 
 #include "particlesim/random_scene.hpp"
 #include "particlesim/stepped_simulation.hpp"
@@ -161,18 +161,6 @@ void steps_benchmark(bool quick) {
     }
 }
 
-namespace {
-
-// The wall time of one whole run of a program, its output thrown away.
-double time_command(const std::vector<std::string>& args) {
-    const auto start = std::chrono::steady_clock::now();
-    const run_process::Result result = run_process::run(args.front(), {args.begin() + 1, args.end()}, "", "/dev/null");
-    const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-    return result.status == 0 ? seconds : -1.0;
-}
-
-}  // namespace
-
 std::string simcli_path(const char* mode) {
 #ifdef SIMCLI_PATH
     (void)mode;
@@ -187,8 +175,7 @@ void simcli_benchmark(bool quick) {
     const std::string simcli = simcli_path("simcli");
     std::printf("scene,options,runs,median_s,min_s,max_s\n");
     const std::string examples = PARTICLESIM_EXAMPLES_DIR;
-    char dir_template[] = "/tmp/particlesim-bench-XXXXXX";
-    const std::string dir = mkdtemp(dir_template);
+    const std::string dir = temporary_directory();
     const auto write_scene = [&](const std::string& name, const std::string& text) {
         const std::string path = dir + "/" + name;
         std::FILE* f = std::fopen(path.c_str(), "w");
@@ -219,7 +206,7 @@ void simcli_benchmark(bool quick) {
         args.insert(args.end(), run.options.begin(), run.options.end());
         args.push_back(run.path);
         std::vector<double> seconds;
-        for (int k = 0; k < run.runs; ++k) seconds.push_back(time_command(args));
+        for (int k = 0; k < run.runs; ++k) seconds.push_back(run_timed(args, "", "/dev/null").seconds);
         std::string options;
         for (const std::string& o : run.options) options += (options.empty() ? "" : " ") + o;
         std::printf("%s,%s,%d,%.6f,%.6f,%.6f\n", run.scene.c_str(), options.c_str(), run.runs, median(seconds),

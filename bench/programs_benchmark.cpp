@@ -14,8 +14,8 @@
 // docs/benchmarks.md gives the commands that build them outside the repository.
 
 #include "benchmarks.hpp"
-#include "run_process.hpp"
 #include "statistics.hpp"
+#include "timed_run.hpp"
 
 #include "particlesim/random_scene.hpp"
 #include "particlesim/scene.hpp"
@@ -32,7 +32,6 @@
 #include <fstream>
 #include <numbers>
 #include <optional>
-#include <sstream>
 #include <string>
 #include <vector>
 
@@ -41,23 +40,6 @@ namespace bench {
 namespace {
 
 using namespace particlesim;
-
-struct Timed {
-    double seconds = -1.0;  // negative: the program failed
-    std::string out;
-    std::string err;
-};
-
-Timed run_timed(const std::vector<std::string>& command, const std::string& input = "") {
-    const auto start = std::chrono::steady_clock::now();
-    run_process::Result result = run_process::run(command.front(), {command.begin() + 1, command.end()}, input);
-    Timed timed;
-    timed.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-    if (result.status != 0) timed.seconds = -1.0;
-    timed.out = std::move(result.out);
-    timed.err = std::move(result.err);
-    return timed;
-}
 
 // One busy process (a shell loop), as most users' machines have beside them.
 class BusyProcess {
@@ -82,16 +64,6 @@ private:
     pid_t pid_ = -1;
 };
 
-std::string temporary_directory() {
-    char dir_template[] = "/tmp/particlesim-programs-XXXXXX";
-    const char* dir = mkdtemp(dir_template);
-    if (dir == nullptr) {
-        std::perror("mkdtemp");
-        std::exit(1);
-    }
-    return dir;
-}
-
 // A scene file with every particle listed, so that every program starts from the same state.
 std::string write_scene_file(const std::string& path, const World& world, std::size_t count, std::int64_t steps,
                              std::optional<SpeedRange> speeds) {
@@ -106,13 +78,6 @@ std::string write_scene_file(const std::string& path, const World& world, std::s
     std::ofstream out(path);
     write_scene(out, scene);
     return path;
-}
-
-std::string slurp(const std::string& path) {
-    std::ifstream in(path);
-    std::ostringstream text;
-    text << in.rdbuf();
-    return text.str();
 }
 
 bool wanted(const std::string& scene) {
@@ -260,7 +225,7 @@ void programs_benchmark(bool quick) {
     for (const SteppedCase& c : stepped) {
         if (!wanted(c.scene)) continue;
         const std::string path = write_scene_file(dir + "/scene.in", c.world, c.count, c.steps, c.speeds);
-        const std::string text = slurp(path);
+        const std::string text = run_process::slurp(path);
         struct Command {
             std::string name;
             std::vector<std::string> args;
