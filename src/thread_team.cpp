@@ -31,12 +31,15 @@ ThreadTeam& ThreadTeam::shared() {
 }
 
 void ThreadTeam::ensure_workers(int count) {
-    for (; workers_ < count; ++workers_) {
+    for (; workers_ < std::min(count, worker_limit_); ++workers_) {
         const auto participant = static_cast<std::size_t>(workers_) + 1;
         try {
             std::thread([this, participant] { work(participant); }).detach();
         } catch (const std::system_error&) {
-            return;  // out of threads: the loops run on those there are
+            // Out of threads: the loops run on those there are, and later
+            // loops do not ask the system again (a failed call per loop).
+            worker_limit_ = workers_;
+            return;
         }
     }
 }

@@ -16,6 +16,7 @@
 #include <atomic>
 #include <cstddef>
 #include <cstdint>
+#include <limits>
 
 namespace particlesim {
 
@@ -36,9 +37,9 @@ public:
 
     // Runs items [0, count) in chunks of `chunk` on the caller and up to
     // participants - 1 workers (fewer if the system refuses more threads),
-    // and returns when all are done. A loop started
-    // while the team runs another (from another thread, or from inside a
-    // body) runs on its caller alone: results never depend on who ran what.
+    // and returns when all are done. A loop started while the team runs
+    // another (from another thread, or from inside a body) runs on its
+    // caller alone: results never depend on who ran what.
     void run(int participants, std::int64_t count, std::int64_t chunk, ChunkBody body, void* context);
 
 private:
@@ -50,6 +51,7 @@ private:
 
     std::atomic<bool> running_{false};  // a loop is running
     int workers_ = 0;                   // started, detached: each waits for loops until the process ends
+    int worker_limit_ = std::numeric_limits<int>::max();  // lowered to workers_ when the system refuses one
 
     // The loop being run: written before generation_ is raised, read by workers that joined.
     ChunkBody body_ = nullptr;
