@@ -8,6 +8,7 @@
 #include "physics.hpp"
 #include "saved_state.hpp"
 #include "scene_checks.hpp"
+#include "storage_order.hpp"
 #include "uniform_grid.hpp"
 
 #include <algorithm>
@@ -65,6 +66,13 @@ UniformGrid neighbour_grid(const World& world, std::size_t particle_count, std::
 // own time stamp, the time of its last collision (or 0); it is moved only by
 // its own collisions, so that every prediction reads an unchanged state.
 //
+// Particles are stored sorted by position (storage_order.hpp), so that a
+// particle's neighbours sit near it in memory: in a large scene they would
+// otherwise be a cache miss each. Every index the engine uses is a stored
+// one, except in what the user sees or what decides an order: the events'
+// indices (ties go to the lowest user index), the snapshot, the saved state
+// and the errors are in user indices.
+//
 // Each particle keeps three predictions: its wall event, its next cell
 // crossing, and the earliest pair event found for it; its queue entry is the
 // first of the three. A pair prediction goes stale when the partner collides
@@ -104,6 +112,7 @@ public:
     // A scene to run from its start: every prediction made here.
     Engine(const World& world, std::vector<Particle> particles, const ExactOptions& options)
         : Engine(world, std::move(particles), options, Unpredicted{}) {
+        order_.sort_by_position(particles_, box_);
         for (std::uint32_t i = 0; i < count(); ++i) {
             cells_.insert(i, cells_.grid().cell_of(particles_[i].position));
         }
@@ -122,6 +131,7 @@ public:
     // the saved predictions.
     Engine(const World& world, SavedRun saved, const ExactOptions& options)
         : Engine(world, std::move(saved.particles), options, Unpredicted{}) {
+        order_.sort_by_position(particles_, box_);
         now_ = static_cast<double>(saved.steps_done);
         steps_done_ = saved.steps_done;
         totals_ = saved.totals;
@@ -131,7 +141,7 @@ public:
                                         ")");
         };
         for (std::uint32_t i = 0; i < count(); ++i) {
-            const SavedPredictions& in = saved.predictions[i];
+            const SavedPredictions& in = saved.predictions[user(i)];
             if (!(in.stamp >= 0.0 && in.stamp <= now_)) fail("a time stamp outside the run");
             if (in.cell >= cells || in.crossing.cell >= cells) fail("a cell outside the grid");
             if (in.pair.event.i >= count() || in.pair.event.j >= count() || in.pair.partner >= count())
@@ -141,6 +151,7 @@ public:
             wall_time_[i] = in.wall_time;
             crossing_[i] = in.crossing;
             pair_[i] = in.pair;
+            pair_[i].partner = stored(in.pair.partner);
         }
         for (std::uint32_t i = 0; i < count(); ++i) reschedule(i);
         take_snapshot();
@@ -177,7 +188,8 @@ public:
         save_number(out, static_cast<std::uint64_t>(steps_done_));
         save_counts(out, totals_);
         out << '\n';
-        for (std::uint32_t i = 0; i < count(); ++i) {
+        for (std::uint32_t u = 0; u < count(); ++u) {
+            const std::uint32_t i = stored(u);
             save_particle(out, particles_[i]);
             save_number(out, stamp_[i]);
             save_number(out, std::uint64_t{cells_.cell_of_particle(i)});
@@ -187,7 +199,7 @@ public:
             save_number(out, pair_[i].event.time);
             save_number(out, std::uint64_t{pair_[i].event.i});
             save_number(out, std::uint64_t{pair_[i].event.j});
-            save_number(out, std::uint64_t{pair_[i].partner});
+            save_number(out, std::uint64_t{user(pair_[i].partner)});
             save_number(out, std::uint64_t{pair_[i].partner_version});
             out << '\n';
         }
@@ -211,9 +223,9 @@ public:
             }
             now_ = event.time;
             switch (event.kind) {
-            case EventKind::wall: collide_with_wall(event.i); break;
-            case EventKind::pair: collide_pair(event.i, event.j); break;
-            case EventKind::cell_crossing: cross_cell(event.i, event.j); break;
+            case EventKind::wall: collide_with_wall(owner); break;
+            case EventKind::pair: collide_pair(owner, pair_[owner].partner); break;
+            case EventKind::cell_crossing: cross_cell(owner, event.j); break;
             }
         }
         now_ = end;
@@ -250,6 +262,8 @@ private:
           event_budget_(event_budget(options, predicted_events_, count())) {}
 
     std::uint32_t count() const { return static_cast<std::uint32_t>(particles_.size()); }
+    std::uint32_t user(std::uint32_t stored_index) const { return order_.user_index()[stored_index]; }
+    std::uint32_t stored(std::uint32_t user_index) const { return order_.stored_index()[user_index]; }
 
     // Changes exactly when the velocity does: at each of the particle's collisions.
     std::uint32_t version(std::uint32_t i) const {
@@ -275,14 +289,18 @@ private:
         }
     }
 
+    // Names the overlapping pair with the lowest user indices.
     void reject_overlaps() const {
+        std::optional<std::pair<std::uint32_t, std::uint32_t> > first;
         for (std::uint32_t i = 0; i < count(); ++i) {
             for_each_neighbour(i, [&](std::uint32_t j) {
-                if (j > i && disks_overlap(particles_[j].position - particles_[i].position, box_.contact_dist_sq)) {
-                    throw OverlappingStart(i, j);
+                if (disks_overlap(particles_[j].position - particles_[i].position, box_.contact_dist_sq)) {
+                    const std::pair pair{std::min(user(i), user(j)), std::max(user(i), user(j))};
+                    if (!first || pair < *first) first = pair;
                 }
             });
         }
+        if (first) throw OverlappingStart(first->first, first->second);
     }
 
     // Rounding may put a prediction a hair before the present; time must
@@ -327,14 +345,14 @@ private:
     // the wall event comes first in the order and changes a velocity.
     void consider_pair(std::uint32_t i, std::uint32_t j) {
         ++last_step_.pair_tests;
-        const std::uint32_t lower = std::min(i, j);
-        const std::uint32_t higher = std::max(i, j);
+        const std::uint32_t lower = user(i) < user(j) ? i : j;
+        const std::uint32_t higher = lower == i ? j : i;
         const double reference = std::max(stamp_[lower], stamp_[higher]);
         const double delay =
             contact_time(position_at(higher, reference) - position_at(lower, reference),
                          particles_[higher].velocity - particles_[lower].velocity, box_.contact_dist_sq);
         if (delay == never) return;
-        const Event event{not_before_now(reference + delay), EventKind::pair, lower, higher};
+        const Event event{not_before_now(reference + delay), EventKind::pair, user(lower), user(higher)};
         if (!(event.time < wall_time_[i] && event.time < wall_time_[j] && event < pair_[i].event)) return;
         pair_[i] = {event, j, version(j)};
     }
@@ -346,8 +364,8 @@ private:
 
     // Puts the first of the particle's three predictions in the queue.
     void reschedule(std::uint32_t i) {
-        Event next{wall_time_[i], EventKind::wall, i, 0};
-        const Event crossing{crossing_[i].time, EventKind::cell_crossing, i, crossing_[i].cell};
+        Event next{wall_time_[i], EventKind::wall, user(i), 0};
+        const Event crossing{crossing_[i].time, EventKind::cell_crossing, user(i), crossing_[i].cell};
         if (crossing < next) next = crossing;
         if (pair_[i].event < next) next = pair_[i].event;
         queue_.replace(i, next);
@@ -377,7 +395,10 @@ private:
         reschedule(i);
     }
 
-    void collide_pair(std::uint32_t i, std::uint32_t j) {
+    // i and j in either order: the arithmetic takes them in user order.
+    void collide_pair(std::uint32_t first, std::uint32_t second) {
+        const std::uint32_t i = user(first) < user(second) ? first : second;
+        const std::uint32_t j = i == first ? second : first;
         Particle& a = particles_[i];
         Particle& b = particles_[j];
         a.position = position_at(i, now_);
@@ -422,7 +443,7 @@ private:
 
     void take_snapshot() {
         for (std::uint32_t i = 0; i < count(); ++i) {
-            Particle& out = snapshot_[i];
+            Particle& out = snapshot_[user(i)];
             out = particles_[i];
             out.position = position_at(i, now_);
             clamp_into_box(out.position, box_);
@@ -432,6 +453,7 @@ private:
     World world_;
     Box box_;
     std::vector<Particle> particles_;  // each at its own stamp_
+    StorageOrder order_;
     CellList cells_;
     std::vector<double> stamp_;
     std::vector<double> wall_time_;  // absolute time of the particle's next wall event
