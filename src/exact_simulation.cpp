@@ -112,7 +112,7 @@ public:
     // A scene to run from its start: every prediction made here.
     Engine(const World& world, std::vector<Particle> particles, const ExactOptions& options)
         : Engine(world, std::move(particles), options, Unpredicted{}) {
-        order_.sort_by_position(particles_, box_);
+        sort_by_position();
         for (std::uint32_t i = 0; i < count(); ++i) {
             cells_.insert(i, cells_.grid().cell_of(particles_[i].position));
         }
@@ -131,7 +131,7 @@ public:
     // the saved predictions.
     Engine(const World& world, SavedRun saved, const ExactOptions& options)
         : Engine(world, std::move(saved.particles), options, Unpredicted{}) {
-        order_.sort_by_position(particles_, box_);
+        sort_by_position();
         now_ = static_cast<double>(saved.steps_done);
         steps_done_ = saved.steps_done;
         totals_ = saved.totals;
@@ -262,8 +262,15 @@ private:
           event_budget_(event_budget(options, predicted_events_, count())) {}
 
     std::uint32_t count() const { return static_cast<std::uint32_t>(particles_.size()); }
-    std::uint32_t user(std::uint32_t stored_index) const { return order_.user_index()[stored_index]; }
-    std::uint32_t stored(std::uint32_t user_index) const { return order_.stored_index()[user_index]; }
+    std::uint32_t user(std::uint32_t stored_index) const { return user_index_[stored_index]; }
+    std::uint32_t stored(std::uint32_t user_index) const { return stored_index_[user_index]; }
+
+    void sort_by_position() {
+        StorageOrder order;
+        order.sort_by_position(particles_, box_);
+        user_index_.assign(order.user_index().begin(), order.user_index().end());
+        stored_index_.assign(order.stored_index().begin(), order.stored_index().end());
+    }
 
     // Changes exactly when the velocity does: at each of the particle's collisions.
     std::uint32_t version(std::uint32_t i) const {
@@ -343,18 +350,21 @@ private:
     // Keeps the pair event of (i, j) as i's pair prediction if it comes first.
     // Pair events at or after either particle's wall event can never happen:
     // the wall event comes first in the order and changes a velocity.
+    // The pair is taken in stored order: contact_time() gives the same bits
+    // either way round (negating dp and dv changes no product). The user
+    // indices, which name the event, are read only for a contact in time.
     void consider_pair(std::uint32_t i, std::uint32_t j) {
         ++last_step_.pair_tests;
-        const std::uint32_t lower = user(i) < user(j) ? i : j;
-        const std::uint32_t higher = lower == i ? j : i;
-        const double reference = std::max(stamp_[lower], stamp_[higher]);
-        const double delay =
-            contact_time(position_at(higher, reference) - position_at(lower, reference),
-                         particles_[higher].velocity - particles_[lower].velocity, box_.contact_dist_sq);
+        const double reference = std::max(stamp_[i], stamp_[j]);
+        const double delay = contact_time(position_at(j, reference) - position_at(i, reference),
+                                          particles_[j].velocity - particles_[i].velocity, box_.contact_dist_sq);
         if (delay == never) return;
-        const Event event{not_before_now(reference + delay), EventKind::pair, user(lower), user(higher)};
-        if (!(event.time < wall_time_[i] && event.time < wall_time_[j] && event < pair_[i].event)) return;
-        pair_[i] = {event, j, version(j)};
+        const double time = not_before_now(reference + delay);
+        if (!(time < wall_time_[i] && time < wall_time_[j] && time <= pair_[i].event.time)) return;
+        const std::uint32_t user_i = user(i);
+        const std::uint32_t user_j = user(j);
+        const Event event{time, EventKind::pair, std::min(user_i, user_j), std::max(user_i, user_j)};
+        if (event < pair_[i].event) pair_[i] = {event, j, version(j)};
     }
 
     void predict_pairs(std::uint32_t i) {
@@ -452,8 +462,9 @@ private:
 
     World world_;
     Box box_;
-    std::vector<Particle> particles_;  // each at its own stamp_
-    StorageOrder order_;
+    std::vector<Particle> particles_;          // each at its own stamp_
+    std::vector<std::uint32_t> user_index_;    // by stored index
+    std::vector<std::uint32_t> stored_index_;  // by user index
     CellList cells_;
     std::vector<double> stamp_;
     std::vector<double> wall_time_;  // absolute time of the particle's next wall event
