@@ -8,7 +8,6 @@
 #include "physics.hpp"
 #include "saved_state.hpp"
 #include "scene_checks.hpp"
-#include "storage_order.hpp"
 #include "uniform_grid.hpp"
 
 #include <algorithm>
@@ -66,13 +65,6 @@ UniformGrid neighbour_grid(const World& world, std::size_t particle_count, std::
 // own time stamp, the time of its last collision (or 0); it is moved only by
 // its own collisions, so that every prediction reads an unchanged state.
 //
-// Particles are stored sorted by position (storage_order.hpp), so that a
-// particle's neighbours sit near it in memory: in a large scene they would
-// otherwise be a cache miss each. Every index the engine uses is a stored
-// one, except in what the user sees or what decides an order: the events'
-// indices (ties go to the lowest user index), the snapshot, the saved state
-// and the errors are in user indices.
-//
 // Each particle keeps three predictions: its wall event, its next cell
 // crossing, and the earliest pair event found for it; its queue entry is the
 // first of the three. A pair prediction goes stale when the partner collides
@@ -112,7 +104,6 @@ public:
     // A scene to run from its start: every prediction made here.
     Engine(const World& world, std::vector<Particle> particles, const ExactOptions& options)
         : Engine(world, std::move(particles), options, Unpredicted{}) {
-        sort_by_position();
         for (std::uint32_t i = 0; i < count(); ++i) {
             cells_.insert(i, cells_.grid().cell_of(particles_[i].position));
         }
@@ -131,7 +122,6 @@ public:
     // the saved predictions.
     Engine(const World& world, SavedRun saved, const ExactOptions& options)
         : Engine(world, std::move(saved.particles), options, Unpredicted{}) {
-        sort_by_position();
         now_ = static_cast<double>(saved.steps_done);
         steps_done_ = saved.steps_done;
         totals_ = saved.totals;
@@ -141,7 +131,7 @@ public:
                                         ")");
         };
         for (std::uint32_t i = 0; i < count(); ++i) {
-            const SavedPredictions& in = saved.predictions[user(i)];
+            const SavedPredictions& in = saved.predictions[i];
             if (!(in.stamp >= 0.0 && in.stamp <= now_)) fail("a time stamp outside the run");
             if (in.cell >= cells || in.crossing.cell >= cells) fail("a cell outside the grid");
             if (in.pair.event.i >= count() || in.pair.event.j >= count() || in.pair.partner >= count())
@@ -151,7 +141,6 @@ public:
             wall_time_[i] = in.wall_time;
             crossing_[i] = in.crossing;
             pair_[i] = in.pair;
-            pair_[i].partner = stored(in.pair.partner);
         }
         for (std::uint32_t i = 0; i < count(); ++i) reschedule(i);
         take_snapshot();
@@ -188,8 +177,7 @@ public:
         save_number(out, static_cast<std::uint64_t>(steps_done_));
         save_counts(out, totals_);
         out << '\n';
-        for (std::uint32_t u = 0; u < count(); ++u) {
-            const std::uint32_t i = stored(u);
+        for (std::uint32_t i = 0; i < count(); ++i) {
             save_particle(out, particles_[i]);
             save_number(out, stamp_[i]);
             save_number(out, std::uint64_t{cells_.cell_of_particle(i)});
@@ -199,7 +187,7 @@ public:
             save_number(out, pair_[i].event.time);
             save_number(out, std::uint64_t{pair_[i].event.i});
             save_number(out, std::uint64_t{pair_[i].event.j});
-            save_number(out, std::uint64_t{user(pair_[i].partner)});
+            save_number(out, std::uint64_t{pair_[i].partner});
             save_number(out, std::uint64_t{pair_[i].partner_version});
             out << '\n';
         }
@@ -223,9 +211,9 @@ public:
             }
             now_ = event.time;
             switch (event.kind) {
-            case EventKind::wall: collide_with_wall(owner); break;
-            case EventKind::pair: collide_pair(owner, pair_[owner].partner); break;
-            case EventKind::cell_crossing: cross_cell(owner, event.j); break;
+            case EventKind::wall: collide_with_wall(event.i); break;
+            case EventKind::pair: collide_pair(event.i, event.j); break;
+            case EventKind::cell_crossing: cross_cell(event.i, event.j); break;
             }
         }
         now_ = end;
@@ -262,15 +250,6 @@ private:
           event_budget_(event_budget(options, predicted_events_, count())) {}
 
     std::uint32_t count() const { return static_cast<std::uint32_t>(particles_.size()); }
-    std::uint32_t user(std::uint32_t stored_index) const { return user_index_[stored_index]; }
-    std::uint32_t stored(std::uint32_t user_index) const { return stored_index_[user_index]; }
-
-    void sort_by_position() {
-        StorageOrder order;
-        order.sort_by_position(particles_, box_);
-        user_index_.assign(order.user_index().begin(), order.user_index().end());
-        stored_index_.assign(order.stored_index().begin(), order.stored_index().end());
-    }
 
     // Changes exactly when the velocity does: at each of the particle's collisions.
     std::uint32_t version(std::uint32_t i) const {
@@ -296,18 +275,14 @@ private:
         }
     }
 
-    // Names the overlapping pair with the lowest user indices.
     void reject_overlaps() const {
-        std::optional<std::pair<std::uint32_t, std::uint32_t> > first;
         for (std::uint32_t i = 0; i < count(); ++i) {
             for_each_neighbour(i, [&](std::uint32_t j) {
-                if (disks_overlap(particles_[j].position - particles_[i].position, box_.contact_dist_sq)) {
-                    const std::pair pair{std::min(user(i), user(j)), std::max(user(i), user(j))};
-                    if (!first || pair < *first) first = pair;
+                if (j > i && disks_overlap(particles_[j].position - particles_[i].position, box_.contact_dist_sq)) {
+                    throw OverlappingStart(i, j);
                 }
             });
         }
-        if (first) throw OverlappingStart(first->first, first->second);
     }
 
     // Rounding may put a prediction a hair before the present; time must
@@ -350,9 +325,9 @@ private:
     // Keeps the pair event of (i, j) as i's pair prediction if it comes first.
     // Pair events at or after either particle's wall event can never happen:
     // the wall event comes first in the order and changes a velocity.
-    // The pair is taken in stored order: contact_time() gives the same bits
-    // either way round (negating dp and dv changes no product). The user
-    // indices, which name the event, are read only for a contact in time.
+    // The event is built only for a contact that comes in time: most pairs
+    // tested never meet. contact_time() gives the same bits for (i, j) and
+    // (j, i) (negating dp and dv changes no product), so i comes first.
     void consider_pair(std::uint32_t i, std::uint32_t j) {
         ++last_step_.pair_tests;
         const double reference = std::max(stamp_[i], stamp_[j]);
@@ -361,9 +336,7 @@ private:
         if (delay == never) return;
         const double time = not_before_now(reference + delay);
         if (!(time < wall_time_[i] && time < wall_time_[j] && time <= pair_[i].event.time)) return;
-        const std::uint32_t user_i = user(i);
-        const std::uint32_t user_j = user(j);
-        const Event event{time, EventKind::pair, std::min(user_i, user_j), std::max(user_i, user_j)};
+        const Event event{time, EventKind::pair, std::min(i, j), std::max(i, j)};
         if (event < pair_[i].event) pair_[i] = {event, j, version(j)};
     }
 
@@ -374,8 +347,8 @@ private:
 
     // Puts the first of the particle's three predictions in the queue.
     void reschedule(std::uint32_t i) {
-        Event next{wall_time_[i], EventKind::wall, user(i), 0};
-        const Event crossing{crossing_[i].time, EventKind::cell_crossing, user(i), crossing_[i].cell};
+        Event next{wall_time_[i], EventKind::wall, i, 0};
+        const Event crossing{crossing_[i].time, EventKind::cell_crossing, i, crossing_[i].cell};
         if (crossing < next) next = crossing;
         if (pair_[i].event < next) next = pair_[i].event;
         queue_.replace(i, next);
@@ -405,10 +378,7 @@ private:
         reschedule(i);
     }
 
-    // i and j in either order: the arithmetic takes them in user order.
-    void collide_pair(std::uint32_t first, std::uint32_t second) {
-        const std::uint32_t i = user(first) < user(second) ? first : second;
-        const std::uint32_t j = i == first ? second : first;
+    void collide_pair(std::uint32_t i, std::uint32_t j) {
         Particle& a = particles_[i];
         Particle& b = particles_[j];
         a.position = position_at(i, now_);
@@ -453,7 +423,7 @@ private:
 
     void take_snapshot() {
         for (std::uint32_t i = 0; i < count(); ++i) {
-            Particle& out = snapshot_[user(i)];
+            Particle& out = snapshot_[i];
             out = particles_[i];
             out.position = position_at(i, now_);
             clamp_into_box(out.position, box_);
@@ -462,9 +432,7 @@ private:
 
     World world_;
     Box box_;
-    std::vector<Particle> particles_;          // each at its own stamp_
-    std::vector<std::uint32_t> user_index_;    // by stored index
-    std::vector<std::uint32_t> stored_index_;  // by user index
+    std::vector<Particle> particles_;  // each at its own stamp_
     CellList cells_;
     std::vector<double> stamp_;
     std::vector<double> wall_time_;  // absolute time of the particle's next wall event

@@ -157,18 +157,6 @@ void refuses_overlaps_and_bad_scenes() {
         thrown = e.first() == 0 && e.second() == 1;
     }
     CHECK(thrown);
-    // Two overlapping pairs: the error names the one with the lowest user
-    // indices, although the engine stores the lower-left pair (3, 4) first.
-    std::vector<Particle> two_pairs(5);
-    const Vec2 places[] = {{15, 15}, {3, 16}, {15.5, 16}, {3, 3}, {4, 3.5}};
-    for (std::size_t k = 0; k < two_pairs.size(); ++k) two_pairs[k].position = places[k];
-    std::pair<std::uint32_t, std::uint32_t> named{0, 0};
-    try {
-        ExactSimulation exact(params, two_pairs);
-    } catch (const OverlappingStart& e) {
-        named = {e.first(), e.second()};
-    }
-    CHECK(named.first == 0 && named.second == 2);
     pair[1].position = Vec2(7, 5);  // touching is allowed
     ExactSimulation touching(params, pair);
     CHECK_EQ(touching.particles().size(), 2U);
