@@ -1,18 +1,20 @@
 # Two threads against one, quiet and beside a busy process (loaded.csv):
 # the time of -t 2 over the time of -t 1, per scene, for this simcli and the
 # baseline build. Below 1: two threads are faster.
-#   gnuplot -e "results='bench/results/cpp-2core'" bench/plot_loaded.gp
+#   gnuplot -e "results='bench/results/cpp-2core'; baseline='b24ee87'" bench/plot_loaded.gp
+# (baseline: what the CSV's baseline rows were built from, runs.txt says)
 if (!exists("results")) results = "bench/results/cpp-2core"
-set terminal pngcairo size 900,520 noenhanced font ",11"
+if (!exists("baseline")) baseline = "the baseline build"
+set terminal pngcairo size 900,580 noenhanced font ",11"
 set output results."/loaded.png"
 set datafile separator whitespace
 set style data histograms
 set style histogram clustered gap 1
 set style fill solid 0.85 border -1
 set boxwidth 0.9
-set yrange [0:*]
+set yrange [0:1.45]
 set grid ytics
-set key top left
+set key outside bottom center horizontal maxcols 2
 set ylabel "time with 2 threads / time with 1 thread (median)"
 set title "2 threads against 1 thread, quiet and beside one busy process (2-core machine)"
 set arrow from graph 0, first 1 to graph 1, first 1 nohead dt 2 lw 1.5
@@ -26,5 +28,5 @@ pivot = "< awk -F, 'NR > 1 { split($2, p, \" \"); key = $1 \"|\" p[1] \"|\" $3; 
         results."/loaded.csv | sort"
 plot pivot using 2:xtic(1) title "this build, quiet" lc rgb "#9ecae1", \
      '' using 3 title "this build, beside a busy process" lc rgb "#08519c", \
-     '' using 4 title "before issue 15 (0ada875), quiet" lc rgb "#fdae6b", \
-     '' using 5 title "before issue 15, beside a busy process" lc rgb "#d94801"
+     '' using 4 title baseline.", quiet" lc rgb "#fdae6b", \
+     '' using 5 title baseline.", beside a busy process" lc rgb "#d94801"
