@@ -62,8 +62,9 @@ void contact_times() {
     CHECK_EQ(contact_time(Vec2(8, 0), Vec2(1, 0), d2), never);
 }
 
-// The exact engine tests a pair in either order (its storage order) and
-// relies on getting the same bits: negating dp and dv must change nothing.
+// The exact engine tests a pair in the order it meets it (its own particle
+// first) and relies on getting the same bits either way round: negating dp
+// and dv must change nothing.
 void contact_time_is_symmetric_to_the_bit() {
     SplitMix64 rng(77);
     int asymmetric = 0;
