@@ -55,14 +55,14 @@ public:
     }
 
     void set(std::uint32_t at, const FloatBox& box) {
-        bounds_[0][at] = box.min_x;
-        bounds_[1][at] = box.min_y;
-        bounds_[2][at] = box.max_x;
-        bounds_[3][at] = box.max_y;
+        bounds_[min_x][at] = box.min_x;
+        bounds_[min_y][at] = box.min_y;
+        bounds_[max_x][at] = box.max_x;
+        bounds_[max_y][at] = box.max_y;
     }
 
     [[nodiscard]] FloatBox operator[](std::uint32_t at) const {
-        return {bounds_[0][at], bounds_[1][at], bounds_[2][at], bounds_[3][at]};
+        return {bounds_[min_x][at], bounds_[min_y][at], bounds_[max_x][at], bounds_[max_y][at]};
     }
 
     // Calls found(m) for every stored box m in [first, last) that overlaps `box`.
@@ -77,10 +77,12 @@ public:
     }
 
 private:
+    enum Bound { min_x, min_y, max_x, max_y, bound_count };
+
     using Lanes = float __attribute__((vector_size(16)));
     using LaneMask = std::int32_t __attribute__((vector_size(16)));
 
-    [[nodiscard]] Lanes load(int bound, std::uint32_t at) const {
+    [[nodiscard]] Lanes load(Bound bound, std::uint32_t at) const {
         Lanes result;
         std::memcpy(&result, &bounds_[bound][at], sizeof result);
         return result;
@@ -88,8 +90,8 @@ private:
 
     // Bit k set: box group + k overlaps `box`.
     [[nodiscard]] unsigned hit_bits(std::uint32_t group, const FloatBox& box) const {
-        const LaneMask hits = (load(0, group) <= box.max_x) & (box.min_x <= load(2, group)) &
-                              (load(1, group) <= box.max_y) & (box.min_y <= load(3, group));
+        const LaneMask hits = (load(min_x, group) <= box.max_x) & (box.min_x <= load(max_x, group)) &
+                              (load(min_y, group) <= box.max_y) & (box.min_y <= load(max_y, group));
 #if defined(__SSE__)
         // Every lane is all ones or all zeros: its sign bit is its hit bit.
         return static_cast<unsigned>(__builtin_ia32_movmskps(reinterpret_cast<Lanes>(hits)));
@@ -99,7 +101,7 @@ private:
 #endif
     }
 
-    std::vector<float> bounds_[4];  // min_x, min_y, max_x, max_y: one row per bound
+    std::vector<float> bounds_[bound_count];  // one row per bound
 };
 
 }  // namespace particlesim
