@@ -157,6 +157,20 @@ void refuses_overlaps_and_bad_scenes() {
         thrown = e.first() == 0 && e.second() == 1;
     }
     CHECK(thrown);
+    // Two overlapping pairs: the one with the lowest index is named, though
+    // the other lies in an earlier cell (the search goes cell by cell first).
+    std::vector<Particle> two_pairs(4);
+    two_pairs[0].position = Vec2(15, 15);
+    two_pairs[1].position = Vec2(5, 5);
+    two_pairs[2].position = Vec2(15.5, 15);
+    two_pairs[3].position = Vec2(5.5, 5);
+    bool lowest_named = false;
+    try {
+        ExactSimulation exact(params, two_pairs);
+    } catch (const OverlappingStart& e) {
+        lowest_named = e.first() == 0 && e.second() == 2;
+    }
+    CHECK(lowest_named);
     pair[1].position = Vec2(7, 5);  // touching is allowed
     ExactSimulation touching(params, pair);
     CHECK_EQ(touching.particles().size(), 2U);
