@@ -9,6 +9,7 @@
 #include <charconv>
 #include <cmath>
 #include <cstdint>
+#include <cstring>
 #include <optional>
 #include <string_view>
 #include <vector>
@@ -58,10 +59,12 @@ std::string_view without_plus(std::string_view token) {
 }
 
 // Splits the input into lines of whitespace-separated tokens, refusing a line
-// longer than max_line_length instead of buffering it.
+// longer than max_line_length instead of buffering it. The input is read in
+// chunks (a scene is read to its end anyway): a character at a time, the
+// reading took longer than a million particles' whole setup.
 class TokenLines {
 public:
-    explicit TokenLines(std::istream& input) : input_(input) {}
+    explicit TokenLines(std::istream& input) : source_(*input.rdbuf()), chunk_(chunk_size) {}
 
     // Advances to the next line that has tokens; false at the end.
     bool next() {
@@ -76,23 +79,36 @@ public:
     [[nodiscard]] const std::vector<std::string_view>& tokens() const { return tokens_; }
 
 private:
+    static constexpr std::size_t chunk_size = 1 << 16;
+
     bool read_line() {
         line_.clear();
         bool any = false;
-        std::streambuf& source = *input_.rdbuf();
-        for (int c; (c = source.sbumpc()) != std::char_traits<char>::eof();) {
+        for (;;) {
+            if (at_ == filled_ && !refill()) break;
             any = true;
-            if (c == '\n') break;
+            const char* const start = chunk_.data() + at_;
+            const auto available = static_cast<std::size_t>(filled_ - at_);
+            const auto* newline = static_cast<const char*>(std::memchr(start, '\n', available));
+            const std::size_t length = newline != nullptr ? static_cast<std::size_t>(newline - start) : available;
+            line_.append(start, length);
+            at_ += length + (newline != nullptr ? 1 : 0);
             // The length excludes the line ending: one '\r' may follow a full line.
-            if (line_.size() >= max_line_length && !(c == '\r' && line_.size() == max_line_length)) {
+            if (line_.size() > max_line_length && !(line_.size() == max_line_length + 1 && line_.back() == '\r')) {
                 throw InputError(number_ + 1, "line is longer than " + std::to_string(max_line_length) + " characters");
             }
-            line_.push_back(static_cast<char>(c));
+            if (newline != nullptr) break;
         }
         if (!any) return false;
         if (number_ == 0) skip_byte_order_mark();
         ++number_;
         return true;
+    }
+
+    bool refill() {
+        at_ = 0;
+        filled_ = source_.sgetn(chunk_.data(), static_cast<std::streamsize>(chunk_.size()));
+        return filled_ > 0;
     }
 
     // Editors on Windows start UTF-8 files with EF BB BF; it is not part of the scene.
@@ -115,7 +131,10 @@ private:
 
     static bool is_space(char c) { return c == ' ' || c == '\t' || c == '\r' || c == '\v' || c == '\f'; }
 
-    std::istream& input_;
+    std::streambuf& source_;
+    std::vector<char> chunk_;
+    std::streamsize at_ = 0;      // the next unread character of the chunk
+    std::streamsize filled_ = 0;  // characters in the chunk
     std::string line_;
     std::vector<std::string_view> tokens_;
     long number_ = 0;
@@ -160,23 +179,42 @@ std::uint64_t parse_count(std::string_view text, std::string_view what, long lin
     return value;
 }
 
-double parse_real(std::string_view text, std::string_view what, long line) {
+// A number read from a token, or why it could not be.
+struct ScannedReal {
+    enum class Problem { none, beyond_double, not_a_number, beyond_accepted };
+    double value = 0.0;
+    Problem problem = Problem::none;
+};
+
+ScannedReal scan_real(std::string_view text) {
     const std::string_view token = without_plus(text);
     double value = 0.0;
     const auto [end, error] = std::from_chars(token.data(), token.data() + token.size(), value);
     const bool whole_token = end == token.data() + token.size();
-    if (error == std::errc::result_out_of_range && whole_token) {
+    if (error == std::errc::result_out_of_range && whole_token) return {0.0, ScannedReal::Problem::beyond_double};
+    if (error != std::errc{} || !whole_token || !std::isfinite(value)) return {0.0, ScannedReal::Problem::not_a_number};
+    if (std::fabs(value) > max_magnitude) return {0.0, ScannedReal::Problem::beyond_accepted};
+    return {value + 0.0, ScannedReal::Problem::none};  // -0 is read as 0
+}
+
+[[noreturn]] void reject_real(std::string_view text, ScannedReal::Problem problem, std::string_view what, long line) {
+    const std::string_view token = without_plus(text);
+    if (problem == ScannedReal::Problem::beyond_double) {
         throw InputError(line, Text(what) + " = " + Text(token) +
                                    " is beyond the range of a double (and of the accepted range, magnitudes "
                                    "at most 1e60)");
     }
-    if (error != std::errc{} || !whole_token || !std::isfinite(value))
-        throw InputError(line, Text(what) + ": expected a finite number, found " + quoted(text));
-    if (std::fabs(value) > max_magnitude) {
+    if (problem == ScannedReal::Problem::beyond_accepted) {
         throw InputError(line, Text(what) + " = " + Text(token) +
                                    " is beyond the accepted range (magnitudes at most 1e60; docs/accepted-range.md)");
     }
-    return value + 0.0;  // -0 is read as 0
+    throw InputError(line, Text(what) + ": expected a finite number, found " + quoted(text));
+}
+
+double parse_real(std::string_view text, std::string_view what, long line) {
+    const ScannedReal scanned = scan_real(text);
+    if (scanned.problem != ScannedReal::Problem::none) reject_real(text, scanned.problem, what, line);
+    return scanned.value;
 }
 
 // L and r: positive and inside the accepted range.
@@ -252,14 +290,21 @@ void read_particle(const std::vector<std::string_view>& fields, long line, const
         throw InputError(line, "particle index " + std::to_string(index) + " is outside [0, " +
                                    std::to_string(scene.particle_count - 1) + "]");
     }
-    const std::string label = "particle " + std::to_string(index) + ": ";
+    // The label is built only for a message: a million particles need none.
+    const auto label = [&](int k) {
+        constexpr const char* names[] = {"x", "y", "vx", "vy"};
+        return "particle " + std::to_string(index) + ": " + names[k];
+    };
     const World& world = scene.world;
-    const char* names[] = {"x", "y", "vx", "vy"};
     double values[4];
-    for (int k = 0; k < 4; ++k) values[k] = parse_real(fields[k + 1], label + names[k], line);
+    for (int k = 0; k < 4; ++k) {
+        const ScannedReal scanned = scan_real(fields[k + 1]);
+        if (scanned.problem != ScannedReal::Problem::none) reject_real(fields[k + 1], scanned.problem, label(k), line);
+        values[k] = scanned.value;
+    }
     for (int k = 0; k < 2; ++k) {
         if (values[k] < world.lower() || values[k] > world.upper()) {
-            throw InputError(line, label + names[k] + " = " + format_short(values[k]) + " is outside [" +
+            throw InputError(line, label(k) + " = " + format_short(values[k]) + " is outside [" +
                                        format_short(world.lower()) + ", " + format_short(world.upper()) + "]");
         }
     }
