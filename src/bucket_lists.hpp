@@ -5,6 +5,7 @@
 // (particles by cell) and its calendar queue (particles by time bucket) are
 // both this.
 
+#include <algorithm>
 #include <cstdint>
 #include <vector>
 
@@ -42,6 +43,15 @@ public:
     void move(std::uint32_t item, std::uint32_t bucket) {
         remove(item);
         insert(item, bucket);
+    }
+
+    // Empties every bucket, then inserts item 0, 1, ... into bucket_for(item):
+    // one pass through the per-item arrays in order, instead of a move per
+    // item in the lists' order (which jumps through memory at random).
+    template <typename BucketFor>
+    void refill_all(BucketFor&& bucket_for) {
+        std::fill(head_.begin(), head_.end(), none);
+        for (std::uint32_t item = 0; item < next_.size(); ++item) insert(item, bucket_for(item));
     }
 
     // visit(item) for every item in the bucket.

@@ -93,11 +93,13 @@ private:
     }
 
     // Moves the overflow's earliest events into a fresh window of buckets.
+    // The window is used up, so every entry is in the overflow: they are
+    // read, and put in their new buckets, in owner order.
     void rebuild_window() {
         times_.clear();
-        lists_.for_each_in(overflow(), [&](std::uint32_t k) {
-            if (events_[k].time < std::numeric_limits<double>::infinity()) times_.push_back(events_[k].time);
-        });
+        for (const Event& event : events_) {
+            if (event.time < std::numeric_limits<double>::infinity()) times_.push_back(event.time);
+        }
         if (times_.empty()) return;  // nothing will ever happen: earliest is any entry, at `never`
         const auto first = std::min_element(times_.begin(), times_.end());
         base_ = *first;
@@ -108,13 +110,7 @@ private:
         // positive width even when many events share one instant.
         width_ = spread > 0.0 ? spread / static_cast<double>(buckets_ / 2) : std::max(std::abs(base_) * 1e-12, 1e-300);
         current_ = 0;
-        // An entry that stays in the overflow goes back to its head, behind
-        // the walk: each entry is visited once.
-        for (std::uint32_t k = lists_.first(overflow()); k != none;) {
-            const std::uint32_t following = lists_.next(k);
-            lists_.move(k, bucket_of(events_[k].time));
-            k = following;
-        }
+        lists_.refill_all([&](std::uint32_t owner) { return bucket_of(events_[owner].time); });
     }
 
     std::uint32_t buckets_;

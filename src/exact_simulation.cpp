@@ -205,6 +205,7 @@ public:
         while (!queue_.empty() && queue_.earliest().time <= end) {
             if (static_cast<double>(++events) > event_budget_)
                 throw TooManyEvents(steps_done_ + 1, events - 1, predicted_events_);
+            ++events_processed_;
             const std::uint32_t owner = queue_.earliest_owner();
             const Event event = queue_.earliest();
             if (event.kind == EventKind::pair && pair_partner_moved(owner)) {
@@ -231,6 +232,7 @@ public:
     const StepCounts& last_step() const { return last_step_; }
     const StepCounts& totals() const { return totals_; }
     std::uint64_t several_events() const { return several_events_; }
+    std::uint64_t events_processed() const { return events_processed_; }
 
 private:
     struct Unpredicted {};
@@ -459,8 +461,9 @@ private:
     StepCounts last_step_;
     StepCounts totals_;
     std::uint64_t several_events_ = 0;
-    double predicted_events_;  // per step
-    double event_budget_;      // per step
+    std::uint64_t events_processed_ = 0;  // by this object, not saved: a measure of work
+    double predicted_events_;             // per step
+    double event_budget_;                 // per step
 };
 
 namespace {
@@ -511,6 +514,7 @@ std::int64_t ExactSimulation::steps_done() const { return engine_->steps_done();
 const StepCounts& ExactSimulation::last_step() const { return engine_->last_step(); }
 const StepCounts& ExactSimulation::totals() const { return engine_->totals(); }
 std::uint64_t ExactSimulation::last_step_particles_with_several_events() const { return engine_->several_events(); }
+std::uint64_t ExactSimulation::events_processed() const { return engine_->events_processed(); }
 
 double estimated_events_per_step(const World& world, std::span<const Particle> particles) {
     double speed_sum = 0.0;  // sum of |vx| + |vy|

@@ -99,6 +99,30 @@ void same_events_for_every_cell_size() {
     CHECK(compared >= 20);  // the comparison saw collisions
 }
 
+// Worked out on paper: disks at x = 6 and 14 (y = 10, L = 20, r = 1) meet
+// head-on at t = 3 (x = 9 and 11), then reach the walls at t = 11. One cell:
+// 3 events (the pair, two walls). 4 x 4 cells of side 5: each disk also
+// crosses a cell border (x = 5 and 15) at t = 7, 5 events.
+void counts_events() {
+    const World world{20.0, 1.0};
+    std::vector<Particle> head_on(2);
+    head_on[0].position = Vec2(6, 10);
+    head_on[0].velocity = Vec2(1, 0);
+    head_on[1].position = Vec2(14, 10);
+    head_on[1].velocity = Vec2(-1, 0);
+    ExactSimulation one_cell(world, head_on, {1});
+    ExactSimulation sixteen_cells(world, head_on, {4});
+    for (int s = 0; s < 11; ++s) {
+        one_cell.step();
+        sixteen_cells.step();
+    }
+    CHECK_EQ(one_cell.totals().particle_collisions, 1U);
+    CHECK_EQ(one_cell.totals().wall_collisions, 2U);
+    CHECK_EQ(one_cell.events_processed(), 3U);
+    CHECK_EQ(sixteen_cells.events_processed(), 5U);
+    CHECK_EQ(state_hash::hash(sixteen_cells.particles()), state_hash::hash(one_cell.particles()));
+}
+
 // rules.md: where no two events share a particle within a step, the step
 // rules are exact; the engines agree to printing precision (1e-8).
 void agrees_with_stepped_engine_when_events_do_not_share_a_particle() {
@@ -209,5 +233,6 @@ int main(int argc, char** argv) {
                         agrees_with_stepped_engine_when_events_do_not_share_a_particle},
                        {"conserves and stays inside", conserves_and_stays_inside},
                        {"refuses overlaps and bad scenes", refuses_overlaps_and_bad_scenes},
-                       {"estimates events", estimates_events}});
+                       {"estimates events", estimates_events},
+                       {"counts events", counts_events}});
 }

@@ -24,6 +24,7 @@
 #include <optional>
 #include <stdexcept>
 #include <string>
+#include <type_traits>
 
 namespace {
 
@@ -138,7 +139,14 @@ void print_stats(const char* engine, const RunStats& stats, std::int64_t steps) 
 template <Engine E>
 void run_and_report(E& engine, const RunSettings& settings, const CliOptions& options, Pictures& pictures) {
     const RunStats stats = write_run(engine, settings, options, pictures);
-    if (options.stats) print_stats(settings.engine == EngineChoice::exact ? "exact" : "step", stats, settings.steps);
+    if (!options.stats) return;
+    print_stats(settings.engine == EngineChoice::exact ? "exact" : "step", stats, settings.steps);
+    if constexpr (std::is_same_v<E, ExactSimulation>) {
+        const auto events = static_cast<double>(engine.events_processed());
+        std::fprintf(stderr,
+                     "stats: %.0f events (collisions, cell crossings, stale pair predictions), %.6g per second\n",
+                     events, stats.seconds > 0.0 ? events / stats.seconds : 0.0);
+    }
 }
 
 // Frames between whole steps (--engine exact --animate-every 1/k): continuous

@@ -94,6 +94,11 @@ public:
     // step: where the one-collision-per-step rule must differ from this engine.
     [[nodiscard]] std::uint64_t last_step_particles_with_several_events() const;
 
+    // Calendar entries this object has handled: collisions, cell crossings and
+    // re-predictions of pair events gone stale. The engine's unit of work
+    // (its speed is quoted in events per second); not saved by save().
+    [[nodiscard]] std::uint64_t events_processed() const;
+
 private:
     class Engine;
     explicit ExactSimulation(std::unique_ptr<Engine> engine);
