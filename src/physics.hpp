@@ -15,25 +15,29 @@ namespace particlesim {
 
 inline constexpr double never = std::numeric_limits<double>::infinity();
 
-// Time for one coordinate to reach its wall; `never` without motion on it.
-inline double time_to_wall_on_axis(double position, double velocity, double lower, double upper) {
-    // "+ 0.0" turns the -0.0 of a particle resting on the wall into +0.0.
-    if (velocity < 0.0) return (lower - position) / velocity + 0.0;
-    if (velocity > 0.0) return (upper - position) / velocity + 0.0;
-    return never;
-}
-
 struct WallHit {
     double time = never;
     bool on_x = false;  // reaches x = r or x = L - r at `time`
     bool on_y = false;  // both: a corner hit
 };
 
+// The time for each coordinate to reach the wall it moves towards (`never`
+// without motion on it), the earlier of the two, and which it was.
+// Both axes at once in two lanes, with selects instead of branches:
+// directions are random, so a branch on a sign is mispredicted half the time.
+// Each lane is the same IEEE arithmetic as a scalar (same bits everywhere).
 inline WallHit time_to_wall(const Vec2& position, const Vec2& velocity, const Box& box) {
-    const double tx = time_to_wall_on_axis(position.x(), velocity.x(), box.lower, box.upper);
-    const double ty = time_to_wall_on_axis(position.y(), velocity.y(), box.lower, box.upper);
-    const double t = std::min(tx, ty);
-    return {t, tx == t && t != never, ty == t && t != never};
+    using Lanes = double __attribute__((vector_size(16)));
+    const Lanes where{position.x(), position.y()};
+    const Lanes speed{velocity.x(), velocity.y()};
+    const Lanes lower{box.lower, box.lower};
+    const Lanes upper{box.upper, box.upper};
+    const Lanes wall = speed < 0.0 ? lower : upper;
+    // "+ 0.0" turns the -0.0 of a particle resting on the wall into +0.0.
+    const Lanes to_wall = (wall - where) / speed + 0.0;
+    const Lanes times = speed != 0.0 ? to_wall : Lanes{never, never};
+    const double t = std::min(times[0], times[1]);
+    return {t, times[0] == t && t != never, times[1] == t && t != never};
 }
 
 // First contact time of a pair from relative position dp = p_j - p_i and
