@@ -11,6 +11,7 @@
 // Bounds are rounded outwards to float, so a float overlap is implied by the
 // double one: a few more pairs get the exact pair test, never one fewer.
 
+#include <algorithm>
 #include <bit>
 #include <cmath>
 #include <cstdint>
@@ -48,10 +49,12 @@ class FloatBoxArray {
 public:
     static constexpr std::uint32_t lanes = 4;
 
-    // Room for `count` boxes, plus a padding group that range scans may read
-    // (and mask off) past the last box.
+    static constexpr std::uint32_t max_block_groups = 8;
+
+    // Room for `count` boxes, plus padding that block scans may read (and
+    // mask off) past the last box.
     void resize(std::size_t count) {
-        for (std::vector<float>& bound : bounds_) bound.resize(count + lanes, 0.0f);
+        for (std::vector<float>& bound : bounds_) bound.resize(count + max_block_groups * lanes, 0.0f);
     }
 
     void set(std::uint32_t at, const FloatBox& box) {
@@ -65,15 +68,25 @@ public:
         return {bounds_[min_x][at], bounds_[min_y][at], bounds_[max_x][at], bounds_[max_y][at]};
     }
 
-    // Calls found(m) for every stored box m in [first, last) that overlaps `box`.
-    template <typename Found>
+    // Calls found(m) for every stored box m in [first, last) that overlaps
+    // `box`. The range is tested in blocks of `block_groups` groups, the
+    // first one always: a range that fits one block costs no branch on its
+    // length or on which of its groups hit, only one on whether any did.
+    template <std::uint32_t block_groups, typename Found>
     void for_each_overlap(std::uint32_t first, std::uint32_t last, const FloatBox& box, Found&& found) const {
-        for (std::uint32_t group = first; group < last; group += lanes) {
-            unsigned hits = hit_bits(group, box);
-            if (hits == 0) continue;
-            if (last - group < lanes) hits &= (1U << (last - group)) - 1U;
-            for (; hits != 0; hits &= hits - 1) found(group + static_cast<std::uint32_t>(std::countr_zero(hits)));
-        }
+        static_assert(block_groups >= 1 && block_groups <= max_block_groups);
+        constexpr std::uint32_t block = block_groups * lanes;
+        std::uint32_t start = first;
+        do {
+            std::uint64_t hits = 0;
+            for (std::uint32_t group = 0; group < block_groups; ++group) {
+                hits |= std::uint64_t{hit_bits(start + group * lanes, box)} << (group * lanes);
+            }
+            const std::uint32_t inside = last > start ? std::min(last - start, block) : 0U;
+            hits &= (std::uint64_t{1} << inside) - 1U;
+            for (; hits != 0; hits &= hits - 1) found(start + static_cast<std::uint32_t>(std::countr_zero(hits)));
+            start += block;
+        } while (start < last);
     }
 
 private:

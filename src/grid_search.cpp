@@ -346,10 +346,11 @@ namespace {
 
 // Tests particle `a` (box `box`, state `state`) against the boxes stored at
 // positions [first, last) of the cell order whose float bounds meet its own.
+template <std::uint32_t block_groups>
 inline void test_against_range(const PairSearchInput& in, const GridSearch::SliceWorkspace& ws, std::uint32_t a,
                                const FloatBox& box, const PairTestState& state, std::uint32_t first, std::uint32_t last,
                                ThreadCandidates& out) {
-    ws.boxes_by_cell.for_each_overlap(first, last, box, [&](std::uint32_t m) {
+    ws.boxes_by_cell.for_each_overlap<block_groups>(first, last, box, [&](std::uint32_t m) {
         const std::uint32_t b = ws.by_cell[m];
         if (b == a) return;  // another piece of the same path
         const PairTestState& other = ws.states_by_cell[m];
@@ -363,37 +364,57 @@ inline void test_against_range(const PairSearchInput& in, const GridSearch::Slic
 
 }  // namespace
 
-void GridSearch::test_small_pairs(const PairSearchInput& in, const SliceWorkspace& ws, std::span<ThreadCandidates> out,
-                                  int threads) const {
-    const int side = layout_.grid.per_side();
+namespace {
+
+// The half stencil of every cell in row `cy`: the rest of the cell and the
+// cell to the east (adjacent in the cell order, so one range), then the
+// three cells above (one range), scanned in blocks of the given sizes.
+template <std::uint32_t near_groups, std::uint32_t above_groups>
+void scan_row(const PairSearchInput& in, const GridSearch::SliceWorkspace& ws, int side, std::int64_t cy,
+              ThreadCandidates& found) {
     const std::uint32_t* start = ws.cell_start.data();
     const std::uint32_t* ids = ws.by_cell.data();
     const FloatBoxArray& boxes = ws.boxes_by_cell;
     const PairTestState* states = ws.states_by_cell.data();
-
-    // Half stencil: the rest of the cell and the cell to the east (adjacent in
-    // the cell order, so one range), then the three cells above (one range).
-    parallel_for_dynamic(threads, side, 4, [&](std::int64_t cy, std::size_t thread) {
-        ThreadCandidates& found = out[thread];
-        const std::int64_t row = cy * side;
-        for (int cx = 0; cx < side; ++cx) {
-            const std::int64_t cell = row + cx;
-            const std::uint32_t first = start[cell];
-            const std::uint32_t last = start[cell + 1];
-            if (first == last) continue;
-            const std::uint32_t east_last = start[cell + (cx + 1 < side ? 2 : 1)];
-            std::uint32_t above_first = 0;
-            std::uint32_t above_last = 0;
-            if (cy + 1 < side) {
-                above_first = start[row + side + std::max(cx - 1, 0)];
-                above_last = start[row + side + std::min(cx + 1, side - 1) + 1];
-            }
-            for (std::uint32_t k = first; k < last; ++k) {
-                test_against_range(in, ws, ids[k], boxes[k], states[k], k + 1, east_last, found);
-                test_against_range(in, ws, ids[k], boxes[k], states[k], above_first, above_last, found);
-            }
+    const std::int64_t row = cy * side;
+    for (int cx = 0; cx < side; ++cx) {
+        const std::int64_t cell = row + cx;
+        const std::uint32_t first = start[cell];
+        const std::uint32_t last = start[cell + 1];
+        if (first == last) continue;
+        const std::uint32_t east_last = start[cell + (cx + 1 < side ? 2 : 1)];
+        std::uint32_t above_first = 0;
+        std::uint32_t above_last = 0;
+        if (cy + 1 < side) {
+            above_first = start[row + side + std::max(cx - 1, 0)];
+            above_last = start[row + side + std::min(cx + 1, side - 1) + 1];
         }
-    });
+        for (std::uint32_t k = first; k < last; ++k) {
+            test_against_range<near_groups>(in, ws, ids[k], boxes[k], states[k], k + 1, east_last, found);
+            test_against_range<above_groups>(in, ws, ids[k], boxes[k], states[k], above_first, above_last, found);
+        }
+    }
+}
+
+}  // namespace
+
+void GridSearch::test_small_pairs(const PairSearchInput& in, const SliceWorkspace& ws, std::span<ThreadCandidates> out,
+                                  int threads) const {
+    const int side = layout_.grid.per_side();
+    const auto scan = [&](auto scan_one_row) {
+        parallel_for_dynamic(threads, side, 4,
+                             [&](std::int64_t cy, std::size_t thread) { scan_one_row(in, ws, side, cy, out[thread]); });
+    };
+    // A range that fits one block is scanned without a mispredicted exit
+    // from a loop over its groups: blocks of two groups suit cells of a few
+    // boxes (sparse scenes), one group cells of about one (dense ones), where
+    // a second group would only add work (docs/benchmarks.md).
+    const double boxes_per_cell = static_cast<double>(ws.cell_start.back()) / layout_.grid.cell_count();
+    if (boxes_per_cell >= 2.0) {
+        scan(scan_row<2, 2>);
+    } else {
+        scan(scan_row<1, 1>);
+    }
 }
 
 void GridSearch::test_large_pairs(const PairSearchInput& in, const SliceWorkspace& ws, std::span<ThreadCandidates> out,
@@ -411,8 +432,8 @@ void GridSearch::test_large_pairs(const PairSearchInput& in, const SliceWorkspac
         const CellRegion region = cells_reaching(box, grid);
         for (int cy = region.y_first; cy <= region.y_last; ++cy) {
             const auto row = static_cast<std::size_t>(cy) * side;
-            test_against_range(in, ws, a, bounds, state, ws.cell_start[row + region.x_first],
-                               ws.cell_start[row + region.x_last + 1], found);
+            test_against_range<1>(in, ws, a, bounds, state, ws.cell_start[row + region.x_first],
+                                  ws.cell_start[row + region.x_last + 1], found);
         }
         for (std::int64_t other = k + 1; other < large_count; ++other) {
             const std::uint32_t b = ws.large[other];

@@ -10,6 +10,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <type_traits>
 #include <vector>
 
 using namespace particlesim;
@@ -49,8 +50,10 @@ FloatBox random_box(SplitMix64& rng, float extent) {
     return {x, y, x + coordinate() * 0.2f, y + coordinate() * 0.2f};
 }
 
-// Every range [first, last) of an array, scanned against random probes,
-// reports exactly the overlapping boxes, each once and in increasing order.
+// Every range [first, last) of an array, scanned against random probes in
+// blocks of each size (ranges shorter and longer than a block, ending inside
+// one or at its edge), reports exactly the overlapping boxes, each once and
+// in increasing order.
 void scans_report_exactly_the_overlaps(std::uint64_t seed, std::uint32_t count) {
     SplitMix64 rng(seed);
     FloatBoxArray array;
@@ -73,14 +76,21 @@ void scans_report_exactly_the_overlaps(std::uint64_t seed, std::uint32_t count) 
     for (std::uint32_t first = 0; first <= count; ++first) {
         for (std::uint32_t last = first; last <= count; ++last) {
             const FloatBox probe = random_box(rng, 10.0f);
-            std::vector<std::uint32_t> reported;
-            array.for_each_overlap(first, last, probe, [&](std::uint32_t m) { reported.push_back(m); });
             std::vector<std::uint32_t> expected;
             for (std::uint32_t m = first; m < last; ++m) {
                 if (overlap(boxes[m], probe)) expected.push_back(m);
             }
-            if (reported != expected) ++wrong;
-            reported_total += static_cast<int>(reported.size());
+            const auto scan_in_blocks = [&](auto block_groups) {
+                std::vector<std::uint32_t> reported;
+                array.for_each_overlap<block_groups()>(first, last, probe,
+                                                       [&](std::uint32_t m) { reported.push_back(m); });
+                if (reported != expected) ++wrong;
+            };
+            scan_in_blocks(std::integral_constant<std::uint32_t, 1>{});
+            scan_in_blocks(std::integral_constant<std::uint32_t, 2>{});
+            scan_in_blocks(std::integral_constant<std::uint32_t, 4>{});
+            scan_in_blocks(std::integral_constant<std::uint32_t, FloatBoxArray::max_block_groups>{});
+            reported_total += static_cast<int>(expected.size());
         }
     }
     CHECK_EQ(wrong, 0);
@@ -99,7 +109,7 @@ void touching_boxes_overlap() {
     array.set(3, {-1.0f, -1.0f, -0.5f, 0.5f});  // left of the probe
     array.set(4, {0.5f, 1.0f, 0.6f, 3.0f});     // touches the probe's top edge
     std::vector<std::uint32_t> reported;
-    array.for_each_overlap(0, 5, {0.0f, 0.0f, 1.0f, 1.0f}, [&](std::uint32_t m) { reported.push_back(m); });
+    array.for_each_overlap<1>(0, 5, {0.0f, 0.0f, 1.0f, 1.0f}, [&](std::uint32_t m) { reported.push_back(m); });
     CHECK(reported == (std::vector<std::uint32_t>{0, 1, 4}));
 }
 
