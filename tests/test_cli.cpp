@@ -278,7 +278,7 @@ void stats() {
         const Result r = simcli_run({"--engine", engine, "--stats"}, scene);
         CHECK_EQ(r.status, 0);
         CHECK(r.out == plain.out);  // stdout untouched
-        CHECK_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 4L);
+        CHECK_EQ(std::count(r.err.begin(), r.err.end(), '\n'), engine == "exact" ? 5L : 4L);
         CHECK(r.err.find("stats: engine " + engine + ", 50 steps in ") == 0);
         CHECK(r.err.find(" steps/s)") != std::string::npos);
         CHECK(r.err.find("relative energy drift ") != std::string::npos);
@@ -295,6 +295,15 @@ void stats() {
         for (std::size_t k = drift + 6; k < r.err.size() && r.err[k] != '\n'; ++k)
             drift_digits += std::isdigit(r.err[k]) ? 1 : 0;
         CHECK(drift_digits >= 19);  // full precision: 17 significant digits and the exponent
+        if (engine == "exact") {
+            // Every collision is an event; so are cell crossings and stale predictions.
+            const std::size_t events_at = r.err.find("stats: ", r.err.find("candidate pairs tested"));
+            unsigned long long events = 0;
+            CHECK(events_at != std::string::npos &&
+                  std::sscanf(r.err.c_str() + events_at, "stats: %llu events (", &events) == 1);
+            CHECK(events >= pc + wc);
+            CHECK(r.err.find(" per second\n") != std::string::npos);
+        }
     }
 }
 
