@@ -69,22 +69,30 @@ StepCounts select_collisions(std::vector<Collision>& candidates, std::span<const
 
 namespace {
 
+// Both work on copies in registers and store each particle once: reading a
+// coordinate pair back from memory right after storing its halves one by one
+// stalls the processor (the load cannot be served from the pending stores).
+
 void resolve_wall(Particle& particle, double time, const Box& box, double duration) {
+    Particle moved = particle;
     // Recomputed from the unchanged start state, so it equals the candidate.
-    const WallHit hit = time_to_wall(particle.position, particle.velocity, box);
-    bounce_off_wall(particle, hit, box);
-    move_stopping_at_wall(particle, duration - time, box);
+    const WallHit hit = time_to_wall(moved.position, moved.velocity, box);
+    bounce_off_wall(moved, hit, box);
+    move_stopping_at_wall(moved, duration - time, box);
+    particle = moved;
 }
 
 void resolve_pair(Particle& a, Particle& b, double time, const Box& box, double duration) {
-    a.position += a.velocity * time;
-    b.position += b.velocity * time;
-    exchange_normal_velocities(a.position, b.position, a.velocity, b.velocity);
-    for (Particle* p : {&a, &b}) {
-        ++p->particle_collisions;
-        clamp_into_box(p->position, box);
-        move_stopping_at_wall(*p, duration - time, box);
+    Particle moved[2] = {a, b};
+    for (Particle& p : moved) p.position += p.velocity * time;
+    exchange_normal_velocities(moved[0].position, moved[1].position, moved[0].velocity, moved[1].velocity);
+    for (Particle& p : moved) {
+        ++p.particle_collisions;
+        clamp_into_box(p.position, box);
+        move_stopping_at_wall(p, duration - time, box);
     }
+    a = moved[0];
+    b = moved[1];
 }
 
 }  // namespace
