@@ -105,6 +105,17 @@ double simcli_collisions(const std::string& err) {
     return static_cast<double>(pairs + walls);
 }
 
+// "stats: 1271943 events (...)" -> 1271943; -1 from a simcli that does not
+// count its events (builds before they were counted).
+double simcli_events(const std::string& err) {
+    const std::size_t at = err.find(" events (");
+    if (at == std::string::npos) return -1.0;
+    const std::size_t line = err.rfind("stats: ", at);
+    unsigned long long events = 0;
+    if (line == std::string::npos || std::sscanf(err.c_str() + line, "stats: %llu events", &events) != 1) return -1.0;
+    return static_cast<double>(events);
+}
+
 // The last "Collisions: N" that mdhdd prints.
 double edmd_collisions(const std::string& out) {
     const std::size_t at = out.rfind("Collisions: ");
@@ -118,7 +129,7 @@ struct Row {
     std::string program;
     std::string load = "quiet";
     std::vector<double> seconds;
-    double work = 0.0;  // particle-steps, or collisions
+    double work = 0.0;  // particle-steps, collisions or events
     std::string work_unit;
 };
 
@@ -280,17 +291,24 @@ void programs_benchmark(bool quick) {
         edmd_parameters(edmd_input, c.edmd_time);
         edmd_parameters(edmd_empty, 0.0);
         Row ours{scene, "simcli --engine exact", "quiet", {}, 0.0, "collisions"};
+        // The same runs counted in events (collisions, cell crossings, stale
+        // predictions), the unit the target is set in.
+        Row ours_events{scene, "simcli --engine exact", "quiet", {}, 0.0, "events"};
         Row theirs{scene, "EDMD mdhdd", "quiet", {}, 0.0, "collisions"};
         Row ours_previous{scene, "baseline --engine exact", "quiet", {}, 0.0, "collisions"};
         const int exact_runs = c.count >= 1000000 ? 3 : runs;
+        std::string last_simcli_err;
         for (int round = 0; round < exact_runs; ++round) {
             const auto time_simcli = [&](const std::string& program, Row& row) {
                 const Timed run = run_timed({program, "--engine", "exact", "--stats", path, "-o", "/dev/null"});
                 const Timed setup = run_timed({program, "--engine", "exact", empty, "-o", "/dev/null"});
                 row.work = simcli_collisions(run.err);
                 row.seconds.push_back(run.seconds < 0 || setup.seconds < 0 ? -1.0 : run.seconds - setup.seconds);
+                last_simcli_err = run.err;
             };
             time_simcli(simcli, ours);
+            ours_events.seconds.push_back(ours.seconds.back());
+            ours_events.work = simcli_events(last_simcli_err);
             if (baseline) time_simcli(*baseline, ours_previous);
             if (edmd) {
                 // mdhdd writes its snapshots into the working directory.
@@ -302,6 +320,7 @@ void programs_benchmark(bool quick) {
             }
         }
         print_row(ours);
+        if (ours_events.work > 0.0) print_row(ours_events);
         if (baseline) print_row(ours_previous);
         if (edmd) print_row(theirs);
     }
