@@ -362,14 +362,10 @@ inline void test_against_range(const PairSearchInput& in, const GridSearch::Slic
     });
 }
 
-}  // namespace
-
-namespace {
-
 // The half stencil of every cell in row `cy`: the rest of the cell and the
 // cell to the east (adjacent in the cell order, so one range), then the
-// three cells above (one range), scanned in blocks of the given sizes.
-template <std::uint32_t near_groups, std::uint32_t above_groups>
+// three cells above (one range), scanned in blocks of `block_groups` groups.
+template <std::uint32_t block_groups>
 void scan_row(const PairSearchInput& in, const GridSearch::SliceWorkspace& ws, int side, std::int64_t cy,
               ThreadCandidates& found) {
     const std::uint32_t* start = ws.cell_start.data();
@@ -390,8 +386,8 @@ void scan_row(const PairSearchInput& in, const GridSearch::SliceWorkspace& ws, i
             above_last = start[row + side + std::min(cx + 1, side - 1) + 1];
         }
         for (std::uint32_t k = first; k < last; ++k) {
-            test_against_range<near_groups>(in, ws, ids[k], boxes[k], states[k], k + 1, east_last, found);
-            test_against_range<above_groups>(in, ws, ids[k], boxes[k], states[k], above_first, above_last, found);
+            test_against_range<block_groups>(in, ws, ids[k], boxes[k], states[k], k + 1, east_last, found);
+            test_against_range<block_groups>(in, ws, ids[k], boxes[k], states[k], above_first, above_last, found);
         }
     }
 }
@@ -411,9 +407,9 @@ void GridSearch::test_small_pairs(const PairSearchInput& in, const SliceWorkspac
     // a second group would only add work (docs/benchmarks.md).
     const double boxes_per_cell = static_cast<double>(ws.cell_start.back()) / layout_.grid.cell_count();
     if (boxes_per_cell >= 2.0) {
-        scan(scan_row<2, 2>);
+        scan(scan_row<2>);
     } else {
-        scan(scan_row<1, 1>);
+        scan(scan_row<1>);
     }
 }
 
