@@ -1,7 +1,7 @@
 # Two threads against one, quiet and beside a busy process (loaded.csv):
 # the time of -t 2 over the time of -t 1, per scene, for this simcli and the
 # baseline build. Below 1: two threads are faster.
-#   gnuplot -e "results='bench/results/cpp-2core'; baseline='b24ee87'" bench/plot_loaded.gp
+#   gnuplot -e "results='bench/results/cpp-2core'; baseline='e7a1ba8'" bench/plot_loaded.gp
 # (baseline: what the CSV's baseline rows were built from, runs.txt says)
 if (!exists("results")) results = "bench/results/cpp-2core"
 if (!exists("baseline")) baseline = "the baseline build"
