@@ -297,18 +297,18 @@ void programs_benchmark(bool quick) {
         Row theirs{scene, "EDMD mdhdd", "quiet", {}, 0.0, "collisions"};
         Row ours_previous{scene, "baseline --engine exact", "quiet", {}, 0.0, "collisions"};
         const int exact_runs = c.count >= 1000000 ? 3 : runs;
-        std::string last_simcli_err;
         for (int round = 0; round < exact_runs; ++round) {
+            // Returns the run's --stats lines.
             const auto time_simcli = [&](const std::string& program, Row& row) {
                 const Timed run = run_timed({program, "--engine", "exact", "--stats", path, "-o", "/dev/null"});
                 const Timed setup = run_timed({program, "--engine", "exact", empty, "-o", "/dev/null"});
                 row.work = simcli_collisions(run.err);
                 row.seconds.push_back(run.seconds < 0 || setup.seconds < 0 ? -1.0 : run.seconds - setup.seconds);
-                last_simcli_err = run.err;
+                return run.err;
             };
-            time_simcli(simcli, ours);
+            const std::string stats = time_simcli(simcli, ours);
             ours_events.seconds.push_back(ours.seconds.back());
-            ours_events.work = simcli_events(last_simcli_err);
+            ours_events.work = simcli_events(stats);
             if (baseline) time_simcli(*baseline, ours_previous);
             if (edmd) {
                 // mdhdd writes its snapshots into the working directory.

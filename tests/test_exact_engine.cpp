@@ -13,6 +13,8 @@
 #include "particlesim/stepped_simulation.hpp"
 
 #include <cmath>
+#include <optional>
+#include <utility>
 
 using namespace particlesim;
 
@@ -169,18 +171,24 @@ void conserves_and_stays_inside() {
     }
 }
 
+// The pair OverlappingStart names for a start, or none when it is not thrown.
+std::optional<std::pair<std::uint32_t, std::uint32_t>> named_overlap(const World& world,
+                                                                     const std::vector<Particle>& start) {
+    try {
+        ExactSimulation exact(world, start);
+    } catch (const OverlappingStart& e) {
+        return std::pair{e.first(), e.second()};
+    }
+    return std::nullopt;
+}
+
 void refuses_overlaps_and_bad_scenes() {
     const World params{20.0, 1.0};
     std::vector<Particle> pair(2);
     pair[0].position = Vec2(5, 5);
     pair[1].position = Vec2(6.5, 5);
-    bool thrown = false;
-    try {
-        ExactSimulation exact(params, pair);
-    } catch (const OverlappingStart& e) {
-        thrown = e.first() == 0 && e.second() == 1;
-    }
-    CHECK(thrown);
+    const std::pair<std::uint32_t, std::uint32_t> first_and_second(0, 1);
+    CHECK(named_overlap(params, pair) == first_and_second);
     // Two overlapping pairs: the one with the lowest index is named, though
     // the other lies in an earlier cell (the search goes cell by cell first).
     std::vector<Particle> two_pairs(4);
@@ -188,13 +196,8 @@ void refuses_overlaps_and_bad_scenes() {
     two_pairs[1].position = Vec2(5, 5);
     two_pairs[2].position = Vec2(15.5, 15);
     two_pairs[3].position = Vec2(5.5, 5);
-    bool lowest_named = false;
-    try {
-        ExactSimulation exact(params, two_pairs);
-    } catch (const OverlappingStart& e) {
-        lowest_named = e.first() == 0 && e.second() == 2;
-    }
-    CHECK(lowest_named);
+    const std::pair<std::uint32_t, std::uint32_t> first_and_third(0, 2);
+    CHECK(named_overlap(params, two_pairs) == first_and_third);
     pair[1].position = Vec2(7, 5);  // touching is allowed
     ExactSimulation touching(params, pair);
     CHECK_EQ(touching.particles().size(), 2U);
