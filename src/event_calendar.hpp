@@ -7,7 +7,7 @@
 // holds about one entry. Unlike a heap, the work per event stays in a few
 // cache lines however many particles there are. When the window is used up,
 // it is rebuilt from the overflow, its width chosen so that the next N / 2
-// events fill about half of it.
+// events fill about N / 2 buckets.
 
 #include "bucket_lists.hpp"
 #include "event_order.hpp"
@@ -39,7 +39,10 @@ class EventCalendar {
 public:
     // Every owner starts with `initial`; replace() sets each.
     EventCalendar(std::uint32_t owners, const Event& initial)
-        : buckets_(bucket_count_for(owners)), lists_(buckets_ + 1, owners), events_(owners, initial) {
+        : filled_by_half_(bucket_count_for(owners) / 2),
+          buckets_(std::max(filled_by_half_ * 2, std::min(filled_by_half_ * 8, max_stretched_window))),
+          lists_(buckets_ + 1, owners),
+          events_(owners, initial) {
         for (std::uint32_t owner = 0; owner < owners; ++owner) lists_.insert(owner, overflow());
         current_ = buckets_;  // the window is empty: the first earliest() builds it
     }
@@ -64,6 +67,13 @@ public:
 
 private:
     static constexpr std::uint32_t none = BucketLists::none;
+    // The window holds at least twice the buckets that the earliest half of
+    // the entries fill at a rebuild (Brown's choice), and up to eight times
+    // as many while the buckets fit this many (256 KiB, in the caches): on a
+    // small scene a rebuild, which reads every entry, then comes a quarter as
+    // often. Larger scenes were slower with the longer window
+    // (docs/benchmarks.md).
+    static constexpr std::uint32_t max_stretched_window = 65536;
 
     static std::uint32_t bucket_count_for(std::uint32_t owners) {
         std::uint32_t count = 16;
@@ -103,16 +113,18 @@ private:
         if (times_.empty()) return;  // nothing will ever happen: earliest is any entry, at `never`
         const auto first = std::min_element(times_.begin(), times_.end());
         base_ = *first;
-        const std::size_t sample = std::min<std::size_t>(times_.size() - 1, buckets_ / 2);
+        const std::size_t sample = std::min<std::size_t>(times_.size() - 1, filled_by_half_);
         std::nth_element(times_.begin(), times_.begin() + static_cast<std::ptrdiff_t>(sample), times_.end());
         const double spread = times_[sample] - base_;
-        // About one entry a bucket over the first half of the window; a
+        // About one entry a bucket over the first filled_by_half_ buckets; a
         // positive width even when many events share one instant.
-        width_ = spread > 0.0 ? spread / static_cast<double>(buckets_ / 2) : std::max(std::abs(base_) * 1e-12, 1e-300);
+        width_ =
+            spread > 0.0 ? spread / static_cast<double>(filled_by_half_) : std::max(std::abs(base_) * 1e-12, 1e-300);
         current_ = 0;
         lists_.refill_all([&](std::uint32_t owner) { return bucket_of(events_[owner].time); });
     }
 
+    std::uint32_t filled_by_half_;  // buckets holding the earliest half of the entries after a rebuild
     std::uint32_t buckets_;
     BucketLists lists_;          // owners by bucket; the last bucket is the overflow
     std::vector<Event> events_;  // by owner

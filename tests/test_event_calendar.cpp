@@ -77,7 +77,7 @@ int main(int argc, char** argv) {
     return check::run(argc, argv, "test_event_calendar",
                       {{"calendar against brute-force minimum", [] {
                             all_never();
-                            for (const std::uint32_t owners : {1U, 2U, 7U, 100U, 5000U}) {
+                            for (const std::uint32_t owners : {1U, 2U, 7U, 100U, 5000U, 20000U}) {
                                 for (std::uint64_t seed = 0; seed < 4; ++seed)
                                     matches_brute_force(owners, seed, owners < 1000 ? 20000 : 4000);
                             }
