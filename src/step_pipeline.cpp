@@ -4,6 +4,7 @@
 #include "physics.hpp"
 
 #include <algorithm>
+#include <atomic>
 
 namespace particlesim {
 
@@ -20,49 +21,107 @@ void detect_wall_candidates(std::span<const Particle> particles, const Box& box,
     }
 }
 
+namespace {
+
+// Candidates a parallel pass of the selection hands out at a time.
+constexpr std::int64_t selection_block = 4096;
+
+}  // namespace
+
 StepCounts select_collisions(std::vector<Collision>& candidates, std::span<const ThreadCandidates> found,
                              const CandidateOrder& order, std::span<std::uint32_t> partner,
-                             std::span<double> collision_time, std::span<std::uint32_t> earliest) {
+                             std::span<double> collision_time, SelectionScratch& scratch, int threads) {
     for (const ThreadCandidates& thread : found) {
         candidates.insert(candidates.end(), thread.found.begin(), thread.found.end());
     }
+    std::span<std::uint32_t> earliest = scratch.earliest;
+    // A pair found twice is two equal candidates: the first in place counts,
+    // so that every thread count picks the same one.
+    const auto comes_first = [&](std::uint32_t k, std::uint32_t other) {
+        return order.before(candidates[k], candidates[other]) ||
+               (k < other && !order.before(candidates[other], candidates[k]));
+    };
+    // Threads may claim one particle at the same time: then each claim is a
+    // compare-and-swap, retried while it still comes first.
+    const auto claim = [&](std::uint32_t particle, std::uint32_t k, bool shared) {
+        if (!shared) {
+            std::uint32_t& held = earliest[particle];
+            if (held == no_collision || comes_first(k, held)) held = k;
+            return;
+        }
+        std::atomic_ref<std::uint32_t> held(earliest[particle]);
+        std::uint32_t current = held.load(std::memory_order_relaxed);
+        while (current == no_collision || comes_first(k, current)) {
+            if (held.compare_exchange_weak(current, k, std::memory_order_relaxed)) return;
+        }
+    };
     const auto is_free = [&](const Collision& c) {
         return partner[c.i] == no_collision && (c.kind == CollisionKind::wall || partner[c.j] == no_collision);
     };
-    const auto claim = [&](std::uint32_t particle, std::uint32_t k) {
-        std::uint32_t& held = earliest[particle];
-        if (held == no_collision || order.before(candidates[k], candidates[held])) held = k;
-    };
     StepCounts counts;
     while (!candidates.empty()) {
-        const auto count = static_cast<std::uint32_t>(candidates.size());
-        for (std::uint32_t k = 0; k < count; ++k) {
-            claim(candidates[k].i, k);
-            if (candidates[k].kind == CollisionKind::pair) claim(candidates[k].j, k);
-        }
-        for (std::uint32_t k = 0; k < count; ++k) {
-            const Collision& c = candidates[k];
-            if (earliest[c.i] != k) continue;
-            if (c.kind == CollisionKind::wall) {
-                partner[c.i] = wall_collision;
-                collision_time[c.i] = c.time;
-                ++counts.wall_collisions;
-            } else if (earliest[c.j] == k) {
-                partner[c.i] = c.j;
-                partner[c.j] = c.i;
-                collision_time[c.i] = c.time;
-                collision_time[c.j] = c.time;
-                ++counts.particle_collisions;
+        const auto count = static_cast<std::int64_t>(candidates.size());
+        const std::int64_t blocks = (count + selection_block - 1) / selection_block;
+        const int workers = worker_count(static_cast<std::size_t>(threads), count, min_particles_per_thread);
+        const bool shared = workers > 1;
+        const auto for_each_block = [&](auto&& body) {
+            parallel_for(workers, blocks, [&](std::int64_t block, std::size_t) {
+                body(block, static_cast<std::uint32_t>(block * selection_block),
+                     static_cast<std::uint32_t>(std::min(count, (block + 1) * selection_block)));
+            });
+        };
+        for_each_block([&](std::int64_t, std::uint32_t first, std::uint32_t last) {
+            for (std::uint32_t k = first; k < last; ++k) {
+                claim(candidates[k].i, k, shared);
+                if (candidates[k].kind == CollisionKind::pair) claim(candidates[k].j, k, shared);
             }
+        });
+        // Accepted collisions share no particle: each thread writes its own.
+        scratch.block_counts.resize(static_cast<std::size_t>(blocks));
+        for_each_block([&](std::int64_t block, std::uint32_t first, std::uint32_t last) {
+            StepCounts& accepted = scratch.block_counts[block];
+            accepted = {};
+            for (std::uint32_t k = first; k < last; ++k) {
+                const Collision& c = candidates[k];
+                if (earliest[c.i] != k) continue;
+                if (c.kind == CollisionKind::wall) {
+                    partner[c.i] = wall_collision;
+                    collision_time[c.i] = c.time;
+                    ++accepted.wall_collisions;
+                } else if (earliest[c.j] == k) {
+                    partner[c.i] = c.j;
+                    partner[c.j] = c.i;
+                    collision_time[c.i] = c.time;
+                    collision_time[c.j] = c.time;
+                    ++accepted.particle_collisions;
+                }
+            }
+        });
+        for (const StepCounts& accepted : scratch.block_counts) counts += accepted;
+        for_each_block([&](std::int64_t, std::uint32_t first, std::uint32_t last) {
+            for (std::uint32_t k = first; k < last; ++k) {
+                const Collision& c = candidates[k];
+                std::atomic_ref<std::uint32_t>(earliest[c.i]).store(no_collision, std::memory_order_relaxed);
+                if (c.kind == CollisionKind::pair) {
+                    std::atomic_ref<std::uint32_t>(earliest[c.j]).store(no_collision, std::memory_order_relaxed);
+                }
+            }
+        });
+        // Accepted candidates and those they rule out leave; the rest go on,
+        // in their order: each block keeps its own, then they close up.
+        scratch.block_kept.resize(static_cast<std::size_t>(blocks));
+        for_each_block([&](std::int64_t block, std::uint32_t first, std::uint32_t last) {
+            const auto begin = candidates.begin() + first;
+            const auto kept =
+                std::remove_if(begin, candidates.begin() + last, [&](const Collision& c) { return !is_free(c); });
+            scratch.block_kept[block] = static_cast<std::uint32_t>(kept - begin);
+        });
+        auto end = candidates.begin();
+        for (std::int64_t block = 0; block < blocks; ++block) {
+            const auto begin = candidates.begin() + block * selection_block;
+            end = std::move(begin, begin + scratch.block_kept[block], end);
         }
-        for (const Collision& c : candidates) {
-            earliest[c.i] = no_collision;
-            if (c.kind == CollisionKind::pair) earliest[c.j] = no_collision;
-        }
-        // Accepted candidates and those they rule out leave; the rest go on.
-        candidates.erase(
-            std::remove_if(candidates.begin(), candidates.end(), [&](const Collision& c) { return !is_free(c); }),
-            candidates.end());
+        candidates.erase(end, candidates.end());
     }
     return counts;
 }

@@ -62,15 +62,25 @@ inline constexpr std::uint32_t wall_collision = 0xfffffffeU;
 // rest. Rounds of "accept every such candidate, drop what they rule out"
 // accept exactly the greedy pass's collisions, each round O(candidates).
 //
+// The rounds' passes run on up to `threads` threads; the result does not
+// depend on how many.
+//
 // `candidates` holds the wall candidates on entry; each thread's pair
 // candidates are appended (duplicates are harmless: equal candidates keep
 // the first). Each particle gets its partner (or no_collision /
 // wall_collision) and, for an accepted collision, its time in
-// `collision_time`. `earliest` is scratch, one per particle, no_collision on
-// entry and exit. Returns the accepted collisions counted by kind.
+// `collision_time`. Returns the accepted collisions counted by kind.
+struct SelectionScratch {
+    explicit SelectionScratch(std::size_t particles = 0) : earliest(particles, no_collision) {}
+
+    std::vector<std::uint32_t> earliest;  // by particle: its first candidate; no_collision between calls
+    std::vector<StepCounts> block_counts;
+    std::vector<std::uint32_t> block_kept;
+};
+
 StepCounts select_collisions(std::vector<Collision>& candidates, std::span<const ThreadCandidates> found,
                              const CandidateOrder& order, std::span<std::uint32_t> partner,
-                             std::span<double> collision_time, std::span<std::uint32_t> earliest);
+                             std::span<double> collision_time, SelectionScratch& scratch, int threads);
 
 // Carries out every accepted collision and the rest of the step of its particles.
 void resolve_collisions(std::span<Particle> particles, std::span<const std::uint32_t> partner,

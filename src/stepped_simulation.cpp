@@ -58,7 +58,7 @@ public:
         }
         wall_time_.resize(count);
         partner_.assign(count, no_collision);
-        earliest_.assign(count, no_collision);
+        selection_ = SelectionScratch(count);
         // Room for a busy step from the start, so that steps rarely need to grow it.
         candidates_.reserve(2 * count + 64);
         thread_candidates_.resize(static_cast<std::size_t>(threads_));
@@ -110,7 +110,7 @@ private:
         }
         const StepCounts accepted =
             select_collisions(candidates_, thread_candidates_, CandidateOrder(storage_order_.user_index()), partner_,
-                              wall_time_, earliest_);
+                              wall_time_, selection_, threads_);
         resolve_collisions(particles_, partner_, wall_time_, box_, duration, threads_);
         advance_free_particles(particles_, partner_, box_, duration, threads_);
 
@@ -132,8 +132,8 @@ private:
     // selection on, the time of its accepted collision (one array for both,
     // in turn: 8 bytes a particle fewer).
     std::vector<double> wall_time_;
-    std::vector<std::uint32_t> partner_;   // by particle: its partner, no_collision or wall_collision
-    std::vector<std::uint32_t> earliest_;  // select_collisions' scratch
+    std::vector<std::uint32_t> partner_;  // by particle: its partner, no_collision or wall_collision
+    SelectionScratch selection_;
     std::vector<Collision> candidates_;
     std::vector<ThreadCandidates> thread_candidates_;
     GridSearch grid_;

@@ -49,14 +49,14 @@ void selection_is_the_greedy_pass() {
     found[0].found = {Collision::pair(0.5, 1, 2), Collision::pair(0.5, 0, 2)};
     found[1].found = {Collision::pair(0.3, 3, 4), Collision::pair(0.5, 0, 2)};
     std::vector<std::uint32_t> partner(5, no_collision);
-    std::vector<std::uint32_t> earliest(5, no_collision);
+    SelectionScratch scratch(5);
     std::vector<double> time(5, -1.0);
-    const StepCounts counts = select_collisions(candidates, found, CandidateOrder({}), partner, time, earliest);
+    const StepCounts counts = select_collisions(candidates, found, CandidateOrder({}), partner, time, scratch, 1);
     CHECK_EQ(counts.particle_collisions, 2U);
     CHECK_EQ(counts.wall_collisions, 1U);
     CHECK(partner == (std::vector<std::uint32_t>{2, wall_collision, 0, 4, 3}));
     CHECK(time == (std::vector<double>{0.5, 0.5, 0.5, 0.3, 0.3}));
-    CHECK(earliest == std::vector<std::uint32_t>(5, no_collision));
+    CHECK(scratch.earliest == std::vector<std::uint32_t>(5, no_collision));
     CHECK(candidates.empty());
 
     // A chain decided over rounds: (3, 4) at 0.1 comes first, so (2, 3) at
@@ -65,74 +65,94 @@ void selection_is_the_greedy_pass() {
     std::vector<Collision> chain{Collision::pair(0.4, 0, 1), Collision::pair(0.3, 1, 2), Collision::pair(0.2, 2, 3),
                                  Collision::pair(0.1, 3, 4)};
     std::vector<std::uint32_t> chain_partner(6, no_collision);
-    std::vector<std::uint32_t> chain_earliest(6, no_collision);
+    SelectionScratch chain_scratch(6);
     std::vector<double> chain_time(6, -1.0);
-    select_collisions(chain, {}, CandidateOrder({}), chain_partner, chain_time, chain_earliest);
+    select_collisions(chain, {}, CandidateOrder({}), chain_partner, chain_time, chain_scratch, 1);
     CHECK(chain_partner == (std::vector<std::uint32_t>{no_collision, 2, 1, 4, 3, no_collision}));
 }
 
-// The rounds against the greedy pass over sorted candidates, on random
-// candidate sets with many shared particles and exact ties, in the user's
-// order and stored out of it (ties then go by the user's indices), with the
-// candidates spread over several threads' lists.
+// One random candidate set with many shared particles and exact ties, in
+// the user's order or stored out of it (ties then go by the user's indices),
+// spread over several threads' lists: does select_collisions, on `threads`
+// threads, give every particle the partner of the greedy pass over the
+// sorted candidates?
+bool selection_matches_greedy(SplitMix64& rng, std::uint32_t particles, int candidate_count, int threads) {
+    std::vector<std::uint32_t> user_index(particles);
+    for (std::uint32_t i = 0; i < particles; ++i) user_index[i] = i;
+    const bool user_order = rng.next() % 2 == 0;
+    if (!user_order) {
+        for (std::uint32_t i = particles - 1; i > 0; --i) std::swap(user_index[i], user_index[rng.next() % (i + 1)]);
+    }
+    std::vector<Collision> walls;
+    std::vector<ThreadCandidates> found(1 + rng.next() % 3);
+    std::vector<Collision> all;
+    for (int k = 0; k < candidate_count; ++k) {
+        const double t = static_cast<double>(rng.next() % 8) / 8.0;  // many exact ties
+        const auto i = static_cast<std::uint32_t>(rng.next() % particles);
+        const auto j = static_cast<std::uint32_t>(rng.next() % particles);
+        if (rng.next() % 4 == 0 || i == j) {
+            walls.push_back(Collision::wall(t, i));
+            all.push_back(walls.back());
+        } else {
+            all.push_back(Collision::pair(t, std::min(i, j), std::max(i, j)));
+            found[rng.next() % found.size()].found.push_back(all.back());
+        }
+    }
+    // The rules' way, independently: rename to user indices, sort, walk.
+    std::vector<Collision> sorted;
+    for (Collision c : all) {
+        c.i = user_index[c.i];
+        if (c.kind == CollisionKind::pair) {
+            c.j = user_index[c.j];
+            if (c.i > c.j) std::swap(c.i, c.j);
+        }
+        sorted.push_back(c);
+    }
+    std::sort(sorted.begin(), sorted.end());
+    std::vector<std::uint32_t> stored_of(particles);
+    for (std::uint32_t i = 0; i < particles; ++i) stored_of[user_index[i]] = i;
+    std::vector<std::uint32_t> expected(particles, no_collision);
+    for (const Collision& c : sorted) {
+        const std::uint32_t a = stored_of[c.i];
+        if (expected[a] != no_collision) continue;
+        if (c.kind == CollisionKind::wall) {
+            expected[a] = wall_collision;
+        } else if (const std::uint32_t b = stored_of[c.j]; expected[b] == no_collision) {
+            expected[a] = b;
+            expected[b] = a;
+        }
+    }
+    std::vector<std::uint32_t> partner(particles, no_collision);
+    SelectionScratch scratch(particles);
+    std::vector<double> time(particles, 0.0);
+    const CandidateOrder order(user_order ? std::span<const std::uint32_t>{} : std::span(user_index));
+    select_collisions(walls, found, order, partner, time, scratch, threads);
+    return partner == expected && scratch.earliest == std::vector<std::uint32_t>(particles, no_collision);
+}
+
 void selection_equals_greedy_on_random_candidates() {
     SplitMix64 rng(11);
     int wrong = 0;
     for (int trial = 0; trial < 4000; ++trial) {
         const std::uint32_t particles = 2 + static_cast<std::uint32_t>(rng.next() % 40);
-        std::vector<std::uint32_t> user_index(particles);
-        for (std::uint32_t i = 0; i < particles; ++i) user_index[i] = i;
-        const bool user_order = trial % 2 == 0;
-        if (!user_order) {
-            for (std::uint32_t i = particles - 1; i > 0; --i)
-                std::swap(user_index[i], user_index[rng.next() % (i + 1)]);
+        wrong += selection_matches_greedy(rng, particles, static_cast<int>(rng.next() % 80), 1) ? 0 : 1;
+    }
+    CHECK_EQ(wrong, 0);
+}
+
+// Enough candidates for the passes to run on several threads, which then
+// claim the same particles at the same time.
+void selection_equals_greedy_on_any_thread_count() {
+    SplitMix64 rng(12);
+    int wrong = 0;
+    for (int trial = 0; trial < 12; ++trial) {
+        const std::uint32_t particles = 500 + static_cast<std::uint32_t>(rng.next() % 20000);
+        const int candidates = 8192 + static_cast<int>(rng.next() % 40000);
+        for (const int threads : {1, 2, 3, 4}) {
+            SplitMix64 same = rng;
+            wrong += selection_matches_greedy(same, particles, candidates, threads) ? 0 : 1;
         }
-        std::vector<Collision> walls;
-        std::vector<ThreadCandidates> found(1 + rng.next() % 3);
-        std::vector<Collision> all;
-        const int candidate_count = static_cast<int>(rng.next() % 80);
-        for (int k = 0; k < candidate_count; ++k) {
-            const double t = static_cast<double>(rng.next() % 8) / 8.0;  // many exact ties
-            const auto i = static_cast<std::uint32_t>(rng.next() % particles);
-            const auto j = static_cast<std::uint32_t>(rng.next() % particles);
-            if (rng.next() % 4 == 0 || i == j) {
-                walls.push_back(Collision::wall(t, i));
-                all.push_back(walls.back());
-            } else {
-                all.push_back(Collision::pair(t, std::min(i, j), std::max(i, j)));
-                found[rng.next() % found.size()].found.push_back(all.back());
-            }
-        }
-        // The rules' way, independently: rename to user indices, sort, walk.
-        std::vector<Collision> sorted;
-        for (Collision c : all) {
-            c.i = user_index[c.i];
-            if (c.kind == CollisionKind::pair) {
-                c.j = user_index[c.j];
-                if (c.i > c.j) std::swap(c.i, c.j);
-            }
-            sorted.push_back(c);
-        }
-        std::sort(sorted.begin(), sorted.end());
-        std::vector<std::uint32_t> stored_of(particles);
-        for (std::uint32_t i = 0; i < particles; ++i) stored_of[user_index[i]] = i;
-        std::vector<std::uint32_t> expected(particles, no_collision);
-        for (const Collision& c : sorted) {
-            const std::uint32_t a = stored_of[c.i];
-            if (expected[a] != no_collision) continue;
-            if (c.kind == CollisionKind::wall) {
-                expected[a] = wall_collision;
-            } else if (const std::uint32_t b = stored_of[c.j]; expected[b] == no_collision) {
-                expected[a] = b;
-                expected[b] = a;
-            }
-        }
-        std::vector<std::uint32_t> partner(particles, no_collision);
-        std::vector<std::uint32_t> earliest(particles, no_collision);
-        std::vector<double> time(particles, 0.0);
-        const CandidateOrder order(user_order ? std::span<const std::uint32_t>{} : std::span(user_index));
-        select_collisions(walls, found, order, partner, time, earliest);
-        wrong += partner != expected ? 1 : 0;
+        rng.next();
     }
     CHECK_EQ(wrong, 0);
 }
@@ -227,6 +247,7 @@ int main(int argc, char** argv) {
                       {{"order encodes the tie rules", order_encodes_the_tie_rules},
                        {"selection is the greedy pass", selection_is_the_greedy_pass},
                        {"selection equals greedy on random candidates", selection_equals_greedy_on_random_candidates},
+                       {"selection equals greedy on any thread count", selection_equals_greedy_on_any_thread_count},
                        {"wall beats pair at equal time", wall_beats_pair_at_equal_time},
                        {"lowest indices win among equal pairs", lowest_indices_win_among_equal_pairs},
                        {"collision near wall stops at wall then passes through",
