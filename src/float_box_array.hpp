@@ -17,6 +17,7 @@
 #include <cstdint>
 #include <cstring>
 #include <limits>
+#include <type_traits>
 #include <vector>
 
 namespace particlesim {
@@ -47,14 +48,17 @@ inline float float_at_least(double value) {
 
 class FloatBoxArray {
 public:
+    // Boxes tested by one comparison: four everywhere, eight where the
+    // caller is compiled for eight-lane registers (AVX).
     static constexpr std::uint32_t lanes = 4;
+    static constexpr std::uint32_t wide_lanes = 8;
 
     static constexpr std::uint32_t max_block_groups = 8;
 
     // Room for `count` boxes, plus padding that block scans may read (and
     // mask off) past the last box.
     void resize(std::size_t count) {
-        for (std::vector<float>& bound : bounds_) bound.resize(count + max_block_groups * lanes, 0.0f);
+        for (std::vector<float>& bound : bounds_) bound.resize(count + max_block_groups * wide_lanes, 0.0f);
     }
 
     void set(std::uint32_t at, const FloatBox& box) {
@@ -69,21 +73,25 @@ public:
     }
 
     // Calls found(m) for every stored box m in [first, last) that overlaps
-    // `box`. The range is tested in blocks of `block_groups` groups, the
-    // first one always: a range that fits one block costs no branch on its
-    // length or on which of its groups hit, only one on whether any did.
-    template <std::uint32_t block_groups, typename Found>
-    void for_each_overlap(std::uint32_t first, std::uint32_t last, const FloatBox& box, Found&& found) const {
+    // `box`. The range is tested in blocks of `block_groups` groups of
+    // `group_lanes` boxes, the first one always: a range that fits one block
+    // costs no branch on its length or on which of its groups hit, only one
+    // on whether any did. Always inlined, so that a caller compiled for AVX
+    // gets its eight lanes.
+    template <std::uint32_t block_groups, std::uint32_t group_lanes = lanes, typename Found>
+    [[gnu::always_inline]] void for_each_overlap(std::uint32_t first, std::uint32_t last, const FloatBox& box,
+                                                 Found&& found) const {
         static_assert(block_groups >= 1 && block_groups <= max_block_groups);
-        constexpr std::uint32_t block = block_groups * lanes;
+        static_assert(group_lanes == lanes || group_lanes == wide_lanes);
+        constexpr std::uint32_t block = block_groups * group_lanes;
         std::uint32_t start = first;
         do {
             std::uint64_t hits = 0;
             for (std::uint32_t group = 0; group < block_groups; ++group) {
-                hits |= std::uint64_t{hit_bits(start + group * lanes, box)} << (group * lanes);
+                hits |= std::uint64_t{hit_bits<group_lanes>(start + group * group_lanes, box)} << (group * group_lanes);
             }
             const std::uint32_t inside = last > start ? std::min(last - start, block) : 0U;
-            hits &= (std::uint64_t{1} << inside) - 1U;
+            hits &= inside == 64 ? ~std::uint64_t{0} : (std::uint64_t{1} << inside) - 1U;
             for (; hits != 0; hits &= hits - 1) found(start + static_cast<std::uint32_t>(std::countr_zero(hits)));
             start += block;
         } while (start < last);
@@ -92,25 +100,40 @@ public:
 private:
     enum Bound { min_x, min_y, max_x, max_y, bound_count };
 
-    using Lanes = float __attribute__((vector_size(16)));
-    using LaneMask = std::int32_t __attribute__((vector_size(16)));
+    // (A vector size that depends on a template parameter is ignored by GCC.)
+    using FourFloats = float __attribute__((vector_size(16)));
+    using FourInts = std::int32_t __attribute__((vector_size(16)));
+    using EightFloats = float __attribute__((vector_size(32)));
+    using EightInts = std::int32_t __attribute__((vector_size(32)));
 
-    [[nodiscard]] Lanes load(Bound bound, std::uint32_t at) const {
-        Lanes result;
-        std::memcpy(&result, &bounds_[bound][at], sizeof result);
-        return result;
-    }
-
-    // Bit k set: box group + k overlaps `box`.
-    [[nodiscard]] unsigned hit_bits(std::uint32_t group, const FloatBox& box) const {
-        const LaneMask hits = (load(min_x, group) <= box.max_x) & (box.min_x <= load(max_x, group)) &
-                              (load(min_y, group) <= box.max_y) & (box.min_y <= load(max_y, group));
+    // Bit k set: box group + k overlaps `box`. No vector is passed or
+    // returned by value: eight-lane ones would change the calling convention
+    // of a build without AVX.
+    template <std::uint32_t group_lanes>
+    [[gnu::always_inline]] unsigned hit_bits(std::uint32_t group, const FloatBox& box) const {
+        using Lanes = std::conditional_t<group_lanes == lanes, FourFloats, EightFloats>;
+        using LaneMask = std::conditional_t<group_lanes == lanes, FourInts, EightInts>;
+        Lanes low_x, low_y, high_x, high_y;
+        std::memcpy(&low_x, &bounds_[min_x][group], sizeof(Lanes));
+        std::memcpy(&low_y, &bounds_[min_y][group], sizeof(Lanes));
+        std::memcpy(&high_x, &bounds_[max_x][group], sizeof(Lanes));
+        std::memcpy(&high_y, &bounds_[max_y][group], sizeof(Lanes));
+        const LaneMask hits =
+            (low_x <= box.max_x) & (box.min_x <= high_x) & (low_y <= box.max_y) & (box.min_y <= high_y);
 #if defined(__SSE__)
-        // Every lane is all ones or all zeros: its sign bit is its hit bit.
-        return static_cast<unsigned>(__builtin_ia32_movmskps(reinterpret_cast<Lanes>(hits)));
+        // Every lane is all ones or all zeros: its sign bit is its hit bit,
+        // taken four lanes at a time.
+        unsigned bits = 0;
+        for (std::uint32_t quarter = 0; quarter < group_lanes / 4; ++quarter) {
+            FourFloats four;
+            std::memcpy(&four, reinterpret_cast<const char*>(&hits) + quarter * sizeof four, sizeof four);
+            bits |= static_cast<unsigned>(__builtin_ia32_movmskps(four)) << (4 * quarter);
+        }
+        return bits;
 #else
-        const LaneMask weighted = hits & LaneMask{1, 2, 4, 8};
-        return static_cast<unsigned>(weighted[0] | weighted[1] | weighted[2] | weighted[3]);
+        unsigned bits = 0;
+        for (std::uint32_t lane = 0; lane < group_lanes; ++lane) bits |= hits[lane] != 0 ? 1U << lane : 0U;
+        return bits;
 #endif
     }
 

@@ -346,11 +346,11 @@ namespace {
 
 // Tests particle `a` (box `box`, state `state`) against the boxes stored at
 // positions [first, last) of the cell order whose float bounds meet its own.
-template <std::uint32_t block_groups>
-inline void test_against_range(const PairSearchInput& in, const GridSearch::SliceWorkspace& ws, std::uint32_t a,
-                               const FloatBox& box, const PairTestState& state, std::uint32_t first, std::uint32_t last,
-                               ThreadCandidates& out) {
-    ws.boxes_by_cell.for_each_overlap<block_groups>(first, last, box, [&](std::uint32_t m) {
+template <std::uint32_t block_groups, std::uint32_t group_lanes = FloatBoxArray::lanes>
+[[gnu::always_inline]] inline void test_against_range(const PairSearchInput& in, const GridSearch::SliceWorkspace& ws,
+                                                      std::uint32_t a, const FloatBox& box, const PairTestState& state,
+                                                      std::uint32_t first, std::uint32_t last, ThreadCandidates& out) {
+    ws.boxes_by_cell.for_each_overlap<block_groups, group_lanes>(first, last, box, [&](std::uint32_t m) {
         const std::uint32_t b = ws.by_cell[m];
         if (b == a) return;  // another piece of the same path
         const PairTestState& other = ws.states_by_cell[m];
@@ -365,9 +365,9 @@ inline void test_against_range(const PairSearchInput& in, const GridSearch::Slic
 // The half stencil of every cell in row `cy`: the rest of the cell and the
 // cell to the east (adjacent in the cell order, so one range), then the
 // three cells above (one range), scanned in blocks of `block_groups` groups.
-template <std::uint32_t block_groups>
-void scan_row(const PairSearchInput& in, const GridSearch::SliceWorkspace& ws, int side, std::int64_t cy,
-              ThreadCandidates& found) {
+template <std::uint32_t block_groups, std::uint32_t group_lanes = FloatBoxArray::lanes>
+[[gnu::always_inline]] inline void scan_row(const PairSearchInput& in, const GridSearch::SliceWorkspace& ws, int side,
+                                            std::int64_t cy, ThreadCandidates& found) {
     const std::uint32_t* start = ws.cell_start.data();
     const std::uint32_t* ids = ws.by_cell.data();
     const FloatBoxArray& boxes = ws.boxes_by_cell;
@@ -386,11 +386,35 @@ void scan_row(const PairSearchInput& in, const GridSearch::SliceWorkspace& ws, i
             above_last = start[row + side + std::min(cx + 1, side - 1) + 1];
         }
         for (std::uint32_t k = first; k < last; ++k) {
-            test_against_range<block_groups>(in, ws, ids[k], boxes[k], states[k], k + 1, east_last, found);
-            test_against_range<block_groups>(in, ws, ids[k], boxes[k], states[k], above_first, above_last, found);
+            test_against_range<block_groups, group_lanes>(in, ws, ids[k], boxes[k], states[k], k + 1, east_last, found);
+            test_against_range<block_groups, group_lanes>(in, ws, ids[k], boxes[k], states[k], above_first, above_last,
+                                                          found);
         }
     }
 }
+
+// One row in blocks of `block_groups` groups of four boxes, or (x86-64) of
+// eight, compiled for AVX2: chosen at run time, so that one build runs on
+// every x86-64 processor. Lanes only filter boxes; every pair test is the
+// same double arithmetic (no fused multiply-add), so results do not change.
+template <std::uint32_t block_groups>
+void scan_row_four(const PairSearchInput& in, const GridSearch::SliceWorkspace& ws, int side, std::int64_t cy,
+                   ThreadCandidates& found) {
+    scan_row<block_groups>(in, ws, side, cy, found);
+}
+
+#if defined(__x86_64__)
+template <std::uint32_t block_groups>
+[[gnu::target("avx2")]] void scan_row_eight(const PairSearchInput& in, const GridSearch::SliceWorkspace& ws, int side,
+                                            std::int64_t cy, ThreadCandidates& found) {
+    scan_row<block_groups, FloatBoxArray::wide_lanes>(in, ws, side, cy, found);
+}
+
+bool has_eight_lanes() {
+    static const bool available = __builtin_cpu_supports("avx2");
+    return available;
+}
+#endif
 
 }  // namespace
 
@@ -403,14 +427,21 @@ void GridSearch::test_small_pairs(const PairSearchInput& in, const SliceWorkspac
     };
     // A range that fits one block is scanned without a mispredicted exit
     // from a loop over its groups: blocks of two groups suit cells of a few
-    // boxes (sparse scenes), one group cells of about one (dense ones), where
-    // a second group would only add work (docs/benchmarks.md).
+    // boxes (sparse scenes), of eight boxes each where AVX2 has the lanes;
+    // one group of four suits cells of about one box (dense scenes), where
+    // more lanes only add work (docs/benchmarks.md).
     const double boxes_per_cell = static_cast<double>(ws.cell_start.back()) / layout_.grid.cell_count();
-    if (boxes_per_cell >= 2.0) {
-        scan(scan_row<2>);
-    } else {
-        scan(scan_row<1>);
+    if (boxes_per_cell < 2.0) {
+        scan(scan_row_four<1>);
+        return;
     }
+#if defined(__x86_64__)
+    if (has_eight_lanes()) {
+        scan(scan_row_eight<2>);
+        return;
+    }
+#endif
+    scan(scan_row_four<2>);
 }
 
 void GridSearch::test_large_pairs(const PairSearchInput& in, const SliceWorkspace& ws, std::span<ThreadCandidates> out,

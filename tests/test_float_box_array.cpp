@@ -80,16 +80,20 @@ void scans_report_exactly_the_overlaps(std::uint64_t seed, std::uint32_t count) 
             for (std::uint32_t m = first; m < last; ++m) {
                 if (overlap(boxes[m], probe)) expected.push_back(m);
             }
-            const auto scan_in_blocks = [&](auto block_groups) {
+            const auto scan_in_blocks = [&](auto block_groups, auto group_lanes) {
                 std::vector<std::uint32_t> reported;
-                array.for_each_overlap<block_groups()>(first, last, probe,
-                                                       [&](std::uint32_t m) { reported.push_back(m); });
+                array.for_each_overlap<block_groups(), group_lanes()>(first, last, probe,
+                                                                      [&](std::uint32_t m) { reported.push_back(m); });
                 if (reported != expected) ++wrong;
             };
-            scan_in_blocks(std::integral_constant<std::uint32_t, 1>{});
-            scan_in_blocks(std::integral_constant<std::uint32_t, 2>{});
-            scan_in_blocks(std::integral_constant<std::uint32_t, 4>{});
-            scan_in_blocks(std::integral_constant<std::uint32_t, FloatBoxArray::max_block_groups>{});
+            const auto scan_in_groups_of = [&](auto group_lanes) {
+                scan_in_blocks(std::integral_constant<std::uint32_t, 1>{}, group_lanes);
+                scan_in_blocks(std::integral_constant<std::uint32_t, 2>{}, group_lanes);
+                scan_in_blocks(std::integral_constant<std::uint32_t, 4>{}, group_lanes);
+                scan_in_blocks(std::integral_constant<std::uint32_t, FloatBoxArray::max_block_groups>{}, group_lanes);
+            };
+            scan_in_groups_of(std::integral_constant<std::uint32_t, FloatBoxArray::lanes>{});
+            scan_in_groups_of(std::integral_constant<std::uint32_t, FloatBoxArray::wide_lanes>{});
             reported_total += static_cast<int>(expected.size());
         }
     }
@@ -121,7 +125,7 @@ int main(int argc, char** argv) {
                             float_bounds_enclose_the_value();
                             touching_boxes_overlap();
                             std::uint64_t seed = 1;
-                            for (const std::uint32_t count : {0U, 1U, 3U, 4U, 5U, 9U, 40U})
+                            for (const std::uint32_t count : {0U, 1U, 3U, 4U, 5U, 9U, 40U, 70U})
                                 scans_report_exactly_the_overlaps(seed++, count);
                         }}});
 }
