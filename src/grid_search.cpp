@@ -411,7 +411,10 @@ template <std::uint32_t block_groups>
 }
 
 bool has_eight_lanes() {
-    static const bool available = __builtin_cpu_supports("avx2");
+    static const bool available = [] {
+        __builtin_cpu_init();  // in case this first runs before the library's constructors
+        return __builtin_cpu_supports("avx2") != 0;
+    }();
     return available;
 }
 #endif
