@@ -119,7 +119,9 @@ StepCounts select_collisions(std::vector<Collision>& candidates, std::span<const
         auto end = candidates.begin();
         for (std::int64_t block = 0; block < blocks; ++block) {
             const auto begin = candidates.begin() + block * selection_block;
-            end = std::move(begin, begin + scratch.block_kept[block], end);
+            const auto kept_end = begin + scratch.block_kept[block];
+            // A block with nothing dropped before it is in place already.
+            end = end == begin ? kept_end : std::move(begin, kept_end, end);
         }
         candidates.erase(end, candidates.end());
     }
