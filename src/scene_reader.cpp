@@ -179,47 +179,32 @@ std::uint64_t parse_count(std::string_view text, std::string_view what, long lin
     return value;
 }
 
-// A number read from a token, or why it could not be.
-struct ScannedReal {
-    enum class Problem { none, beyond_double, not_a_number, beyond_accepted };
-    double value = 0.0;
-    Problem problem = Problem::none;
-};
-
-ScannedReal scan_real(std::string_view text) {
+// A finite number in the accepted range. `name()` names it in a message; it
+// is called only on error, so that a million particles build no labels.
+template <typename Name>
+double parse_real(std::string_view text, const Name& name, long line) {
     const std::string_view token = without_plus(text);
     double value = 0.0;
     const auto [end, error] = std::from_chars(token.data(), token.data() + token.size(), value);
     const bool whole_token = end == token.data() + token.size();
-    if (error == std::errc::result_out_of_range && whole_token) return {0.0, ScannedReal::Problem::beyond_double};
-    if (error != std::errc{} || !whole_token || !std::isfinite(value)) return {0.0, ScannedReal::Problem::not_a_number};
-    if (std::fabs(value) > max_magnitude) return {0.0, ScannedReal::Problem::beyond_accepted};
-    return {value + 0.0, ScannedReal::Problem::none};  // -0 is read as 0
-}
-
-[[noreturn]] void reject_real(std::string_view text, ScannedReal::Problem problem, std::string_view what, long line) {
-    const std::string_view token = without_plus(text);
-    if (problem == ScannedReal::Problem::beyond_double) {
-        throw InputError(line, Text(what) + " = " + Text(token) +
+    if (error == std::errc::result_out_of_range && whole_token) {
+        throw InputError(line, Text(name()) + " = " + Text(token) +
                                    " is beyond the range of a double (and of the accepted range, magnitudes "
                                    "at most 1e60)");
     }
-    if (problem == ScannedReal::Problem::beyond_accepted) {
-        throw InputError(line, Text(what) + " = " + Text(token) +
+    if (error != std::errc{} || !whole_token || !std::isfinite(value))
+        throw InputError(line, Text(name()) + ": expected a finite number, found " + quoted(text));
+    if (std::fabs(value) > max_magnitude) {
+        throw InputError(line, Text(name()) + " = " + Text(token) +
                                    " is beyond the accepted range (magnitudes at most 1e60; docs/accepted-range.md)");
     }
-    throw InputError(line, Text(what) + ": expected a finite number, found " + quoted(text));
-}
-
-double parse_real(std::string_view text, std::string_view what, long line) {
-    const ScannedReal scanned = scan_real(text);
-    if (scanned.problem != ScannedReal::Problem::none) reject_real(text, scanned.problem, what, line);
-    return scanned.value;
+    return value + 0.0;  // -0 is read as 0
 }
 
 // L and r: positive and inside the accepted range.
 double parse_length(std::string_view text, std::string_view what, long line) {
-    const double value = parse_real(text, what, line);
+    const double value = parse_real(
+        text, [&] { return what; }, line);
     if (!(value > 0.0)) throw InputError(line, Text(what) + " = " + format_short(value) + " must be > 0");
     if (value < min_length) {
         throw InputError(line, Text(what) + " = " + format_short(value) +
@@ -297,11 +282,9 @@ void read_particle(const std::vector<std::string_view>& fields, long line, const
     };
     const World& world = scene.world;
     double values[4];
-    for (int k = 0; k < 4; ++k) {
-        const ScannedReal scanned = scan_real(fields[k + 1]);
-        if (scanned.problem != ScannedReal::Problem::none) reject_real(fields[k + 1], scanned.problem, label(k), line);
-        values[k] = scanned.value;
-    }
+    for (int k = 0; k < 4; ++k)
+        values[k] = parse_real(
+            fields[k + 1], [&] { return label(k); }, line);
     for (int k = 0; k < 2; ++k) {
         if (values[k] < world.lower() || values[k] > world.upper()) {
             throw InputError(line, label(k) + " = " + format_short(values[k]) + " is outside [" +

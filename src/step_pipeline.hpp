@@ -54,6 +54,16 @@ private:
 inline constexpr std::uint32_t no_collision = 0xffffffffU;
 inline constexpr std::uint32_t wall_collision = 0xfffffffeU;
 
+// select_collisions' buffers, kept between steps so that a step allocates
+// nothing.
+struct SelectionScratch {
+    explicit SelectionScratch(std::size_t particles = 0) : earliest(particles, no_collision) {}
+
+    std::vector<std::uint32_t> earliest;  // by particle: its first candidate; no_collision between calls
+    std::vector<StepCounts> block_counts;
+    std::vector<std::uint32_t> block_kept;
+};
+
 // rules.md "Select" without sorting: the greedy pass over the ordered
 // candidates accepts a candidate exactly when no accepted one shares a
 // particle with it and comes first. A candidate that comes first among all
@@ -70,14 +80,6 @@ inline constexpr std::uint32_t wall_collision = 0xfffffffeU;
 // the first). Each particle gets its partner (or no_collision /
 // wall_collision) and, for an accepted collision, its time in
 // `collision_time`. Returns the accepted collisions counted by kind.
-struct SelectionScratch {
-    explicit SelectionScratch(std::size_t particles = 0) : earliest(particles, no_collision) {}
-
-    std::vector<std::uint32_t> earliest;  // by particle: its first candidate; no_collision between calls
-    std::vector<StepCounts> block_counts;
-    std::vector<std::uint32_t> block_kept;
-};
-
 StepCounts select_collisions(std::vector<Collision>& candidates, std::span<const ThreadCandidates> found,
                              const CandidateOrder& order, std::span<std::uint32_t> partner,
                              std::span<double> collision_time, SelectionScratch& scratch, int threads);
