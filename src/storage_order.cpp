@@ -56,15 +56,32 @@ void StorageOrder::restore_user_order(std::span<Particle> particles) {
 }
 
 void StorageOrder::permute(std::span<Particle> particles) {
-    // In place, cycle by cycle: each swap puts one particle where it belongs,
-    // without a second copy of the particles.
-    for (std::size_t i = 0; i < particles.size(); ++i) {
-        while (stored_index_[i] != i) {
-            const std::uint32_t to = stored_index_[i];
-            std::swap(particles[i], particles[to]);
-            std::swap(user_index_[i], user_index_[to]);
-            std::swap(stored_index_[i], stored_index_[to]);
+    // In place, cycle by cycle, without a second copy of the particles: the
+    // particle in hand displaces the one at its destination, which is carried
+    // on. The places ahead on the cycle are fetched early: every place is a
+    // cache miss, and the chain of destinations is the only dependent load.
+    constexpr int lookahead = 8;
+    std::vector<std::uint32_t>& destination = stored_index_;
+    for (std::size_t start = 0; start < particles.size(); ++start) {
+        if (destination[start] == start) continue;
+        Particle carried = particles[start];
+        std::uint32_t carried_user = user_index_[start];
+        std::uint32_t ahead = destination[start];
+        for (int hop = 0; hop < lookahead; ++hop) ahead = destination[ahead];
+        std::uint32_t at = destination[start];
+        while (at != start) {
+            __builtin_prefetch(&particles[ahead], 1);
+            __builtin_prefetch(&user_index_[ahead], 1);
+            ahead = destination[ahead];
+            std::swap(carried, particles[at]);
+            std::swap(carried_user, user_index_[at]);
+            const std::uint32_t next = destination[at];
+            destination[at] = at;
+            at = next;
         }
+        particles[start] = carried;
+        user_index_[start] = carried_user;
+        destination[start] = static_cast<std::uint32_t>(start);
     }
     for (std::size_t i = 0; i < particles.size(); ++i) stored_index_[user_index_[i]] = static_cast<std::uint32_t>(i);
 }
