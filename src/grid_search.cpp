@@ -8,6 +8,7 @@
 #include <atomic>
 #include <cmath>
 #include <limits>
+#include <numeric>
 #include <utility>
 
 namespace particlesim {
@@ -21,6 +22,8 @@ struct GridSearch::SliceWorkspace {
     std::vector<PairTestState> states_by_cell;  // their particles' motion, in the same order
     std::vector<std::uint32_t> large;           // particles whose path fits no cell, even in pieces
     std::vector<SweptBox> large_boxes;          // their boxes, in the same order
+    std::vector<std::uint32_t> large_start;     // per worker: its first place in `large`
+    std::vector<std::uint32_t> range_start;     // per range of cells: its first place in by_cell
 };
 
 namespace {
@@ -38,6 +41,8 @@ constexpr std::uint32_t large_marker = absent_marker - 1;
 constexpr std::uint32_t first_piece_marker = large_marker - max_pieces;
 
 constexpr int max_slices = 64;
+// The cells' places are summed in this many ranges of cells a worker.
+constexpr std::size_t cell_ranges_per_worker = 8;
 // Below this many particles, threads take whole slices.
 constexpr std::size_t slice_parallel_below = 50000;
 
@@ -210,6 +215,8 @@ void GridSearch::prepare(SliceWorkspace& ws, std::size_t count, int workers) con
     ws.cell_fill.resize(cells * static_cast<std::size_t>(workers - 1));  // counts of workers 1, 2, ...
     ws.large.reserve(count);
     ws.large_boxes.reserve(count);
+    ws.large_start.resize(static_cast<std::size_t>(workers) + 1);
+    ws.range_start.resize(cell_ranges_per_worker * static_cast<std::size_t>(workers) + 1);
 }
 
 void GridSearch::process_slice(const PairSearchInput& in, int slice, SliceWorkspace& ws,
@@ -259,13 +266,15 @@ void GridSearch::bin_slice(const PairSearchInput& in, int slice, SliceWorkspace&
         return worker == 0 ? ws.cell_start.data() : ws.cell_fill.data() + (worker - 1) * cells;
     };
     // Long paths, in a loop of their own (as in the placement below).
-    const auto count_pieces = [&](std::int64_t first, std::int64_t last, std::uint32_t* counts, std::size_t& counted) {
+    const auto count_pieces = [&](std::int64_t first, std::int64_t last, std::uint32_t* counts, std::size_t& counted,
+                                  std::uint32_t& large) {
         for (std::int64_t i = first; i < last; ++i) {
             if (ws.cell_of[i] != large_marker) continue;
             const int pieces = pieces_to_fit(in.particles[i], span.begin, path_end(i), fit);
             ws.cell_of[i] = large_marker - static_cast<std::uint32_t>(pieces);
             for_each_piece(i, pieces, [&](const SweptBox& piece) { ++counts[cell_of_box(piece)]; });
             counted += static_cast<std::size_t>(pieces);
+            large -= pieces > 0 ? 1U : 0U;
         }
     };
     const auto count_boxes = [&](bool cut_into_pieces) {
@@ -275,6 +284,7 @@ void GridSearch::bin_slice(const PairSearchInput& in, int slice, SliceWorkspace&
             std::fill(counts, counts + cells, 0U);
             const auto [first, last] = block_of(worker);
             std::size_t counted = 0;
+            std::uint32_t large = 0;
             for (std::int64_t i = first; i < last; ++i) {
                 if (!span.holds_path(sweep_end(in, i))) {
                     ws.cell_of[i] = absent_marker;
@@ -286,9 +296,11 @@ void GridSearch::bin_slice(const PairSearchInput& in, int slice, SliceWorkspace&
                 ws.cell_of[i] = fits ? cell : large_marker;
                 counts[cell] += fits ? 1U : 0U;
                 counted += fits ? 1U : 0U;
+                large += fits ? 0U : 1U;
             }
-            if (cut_into_pieces) count_pieces(first, last, counts, counted);
+            if (cut_into_pieces) count_pieces(first, last, counts, counted, large);
             boxes += counted;
+            ws.large_start[worker + 1] = large;
         });
         return boxes.load();
     };
@@ -296,14 +308,41 @@ void GridSearch::bin_slice(const PairSearchInput& in, int slice, SliceWorkspace&
     // is counted again with the long paths large instead.
     if (count_boxes(true) > ws.by_cell.size()) count_boxes(false);
 
-    // Each worker's first place in each cell, cell by cell.
-    std::uint32_t placed = 0;
-    for (std::int64_t cell = 0; cell < cells; ++cell) {
+    // Each worker's first place in each cell, cell by cell: each range of
+    // cells sums its boxes, then, from where the ranges before it end, turns
+    // its counts into places. On a large scene a serial pass would leave the
+    // other threads waiting.
+    const auto ranges = static_cast<std::int64_t>(ws.range_start.size()) - 1;
+    const std::int64_t cells_per_range = (cells + ranges - 1) / ranges;
+    const auto for_each_range = [&](auto&& body) {
+        const int workers = worker_count(static_cast<std::size_t>(threads), cells, min_particles_per_thread);
+        parallel_for(workers, ranges, [&](std::int64_t range, std::size_t) {
+            body(range, range * cells_per_range, std::min(cells, (range + 1) * cells_per_range));
+        });
+    };
+    for_each_range([&](std::int64_t range, std::int64_t first, std::int64_t last) {
+        std::uint32_t boxes = 0;
         for (std::int64_t worker = 0; worker < threads; ++worker) {
-            std::uint32_t& next = counts_of(worker)[cell];
-            placed += std::exchange(next, placed);
+            const std::uint32_t* counts = counts_of(worker);
+            for (std::int64_t cell = first; cell < last; ++cell) boxes += counts[cell];
         }
-    }
+        ws.range_start[range + 1] = boxes;
+    });
+    ws.range_start[0] = 0;
+    std::partial_sum(ws.range_start.begin(), ws.range_start.end(), ws.range_start.begin());
+    for_each_range([&](std::int64_t range, std::int64_t first, std::int64_t last) {
+        std::uint32_t placed = ws.range_start[range];
+        for (std::int64_t cell = first; cell < last; ++cell) {
+            for (std::int64_t worker = 0; worker < threads; ++worker) {
+                std::uint32_t& next = counts_of(worker)[cell];
+                placed += std::exchange(next, placed);
+            }
+        }
+    });
+    ws.large_start[0] = 0;
+    std::partial_sum(ws.large_start.begin(), ws.large_start.end(), ws.large_start.begin());
+    ws.large.resize(ws.large_start[threads]);
+    ws.large_boxes.resize(ws.large_start[threads]);
 
     parallel_for(threads, threads, [&](std::int64_t worker, std::size_t) {
         std::uint32_t* next = counts_of(worker);
@@ -320,9 +359,16 @@ void GridSearch::bin_slice(const PairSearchInput& in, int slice, SliceWorkspace&
             const std::uint32_t mark = ws.cell_of[i];
             if (mark < first_piece_marker) place(i, mark, slice_box(i));
         }
+        std::uint32_t next_large = ws.large_start[worker];
         for (std::int64_t i = first; i < last; ++i) {
             const std::uint32_t mark = ws.cell_of[i];
-            if (mark < first_piece_marker || mark >= large_marker) continue;
+            if (mark < first_piece_marker || mark == absent_marker) continue;
+            if (mark == large_marker) {
+                ws.large[next_large] = static_cast<std::uint32_t>(i);
+                ws.large_boxes[next_large] = slice_box(i);
+                ++next_large;
+                continue;
+            }
             for_each_piece(i, static_cast<int>(large_marker - mark),
                            [&](const SweptBox& piece) { place(i, cell_of_box(piece), piece); });
         }
@@ -332,14 +378,6 @@ void GridSearch::bin_slice(const PairSearchInput& in, int slice, SliceWorkspace&
     const std::uint32_t* ends = counts_of(threads - 1);
     for (std::int64_t cell = cells - 1; cell >= 0; --cell) ws.cell_start[cell + 1] = ends[cell];
     ws.cell_start[0] = 0;
-
-    ws.large.clear();
-    ws.large_boxes.clear();
-    for (std::int64_t i = 0; i < count; ++i) {
-        if (ws.cell_of[i] != large_marker) continue;
-        ws.large.push_back(static_cast<std::uint32_t>(i));
-        ws.large_boxes.push_back(slice_box(i));
-    }
 }
 
 namespace {
