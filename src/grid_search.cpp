@@ -374,9 +374,16 @@ void GridSearch::bin_slice(const PairSearchInput& in, int slice, SliceWorkspace&
         }
     });
     // The last worker's next place in a cell is now where the next cell
-    // starts; from the top down, that overwrites only what is spent.
+    // starts. A lone worker's places are cell_start itself: from the top
+    // down, that overwrites only what is spent.
     const std::uint32_t* ends = counts_of(threads - 1);
-    for (std::int64_t cell = cells - 1; cell >= 0; --cell) ws.cell_start[cell + 1] = ends[cell];
+    if (threads == 1) {
+        for (std::int64_t cell = cells - 1; cell >= 0; --cell) ws.cell_start[cell + 1] = ends[cell];
+    } else {
+        for_each_range([&](std::int64_t, std::int64_t first, std::int64_t last) {
+            std::copy(ends + first, ends + last, ws.cell_start.begin() + first + 1);
+        });
+    }
     ws.cell_start[0] = 0;
 }
 

@@ -4,21 +4,51 @@
 #include "physics.hpp"
 
 #include <algorithm>
+#include <array>
 #include <atomic>
+#include <numeric>
 
 namespace particlesim {
+
+namespace {
+
+// The most ranges the wall candidates are gathered in (eight a thread).
+constexpr std::int64_t max_wall_ranges = 256;
+
+}  // namespace
 
 void detect_wall_candidates(std::span<const Particle> particles, const Box& box, double duration,
                             std::span<double> wall_time, std::vector<Collision>& candidates, int threads) {
     const auto count = static_cast<std::int64_t>(particles.size());
     const int workers = worker_count(static_cast<std::size_t>(threads), count, min_particles_per_thread);
-    parallel_for(workers, count, [&](std::int64_t i, std::size_t) {
-        wall_time[i] = time_to_wall(particles[i].position, particles[i].velocity, box).time;
+    // Each range of particles counts its candidates, then writes them from
+    // where the ranges before it end: in index order, on every thread.
+    std::array<std::uint32_t, max_wall_ranges + 1> range_start{};
+    const std::int64_t ranges = std::min<std::int64_t>(max_wall_ranges, 8 * std::int64_t{workers});
+    const std::int64_t per_range = (count + ranges - 1) / ranges;
+    const auto for_each_range = [&](auto&& body) {
+        parallel_for(workers, ranges, [&](std::int64_t range, std::size_t) {
+            body(range, range * per_range, std::min(count, (range + 1) * per_range));
+        });
+    };
+    for_each_range([&](std::int64_t range, std::int64_t first, std::int64_t last) {
+        std::uint32_t found = 0;
+        for (std::int64_t i = first; i < last; ++i) {
+            wall_time[i] = time_to_wall(particles[i].position, particles[i].velocity, box).time;
+            found += wall_time[i] <= duration ? 1U : 0U;
+        }
+        range_start[range + 1] = found;
     });
-    for (std::int64_t i = 0; i < count; ++i) {
-        if (wall_time[i] <= duration)
-            candidates.push_back(Collision::wall(wall_time[i], static_cast<std::uint32_t>(i)));
-    }
+    std::partial_sum(range_start.begin(), range_start.end(), range_start.begin());
+    const std::size_t before = candidates.size();
+    candidates.resize(before + range_start[ranges]);
+    for_each_range([&](std::int64_t range, std::int64_t first, std::int64_t last) {
+        std::size_t at = before + range_start[range];
+        for (std::int64_t i = first; i < last; ++i) {
+            if (wall_time[i] <= duration)
+                candidates[at++] = Collision::wall(wall_time[i], static_cast<std::uint32_t>(i));
+        }
+    });
 }
 
 namespace {
