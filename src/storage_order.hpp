@@ -39,13 +39,28 @@ private:
     }
 
     // Moves the particle stored at i to stored_index_[i] (its destination),
-    // for every i; then makes stored_index_ the inverse of user_index_.
+    // for every i, and its user index with it; then makes stored_index_ the
+    // inverse of user_index_.
     void permute(std::span<Particle> particles);
+    // The same when no destination is a window or more ahead of its place
+    // (a scene sorted again), then when any may be (the first sort, or back
+    // to the user's order).
+    void move_within_window(std::span<Particle> particles);
+    void move_along_cycles(std::span<Particle> particles);
+
+    // A particle displaced before its turn, and its user index.
+    struct Waiting {
+        Particle particle;
+        std::uint32_t user_index = 0;
+    };
+    static constexpr std::size_t not_waiting = static_cast<std::size_t>(-1);
 
     bool user_order_ = true;
     std::vector<std::uint32_t> user_index_;
     std::vector<std::uint32_t> stored_index_;
     std::vector<std::uint32_t> cell_start_;
+    std::vector<Waiting> window_;            // by place, modulo its length (a power of two)
+    std::vector<std::size_t> window_place_;  // the place each slot holds, or not_waiting
 };
 
 }  // namespace particlesim
