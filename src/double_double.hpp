@@ -8,24 +8,30 @@
 
 namespace particlesim {
 
-struct DoubleDouble {
-    double hi = 0.0;
-    double lo = 0.0;
+// Real is double, or a vector of doubles (GCC's vector extension) whose every
+// lane carries out the same operations as a double would: the same bits.
+template <typename Real>
+struct DoubleDoubleOf {
+    Real hi{};
+    Real lo{};
 };
+using DoubleDouble = DoubleDoubleOf<double>;
 
 // a + b exactly (Knuth's TwoSum).
-inline DoubleDouble two_sum(double a, double b) {
-    const double sum = a + b;
-    const double b_part = sum - a;
-    const double a_part = sum - b_part;
+template <typename Real>
+inline DoubleDoubleOf<Real> two_sum(Real a, Real b) {
+    const Real sum = a + b;
+    const Real b_part = sum - a;
+    const Real a_part = sum - b_part;
     return {sum, (a - a_part) + (b - b_part)};
 }
 
 // The high and low halves of a double, 26 bits each (Veltkamp's split).
-inline DoubleDouble split(double a) {
+template <typename Real>
+inline DoubleDoubleOf<Real> split(Real a) {
     constexpr double splitter = 134217729.0;  // 2^27 + 1
-    const double scaled = splitter * a;
-    const double high = scaled - (scaled - a);
+    const Real scaled = splitter * a;
+    const Real high = scaled - (scaled - a);
     return {high, a - high};
 }
 
@@ -33,44 +39,53 @@ inline DoubleDouble split(double a) {
 // accepted range excludes (docs/accepted-range.md). The same bits as
 // std::fma(a, b, -a * b), without a call into libm on machines whose
 // baseline has no fused multiply-add.
-inline DoubleDouble two_product(double a, double b) {
-    const double product = a * b;
-    const DoubleDouble x = split(a);
-    const DoubleDouble y = split(b);
-    const double error = ((x.hi * y.hi - product) + x.hi * y.lo + x.lo * y.hi) + x.lo * y.lo;
+template <typename Real>
+inline DoubleDoubleOf<Real> two_product(Real a, Real b) {
+    const Real product = a * b;
+    const DoubleDoubleOf<Real> x = split(a);
+    const DoubleDoubleOf<Real> y = split(b);
+    const Real error = ((x.hi * y.hi - product) + x.hi * y.lo + x.lo * y.hi) + x.lo * y.lo;
     return {product, error};
 }
 
-inline DoubleDouble renormalized(double hi, double lo) {
-    const double sum = hi + lo;
+template <typename Real>
+inline DoubleDoubleOf<Real> renormalized(Real hi, Real lo) {
+    const Real sum = hi + lo;
     return {sum, lo - (sum - hi)};
 }
 
-inline DoubleDouble operator+(const DoubleDouble& a, const DoubleDouble& b) {
-    const DoubleDouble high = two_sum(a.hi, b.hi);
-    const DoubleDouble low = two_sum(a.lo, b.lo);
-    const DoubleDouble partial = renormalized(high.hi, high.lo + low.hi);
+template <typename Real>
+inline DoubleDoubleOf<Real> operator+(const DoubleDoubleOf<Real>& a, const DoubleDoubleOf<Real>& b) {
+    const DoubleDoubleOf<Real> high = two_sum(a.hi, b.hi);
+    const DoubleDoubleOf<Real> low = two_sum(a.lo, b.lo);
+    const DoubleDoubleOf<Real> partial = renormalized(high.hi, high.lo + low.hi);
     return renormalized(partial.hi, partial.lo + low.lo);
 }
 
-inline DoubleDouble operator-(const DoubleDouble& a) { return {-a.hi, -a.lo}; }
+template <typename Real>
+inline DoubleDoubleOf<Real> operator-(const DoubleDoubleOf<Real>& a) {
+    return {-a.hi, -a.lo};
+}
 
-inline DoubleDouble operator*(const DoubleDouble& a, const DoubleDouble& b) {
-    const DoubleDouble high = two_product(a.hi, b.hi);
+template <typename Real>
+inline DoubleDoubleOf<Real> operator*(const DoubleDoubleOf<Real>& a, const DoubleDoubleOf<Real>& b) {
+    const DoubleDoubleOf<Real> high = two_product(a.hi, b.hi);
     return renormalized(high.hi, high.lo + (a.hi * b.lo + a.lo * b.hi));
 }
 
-inline DoubleDouble operator/(const DoubleDouble& a, const DoubleDouble& b) {
+template <typename Real>
+inline DoubleDoubleOf<Real> operator/(const DoubleDoubleOf<Real>& a, const DoubleDoubleOf<Real>& b) {
     // One Newton correction of the double quotient: q + (a - q b) / b.
-    const double quotient = a.hi / b.hi;
-    const DoubleDouble remainder = a + -(DoubleDouble{quotient, 0.0} * b);
-    const double correction = (remainder.hi + remainder.lo) / b.hi;
+    const Real quotient = a.hi / b.hi;
+    const DoubleDoubleOf<Real> remainder = a + -(DoubleDoubleOf<Real>{quotient, Real{}} * b);
+    const Real correction = (remainder.hi + remainder.lo) / b.hi;
     return renormalized(quotient, correction);
 }
 
 // The double nearest to a + b (up to the last of ~106 bits).
-inline double rounded_sum(double a, const DoubleDouble& b) {
-    const DoubleDouble high = two_sum(a, b.hi);
+template <typename Real>
+inline Real rounded_sum(Real a, const DoubleDoubleOf<Real>& b) {
+    const DoubleDoubleOf<Real> high = two_sum(a, b.hi);
     return high.hi + (high.lo + b.lo);
 }
 

@@ -105,18 +105,44 @@ inline void bounce_off_wall(Particle& particle, const WallHit& hit, const Box& b
 // steadily, as it does with a unit normal or double intermediates
 // (docs/accuracy.md, "Stability"). Double-double rounds the same on every IEEE
 // machine, so the bytes do not depend on the platform.
+//
+// On components, for one collision (Real = double) or for several at once,
+// one in each lane of a vector: every lane is the same arithmetic, so the
+// same bits. The exchange is one long chain of dependent operations; two
+// collisions side by side take little longer than one.
+template <typename Real>
+struct ContactPair {
+    Real pix, piy, pjx, pjy;  // the positions at contact
+    Real vix, viy, vjx, vjy;  // the velocities, exchanged in place
+};
+
+template <typename Real>
+inline void exchange_normal_components(ContactPair<Real>& c) {
+    const DoubleDoubleOf<Real> dx = two_sum(c.pjx, -c.pix);
+    const DoubleDoubleOf<Real> dy = two_sum(c.pjy, -c.piy);
+    const DoubleDoubleOf<Real> dist_sq = dx * dx + dy * dy;
+    const DoubleDoubleOf<Real> dvx = two_sum(c.vjx, -c.vix);
+    const DoubleDoubleOf<Real> dvy = two_sum(c.vjy, -c.viy);
+    const DoubleDoubleOf<Real> along = (dvx * dx + dvy * dy) / dist_sq;
+    const DoubleDoubleOf<Real> ex = along * dx;
+    const DoubleDoubleOf<Real> ey = along * dy;
+    // Never at distance 0 for valid radii; no lane takes a quotient by zero.
+    const auto apart = dist_sq.hi > 0.0;
+    const Real vix = rounded_sum(c.vix, ex);
+    const Real viy = rounded_sum(c.viy, ey);
+    const Real vjx = rounded_sum(c.vjx, -ex);
+    const Real vjy = rounded_sum(c.vjy, -ey);
+    c.vix = apart ? vix : c.vix;
+    c.viy = apart ? viy : c.viy;
+    c.vjx = apart ? vjx : c.vjx;
+    c.vjy = apart ? vjy : c.vjy;
+}
+
 inline void exchange_normal_velocities(const Vec2& pi, const Vec2& pj, Vec2& vi, Vec2& vj) {
-    const DoubleDouble dx = two_sum(pj.x(), -pi.x());
-    const DoubleDouble dy = two_sum(pj.y(), -pi.y());
-    const DoubleDouble dist_sq = dx * dx + dy * dy;
-    if (!(dist_sq.hi > 0.0)) return;  // unreachable for valid radii; never divide by zero
-    const DoubleDouble dvx = two_sum(vj.x(), -vi.x());
-    const DoubleDouble dvy = two_sum(vj.y(), -vi.y());
-    const DoubleDouble along = (dvx * dx + dvy * dy) / dist_sq;
-    const DoubleDouble ex = along * dx;
-    const DoubleDouble ey = along * dy;
-    vi = Vec2(rounded_sum(vi.x(), ex), rounded_sum(vi.y(), ey));
-    vj = Vec2(rounded_sum(vj.x(), -ex), rounded_sum(vj.y(), -ey));
+    ContactPair<double> c{pi.x(), pi.y(), pj.x(), pj.y(), vi.x(), vi.y(), vj.x(), vj.y()};
+    exchange_normal_components(c);
+    vi = Vec2(c.vix, c.viy);
+    vj = Vec2(c.vjx, c.vjy);
 }
 
 // The rest of a step after a collision: move for `remaining`, but stop on a

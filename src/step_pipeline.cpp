@@ -173,17 +173,59 @@ void resolve_wall(Particle& particle, double time, const Box& box, double durati
     particle = moved;
 }
 
-void resolve_pair(Particle& a, Particle& b, double time, const Box& box, double duration) {
-    Particle moved[2] = {a, b};
-    for (Particle& p : moved) p.position += p.velocity * time;
-    exchange_normal_velocities(moved[0].position, moved[1].position, moved[0].velocity, moved[1].velocity);
-    for (Particle& p : moved) {
+// A pair's two particles, copied and moved to their contact at `time`.
+struct PairAtContact {
+    Particle* stored[2];
+    Particle moved[2];
+    double time;
+};
+
+PairAtContact at_contact(Particle& a, Particle& b, double time) {
+    PairAtContact pair{{&a, &b}, {a, b}, time};
+    for (Particle& p : pair.moved) p.position += p.velocity * time;
+    return pair;
+}
+
+// After the exchange: the rest of the step, and each particle stored once.
+void finish_pair(PairAtContact& pair, const Box& box, double duration) {
+    for (Particle& p : pair.moved) {
         ++p.particle_collisions;
         clamp_into_box(p.position, box);
-        move_stopping_at_wall(p, duration - time, box);
+        move_stopping_at_wall(p, duration - pair.time, box);
     }
-    a = moved[0];
-    b = moved[1];
+    *pair.stored[0] = pair.moved[0];
+    *pair.stored[1] = pair.moved[1];
+}
+
+void resolve_pair(PairAtContact& pair, const Box& box, double duration) {
+    Particle(&moved)[2] = pair.moved;
+    exchange_normal_velocities(moved[0].position, moved[1].position, moved[0].velocity, moved[1].velocity);
+    finish_pair(pair, box, duration);
+}
+
+// Two pairs at once, one in each lane of the exchange: the same bits as one
+// at a time, in about the time of one.
+void resolve_two_pairs(PairAtContact& first, PairAtContact& second, const Box& box, double duration) {
+    using TwoLanes = double __attribute__((vector_size(16)));
+    const auto lanes = [&](auto component) { return TwoLanes{component(first), component(second)}; };
+    ContactPair<TwoLanes> contact{
+        lanes([](const PairAtContact& p) { return p.moved[0].position.x(); }),
+        lanes([](const PairAtContact& p) { return p.moved[0].position.y(); }),
+        lanes([](const PairAtContact& p) { return p.moved[1].position.x(); }),
+        lanes([](const PairAtContact& p) { return p.moved[1].position.y(); }),
+        lanes([](const PairAtContact& p) { return p.moved[0].velocity.x(); }),
+        lanes([](const PairAtContact& p) { return p.moved[0].velocity.y(); }),
+        lanes([](const PairAtContact& p) { return p.moved[1].velocity.x(); }),
+        lanes([](const PairAtContact& p) { return p.moved[1].velocity.y(); }),
+    };
+    exchange_normal_components(contact);
+    PairAtContact* pairs[2] = {&first, &second};
+    for (int lane = 0; lane < 2; ++lane) {
+        PairAtContact& pair = *pairs[lane];
+        pair.moved[0].velocity = Vec2(contact.vix[lane], contact.viy[lane]);
+        pair.moved[1].velocity = Vec2(contact.vjx[lane], contact.vjy[lane]);
+        finish_pair(pair, box, duration);
+    }
 }
 
 }  // namespace
@@ -191,25 +233,37 @@ void resolve_pair(Particle& a, Particle& b, double time, const Box& box, double 
 void resolve_collisions(std::span<Particle> particles, std::span<const std::uint32_t> partner,
                         std::span<const double> collision_time, const Box& box, double duration, int threads) {
     constexpr std::int64_t partner_lookahead = 32;
+    constexpr std::int64_t block = 1024;
     const auto count = static_cast<std::int64_t>(particles.size());
     const int workers = worker_count(static_cast<std::size_t>(threads), count, min_particles_per_thread);
     // In storage order, reading only per-particle arrays: a large scene is
     // stored by position, so this walks memory instead of jumping through
     // it. A pair is resolved once, at its lower stored index; accepted
     // collisions share no particle, so they resolve independently (and the
-    // exchange is symmetric, bit for bit, in its two particles).
-    parallel_for(workers, count, [&](std::int64_t i, std::size_t) {
-        // A partner stored a row of cells ahead is a cache miss: fetch it early.
-        if (i + partner_lookahead < count && partner[i + partner_lookahead] < wall_collision) {
-            __builtin_prefetch(&particles[partner[i + partner_lookahead]]);
+    // exchange is symmetric, bit for bit, in its two particles). Pairs wait
+    // for a second to share the exchange.
+    parallel_for(workers, (count + block - 1) / block, [&](std::int64_t b, std::size_t) {
+        const std::int64_t last = std::min(count, (b + 1) * block);
+        PairAtContact pairs[2];
+        int waiting = 0;
+        for (std::int64_t i = b * block; i < last; ++i) {
+            // A partner stored a row of cells ahead is a cache miss: fetch it early.
+            if (i + partner_lookahead < count && partner[i + partner_lookahead] < wall_collision) {
+                __builtin_prefetch(&particles[partner[i + partner_lookahead]]);
+            }
+            const std::uint32_t other = partner[i];
+            if (other == no_collision) continue;
+            if (other == wall_collision) {
+                resolve_wall(particles[i], collision_time[i], box, duration);
+            } else if (static_cast<std::uint32_t>(i) < other) {
+                pairs[waiting++] = at_contact(particles[i], particles[other], collision_time[i]);
+                if (waiting == 2) {
+                    resolve_two_pairs(pairs[0], pairs[1], box, duration);
+                    waiting = 0;
+                }
+            }
         }
-        const std::uint32_t other = partner[i];
-        if (other == no_collision) return;
-        if (other == wall_collision) {
-            resolve_wall(particles[i], collision_time[i], box, duration);
-        } else if (static_cast<std::uint32_t>(i) < other) {
-            resolve_pair(particles[i], particles[other], collision_time[i], box, duration);
-        }
+        if (waiting == 1) resolve_pair(pairs[0], box, duration);
     });
 }
 

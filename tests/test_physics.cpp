@@ -110,6 +110,51 @@ void exchange_conserves_energy_and_momentum() {
     CHECK(c.allFinite() && d.allFinite());
 }
 
+// Two collisions side by side in the lanes of a vector give the bits each
+// gives alone: contacts at every scale of the accepted range (a length of
+// 2^k times the radius, k from -190 to 190), tiny and zero relative speeds,
+// and coincident centres.
+void exchange_in_lanes_is_exchange_alone() {
+    using TwoLanes = double __attribute__((vector_size(16)));
+    SplitMix64 rng(78);
+    const auto same = [](double a, double b) {
+        return std::bit_cast<std::uint64_t>(a) == std::bit_cast<std::uint64_t>(b);
+    };
+    const auto random_contact = [&] {
+        const double scale = std::ldexp(1.0, static_cast<int>(380.0 * rng.uniform()) - 190);
+        const double speed_scale = rng.uniform() < 0.1 ? std::ldexp(scale, -200) : scale;
+        const auto value = [&](double unit) { return (rng.uniform() - 0.5) * unit; };
+        const Vec2 normal = random_direction(rng) * (2.0 * scale);
+        ContactPair<double> c{value(scale),       value(scale),      0.0, 0.0, value(speed_scale), value(speed_scale),
+                              value(speed_scale), value(speed_scale)};
+        c.pjx = c.pix + normal.x();
+        c.pjy = c.piy + normal.y();
+        if (rng.uniform() < 0.02) c.vjx = c.vix, c.vjy = c.viy;  // no relative motion
+        if (rng.uniform() < 0.01) c.pjx = c.pix, c.pjy = c.piy;  // coincident centres
+        return c;
+    };
+    int differing = 0;
+    for (int k = 0; k < 100000; ++k) {
+        ContactPair<double> alone[2] = {random_contact(), random_contact()};
+        const auto lanes = [&](double ContactPair<double>::*member) {
+            return TwoLanes{alone[0].*member, alone[1].*member};
+        };
+        ContactPair<TwoLanes> together{lanes(&ContactPair<double>::pix), lanes(&ContactPair<double>::piy),
+                                       lanes(&ContactPair<double>::pjx), lanes(&ContactPair<double>::pjy),
+                                       lanes(&ContactPair<double>::vix), lanes(&ContactPair<double>::viy),
+                                       lanes(&ContactPair<double>::vjx), lanes(&ContactPair<double>::vjy)};
+        exchange_normal_components(together);
+        for (int lane = 0; lane < 2; ++lane) {
+            ContactPair<double>& c = alone[lane];
+            exchange_normal_components(c);
+            const bool equal = same(c.vix, together.vix[lane]) && same(c.viy, together.viy[lane]) &&
+                               same(c.vjx, together.vjx[lane]) && same(c.vjy, together.vjy[lane]);
+            differing += equal ? 0 : 1;
+        }
+    }
+    CHECK_EQ(differing, 0);
+}
+
 void bounce_and_stop_at_wall() {
     // Bounce at t = 0.5 on x = 19: x is set exactly, vx negated, wc counted.
     Particle p;
@@ -143,5 +188,6 @@ int main(int argc, char** argv) {
                        {"contact times", contact_times},
                        {"contact time is symmetric to the bit", contact_time_is_symmetric_to_the_bit},
                        {"exchange conserves energy and momentum", exchange_conserves_energy_and_momentum},
+                       {"exchange in lanes is the exchange alone", exchange_in_lanes_is_exchange_alone},
                        {"bounce and stop at wall", bounce_and_stop_at_wall}});
 }
