@@ -308,37 +308,38 @@ void GridSearch::bin_slice(const PairSearchInput& in, int slice, SliceWorkspace&
     // is counted again with the long paths large instead.
     if (count_boxes(true) > ws.by_cell.size()) count_boxes(false);
 
-    // Each worker's first place in each cell, cell by cell: each range of
-    // cells sums its boxes, then, from where the ranges before it end, turns
-    // its counts into places. On a large scene a serial pass would leave the
-    // other threads waiting.
-    const auto ranges = static_cast<std::int64_t>(ws.range_start.size()) - 1;
-    const std::int64_t cells_per_range = (cells + ranges - 1) / ranges;
-    const auto for_each_range = [&](auto&& body) {
-        const int workers = worker_count(static_cast<std::size_t>(threads), cells, min_particles_per_thread);
-        parallel_for(workers, ranges, [&](std::int64_t range, std::size_t) {
-            body(range, range * cells_per_range, std::min(cells, (range + 1) * cells_per_range));
-        });
-    };
-    for_each_range([&](std::int64_t range, std::int64_t first, std::int64_t last) {
-        std::uint32_t boxes = 0;
-        for (std::int64_t worker = 0; worker < threads; ++worker) {
-            const std::uint32_t* counts = counts_of(worker);
-            for (std::int64_t cell = first; cell < last; ++cell) boxes += counts[cell];
-        }
-        ws.range_start[range + 1] = boxes;
-    });
-    ws.range_start[0] = 0;
-    std::partial_sum(ws.range_start.begin(), ws.range_start.end(), ws.range_start.begin());
-    for_each_range([&](std::int64_t range, std::int64_t first, std::int64_t last) {
-        std::uint32_t placed = ws.range_start[range];
+    // Each worker's first place in each cell, cell by cell, from `placed`.
+    const auto place_cells = [&](std::int64_t first, std::int64_t last, std::uint32_t placed) {
         for (std::int64_t cell = first; cell < last; ++cell) {
             for (std::int64_t worker = 0; worker < threads; ++worker) {
                 std::uint32_t& next = counts_of(worker)[cell];
                 placed += std::exchange(next, placed);
             }
         }
-    });
+    };
+    // On a large grid, in ranges of cells on every thread (a serial pass
+    // would leave the others waiting): each range sums its boxes, then
+    // places them from where the ranges before it end.
+    const auto ranges = static_cast<std::int64_t>(ws.range_start.size()) - 1;
+    const int range_workers = worker_count(static_cast<std::size_t>(threads), cells, min_particles_per_thread);
+    const auto for_each_range = [&](auto&& body) { parallel_for_ranges(range_workers, cells, ranges, body); };
+    if (range_workers == 1) {
+        place_cells(0, cells, 0);
+    } else {
+        for_each_range([&](std::int64_t range, std::int64_t first, std::int64_t last) {
+            std::uint32_t boxes = 0;
+            for (std::int64_t worker = 0; worker < threads; ++worker) {
+                const std::uint32_t* counts = counts_of(worker);
+                for (std::int64_t cell = first; cell < last; ++cell) boxes += counts[cell];
+            }
+            ws.range_start[range + 1] = boxes;
+        });
+        ws.range_start[0] = 0;
+        std::partial_sum(ws.range_start.begin(), ws.range_start.end(), ws.range_start.begin());
+        for_each_range([&](std::int64_t range, std::int64_t first, std::int64_t last) {
+            place_cells(first, last, ws.range_start[range]);
+        });
+    }
     ws.large_start[0] = 0;
     std::partial_sum(ws.large_start.begin(), ws.large_start.end(), ws.large_start.begin());
     ws.large.resize(ws.large_start[threads]);

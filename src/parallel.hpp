@@ -50,4 +50,16 @@ void parallel_for(int workers, std::int64_t count, Body&& body) {
     parallel_for_dynamic(workers, count, chunk, std::forward<Body>(body));
 }
 
+// body(range, first, last) for `ranges` equal ranges [first, last) of
+// [0, count) (the last ones may be empty), shared by `workers` threads: for
+// loops that count in one pass and write in a second, where each range
+// writes from the sum of the counts of the ranges before it.
+template <typename Body>
+void parallel_for_ranges(int workers, std::int64_t count, std::int64_t ranges, Body&& body) {
+    const std::int64_t per_range = (count + ranges - 1) / ranges;
+    parallel_for(workers, ranges, [&](std::int64_t range, std::size_t) {
+        body(range, std::min(count, range * per_range), std::min(count, (range + 1) * per_range));
+    });
+}
+
 }  // namespace particlesim

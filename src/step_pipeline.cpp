@@ -25,12 +25,7 @@ void detect_wall_candidates(std::span<const Particle> particles, const Box& box,
     // where the ranges before it end: in index order, on every thread.
     std::array<std::uint32_t, max_wall_ranges + 1> range_start{};
     const std::int64_t ranges = std::min<std::int64_t>(max_wall_ranges, 8 * std::int64_t{workers});
-    const std::int64_t per_range = (count + ranges - 1) / ranges;
-    const auto for_each_range = [&](auto&& body) {
-        parallel_for(workers, ranges, [&](std::int64_t range, std::size_t) {
-            body(range, range * per_range, std::min(count, (range + 1) * per_range));
-        });
-    };
+    const auto for_each_range = [&](auto&& body) { parallel_for_ranges(workers, count, ranges, body); };
     for_each_range([&](std::int64_t range, std::int64_t first, std::int64_t last) {
         std::uint32_t found = 0;
         for (std::int64_t i = first; i < last; ++i) {
