@@ -326,6 +326,7 @@ void GridSearch::bin_slice(const PairSearchInput& in, int slice, SliceWorkspace&
     if (range_workers == 1) {
         place_cells(0, cells, 0);
     } else {
+        std::fill(ws.range_start.begin(), ws.range_start.end(), 0U);  // a range past the end is not visited
         for_each_range([&](std::int64_t range, std::int64_t first, std::int64_t last) {
             std::uint32_t boxes = 0;
             for (std::int64_t worker = 0; worker < threads; ++worker) {
@@ -334,7 +335,6 @@ void GridSearch::bin_slice(const PairSearchInput& in, int slice, SliceWorkspace&
             }
             ws.range_start[range + 1] = boxes;
         });
-        ws.range_start[0] = 0;
         std::partial_sum(ws.range_start.begin(), ws.range_start.end(), ws.range_start.begin());
         for_each_range([&](std::int64_t range, std::int64_t first, std::int64_t last) {
             place_cells(first, last, ws.range_start[range]);

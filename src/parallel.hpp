@@ -50,16 +50,23 @@ void parallel_for(int workers, std::int64_t count, Body&& body) {
     parallel_for_dynamic(workers, count, chunk, std::forward<Body>(body));
 }
 
-// body(range, first, last) for `ranges` equal ranges [first, last) of
-// [0, count) (the last ones may be empty), shared by `workers` threads: for
-// loops that count in one pass and write in a second, where each range
-// writes from the sum of the counts of the ranges before it.
+// body(block, first, last) for the blocks [first, last) of `block_size`
+// items that cover [0, count) (the last one may be shorter), shared by
+// `workers` threads.
+template <typename Body>
+void parallel_for_blocks(int workers, std::int64_t count, std::int64_t block_size, Body&& body) {
+    parallel_for(workers, (count + block_size - 1) / block_size, [&](std::int64_t block, std::size_t) {
+        body(block, block * block_size, std::min(count, (block + 1) * block_size));
+    });
+}
+
+// The same in at most `ranges` blocks of equal size: for loops that count
+// in one pass and write in a second, where each range writes from the sum
+// of the counts of the ranges before it.
 template <typename Body>
 void parallel_for_ranges(int workers, std::int64_t count, std::int64_t ranges, Body&& body) {
-    const std::int64_t per_range = (count + ranges - 1) / ranges;
-    parallel_for(workers, ranges, [&](std::int64_t range, std::size_t) {
-        body(range, std::min(count, range * per_range), std::min(count, (range + 1) * per_range));
-    });
+    parallel_for_blocks(workers, count, std::max<std::int64_t>(1, (count + ranges - 1) / ranges),
+                        std::forward<Body>(body));
 }
 
 }  // namespace particlesim

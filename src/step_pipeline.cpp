@@ -22,7 +22,8 @@ void detect_wall_candidates(std::span<const Particle> particles, const Box& box,
     const auto count = static_cast<std::int64_t>(particles.size());
     const int workers = worker_count(static_cast<std::size_t>(threads), count, min_particles_per_thread);
     // Each range of particles counts its candidates, then writes them from
-    // where the ranges before it end: in index order, on every thread.
+    // where the ranges before it end: in index order, on every thread. (A
+    // range past the end, never visited, counts 0.)
     std::array<std::uint32_t, max_wall_ranges + 1> range_start{};
     const std::int64_t ranges = std::min<std::int64_t>(max_wall_ranges, 8 * std::int64_t{workers});
     const auto for_each_range = [&](auto&& body) { parallel_for_ranges(workers, count, ranges, body); };
@@ -90,10 +91,10 @@ StepCounts select_collisions(std::vector<Collision>& candidates, std::span<const
         const int workers = worker_count(static_cast<std::size_t>(threads), count, min_particles_per_thread);
         const bool shared = workers > 1;
         const auto for_each_block = [&](auto&& body) {
-            parallel_for(workers, blocks, [&](std::int64_t block, std::size_t) {
-                body(block, static_cast<std::uint32_t>(block * selection_block),
-                     static_cast<std::uint32_t>(std::min(count, (block + 1) * selection_block)));
-            });
+            parallel_for_blocks(workers, count, selection_block,
+                                [&](std::int64_t block, std::int64_t first, std::int64_t last) {
+                                    body(block, static_cast<std::uint32_t>(first), static_cast<std::uint32_t>(last));
+                                });
         };
         for_each_block([&](std::int64_t, std::uint32_t first, std::uint32_t last) {
             for (std::uint32_t k = first; k < last; ++k) {
@@ -237,11 +238,10 @@ void resolve_collisions(std::span<Particle> particles, std::span<const std::uint
     // collisions share no particle, so they resolve independently (and the
     // exchange is symmetric, bit for bit, in its two particles). Pairs wait
     // for a second to share the exchange.
-    parallel_for(workers, (count + block - 1) / block, [&](std::int64_t b, std::size_t) {
-        const std::int64_t last = std::min(count, (b + 1) * block);
+    parallel_for_blocks(workers, count, block, [&](std::int64_t, std::int64_t first, std::int64_t last) {
         PairAtContact pairs[2];
         int waiting = 0;
-        for (std::int64_t i = b * block; i < last; ++i) {
+        for (std::int64_t i = first; i < last; ++i) {
             // A partner stored a row of cells ahead is a cache miss: fetch it early.
             if (i + partner_lookahead < count && partner[i + partner_lookahead] < wall_collision) {
                 __builtin_prefetch(&particles[partner[i + partner_lookahead]]);
