@@ -347,16 +347,60 @@ private:
         const double reference = std::max(stamp_[i], stamp_[j]);
         const double delay = contact_time(position_at(j, reference) - position_at(i, reference),
                                           particles_[j].velocity - particles_[i].velocity, box_.contact_dist_sq);
-        if (delay == never) return;
-        const double time = not_before_now(reference + delay);
+        if (delay != never) keep_contact(i, j, reference + delay);
+    }
+
+    // consider_pair() for (i, j) and (i, k) at once, one pair in each lane:
+    // the same operations on the same values, so the same bits.
+    void consider_two_pairs(std::uint32_t i, std::uint32_t j, std::uint32_t k) {
+        last_step_.pair_tests += 2;
+        const Particle& own = particles_[i];
+        const Particle& first = particles_[j];
+        const Particle& second = particles_[k];
+        const TwoDoubles own_stamp{stamp_[i], stamp_[i]};
+        const TwoDoubles other_stamp{stamp_[j], stamp_[k]};
+        const TwoDoubles reference = own_stamp < other_stamp ? other_stamp : own_stamp;  // std::max
+        const TwoDoubles own_since = reference - own_stamp;
+        const TwoDoubles other_since = reference - other_stamp;
+        const TwoDoubles own_x = own.position.x() + own.velocity.x() * own_since;
+        const TwoDoubles own_y = own.position.y() + own.velocity.y() * own_since;
+        const TwoDoubles other_vx{first.velocity.x(), second.velocity.x()};
+        const TwoDoubles other_vy{first.velocity.y(), second.velocity.y()};
+        const TwoDoubles other_x = TwoDoubles{first.position.x(), second.position.x()} + other_vx * other_since;
+        const TwoDoubles other_y = TwoDoubles{first.position.y(), second.position.y()} + other_vy * other_since;
+        const TwoDoubles delay = contact_times(other_x - own_x, other_y - own_y, other_vx - own.velocity.x(),
+                                               other_vy - own.velocity.y(), box_.contact_dist_sq);
+        if (delay[0] != never) keep_contact(i, j, reference[0] + delay[0]);
+        if (delay[1] != never) keep_contact(i, k, reference[1] + delay[1]);
+    }
+
+    // The rest of consider_pair() for a contact at `contact`.
+    void keep_contact(std::uint32_t i, std::uint32_t j, double contact) {
+        const double time = not_before_now(contact);
         if (!(time < wall_time_[i] && time < wall_time_[j] && time <= pair_[i].event.time)) return;
         const Event event{time, EventKind::pair, std::min(i, j), std::max(i, j)};
         if (event < pair_[i].event) pair_[i] = {event, j, version(j)};
     }
 
+    // consider_pair(i, j) for every j that for_each_candidate(visit) visits,
+    // two at a time. The prediction kept is the earliest, whatever the order.
+    template <typename ForEachCandidate>
+    void consider_pairs(std::uint32_t i, ForEachCandidate&& for_each_candidate) {
+        std::uint32_t waiting = BucketLists::none;
+        for_each_candidate([&](std::uint32_t j) {
+            if (waiting == BucketLists::none) {
+                waiting = j;
+                return;
+            }
+            consider_two_pairs(i, waiting, j);
+            waiting = BucketLists::none;
+        });
+        if (waiting != BucketLists::none) consider_pair(i, waiting);
+    }
+
     void predict_pairs(std::uint32_t i) {
         pair_[i] = {};
-        for_each_neighbour(i, [&](std::uint32_t j) { consider_pair(i, j); });
+        consider_pairs(i, [&](auto&& visit) { for_each_neighbour(i, visit); });
     }
 
     // Puts the first of the particle's three predictions in the queue.
@@ -426,11 +470,13 @@ private:
         const int row = grid.row(cell);
         const int step_x = column - grid.column(old_cell);
         const int step_y = row - grid.row(old_cell);
-        for (int k = -1; k <= 1; ++k) {
-            const int new_column = step_x != 0 ? column + step_x : column + k;
-            const int new_row = step_x != 0 ? row + k : row + step_y;
-            cells_.for_each_in(new_column, new_row, [&](std::uint32_t j) { consider_pair(i, j); });
-        }
+        consider_pairs(i, [&](auto&& visit) {
+            for (int k = -1; k <= 1; ++k) {
+                const int new_column = step_x != 0 ? column + step_x : column + k;
+                const int new_row = step_x != 0 ? row + k : row + step_y;
+                cells_.for_each_in(new_column, new_row, visit);
+            }
+        });
         predict_crossing(i);
         reschedule(i);
     }

@@ -26,8 +26,12 @@ struct WallHit {
 // Both axes at once in two lanes, with selects instead of branches:
 // directions are random, so a branch on a sign is mispredicted half the time.
 // Each lane is the same IEEE arithmetic as a scalar (same bits everywhere).
+// Two doubles side by side (SSE2 on x86-64, NEON on AArch64), for two
+// computations at once: each lane is the same IEEE arithmetic as a double.
+using TwoDoubles = double __attribute__((vector_size(16)));
+
 inline WallHit time_to_wall(const Vec2& position, const Vec2& velocity, const Box& box) {
-    using Lanes = double __attribute__((vector_size(16)));
+    using Lanes = TwoDoubles;
     const Lanes where{position.x(), position.y()};
     const Lanes speed{velocity.x(), velocity.y()};
     const Lanes lower{box.lower, box.lower};
@@ -64,6 +68,29 @@ inline double contact_time(const Vec2& dp, const Vec2& dv, double contact_dist_s
     if (!(approaching & (touching | (quarter_disc > 0.0)))) return never;
     if (touching) return 0.0;
     return c / (std::sqrt(quarter_disc) - half_b);  // the smaller root, without cancellation
+}
+
+// contact_time() of two pairs at once, one in each lane, from the lanes of
+// dp and dv: the same bits as two calls, with no branch on either pair. Most
+// pairs an engine tests never meet; only a contact takes the square root.
+inline TwoDoubles contact_times(const TwoDoubles& dpx, const TwoDoubles& dpy, const TwoDoubles& dvx,
+                                const TwoDoubles& dvy, double contact_dist_sq) {
+    const TwoDoubles a = dvx * dvx + dvy * dvy;
+    const TwoDoubles half_b = dpx * dvx + dpy * dvy;
+    const TwoDoubles c = (dpx * dpx + dpy * dpy) - contact_dist_sq;
+    const TwoDoubles cross = dpx * dvy - dpy * dvx;
+    const TwoDoubles quarter_disc = contact_dist_sq * a - cross * cross;
+    // |dvx| + |dvy| != 0 exactly when either is nonzero.
+    const auto moving = (dvx != 0.0) | (dvy != 0.0);
+    const auto touching = c <= 0.0;
+    const auto meets = moving & (half_b < 0.0) & (touching | (quarter_disc > 0.0));
+    TwoDoubles times{never, never};
+    if ((meets[0] | meets[1]) == 0) return times;
+    for (int lane = 0; lane < 2; ++lane) {
+        if (meets[lane] == 0) continue;
+        times[lane] = touching[lane] != 0 ? 0.0 : c[lane] / (std::sqrt(quarter_disc[lane]) - half_b[lane]);
+    }
+    return times;
 }
 
 // Two disks overlap when their centres are closer than 2r by more than this

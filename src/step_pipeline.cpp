@@ -202,9 +202,8 @@ void resolve_pair(PairAtContact& pair, const Box& box, double duration) {
 // Two pairs at once, one in each lane of the exchange: the same bits as one
 // at a time, in about the time of one.
 void resolve_two_pairs(PairAtContact& first, PairAtContact& second, const Box& box, double duration) {
-    using TwoLanes = double __attribute__((vector_size(16)));
-    const auto lanes = [&](auto component) { return TwoLanes{component(first), component(second)}; };
-    ContactPair<TwoLanes> contact{
+    const auto lanes = [&](auto component) { return TwoDoubles{component(first), component(second)}; };
+    ContactPair<TwoDoubles> contact{
         lanes([](const PairAtContact& p) { return p.moved[0].position.x(); }),
         lanes([](const PairAtContact& p) { return p.moved[0].position.y(); }),
         lanes([](const PairAtContact& p) { return p.moved[1].position.x(); }),
