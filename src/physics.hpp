@@ -9,6 +9,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <limits>
 
 namespace particlesim {
@@ -72,7 +73,20 @@ inline double contact_time(const Vec2& dp, const Vec2& dv, double contact_dist_s
 
 // contact_time() of two pairs at once, one in each lane, from the lanes of
 // dp and dv: the same bits as two calls, with no branch on either pair. Most
-// pairs an engine tests never meet; only a contact takes the square root.
+// pairs an engine tests never meet; only a contact takes the square root,
+// out of line so that the common path keeps its values in registers.
+using TwoMasks = std::int64_t __attribute__((vector_size(16)));
+
+[[gnu::noinline, gnu::cold]] inline TwoDoubles meeting_times(TwoMasks meets, TwoMasks touching, TwoDoubles c,
+                                                             TwoDoubles quarter_disc, TwoDoubles half_b) {
+    TwoDoubles times{never, never};
+    for (int lane = 0; lane < 2; ++lane) {
+        if (meets[lane] == 0) continue;
+        times[lane] = touching[lane] != 0 ? 0.0 : c[lane] / (std::sqrt(quarter_disc[lane]) - half_b[lane]);
+    }
+    return times;
+}
+
 inline TwoDoubles contact_times(const TwoDoubles& dpx, const TwoDoubles& dpy, const TwoDoubles& dvx,
                                 const TwoDoubles& dvy, double contact_dist_sq) {
     const TwoDoubles a = dvx * dvx + dvy * dvy;
@@ -81,16 +95,13 @@ inline TwoDoubles contact_times(const TwoDoubles& dpx, const TwoDoubles& dpy, co
     const TwoDoubles cross = dpx * dvy - dpy * dvx;
     const TwoDoubles quarter_disc = contact_dist_sq * a - cross * cross;
     // |dvx| + |dvy| != 0 exactly when either is nonzero.
-    const auto moving = (dvx != 0.0) | (dvy != 0.0);
-    const auto touching = c <= 0.0;
-    const auto meets = moving & (half_b < 0.0) & (touching | (quarter_disc > 0.0));
-    TwoDoubles times{never, never};
-    if ((meets[0] | meets[1]) == 0) return times;
-    for (int lane = 0; lane < 2; ++lane) {
-        if (meets[lane] == 0) continue;
-        times[lane] = touching[lane] != 0 ? 0.0 : c[lane] / (std::sqrt(quarter_disc[lane]) - half_b[lane]);
-    }
-    return times;
+    const TwoMasks moving = (dvx != 0.0) | (dvy != 0.0);
+    const TwoMasks touching = c <= 0.0;
+    const TwoMasks crossing = quarter_disc > 0.0;
+    const TwoMasks approaching = half_b < 0.0;
+    const TwoMasks meets = moving & approaching & (touching | crossing);
+    if ((meets[0] | meets[1]) == 0) return TwoDoubles{never, never};
+    return meeting_times(meets, touching, c, quarter_disc, half_b);
 }
 
 // Two disks overlap when their centres are closer than 2r by more than this
