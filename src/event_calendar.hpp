@@ -1,7 +1,7 @@
 #pragma once
 // The exact engine's event queue: one entry per particle, holding the earliest
 // event predicted for it, in a calendar queue (R. Brown, CACM 1988). Entries
-// sit in time buckets of width `width_`, each a linked list; entries
+// sit in time buckets of width 1 / `buckets_per_time_`, each a linked list; entries
 // beyond the buckets' window wait in an overflow list. Replacing an entry is
 // O(1), and finding the earliest scans the first non-empty bucket, which
 // holds about one entry. Unlike a heap, the work per event stays in a few
@@ -86,7 +86,7 @@ private:
     // waits in the overflow while the window is used up.
     [[nodiscard]] std::uint32_t bucket_of(double time) const {
         if (current_ == buckets_) return overflow();
-        const double offset = (time - base_) / width_;
+        const double offset = (time - base_) * buckets_per_time_;
         if (!(offset < static_cast<double>(buckets_))) return overflow();  // also `never` and NaN-free infinities
         return std::max(current_, static_cast<std::uint32_t>(std::max(offset, 0.0)));
     }
@@ -117,20 +117,23 @@ private:
         std::nth_element(times_.begin(), times_.begin() + static_cast<std::ptrdiff_t>(sample), times_.end());
         const double spread = times_[sample] - base_;
         // About one entry a bucket over the first filled_by_half_ buckets; a
-        // positive width even when many events share one instant.
-        width_ =
-            spread > 0.0 ? spread / static_cast<double>(filled_by_half_) : std::max(std::abs(base_) * 1e-12, 1e-300);
+        // positive width even when many events share one instant, and one
+        // whose inverse is finite. Bucket indices are then a product instead
+        // of a quotient: either is monotonic in time, and that is all the
+        // order of events needs.
+        const double width = spread > 0.0 ? spread / static_cast<double>(filled_by_half_) : std::abs(base_) * 1e-12;
+        buckets_per_time_ = 1.0 / std::max(width, 1e-300);
         current_ = 0;
         lists_.refill_all([&](std::uint32_t owner) { return bucket_of(events_[owner].time); });
     }
 
     std::uint32_t filled_by_half_;  // buckets holding the earliest half of the entries after a rebuild
     std::uint32_t buckets_;
-    BucketLists lists_;          // owners by bucket; the last bucket is the overflow
-    std::vector<Event> events_;  // by owner
-    std::vector<double> times_;  // scratch of rebuild_window()
-    double base_ = 0.0;          // start time of bucket 0
-    double width_ = 1.0;
+    BucketLists lists_;              // owners by bucket; the last bucket is the overflow
+    std::vector<Event> events_;      // by owner
+    std::vector<double> times_;      // scratch of rebuild_window()
+    double base_ = 0.0;              // start time of bucket 0
+    double buckets_per_time_ = 1.0;  // the inverse of a bucket's width
     std::uint32_t current_ = 0;      // no entry lies in an earlier bucket
     std::uint32_t earliest_ = none;  // cached; none when unknown
 };

@@ -10,7 +10,9 @@ namespace particlesim {
 
 template <typename Event>
 bool comes_before(const Event& a, const Event& b) {
-    return std::tie(a.time, a.kind, a.i, a.j) < std::tie(b.time, b.kind, b.i, b.j);
+    // Times almost always differ: decided by one comparison.
+    if (a.time != b.time) return a.time < b.time;
+    return std::tie(a.kind, a.i, a.j) < std::tie(b.kind, b.i, b.j);
 }
 
 }  // namespace particlesim

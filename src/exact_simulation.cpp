@@ -310,11 +310,14 @@ private:
 
     // The next time the particle leaves its cell, and the cell it enters.
     void predict_crossing(std::uint32_t i) {
+        const std::uint32_t cell = cells_.cell_of_particle(i);
+        predict_crossing(i, cells_.grid().column(cell), cells_.grid().row(cell));
+    }
+
+    // The same for a particle in the cell at (column, row).
+    void predict_crossing(std::uint32_t i, int column, int row) {
         const Particle& p = particles_[i];
         const UniformGrid& grid = cells_.grid();
-        const std::uint32_t cell = cells_.cell_of_particle(i);
-        int column = grid.column(cell);
-        int row = grid.row(cell);
         const auto exit_delay = [&](double position, double velocity, int index) {
             if (velocity > 0.0 && index + 1 < grid.per_side())
                 return ((index + 1) * grid.cell_size() - position) / velocity;
@@ -468,8 +471,10 @@ private:
         const UniformGrid& grid = cells_.grid();
         const int column = grid.column(cell);
         const int row = grid.row(cell);
-        const int step_x = column - grid.column(old_cell);
-        const int step_y = row - grid.row(old_cell);
+        // The cell entered is the next one along one axis, so the step is
+        // told by the indices alone (one division fewer).
+        const int step_x = cell == old_cell + 1 ? 1 : (cell + 1 == old_cell ? -1 : 0);
+        const int step_y = step_x != 0 ? 0 : (cell > old_cell ? 1 : -1);
         consider_pairs(i, [&](auto&& visit) {
             for (int k = -1; k <= 1; ++k) {
                 const int new_column = step_x != 0 ? column + step_x : column + k;
@@ -477,7 +482,7 @@ private:
                 cells_.for_each_in(new_column, new_row, visit);
             }
         });
-        predict_crossing(i);
+        predict_crossing(i, column, row);
         reschedule(i);
     }
 
