@@ -1,6 +1,8 @@
 // The exact engine's calendar queue against a brute-force minimum, over
 // random schedules like the engine's: times never go back, many ties, events
-// that never happen, bursts far in the future, and a window rebuilt often.
+// that never happen, bursts far in the future, and a window rebuilt often;
+// at time scales from subnormal spreads (bucket widths below the smallest
+// normal double) to 1e300.
 
 #include "check.hpp"
 
@@ -19,23 +21,23 @@ namespace {
 
 constexpr double never = std::numeric_limits<double>::infinity();
 
-double delay(particlesim::SplitMix64& rng) {
+double delay(particlesim::SplitMix64& rng, double scale) {
     switch (rng.next() % 6) {
-    case 0: return 0.0;                                  // a tie with the present
-    case 1: return never;                                // nothing predicted
-    case 2: return 1e6 * rng.uniform();                  // far in the future
-    case 3: return static_cast<double>(rng.next() % 4);  // ties on a coarse grid
-    default: return rng.uniform();
+    case 0: return 0.0;                                          // a tie with the present
+    case 1: return never;                                        // nothing predicted
+    case 2: return scale * 1e6 * rng.uniform();                  // far in the future
+    case 3: return scale * static_cast<double>(rng.next() % 4);  // ties on a coarse grid
+    default: return scale * rng.uniform();
     }
 }
 
-void matches_brute_force(std::uint32_t owners, std::uint64_t seed, int operations) {
+void matches_brute_force(std::uint32_t owners, std::uint64_t seed, int operations, double scale = 1.0) {
     particlesim::SplitMix64 rng(seed);
     std::vector<Event> events(owners, Event{never, EventKind::cell_crossing, 0, 0});
     EventCalendar calendar(owners, events[0]);
     const auto random_event = [&](double now) {
         const auto kind = static_cast<EventKind>(rng.next() % 3);
-        return Event{now + delay(rng), kind, static_cast<std::uint32_t>(rng.next() % 8),
+        return Event{now + delay(rng, scale), kind, static_cast<std::uint32_t>(rng.next() % 8),
                      static_cast<std::uint32_t>(rng.next() % 8)};
     };
     for (std::uint32_t owner = 0; owner < owners; ++owner) {
@@ -80,6 +82,10 @@ int main(int argc, char** argv) {
                             for (const std::uint32_t owners : {1U, 2U, 7U, 100U, 5000U, 20000U}) {
                                 for (std::uint64_t seed = 0; seed < 4; ++seed)
                                     matches_brute_force(owners, seed, owners < 1000 ? 20000 : 4000);
+                            }
+                            for (const double scale : {1e-320, 1e-310, 1e-300, 1e300}) {
+                                for (const std::uint32_t owners : {2U, 100U, 5000U})
+                                    matches_brute_force(owners, 7, 4000, scale);
                             }
                         }}});
 }
