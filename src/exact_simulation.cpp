@@ -339,12 +339,10 @@ private:
         crossing_[i] = {not_before_now(stamp_[i] + delay), grid.cell_at(column, row)};
     }
 
-    // Keeps the pair event of (i, j) as i's pair prediction if it comes first.
-    // Pair events at or after either particle's wall event can never happen:
-    // the wall event comes first in the order and changes a velocity.
-    // The event is built only for a contact that comes in time: most pairs
-    // tested never meet. contact_time() gives the same bits for (i, j) and
-    // (j, i) (negating dp and dv changes no product), so i comes first.
+    // Tests the pair (i, j) at the later of their stamps, and keeps a contact
+    // as i's pair prediction if it comes first. contact_time() gives the same
+    // bits for (i, j) and (j, i) (negating dp and dv changes no product), so i
+    // comes first.
     void consider_pair(std::uint32_t i, std::uint32_t j) {
         ++last_step_.pair_tests;
         const double reference = std::max(stamp_[i], stamp_[j]);
@@ -377,7 +375,11 @@ private:
         if (delay[1] != never) keep_contact(i, k, reference[1] + delay[1]);
     }
 
-    // The rest of consider_pair() for a contact at `contact`.
+    // Keeps the pair event of (i, j), a contact at `contact`, as i's pair
+    // prediction if it comes first. Pair events at or after either
+    // particle's wall event can never happen: the wall event comes first in
+    // the order and changes a velocity. The event is built only for a
+    // contact that comes in time: most pairs tested never meet.
     void keep_contact(std::uint32_t i, std::uint32_t j, double contact) {
         const double time = not_before_now(contact);
         if (!(time < wall_time_[i] && time < wall_time_[j] && time <= pair_[i].event.time)) return;

@@ -22,15 +22,15 @@ struct WallHit {
     bool on_y = false;  // both: a corner hit
 };
 
+// Two doubles side by side (SSE2 on x86-64, NEON on AArch64), for two
+// computations at once: each lane is the same IEEE arithmetic as a double.
+using TwoDoubles = double __attribute__((vector_size(16)));
+
 // The time for each coordinate to reach the wall it moves towards (`never`
 // without motion on it), the earlier of the two, and which it was.
 // Both axes at once in two lanes, with selects instead of branches:
 // directions are random, so a branch on a sign is mispredicted half the time.
 // Each lane is the same IEEE arithmetic as a scalar (same bits everywhere).
-// Two doubles side by side (SSE2 on x86-64, NEON on AArch64), for two
-// computations at once: each lane is the same IEEE arithmetic as a double.
-using TwoDoubles = double __attribute__((vector_size(16)));
-
 inline WallHit time_to_wall(const Vec2& position, const Vec2& velocity, const Box& box) {
     using Lanes = TwoDoubles;
     const Lanes where{position.x(), position.y()};

@@ -155,7 +155,6 @@ void exchange_conserves_energy_and_momentum() {
 // 2^k times the radius, k from -190 to 190), tiny and zero relative speeds,
 // and coincident centres.
 void exchange_in_lanes_is_exchange_alone() {
-    using TwoLanes = TwoDoubles;
     SplitMix64 rng(78);
     const auto same = [](double a, double b) {
         return std::bit_cast<std::uint64_t>(a) == std::bit_cast<std::uint64_t>(b);
@@ -177,12 +176,12 @@ void exchange_in_lanes_is_exchange_alone() {
     for (int k = 0; k < 100000; ++k) {
         ContactPair<double> alone[2] = {random_contact(), random_contact()};
         const auto lanes = [&](double ContactPair<double>::*member) {
-            return TwoLanes{alone[0].*member, alone[1].*member};
+            return TwoDoubles{alone[0].*member, alone[1].*member};
         };
-        ContactPair<TwoLanes> together{lanes(&ContactPair<double>::pix), lanes(&ContactPair<double>::piy),
-                                       lanes(&ContactPair<double>::pjx), lanes(&ContactPair<double>::pjy),
-                                       lanes(&ContactPair<double>::vix), lanes(&ContactPair<double>::viy),
-                                       lanes(&ContactPair<double>::vjx), lanes(&ContactPair<double>::vjy)};
+        ContactPair<TwoDoubles> together{lanes(&ContactPair<double>::pix), lanes(&ContactPair<double>::piy),
+                                         lanes(&ContactPair<double>::pjx), lanes(&ContactPair<double>::pjy),
+                                         lanes(&ContactPair<double>::vix), lanes(&ContactPair<double>::viy),
+                                         lanes(&ContactPair<double>::vjx), lanes(&ContactPair<double>::vjy)};
         exchange_normal_components(together);
         for (int lane = 0; lane < 2; ++lane) {
             ContactPair<double>& c = alone[lane];
