@@ -17,28 +17,31 @@ public:
 
     // Every item starts in no bucket; insert() places it.
     BucketLists(std::size_t buckets, std::size_t items)
-        : head_(buckets, none), next_(items, none), previous_(items, none), bucket_(items, 0) {}
+        : items_(items), head_(buckets, none), next_(items + 1, none), previous_(items + 1, none), bucket_(items, 0) {}
 
     [[nodiscard]] std::uint32_t bucket_of(std::uint32_t item) const { return bucket_[item]; }
     [[nodiscard]] std::uint32_t first(std::uint32_t bucket) const { return head_[bucket]; }
     [[nodiscard]] std::uint32_t next(std::uint32_t item) const { return next_[item]; }
 
+    // Without branches on whether a neighbour exists (in a queue or a cell
+    // list that is random, and was mispredicted half the time): a link of a
+    // missing neighbour is written to a spare slot past the last item, and
+    // the head is always written, with its own value when it stays.
     void insert(std::uint32_t item, std::uint32_t bucket) {
+        const std::uint32_t first = head_[bucket];
         bucket_[item] = bucket;
         previous_[item] = none;
-        next_[item] = head_[bucket];
-        if (head_[bucket] != none) previous_[head_[bucket]] = item;
+        next_[item] = first;
+        previous_[slot(first)] = item;
         head_[bucket] = item;
     }
     void remove(std::uint32_t item) {
         const std::uint32_t before = previous_[item];
         const std::uint32_t after = next_[item];
-        if (before != none) {
-            next_[before] = after;
-        } else {
-            head_[bucket_[item]] = after;
-        }
-        if (after != none) previous_[after] = before;
+        const std::uint32_t bucket = bucket_[item];
+        next_[slot(before)] = after;
+        head_[bucket] = before == none ? after : head_[bucket];
+        previous_[slot(after)] = before;
     }
     void move(std::uint32_t item, std::uint32_t bucket) {
         remove(item);
@@ -51,7 +54,7 @@ public:
     template <typename BucketFor>
     void refill_all(BucketFor&& bucket_for) {
         std::fill(head_.begin(), head_.end(), none);
-        for (std::uint32_t item = 0; item < next_.size(); ++item) insert(item, bucket_for(item));
+        for (std::uint32_t item = 0; item < items_; ++item) insert(item, bucket_for(item));
     }
 
     // visit(item) for every item in the bucket.
@@ -61,8 +64,12 @@ public:
     }
 
 private:
+    // The item's own slot, or the spare one for `none` (above every item).
+    [[nodiscard]] std::size_t slot(std::uint32_t item) const { return std::min<std::size_t>(item, items_); }
+
+    std::size_t items_;
     std::vector<std::uint32_t> head_;
-    std::vector<std::uint32_t> next_;
+    std::vector<std::uint32_t> next_;  // and previous_: one more than the items, the spare slot
     std::vector<std::uint32_t> previous_;
     std::vector<std::uint32_t> bucket_;
 };

@@ -318,24 +318,28 @@ private:
     void predict_crossing(std::uint32_t i, int column, int row) {
         const Particle& p = particles_[i];
         const UniformGrid& grid = cells_.grid();
-        const auto exit_delay = [&](double position, double velocity, int index) {
-            if (velocity > 0.0 && index + 1 < grid.per_side())
-                return ((index + 1) * grid.cell_size() - position) / velocity;
-            if (velocity < 0.0 && index > 0) return (index * grid.cell_size() - position) / velocity;
-            return never;
-        };
-        const double along_x = exit_delay(p.position.x(), p.velocity.x(), column);
-        const double along_y = exit_delay(p.position.y(), p.velocity.y(), row);
+        // Both axes at once, each lane the time to the cell edge it moves
+        // towards (`never` at the grid's edge or without motion), with
+        // selects instead of branches on the velocity's signs, which are
+        // random (as in time_to_wall()); the same IEEE operations as one
+        // axis at a time.
+        const TwoDoubles where{p.position.x(), p.position.y()};
+        const TwoDoubles speed{p.velocity.x(), p.velocity.y()};
+        const TwoDoubles index{static_cast<double>(column), static_cast<double>(row)};
+        const double last = static_cast<double>(grid.per_side() - 1);
+        const TwoDoubles edge = (speed > 0.0 ? index + 1.0 : index) * grid.cell_size();
+        const TwoMasks exits = ((speed > 0.0) & (index < last)) | ((speed < 0.0) & (index > 0.0));
+        const TwoDoubles to_edge = exits ? (edge - where) / speed : TwoDoubles{never, never};
+        const double along_x = to_edge[0];
+        const double along_y = to_edge[1];
         const double delay = std::min(along_x, along_y);
         if (delay == never) {
             crossing_[i] = {};
             return;
         }
-        if (along_x <= along_y) {
-            column += p.velocity.x() > 0.0 ? 1 : -1;
-        } else {
-            row += p.velocity.y() > 0.0 ? 1 : -1;
-        }
+        const bool x_first = along_x <= along_y;
+        column += x_first ? (p.velocity.x() > 0.0 ? 1 : -1) : 0;
+        row += x_first ? 0 : (p.velocity.y() > 0.0 ? 1 : -1);
         crossing_[i] = {not_before_now(stamp_[i] + delay), grid.cell_at(column, row)};
     }
 
@@ -474,14 +478,17 @@ private:
         const int column = grid.column(cell);
         const int row = grid.row(cell);
         // The cell entered is the next one along one axis, so the step is
-        // told by the indices alone (one division fewer).
-        const int step_x = cell == old_cell + 1 ? 1 : (cell + 1 == old_cell ? -1 : 0);
-        const int step_y = step_x != 0 ? 0 : (cell > old_cell ? 1 : -1);
+        // told by the indices alone (one division fewer). The three cells
+        // that become neighbours lie one further along that axis and run
+        // across the other. All in arithmetic: the axis and the direction
+        // are random, and branches on them were mispredicted half the time.
+        const int step_x = static_cast<int>(cell == old_cell + 1) - static_cast<int>(cell + 1 == old_cell);
+        const int across_x = 1 - step_x * step_x;  // 1 when the step is along y
+        const int step_y = across_x * (2 * static_cast<int>(cell > old_cell) - 1);
+        const int across_y = 1 - across_x;
         consider_pairs(i, [&](auto&& visit) {
             for (int k = -1; k <= 1; ++k) {
-                const int new_column = step_x != 0 ? column + step_x : column + k;
-                const int new_row = step_x != 0 ? row + k : row + step_y;
-                cells_.for_each_in(new_column, new_row, visit);
+                cells_.for_each_in(column + step_x + across_x * k, row + step_y + across_y * k, visit);
             }
         });
         predict_crossing(i, column, row);
