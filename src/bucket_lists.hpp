@@ -40,7 +40,8 @@ public:
         const std::uint32_t after = next_[item];
         const std::uint32_t bucket = bucket_[item];
         next_[slot(before)] = after;
-        head_[bucket] = before == none ? after : head_[bucket];
+        const std::uint32_t keep_head = before == none ? 0U : ~0U;  // a mask: no branch
+        head_[bucket] = (head_[bucket] & keep_head) | (after & ~keep_head);
         previous_[slot(after)] = before;
     }
     void move(std::uint32_t item, std::uint32_t bucket) {

@@ -25,7 +25,9 @@ public:
     // visit(j) for every particle in the cell at (column, row), if it exists.
     template <typename Visit>
     void for_each_in(int column, int row, Visit&& visit) const {
-        if (column < 0 || row < 0 || column >= grid_.per_side() || row >= grid_.per_side()) return;
+        // One test for all four edges (a negative index wraps to a large one).
+        const auto side = static_cast<unsigned>(grid_.per_side());
+        if ((static_cast<unsigned>(column) >= side) | (static_cast<unsigned>(row) >= side)) return;
         members_.for_each_in(grid_.cell_at(column, row), visit);
     }
 

@@ -337,9 +337,9 @@ private:
             crossing_[i] = {};
             return;
         }
-        const bool x_first = along_x <= along_y;
-        column += x_first ? (p.velocity.x() > 0.0 ? 1 : -1) : 0;
-        row += x_first ? 0 : (p.velocity.y() > 0.0 ? 1 : -1);
+        const int x_first = static_cast<int>(along_x <= along_y);
+        column += x_first * (2 * static_cast<int>(p.velocity.x() > 0.0) - 1);
+        row += (1 - x_first) * (2 * static_cast<int>(p.velocity.y() > 0.0) - 1);
         crossing_[i] = {not_before_now(stamp_[i] + delay), grid.cell_at(column, row)};
     }
 
