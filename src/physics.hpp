@@ -25,6 +25,7 @@ struct WallHit {
 // Two doubles side by side (SSE2 on x86-64, NEON on AArch64), for two
 // computations at once: each lane is the same IEEE arithmetic as a double.
 using TwoDoubles = double __attribute__((vector_size(16)));
+using TwoMasks = std::int64_t __attribute__((vector_size(16)));  // what comparing two lanes gives
 
 // The time for each coordinate to reach the wall it moves towards (`never`
 // without motion on it), the earlier of the two, and which it was.
@@ -71,12 +72,8 @@ inline double contact_time(const Vec2& dp, const Vec2& dv, double contact_dist_s
     return c / (std::sqrt(quarter_disc) - half_b);  // the smaller root, without cancellation
 }
 
-// contact_time() of two pairs at once, one in each lane, from the lanes of
-// dp and dv: the same bits as two calls, with no branch on either pair. Most
-// pairs an engine tests never meet; only a contact takes the square root,
-// out of line so that the common path keeps its values in registers.
-using TwoMasks = std::int64_t __attribute__((vector_size(16)));
-
+// The rare end of contact_times(), out of line so that the common path
+// keeps its values in registers: the lanes that meet, one at a time.
 [[gnu::noinline, gnu::cold]] inline TwoDoubles meeting_times(TwoMasks meets, TwoMasks touching, TwoDoubles c,
                                                              TwoDoubles quarter_disc, TwoDoubles half_b) {
     TwoDoubles times{never, never};
@@ -87,6 +84,10 @@ using TwoMasks = std::int64_t __attribute__((vector_size(16)));
     return times;
 }
 
+// contact_time() of two pairs at once, one in each lane, from the lanes of
+// dp and dv: the same bits as two calls, with no branch on either pair. Most
+// pairs an engine tests never meet; only a contact takes the square root.
+// (contact_time() stays for one pair: a lane left idle costs more than it.)
 inline TwoDoubles contact_times(const TwoDoubles& dpx, const TwoDoubles& dpy, const TwoDoubles& dvx,
                                 const TwoDoubles& dvy, double contact_dist_sq) {
     const TwoDoubles a = dvx * dvx + dvy * dvy;
