@@ -90,6 +90,7 @@ const char* search_name(PairSearch search) {
     case PairSearch::brute_force: return "brute";
     case PairSearch::grid: return "grid";
     case PairSearch::automatic: return "auto";
+    case PairSearch::paths: return "paths";
     }
     return "?";
 }

@@ -7,6 +7,8 @@
 #include "options_check.hpp"
 #include "pair_search.hpp"
 #include "parallel.hpp"
+#include "particlesim/exact_simulation.hpp"
+#include "path_search.hpp"
 #include "saved_state.hpp"
 #include "scene_checks.hpp"
 #include "step_pipeline.hpp"
@@ -18,6 +20,24 @@ namespace {
 
 // Below this many particles the brute-force search is the faster one.
 constexpr std::size_t brute_force_is_faster_below = 48;
+
+// The paths search tests each particle that collided against all the others:
+// it beats the grid while fewer collisions than this are expected in a
+// micro-step (about one in four particles colliding in the default scene's
+// steps, measured in docs/benchmarks.md). Its first micro-step tests all
+// N^2 / 2 pairs, which bounds the scenes it is chosen for.
+constexpr double paths_below_collisions_per_micro_step = 800.0;
+constexpr std::size_t paths_up_to = 20000;
+
+PairSearch automatic_search(const World& world, std::span<const Particle> particles, int substeps) {
+    const std::size_t count = particles.size();
+    if (count < brute_force_is_faster_below) return PairSearch::brute_force;
+    if (count <= paths_up_to &&
+        estimated_events_per_step(world, particles) / substeps < paths_below_collisions_per_micro_step) {
+        return PairSearch::paths;
+    }
+    return PairSearch::grid;
+}
 
 // Automatic sorting by position: from this many particles on (below, they
 // stay in the caches in any order), every this many steps (particles fast
@@ -53,9 +73,7 @@ public:
         if (sort_every_ > 0) storage_order_.reserve(count);
         threads_ = options_.threads.value_or(default_thread_count());
         search_ = options_.pair_search;
-        if (search_ == PairSearch::automatic) {
-            search_ = count < brute_force_is_faster_below ? PairSearch::brute_force : PairSearch::grid;
-        }
+        if (search_ == PairSearch::automatic) search_ = automatic_search(world_, particles_, options_.substeps);
         wall_time_.resize(count);
         partner_.assign(count, no_collision);
         selection_ = SelectionScratch(count);
@@ -77,6 +95,7 @@ public:
         last_step_ = {};
         if (sort_every_ > 0 && (storage_order_.is_user_order() || steps_done_ % sort_every_ == 0)) {
             storage_order_.sort_by_position(particles_, box_);
+            paths_.forget();
         }
         // 1.0 / 1 is exactly 1.0: one substep is the plain step rules, bit for bit.
         const double duration = 1.0 / options_.substeps;
@@ -105,6 +124,8 @@ private:
         const PairSearchInput input{particles_, wall_time_, box_, duration};
         if (search_ == PairSearch::brute_force) {
             find_pairs_brute_force(input, thread_candidates_);
+        } else if (search_ == PairSearch::paths) {
+            paths_.find_pairs(input, thread_candidates_);
         } else {
             grid_.find_pairs(input, options_.grid_cells, thread_candidates_);
         }
@@ -137,6 +158,7 @@ private:
     std::vector<Collision> candidates_;
     std::vector<ThreadCandidates> thread_candidates_;
     GridSearch grid_;
+    PathSearch paths_;
 
     std::int64_t steps_done_ = 0;
     StepCounts last_step_;

@@ -174,7 +174,7 @@ void bad_usage() {
     expect_rejected({"--threads", "0"}, scene, "simcli: --threads", "expected an integer in [1, 1024]");
     expect_rejected({"-t", "two"}, scene, "simcli: --threads", "\"two\"");
     expect_rejected({"--seed", "-1"}, scene, "simcli: --seed", "expected an integer");
-    expect_rejected({"--broadphase", "octree"}, scene, "simcli: --broadphase", "expected auto, brute or grid");
+    expect_rejected({"--broadphase", "octree"}, scene, "simcli: --broadphase", "expected auto, brute, grid or paths");
     expect_rejected({"--grid", "0"}, scene, "simcli: --grid", "[1, 4096]");
     expect_rejected({"--grid", "4097"}, scene, "simcli: --grid", "[1, 4096]");  // refused, not clamped
     expect_rejected({"--broadphase", "brute", "--grid", "4"}, scene, "simcli: --grid", "not with --broadphase brute");

@@ -1,5 +1,6 @@
-// The grid search must find exactly the brute-force candidate set in every
-// step, whatever the speeds, cells and threads, hence byte-identical runs.
+// The grid search and the paths search must find exactly the brute-force
+// candidate set in every step, whatever the speeds, cells and threads, hence
+// byte-identical runs.
 // 200 random scenes: sparse and dense boxes, slow particles and particles
 // faster than the box per step, overlapping starts, particles on walls; and
 // clustered scenes that overflow the cells of the grid.
@@ -11,6 +12,7 @@
 #include "brute_force_search.hpp"
 #include "grid_search.hpp"
 #include "particlesim/stepped_simulation.hpp"
+#include "path_search.hpp"
 #include "step_pipeline.hpp"
 
 #include <algorithm>
@@ -20,6 +22,14 @@
 using namespace particlesim;
 
 namespace {
+
+std::vector<Collision> merged(const std::vector<ThreadCandidates>& buffers) {
+    std::vector<Collision> all;
+    for (const ThreadCandidates& thread : buffers) all.insert(all.end(), thread.found.begin(), thread.found.end());
+    std::sort(all.begin(), all.end());
+    all.erase(std::unique(all.begin(), all.end()), all.end());
+    return all;
+}
 
 // Candidates of one search on one state, merged and in the total order.
 std::vector<Collision> pair_candidates(const PairSearchInput& in, std::optional<int> grid_cells, bool brute,
@@ -31,27 +41,32 @@ std::vector<Collision> pair_candidates(const PairSearchInput& in, std::optional<
         GridSearch grid;
         grid.find_pairs(in, grid_cells, buffers);
     }
-    std::vector<Collision> all;
-    for (const ThreadCandidates& thread : buffers) all.insert(all.end(), thread.found.begin(), thread.found.end());
-    std::sort(all.begin(), all.end());
-    all.erase(std::unique(all.begin(), all.end()), all.end());
-    return all;
+    return merged(buffers);
 }
 
 // Runs the scene with the brute force, comparing at every step the grid's
-// candidate set (with `grid_cells`, or sized from the motion) on the same state.
+// candidate set (with `grid_cells`, or sized from the motion) and the paths
+// search's (which keeps its lines from step to step) on the same state.
 bool same_candidates_every_step(const random_scenes::TestScene& scene, std::optional<int> grid_cells, int threads) {
     SteppedSimulation sim(scene.world, scene.particles, {.pair_search = PairSearch::brute_force, .threads = 1});
     const Box box = Box::of(scene.world);
     std::vector<double> wall_time(scene.particles.size());
     std::vector<Collision> walls;
+    PathSearch paths;
+    std::vector<ThreadCandidates> path_buffers(static_cast<std::size_t>(threads));
+    bool same = true;
     for (std::int64_t s = 0; s < scene.steps; ++s) {
         detect_wall_candidates(sim.particles(), box, 1.0, wall_time, walls, 1);
         const PairSearchInput in{sim.particles(), wall_time, box, 1.0};
-        if (pair_candidates(in, std::nullopt, true, 1) != pair_candidates(in, grid_cells, false, threads)) return false;
+        const std::vector<Collision> reference = pair_candidates(in, std::nullopt, true, 1);
+        for (ThreadCandidates& buffer : path_buffers) buffer.found.clear();
+        paths.find_pairs(in, path_buffers);
+        const bool same_step =
+            reference == pair_candidates(in, grid_cells, false, threads) && reference == merged(path_buffers);
+        same = same && same_step;
         sim.step();
     }
-    return true;
+    return same;
 }
 
 std::uint64_t run_hash(const random_scenes::TestScene& scene, const SteppedOptions& options) {
@@ -90,19 +105,45 @@ int main(int argc, char** argv) {
                            reference);
                   CHECK_EQ(run_hash(scene, {.threads = threads}), reference);
                   CHECK_EQ(run_hash(scene, {.pair_search = PairSearch::brute_force, .threads = threads}), reference);
+                  CHECK_EQ(run_hash(scene, {.pair_search = PairSearch::paths, .threads = threads}), reference);
               }
           }},
          // Clusters of fast particles crowd a few cells, and many of their paths
          // are too long for a cell: cut into pieces, set aside as large boxes, or
          // (when the pieces would overflow the buffers) recounted as large.
+         // The paths search over more than 1024 micro-steps (its lines made
+         // afresh), with substeps, and with the particles stored sorted by
+         // position every few steps (its lines forgotten).
+         {"paths search over long runs",
+          [] {
+              for (std::uint64_t k = 0; k < 6; ++k) {
+                  random_scenes::TestScene scene = random_scenes::make(k * 7 + 3);
+                  scene.particles.resize(std::min<std::size_t>(scene.particles.size(), 60));
+                  scene.steps = 1100;
+                  const int threads = thread_counts[k % 4];
+                  const check::Context context("scene ", k * 7 + 3, ", ", threads, " threads");
+                  const std::uint64_t reference =
+                      run_hash(scene, {.pair_search = PairSearch::brute_force, .threads = 1});
+                  CHECK_EQ(run_hash(scene, {.pair_search = PairSearch::paths, .threads = threads}), reference);
+                  CHECK_EQ(
+                      run_hash(scene,
+                               {.pair_search = PairSearch::paths, .threads = threads, .sort_by_position_every = 5}),
+                      reference);
+                  scene.steps = 400;
+                  CHECK_EQ(run_hash(scene, {.pair_search = PairSearch::paths, .threads = threads, .substeps = 3}),
+                           run_hash(scene, {.pair_search = PairSearch::brute_force, .threads = 1, .substeps = 3}));
+              }
+          }},
          {"clustered scenes", [] {
               for (std::uint64_t k = 0; k < 12; ++k) {
                   const random_scenes::TestScene scene = random_scenes::make_clustered(k);
                   const int threads = thread_counts[k % 4];
                   const check::Context context("clustered scene ", k, ", ", threads, " threads");
                   CHECK(same_candidates_every_step(scene, std::nullopt, threads));
-                  CHECK_EQ(run_hash(scene, {.pair_search = PairSearch::grid, .threads = threads}),
-                           run_hash(scene, {.pair_search = PairSearch::brute_force, .threads = 1}));
+                  const std::uint64_t reference =
+                      run_hash(scene, {.pair_search = PairSearch::brute_force, .threads = 1});
+                  CHECK_EQ(run_hash(scene, {.pair_search = PairSearch::grid, .threads = threads}), reference);
+                  CHECK_EQ(run_hash(scene, {.pair_search = PairSearch::paths, .threads = threads}), reference);
               }
           }}});
 }

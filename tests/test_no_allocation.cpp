@@ -29,12 +29,14 @@ int main(int argc, char** argv) {
         argc, argv, "test_no_allocation",
         {{"no allocation in the step loop", [] {
               const World params{20000.0, 1.0};
-              for (const PairSearch search : {PairSearch::brute_force, PairSearch::grid}) {
+              for (const PairSearch search : {PairSearch::brute_force, PairSearch::grid, PairSearch::paths}) {
                   for (const int threads : {1, 2}) {
                       for (const int sort_every : {0, 1}) {  // never / every step stored by position
                           SteppedSimulation sim(
                               params, make_random_particles(1000, params),
                               {.pair_search = search, .threads = threads, .sort_by_position_every = sort_every});
+                          const check::Context context("search ", static_cast<int>(search), ", ", threads,
+                                                       " threads, sorted every ", sort_every);
                           particlesim::run(sim, 20);  // warm-up: buffers grow to their working size
                           const long before = allocations.load();
                           particlesim::run(sim, 200);

@@ -28,7 +28,8 @@ Simulates N hard disks bouncing elastically in a square box, in discrete steps.
                                    FILE is replaced only when the run succeeds)
   -t, --threads N                  worker threads (default: OpenMP's default)
       --seed N                     seed of a random scene (default 3210)
-      --broadphase auto|brute|grid pair search (default auto); all give identical output
+      --broadphase auto|brute|grid|paths
+                                   pair search (default auto); all give identical output
       --grid G                     the grid search with a G x G grid (1 <= G <= 4096;
                                    4 = the 4 x 4 grid of L/4 cells); not with --broadphase brute
       --substeps K                 K micro-steps per step (default 1)
@@ -196,8 +197,11 @@ std::optional<CliOptions> parse_arguments(int argc, char** argv) {
                 given.pair_search = PairSearch::brute_force;
             } else if (value == "grid") {
                 given.pair_search = PairSearch::grid;
+            } else if (value == "paths") {
+                given.pair_search = PairSearch::paths;
             } else {
-                throw BadInput("--broadphase: expected auto, brute or grid, found \"" + std::string(value) + "\"");
+                throw BadInput("--broadphase: expected auto, brute, grid or paths, found \"" + std::string(value) +
+                               "\"");
             }
             break;
         case opt_grid:

@@ -20,9 +20,10 @@ namespace particlesim {
 // How the engine finds the pairs that may collide in a step. Every choice
 // gives the same candidates, so the same output.
 enum class PairSearch {
-    automatic,    // brute force where it is cheaper (tiny scenes), else the grid
+    automatic,    // the cheapest for the scene: brute force (tiny), paths (sparse) or grid
     brute_force,  // every pair: the reference
     grid,         // uniform grid over the swept paths, exact for any speed
+    paths,        // each particle's path kept between its collisions: sparse scenes
 };
 
 // Every option is checked when the engine is built; a bad one throws

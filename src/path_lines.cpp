@@ -1,0 +1,185 @@
+#include "path_lines.hpp"
+
+#include <algorithm>
+#include <bit>
+#include <cmath>
+#include <cstring>
+
+#if defined(__x86_64__)
+#include <immintrin.h>
+#endif
+
+namespace particlesim {
+
+namespace {
+
+// Lanes of the widest test compiled (AVX2); the arrays are padded to it.
+constexpr std::size_t widest_lanes = 8;
+
+// 2^-k with value * 2^-k in [0.5, 1); 1 for zero (or anything not finite,
+// which valid scenes never hold).
+double power_of_two_below(double value) {
+    if (!(value > 0.0 && std::isfinite(value))) return 1.0;
+    return std::ldexp(1.0, -(std::ilogb(value) + 1));
+}
+
+using FourFloats = float __attribute__((vector_size(16)));
+using EightFloats = float __attribute__((vector_size(32)));
+
+using FourInts = std::int32_t __attribute__((vector_size(16)));
+using EightInts = std::int32_t __attribute__((vector_size(32)));
+
+// One bit per lane of a comparison's result, lane 0 the lowest: the sign
+// bits gathered by one instruction where there is one.
+inline std::uint32_t lane_bits_four(FourInts mask) {
+#if defined(__x86_64__)
+    return static_cast<std::uint32_t>(_mm_movemask_ps(reinterpret_cast<__m128>(mask)));
+#else
+    std::uint32_t bits = 0;
+    for (int lane = 0; lane < 4; ++lane) bits |= (mask[lane] != 0 ? 1U : 0U) << lane;
+    return bits;
+#endif
+}
+
+#if defined(__x86_64__)
+[[gnu::target("avx2")]] inline std::uint32_t lane_bits_eight(EightInts mask) {
+    return static_cast<std::uint32_t>(_mm256_movemask_ps(reinterpret_cast<__m256>(mask)));
+}
+#endif
+
+struct LineQuery {
+    float x, y, vx, vy;  // the line tested against all, scaled
+    float reach_term;    // times |dv|^2
+    float margin_term;   // added
+};
+
+// |dp x dv|^2 <= reach_term |dv|^2 + margin_term for a group of lines at a
+// time (Floats: four or eight lanes; lane_bits for its comparison). Always inlined, so that a caller
+// compiled for AVX2 gets its eight lanes.
+template <typename Floats, auto lane_bits>
+[[gnu::always_inline]] inline void gather_lanes(const float* x, const float* y, const float* vx, const float* vy,
+                                                std::size_t padded, const LineQuery& query,
+                                                std::vector<std::uint32_t>& near) {
+    constexpr std::size_t lanes = sizeof(Floats) / sizeof(float);
+    // Copies: `near` could alias the query as far as the compiler knows.
+    const LineQuery q = query;
+    for (std::size_t j = 0; j < padded; j += lanes) {
+        // Loads by memcpy in the loop itself: a helper left out of line
+        // would be compiled for the default target, without the wide lanes.
+        Floats dx, dy, dvx, dvy;
+        std::memcpy(&dx, x + j, sizeof(Floats));
+        std::memcpy(&dy, y + j, sizeof(Floats));
+        std::memcpy(&dvx, vx + j, sizeof(Floats));
+        std::memcpy(&dvy, vy + j, sizeof(Floats));
+        dx -= q.x;
+        dy -= q.y;
+        dvx -= q.vx;
+        dvy -= q.vy;
+        const Floats cross = dx * dvy - dy * dvx;
+        const Floats speed_sq = dvx * dvx + dvy * dvy;
+        const auto close = cross * cross <= q.reach_term * speed_sq + q.margin_term;
+        // Nearly every group has no close line: one test of all its lanes.
+        std::uint32_t bits = lane_bits(close);
+        while (bits != 0) {
+            near.push_back(static_cast<std::uint32_t>(j) + static_cast<std::uint32_t>(std::countr_zero(bits)));
+            bits &= bits - 1;
+        }
+    }
+}
+
+void gather_four(const float* x, const float* y, const float* vx, const float* vy, std::size_t padded,
+                 const LineQuery& q, std::vector<std::uint32_t>& near) {
+    gather_lanes<FourFloats, lane_bits_four>(x, y, vx, vy, padded, q, near);
+}
+
+#if defined(__x86_64__)
+[[gnu::target("avx2")]] void gather_eight(const float* x, const float* y, const float* vx, const float* vy,
+                                          std::size_t padded, const LineQuery& q, std::vector<std::uint32_t>& near) {
+    gather_lanes<EightFloats, lane_bits_eight>(x, y, vx, vy, padded, q, near);
+}
+
+bool has_eight_lanes() {
+    static const bool available = [] {
+        __builtin_cpu_init();  // in case this first runs before the library's constructors
+        return __builtin_cpu_supports("avx2") != 0;
+    }();
+    return available;
+}
+#endif
+
+}  // namespace
+
+void PathLines::assign(std::span<const Particle> particles, const Box& box) {
+    count_ = particles.size();
+    double fastest = 0.0;
+    for (const Particle& p : particles)
+        fastest = std::max({fastest, std::abs(p.velocity.x()), std::abs(p.velocity.y())});
+    position_scale_ = power_of_two_below(box.side);
+    velocity_scale_ = power_of_two_below(fastest);
+    largest_coordinate_ = box.side * position_scale_;
+    largest_speed_ = 0.0;
+    const std::size_t padded = (count_ + widest_lanes - 1) / widest_lanes * widest_lanes;
+    for (std::vector<float>* component : {&x_, &y_, &vx_, &vy_}) component->assign(padded, 0.0f);
+    for (std::size_t i = 0; i < count_; ++i)
+        store(static_cast<std::uint32_t>(i), particles[i].position, particles[i].velocity);
+}
+
+void PathLines::move_to(std::span<const Particle> particles) {
+    double largest = largest_coordinate_;
+    for (std::size_t i = 0; i < count_; ++i) {
+        const double x = particles[i].position.x() * position_scale_;
+        const double y = particles[i].position.y() * position_scale_;
+        largest = std::max(largest, std::max(std::abs(x), std::abs(y)));
+        x_[i] = static_cast<float>(x);
+        y_[i] = static_cast<float>(y);
+    }
+    largest_coordinate_ = largest;
+}
+
+void PathLines::set(std::uint32_t i, const Vec2& position, const Vec2& velocity) { store(i, position, velocity); }
+
+void PathLines::store(std::uint32_t i, const Vec2& position, const Vec2& velocity) {
+    const double x = position.x() * position_scale_;
+    const double y = position.y() * position_scale_;
+    const double vx = velocity.x() * velocity_scale_;
+    const double vy = velocity.y() * velocity_scale_;
+    largest_coordinate_ = std::max({largest_coordinate_, std::abs(x), std::abs(y)});
+    largest_speed_ = std::max({largest_speed_, std::abs(vx), std::abs(vy)});
+    x_[i] = static_cast<float>(x);
+    y_[i] = static_cast<float>(y);
+    vx_[i] = static_cast<float>(vx);
+    vy_[i] = static_cast<float>(vy);
+}
+
+void PathLines::gather_near(std::uint32_t i, double reach, std::vector<std::uint32_t>& near) const {
+    // Rounding each scaled value to float moves it by at most 2^-24 of the
+    // largest coordinate or speed (M, V); the differences, products and sum
+    // of the cross product then err by less than 64 * 2^-24 M V, and the
+    // computed |dv| by less than 6 * 2^-24 V. With (a + b)^2 <= 1.25 a^2 +
+    // 5 b^2, and slack for the three float roundings of the comparison:
+    const double reach_scaled = reach * position_scale_;
+    const double error =
+        128.0 * 0x1p-24 * largest_coordinate_ * largest_speed_ + 12.0 * 0x1p-24 * reach_scaled * largest_speed_;
+    LineQuery q{x_[i],
+                y_[i],
+                vx_[i],
+                vy_[i],
+                static_cast<float>(1.3 * reach_scaled * reach_scaled),
+                static_cast<float>(6.0 * error * error)};
+    const std::size_t first = near.size();
+#if defined(__x86_64__)
+    if (has_eight_lanes()) {
+        gather_eight(x_.data(), y_.data(), vx_.data(), vy_.data(), x_.size(), q, near);
+    } else {
+        gather_four(x_.data(), y_.data(), vx_.data(), vy_.data(), x_.size(), q, near);
+    }
+#else
+    gather_four(x_.data(), y_.data(), vx_.data(), vy_.data(), x_.size(), q, near);
+#endif
+    // The padding's lines and i's own are not neighbours.
+    near.erase(std::remove_if(near.begin() + static_cast<std::ptrdiff_t>(first), near.end(),
+                              [&](std::uint32_t j) { return j == i || j >= count_; }),
+               near.end());
+}
+
+}  // namespace particlesim

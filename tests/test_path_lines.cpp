@@ -1,0 +1,165 @@
+// The float-lane line test of the paths search: it never drops a pair whose
+// lines come within the reach, at any scale, for grazing lines, nearly
+// parallel motion and particles at rest; and it drops most pairs that do not.
+
+#include "check.hpp"
+
+#include "../src/path_lines.hpp"
+#include "random.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <vector>
+
+using namespace particlesim;
+
+namespace {
+
+// Whether the relative line of (i, j) passes within `reach` of the origin,
+// in long double from the doubles (|dp x dv| <= reach |dv|; at rest: |dp|).
+bool lines_within(const Particle& a, const Particle& b, double reach) {
+    using Long = long double;
+    const Long dx = Long(b.position.x()) - a.position.x();
+    const Long dy = Long(b.position.y()) - a.position.y();
+    const Long dvx = Long(b.velocity.x()) - a.velocity.x();
+    const Long dvy = Long(b.velocity.y()) - a.velocity.y();
+    const Long speed = std::sqrt(dvx * dvx + dvy * dvy);
+    if (speed == 0) return std::sqrt(dx * dx + dy * dy) <= reach;
+    return std::abs(dx * dvy - dy * dvx) <= Long(reach) * speed;
+}
+
+struct Trial {
+    Box box;
+    double reach = 0.0;
+    std::vector<Particle> particles;
+};
+
+// Particles in a box of side 2^scale, speeds spread over `speed_decades`
+// decades below 2^(scale + speed_shift); every fourth particle is placed so
+// that its line grazes particle 0's at (1 - 2^-k) or (1 + 2^-k) times the
+// reach, every seventh moves as particle 0 does but for a tiny difference,
+// and a few rest.
+Trial make_trial(SplitMix64& rng, int scale, int speed_shift, double speed_decades) {
+    Trial t;
+    const double side = std::ldexp(1.0, scale);
+    const double radius = side * std::pow(10.0, -1.0 - 6.0 * rng.uniform());
+    t.box = Box::of(World{side, radius});
+    t.reach = 2.0 * radius * (1.0 + 0x1p-30) + 0x1p-36 * side;
+    const auto coordinate = [&] { return t.box.lower + (t.box.upper - t.box.lower) * rng.uniform(); };
+    const auto speed = [&] {
+        return std::ldexp(1.0, scale + speed_shift) * std::pow(10.0, -speed_decades * rng.uniform());
+    };
+    const auto direction = [&] { return 6.283185307179586 * rng.uniform(); };
+    const int count = 40;
+    for (int i = 0; i < count; ++i) {
+        Particle p;
+        p.position = Vec2(coordinate(), coordinate());
+        const double s = i % 11 == 5 ? 0.0 : speed();
+        const double a = direction();
+        p.velocity = Vec2(s * std::cos(a), s * std::sin(a));
+        t.particles.push_back(p);
+    }
+    const Particle& first = t.particles[0];
+    for (int i = 4; i < count; i += 4) {
+        // A relative line at distance (1 -+ 2^-k) reach from particle 0.
+        Particle& p = t.particles[static_cast<std::size_t>(i)];
+        const Vec2 dv = p.velocity - first.velocity;
+        if (dv.norm() == 0.0) continue;
+        const Vec2 along = dv / dv.norm();
+        const Vec2 across(-along.y(), along.x());
+        const double k = std::ldexp(1.0, -static_cast<int>(rng.next() % 40));
+        const double distance = t.reach * (i % 8 == 0 ? 1.0 - k : 1.0 + k);
+        const double offset = (rng.uniform() - 0.5) * side;
+        p.position = first.position + across * distance + along * offset;
+    }
+    for (int i = 7; i < count; i += 7) {
+        Particle& p = t.particles[static_cast<std::size_t>(i)];
+        const double tiny = std::ldexp(std::abs(first.velocity.x()) + 1e-300, -10 - static_cast<int>(rng.next() % 40));
+        p.velocity = first.velocity + Vec2(tiny, -tiny);
+    }
+    return t;
+}
+
+void never_drops_a_pair_within_reach() {
+    SplitMix64 rng(15);
+    long dropped = 0;
+    long within = 0;
+    long passed = 0;
+    long pairs = 0;
+    std::vector<std::uint32_t> near;
+    for (int trial = 0; trial < 3000; ++trial) {
+        // Boxes from 2^-60 to 2^60, speeds up to 2^20 boxes a step and down
+        // to 1e-12 of that.
+        const int scale = -60 + static_cast<int>(rng.next() % 121);
+        const int speed_shift = -20 + static_cast<int>(rng.next() % 41);
+        const Trial t = make_trial(rng, scale, speed_shift, 12.0 * rng.uniform());
+        PathLines lines;
+        lines.assign(t.particles, t.box);
+        for (std::uint32_t i = 0; i < t.particles.size(); ++i) {
+            near.clear();
+            lines.gather_near(i, t.reach, near);
+            CHECK(std::is_sorted(near.begin(), near.end()));
+            for (std::uint32_t j = 0; j < t.particles.size(); ++j) {
+                if (j == i) continue;
+                ++pairs;
+                const bool found = std::binary_search(near.begin(), near.end(), j);
+                passed += found ? 1 : 0;
+                if (!lines_within(t.particles[i], t.particles[j], t.reach)) continue;
+                ++within;
+                if (!found) {
+                    ++dropped;
+                    const check::Context context("trial ", trial, ", pair ", i, " ", j);
+                    CHECK(found);
+                }
+            }
+            CHECK(std::find(near.begin(), near.end(), i) == near.end());
+        }
+    }
+    CHECK_EQ(dropped, 0L);
+    CHECK(within > 20000);  // the grazing lines alone are thousands
+    // Useful: few pairs pass that are not within reach (at rest, parallel
+    // motion and grazes at 1 + 2^-k pass, by design).
+    CHECK(passed - within < pairs / 5);
+}
+
+// Moving every point along its line, and replacing lines one by one, gives
+// the lines assign() makes from the same particles.
+void moved_and_set_lines_are_assigned_lines() {
+    SplitMix64 rng(16);
+    std::vector<std::uint32_t> near_assigned;
+    std::vector<std::uint32_t> near_updated;
+    for (int trial = 0; trial < 200; ++trial) {
+        Trial t = make_trial(rng, 14, -2, 2.0);
+        const auto into_box = [&](Particle& p) { p.position = p.position.cwiseMax(t.box.lower).cwiseMin(t.box.upper); };
+        std::for_each(t.particles.begin(), t.particles.end(), into_box);
+        PathLines updated;
+        updated.assign(t.particles, t.box);
+        // Inside the box, and the same fastest speed: the same scales and margins.
+        for (Particle& p : t.particles) {
+            p.position = p.position + p.velocity * 1e-3;
+            into_box(p);
+        }
+        updated.move_to(t.particles);
+        for (std::uint32_t i = 0; i < t.particles.size(); i += 3) {
+            t.particles[i].velocity = -t.particles[i].velocity;
+            updated.set(i, t.particles[i].position, t.particles[i].velocity);
+        }
+        PathLines assigned;
+        assigned.assign(t.particles, t.box);
+        for (std::uint32_t i = 0; i < t.particles.size(); ++i) {
+            near_assigned.clear();
+            near_updated.clear();
+            assigned.gather_near(i, t.reach, near_assigned);
+            updated.gather_near(i, t.reach, near_updated);
+            CHECK(near_assigned == near_updated);
+        }
+    }
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+    return check::run(argc, argv, "test_path_lines",
+                      {{"never drops a pair within reach", never_drops_a_pair_within_reach},
+                       {"moved and set lines are assigned lines", moved_and_set_lines_are_assigned_lines}});
+}
