@@ -5,16 +5,13 @@
 #include <cmath>
 #include <cstring>
 
-#if defined(__x86_64__)
-#include <immintrin.h>
-#endif
-
 namespace particlesim {
 
 namespace {
 
-// Lanes of the widest test compiled (AVX2); the arrays are padded to it.
-constexpr std::size_t widest_lanes = 8;
+// Lines tested together by the widest test compiled (two groups of AVX2's
+// eight); the arrays are padded to a whole number of them.
+constexpr std::size_t widest_lanes = 16;
 
 // 2^-k with value * 2^-k in [0.5, 1); 1 for zero (or anything not finite,
 // which valid scenes never hold).
@@ -26,82 +23,87 @@ double power_of_two_below(double value) {
 using FourFloats = float __attribute__((vector_size(16)));
 using EightFloats = float __attribute__((vector_size(32)));
 
-using FourInts = std::int32_t __attribute__((vector_size(16)));
-using EightInts = std::int32_t __attribute__((vector_size(32)));
-
-// One bit per lane of a comparison's result, lane 0 the lowest: the sign
-// bits gathered by one instruction where there is one.
-inline std::uint32_t lane_bits_four(FourInts mask) {
-#if defined(__x86_64__)
-    return static_cast<std::uint32_t>(_mm_movemask_ps(reinterpret_cast<__m128>(mask)));
-#else
-    std::uint32_t bits = 0;
-    for (int lane = 0; lane < 4; ++lane) bits |= (mask[lane] != 0 ? 1U : 0U) << lane;
-    return bits;
-#endif
-}
-
-#if defined(__x86_64__)
-[[gnu::target("avx2")]] inline std::uint32_t lane_bits_eight(EightInts mask) {
-    return static_cast<std::uint32_t>(_mm256_movemask_ps(reinterpret_cast<__m256>(mask)));
-}
-#endif
-
 struct LineQuery {
     float x, y, vx, vy;  // the line tested against all, scaled
     float reach_term;    // times |dv|^2
     float margin_term;   // added
 };
 
-// |dp x dv|^2 <= reach_term |dv|^2 + margin_term for a group of lines at a
-// time (Floats: four or eight lanes; lane_bits for its comparison). Always inlined, so that a caller
-// compiled for AVX2 gets its eight lanes.
-template <typename Floats, auto lane_bits>
+// One bit per lane of a comparison's result (all ones or all zeros), lane
+// 0 the lowest: on x86-64 the sign bits, four lanes at a time by SSE's
+// movmskps (any x86-64 has it; no eight-lane vector is passed by value,
+// which would change the calling convention of a build without AVX).
+template <typename Mask>
+[[gnu::always_inline]] inline std::uint32_t lane_bits(const Mask& mask) {
+    constexpr std::size_t lanes = sizeof(Mask) / sizeof(float);
+    std::uint32_t bits = 0;
+#if defined(__SSE__)
+    for (std::size_t quarter = 0; quarter < lanes / 4; ++quarter) {
+        FourFloats four;
+        std::memcpy(&four, reinterpret_cast<const char*>(&mask) + quarter * sizeof four, sizeof four);
+        bits |= static_cast<std::uint32_t>(__builtin_ia32_movmskps(four)) << (4 * quarter);
+    }
+#else
+    for (std::size_t lane = 0; lane < lanes; ++lane) bits |= mask[lane] != 0 ? 1U << lane : 0U;
+#endif
+    return bits;
+}
+
+// Appends every line j of [0, padded) with |dp x dv|^2 <= reach_term |dv|^2
+// + margin_term to `near`, `Floats` lines (four or eight) to a group, two
+// groups at a time: nearly every pair of groups has no close line, so one
+// test of all their lanes. Always inlined, so that a caller compiled for
+// AVX2 gets its eight lanes.
+template <typename Floats>
 [[gnu::always_inline]] inline void gather_lanes(const float* x, const float* y, const float* vx, const float* vy,
                                                 std::size_t padded, const LineQuery& query,
                                                 std::vector<std::uint32_t>& near) {
+    using Mask = decltype(Floats{} < Floats{});
     constexpr std::size_t lanes = sizeof(Floats) / sizeof(float);
-    // Copies: `near` could alias the query as far as the compiler knows.
+    // A copy: `near` could alias the query as far as the compiler knows.
     const LineQuery q = query;
-    for (std::size_t j = 0; j < padded; j += lanes) {
-        // Loads by memcpy in the loop itself: a helper left out of line
-        // would be compiled for the default target, without the wide lanes.
-        Floats dx, dy, dvx, dvy;
-        std::memcpy(&dx, x + j, sizeof(Floats));
-        std::memcpy(&dy, y + j, sizeof(Floats));
-        std::memcpy(&dvx, vx + j, sizeof(Floats));
-        std::memcpy(&dvy, vy + j, sizeof(Floats));
-        dx -= q.x;
-        dy -= q.y;
-        dvx -= q.vx;
-        dvy -= q.vy;
-        const Floats cross = dx * dvy - dy * dvx;
-        const Floats speed_sq = dvx * dvx + dvy * dvy;
-        const auto close = cross * cross <= q.reach_term * speed_sq + q.margin_term;
-        // Nearly every group has no close line: one test of all its lanes.
-        std::uint32_t bits = lane_bits(close);
-        while (bits != 0) {
+    for (std::size_t j = 0; j < padded; j += 2 * lanes) {
+        Mask close[2];
+        for (std::size_t group = 0; group < 2; ++group) {
+            const std::size_t at = j + group * lanes;
+            Floats dx, dy, dvx, dvy;
+            std::memcpy(&dx, x + at, sizeof(Floats));
+            std::memcpy(&dy, y + at, sizeof(Floats));
+            std::memcpy(&dvx, vx + at, sizeof(Floats));
+            std::memcpy(&dvy, vy + at, sizeof(Floats));
+            dx -= q.x;
+            dy -= q.y;
+            dvx -= q.vx;
+            dvy -= q.vy;
+            const Floats cross = dx * dvy - dy * dvx;
+            const Floats speed_sq = dvx * dvx + dvy * dvy;
+            close[group] = cross * cross <= q.reach_term * speed_sq + q.margin_term;
+        }
+        const Mask either = close[0] | close[1];
+        if (lane_bits(either) == 0) continue;
+        std::uint32_t bits = lane_bits(close[0]) | lane_bits(close[1]) << lanes;
+        for (; bits != 0; bits &= bits - 1) {
             near.push_back(static_cast<std::uint32_t>(j) + static_cast<std::uint32_t>(std::countr_zero(bits)));
-            bits &= bits - 1;
         }
     }
 }
 
 void gather_four(const float* x, const float* y, const float* vx, const float* vy, std::size_t padded,
                  const LineQuery& q, std::vector<std::uint32_t>& near) {
-    gather_lanes<FourFloats, lane_bits_four>(x, y, vx, vy, padded, q, near);
+    gather_lanes<FourFloats>(x, y, vx, vy, padded, q, near);
 }
 
 #if defined(__x86_64__)
-[[gnu::target("avx2")]] void gather_eight(const float* x, const float* y, const float* vx, const float* vy,
-                                          std::size_t padded, const LineQuery& q, std::vector<std::uint32_t>& near) {
-    gather_lanes<EightFloats, lane_bits_eight>(x, y, vx, vy, padded, q, near);
+[[gnu::target("avx2,fma")]] void gather_eight(const float* x, const float* y, const float* vx, const float* vy,
+                                              std::size_t padded, const LineQuery& q,
+                                              std::vector<std::uint32_t>& near) {
+    gather_lanes<EightFloats>(x, y, vx, vy, padded, q, near);
 }
 
 bool has_eight_lanes() {
     static const bool available = [] {
         __builtin_cpu_init();  // in case this first runs before the library's constructors
-        return __builtin_cpu_supports("avx2") != 0;
+        return __builtin_cpu_supports("avx2") != 0 && __builtin_cpu_supports("fma") != 0;
     }();
     return available;
 }
