@@ -4,6 +4,8 @@
 #include <bit>
 #include <cmath>
 #include <cstring>
+#include <stdexcept>
+#include <string>
 
 namespace particlesim {
 
@@ -11,7 +13,7 @@ namespace {
 
 // Lines tested together by the widest test compiled (two groups of AVX2's
 // eight); the arrays are padded to a whole number of them.
-constexpr std::size_t widest_lanes = 16;
+constexpr std::size_t widest_lanes = 32;
 
 // 2^-k with value * 2^-k in [0.5, 1); 1 for zero (or anything not finite,
 // which valid scenes never hold).
@@ -22,6 +24,8 @@ double power_of_two_below(double value) {
 
 using FourFloats = float __attribute__((vector_size(16)));
 using EightFloats = float __attribute__((vector_size(32)));
+using SixteenFloats = float __attribute__((vector_size(64)));
+using FourInts = std::int32_t __attribute__((vector_size(16)));
 
 struct LineQuery {
     float x, y, vx, vy;  // the line tested against all, scaled
@@ -47,6 +51,19 @@ template <typename Mask>
     for (std::size_t lane = 0; lane < lanes; ++lane) bits |= mask[lane] != 0 ? 1U << lane : 0U;
 #endif
     return bits;
+}
+
+// Whether any lane of a comparison's result is set: its quarters or'd into
+// four lanes first, then one movmskps.
+template <typename Mask>
+[[gnu::always_inline]] inline bool any_lane(const Mask& mask) {
+    FourInts either{};
+    for (std::size_t quarter = 0; quarter < sizeof(Mask) / sizeof(FourInts); ++quarter) {
+        FourInts four;
+        std::memcpy(&four, reinterpret_cast<const char*>(&mask) + quarter * sizeof four, sizeof four);
+        either |= four;
+    }
+    return lane_bits(either) != 0;
 }
 
 // Appends every line j of [0, padded) with |dp x dv|^2 <= reach_term |dv|^2
@@ -79,8 +96,7 @@ template <typename Floats>
             const Floats speed_sq = dvx * dvx + dvy * dvy;
             close[group] = cross * cross <= q.reach_term * speed_sq + q.margin_term;
         }
-        const Mask either = close[0] | close[1];
-        if (lane_bits(either) == 0) continue;
+        if (!any_lane(close[0] | close[1])) continue;
         std::uint32_t bits = lane_bits(close[0]) | lane_bits(close[1]) << lanes;
         for (; bits != 0; bits &= bits - 1) {
             near.push_back(static_cast<std::uint32_t>(j) + static_cast<std::uint32_t>(std::countr_zero(bits)));
@@ -100,16 +116,44 @@ void gather_four(const float* x, const float* y, const float* vx, const float* v
     gather_lanes<EightFloats>(x, y, vx, vy, padded, q, near);
 }
 
-bool has_eight_lanes() {
-    static const bool available = [] {
+[[gnu::target("avx512f,fma")]] void gather_sixteen(const float* x, const float* y, const float* vx, const float* vy,
+                                                   std::size_t padded, const LineQuery& q,
+                                                   std::vector<std::uint32_t>& near) {
+    gather_lanes<SixteenFloats>(x, y, vx, vy, padded, q, near);
+}
+
+bool cpu_supports_lanes(int lanes) {
+    static const bool sixteen = [] {
         __builtin_cpu_init();  // in case this first runs before the library's constructors
-        return __builtin_cpu_supports("avx2") != 0 && __builtin_cpu_supports("fma") != 0;
+        return __builtin_cpu_supports("avx512f") != 0 && __builtin_cpu_supports("fma") != 0;
     }();
-    return available;
+    static const bool eight = __builtin_cpu_supports("avx2") != 0 && __builtin_cpu_supports("fma") != 0;
+    return lanes == 4 || (lanes == 8 && eight) || (lanes == 16 && sixteen);
 }
 #endif
 
 }  // namespace
+
+bool PathLines::supports_lanes(int lanes) {
+#if defined(__x86_64__)
+    return cpu_supports_lanes(lanes);
+#else
+    return lanes == 4;
+#endif
+}
+
+PathLines::PathLines(int lanes) : lanes_(lanes) {
+    if (lanes == 0) {
+        for (const int widest : {16, 8, 4}) {
+            if (supports_lanes(widest)) {
+                lanes_ = widest;
+                break;
+            }
+        }
+    } else if (!supports_lanes(lanes)) {
+        throw std::invalid_argument("PathLines: no " + std::to_string(lanes) + "-lane test on this processor");
+    }
+}
 
 void PathLines::assign(std::span<const Particle> particles, const Box& box) {
     count_ = particles.size();
@@ -124,18 +168,6 @@ void PathLines::assign(std::span<const Particle> particles, const Box& box) {
     for (std::vector<float>* component : {&x_, &y_, &vx_, &vy_}) component->assign(padded, 0.0f);
     for (std::size_t i = 0; i < count_; ++i)
         store(static_cast<std::uint32_t>(i), particles[i].position, particles[i].velocity);
-}
-
-void PathLines::move_to(std::span<const Particle> particles) {
-    double largest = largest_coordinate_;
-    for (std::size_t i = 0; i < count_; ++i) {
-        const double x = particles[i].position.x() * position_scale_;
-        const double y = particles[i].position.y() * position_scale_;
-        largest = std::max(largest, std::max(std::abs(x), std::abs(y)));
-        x_[i] = static_cast<float>(x);
-        y_[i] = static_cast<float>(y);
-    }
-    largest_coordinate_ = largest;
 }
 
 void PathLines::set(std::uint32_t i, const Vec2& position, const Vec2& velocity) { store(i, position, velocity); }
@@ -169,15 +201,13 @@ void PathLines::gather_near(std::uint32_t i, double reach, std::vector<std::uint
                 static_cast<float>(1.3 * reach_scaled * reach_scaled),
                 static_cast<float>(6.0 * error * error)};
     const std::size_t first = near.size();
+    switch (lanes_) {
 #if defined(__x86_64__)
-    if (has_eight_lanes()) {
-        gather_eight(x_.data(), y_.data(), vx_.data(), vy_.data(), x_.size(), q, near);
-    } else {
-        gather_four(x_.data(), y_.data(), vx_.data(), vy_.data(), x_.size(), q, near);
-    }
-#else
-    gather_four(x_.data(), y_.data(), vx_.data(), vy_.data(), x_.size(), q, near);
+    case 16: gather_sixteen(x_.data(), y_.data(), vx_.data(), vy_.data(), x_.size(), q, near); break;
+    case 8: gather_eight(x_.data(), y_.data(), vx_.data(), vy_.data(), x_.size(), q, near); break;
 #endif
+    default: gather_four(x_.data(), y_.data(), vx_.data(), vy_.data(), x_.size(), q, near); break;
+    }
     // The padding's lines and i's own are not neighbours.
     near.erase(std::remove_if(near.begin() + static_cast<std::ptrdiff_t>(first), near.end(),
                               [&](std::uint32_t j) { return j == i || j >= count_; }),

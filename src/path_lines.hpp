@@ -23,21 +23,49 @@
 #include "box.hpp"
 #include "particlesim/particle.hpp"
 
+#include <algorithm>
+#include <cmath>
 #include <cstdint>
 #include <span>
 #include <vector>
 
 namespace particlesim {
 
+// The distance a pair must be kept within, for a contact distance of 2r:
+// above 2r by far more than the rounding of a double-precision pair test
+// (a few ulps of L in dp) and of free motion along a line over 1024 steps
+// (at most 2^-51 L a step and coordinate while a particle stays in the box).
+inline double contact_reach(const Box& box) {
+    return std::sqrt(box.contact_dist_sq) * (1.0 + 0x1p-30) + 0x1p-36 * box.side;
+}
+
 class PathLines {
 public:
+    // Tests `lanes` lines at a time: 4 (any processor), 8 (x86-64 with AVX2
+    // and FMA) or 16 (AVX-512); 0 picks the widest this processor has. All
+    // keep every pair within reach; the tests run each one there is.
+    explicit PathLines(int lanes = 0);
+    [[nodiscard]] static bool supports_lanes(int lanes);
+
     // Lines through the particles' positions (all at the epoch) along their
     // velocities; the box sets the position scale.
     void assign(std::span<const Particle> particles, const Box& box);
 
-    // Moves every line's point to a new epoch, where the particles now are;
-    // their velocities stay (the particles moved along their lines).
-    void move_to(std::span<const Particle> particles);
+    // Moves every line's point to a new epoch, position_of(i) for each i;
+    // the velocities stay (the particles moved along their lines).
+    template <typename PositionOf>
+    void move_each(PositionOf&& position_of) {
+        double largest = largest_coordinate_;
+        for (std::uint32_t i = 0; i < count_; ++i) {
+            const Vec2 position = position_of(i);
+            const double x = position.x() * position_scale_;
+            const double y = position.y() * position_scale_;
+            largest = std::max(largest, std::max(std::abs(x), std::abs(y)));
+            x_[i] = static_cast<float>(x);
+            y_[i] = static_cast<float>(y);
+        }
+        largest_coordinate_ = largest;
+    }
 
     // Replaces one line: `position` is the particle's position at the epoch
     // (extrapolated back, if it changed velocity after the epoch).
@@ -52,6 +80,7 @@ public:
 private:
     void store(std::uint32_t i, const Vec2& position, const Vec2& velocity);
 
+    int lanes_ = 4;
     std::size_t count_ = 0;
     double position_scale_ = 1.0;  // powers of two
     double velocity_scale_ = 1.0;

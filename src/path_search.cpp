@@ -18,9 +18,7 @@ std::uint64_t collision_count(const Particle& p) { return p.particle_collisions 
 void PathSearch::find_pairs(const PairSearchInput& in, std::span<ThreadCandidates> out) {
     thread_watches_.resize(out.size());
     make_lines(in);
-    // Free motion's rounding over the lines' lifetime (see the header), and
-    // the doubles' own rounding in the pair test: both far below 2^-36 L.
-    const double reach = std::sqrt(in.box.contact_dist_sq) * (1.0 + 0x1p-30) + 0x1p-36 * in.box.side;
+    const double reach = contact_reach(in.box);
     const auto new_count = static_cast<std::int64_t>(new_lines_.size());
     const int workers =
         worker_count(out.size(), new_count * static_cast<std::int64_t>(in.particles.size()), min_pair_work_per_thread);
@@ -69,7 +67,7 @@ void PathSearch::make_lines(const PairSearchInput& in) {
         lines_made_at_ = micro_steps_;
         lines_.assign(in.particles, in.box);
     } else {
-        lines_.move_to(in.particles);
+        lines_.move_each([&](std::uint32_t i) { return in.particles[i].position; });
     }
     // Written without a branch on whether a particle collided: about one in
     // four did, at random, in the default scene's steps.

@@ -9,6 +9,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <vector>
 
 using namespace particlesim;
@@ -44,7 +45,7 @@ Trial make_trial(SplitMix64& rng, int scale, int speed_shift, double speed_decad
     const double side = std::ldexp(1.0, scale);
     const double radius = side * std::pow(10.0, -1.0 - 6.0 * rng.uniform());
     t.box = Box::of(World{side, radius});
-    t.reach = 2.0 * radius * (1.0 + 0x1p-30) + 0x1p-36 * side;
+    t.reach = contact_reach(t.box);
     const auto coordinate = [&] { return t.box.lower + (t.box.upper - t.box.lower) * rng.uniform(); };
     const auto speed = [&] {
         return std::ldexp(1.0, scale + speed_shift) * std::pow(10.0, -speed_decades * rng.uniform());
@@ -80,7 +81,11 @@ Trial make_trial(SplitMix64& rng, int scale, int speed_shift, double speed_decad
     return t;
 }
 
-void never_drops_a_pair_within_reach() {
+void never_drops_a_pair_within_reach(int lanes) {
+    if (!PathLines::supports_lanes(lanes)) {
+        std::printf("test_path_lines: no %d-lane test on this processor, not run\n", lanes);
+        return;
+    }
     SplitMix64 rng(15);
     long dropped = 0;
     long within = 0;
@@ -93,7 +98,7 @@ void never_drops_a_pair_within_reach() {
         const int scale = -60 + static_cast<int>(rng.next() % 121);
         const int speed_shift = -20 + static_cast<int>(rng.next() % 41);
         const Trial t = make_trial(rng, scale, speed_shift, 12.0 * rng.uniform());
-        PathLines lines;
+        PathLines lines(lanes);
         lines.assign(t.particles, t.box);
         for (std::uint32_t i = 0; i < t.particles.size(); ++i) {
             near.clear();
@@ -139,7 +144,7 @@ void moved_and_set_lines_are_assigned_lines() {
             p.position = p.position + p.velocity * 1e-3;
             into_box(p);
         }
-        updated.move_to(t.particles);
+        updated.move_each([&](std::uint32_t i) { return t.particles[i].position; });
         for (std::uint32_t i = 0; i < t.particles.size(); i += 3) {
             t.particles[i].velocity = -t.particles[i].velocity;
             updated.set(i, t.particles[i].position, t.particles[i].velocity);
@@ -160,6 +165,8 @@ void moved_and_set_lines_are_assigned_lines() {
 
 int main(int argc, char** argv) {
     return check::run(argc, argv, "test_path_lines",
-                      {{"never drops a pair within reach", never_drops_a_pair_within_reach},
+                      {{"never drops a pair within reach, 4 lanes", [] { never_drops_a_pair_within_reach(4); }},
+                       {"never drops a pair within reach, 8 lanes", [] { never_drops_a_pair_within_reach(8); }},
+                       {"never drops a pair within reach, 16 lanes", [] { never_drops_a_pair_within_reach(16); }},
                        {"moved and set lines are assigned lines", moved_and_set_lines_are_assigned_lines}});
 }
