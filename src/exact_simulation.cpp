@@ -5,6 +5,7 @@
 #include "event_calendar.hpp"
 #include "number_format.hpp"
 #include "options_check.hpp"
+#include "path_lines.hpp"
 #include "physics.hpp"
 #include "saved_state.hpp"
 #include "scene_checks.hpp"
@@ -50,13 +51,37 @@ double event_budget(const ExactOptions& options, double predicted, std::size_t c
 // tests per event, so: about 4 particles per cell in a sparse box, and no
 // wider than half a mean free path (1 / (4 r N / L^2)) in a dense one. Either
 // way the cell count stays O(N) (the choice is measured in docs/benchmarks.md).
-UniformGrid neighbour_grid(const World& world, std::size_t particle_count, std::optional<int> cells_per_side) {
-    if (cells_per_side) return UniformGrid(world.box_size, *cells_per_side);
+int cells_per_side_for(const World& world, std::size_t particle_count) {
     const double count = static_cast<double>(particle_count);
     const double by_count = std::ceil(0.5 * std::sqrt(count));
     const double by_free_path = std::ceil(8.0 * world.radius * count / world.box_size);
-    return UniformGrid(world.box_size, UniformGrid::cells_per_side(world.box_size, 2.0 * world.radius,
-                                                                   std::max(by_count, by_free_path)));
+    return UniformGrid::cells_per_side(world.box_size, 2.0 * world.radius, std::max(by_count, by_free_path));
+}
+
+// Per unit of speed, events a step with one cell and the lines' test (walls
+// and both partners of each collision: each tests its new line against all
+// N) against events with the cells (walls, collisions and crossings, each
+// testing the disks of a few cells). Speeds cancel, so the choice depends
+// on N, r and L alone, and a restored run makes the one its start made.
+// Costs fitted to runs of both from 500 to 16000 disks, sparse to dense
+// (docs/benchmarks.md): an event with the lines about 200 ns plus 0.06 ns a
+// line (AVX-512), an event with the cells 110 ns. Dense scenes' stale pair
+// predictions make the lines dearer than this counts, hence the margin.
+bool lines_are_cheaper(const World& world, std::size_t particle_count, int cells_per_side) {
+    const double count = static_cast<double>(particle_count);
+    const double walls = count / world.box_size;
+    const double pairs = 2.0 * std::sqrt(2.0) * count * count * world.radius / (world.box_size * world.box_size);
+    const double crossings = count * cells_per_side / world.box_size;
+    const double with_lines = (walls + 2.0 * pairs) * (200.0 + 0.06 * count);
+    const double with_cells = (walls + pairs + crossings) * 110.0;
+    return with_lines < 0.8 * with_cells;
+}
+
+UniformGrid neighbour_grid(const World& world, std::size_t particle_count, std::optional<int> cells_per_side) {
+    if (cells_per_side) return UniformGrid(world.box_size, *cells_per_side);
+    const int side = cells_per_side_for(world, particle_count);
+    if (lines_are_cheaper(world, particle_count, side)) return UniformGrid(world.box_size, 1);
+    return UniformGrid(world.box_size, side);
 }
 
 }  // namespace
@@ -64,6 +89,11 @@ UniformGrid neighbour_grid(const World& world, std::size_t particle_count, std::
 // The engine's state. A particle's stored position is where it was at its
 // own time stamp, the time of its last collision (or 0); it is moved only by
 // its own collisions, so that every prediction reads an unchanged state.
+//
+// With a single cell (a sparse scene of few particles: neighbour_grid()),
+// there are no crossings, and a particle's neighbours are the particles
+// whose lines come near its own (PathLines, in float lanes): the same pairs
+// get the same tests as with the cells, but far fewer events.
 //
 // Each particle keeps three predictions: its wall event, its next cell
 // crossing, and the earliest pair event found for it; its queue entry is the
@@ -108,6 +138,7 @@ public:
             cells_.insert(i, cells_.grid().cell_of(particles_[i].position));
         }
         reject_overlaps();
+        make_lines();
         // Every wall time first: the pair predictions read them. A particle's
         // predictions read nothing another's change, so any order gives the
         // same ones; cell by cell, a large scene's neighbours are read from
@@ -146,6 +177,7 @@ public:
             pair_[i] = in.pair;
         }
         for (std::uint32_t i = 0; i < count(); ++i) reschedule(i);
+        make_lines();
         take_snapshot();
     }
 
@@ -199,6 +231,7 @@ public:
     void step() {
         if (steps_done_ >= max_exact_steps) throw std::overflow_error("the exact engine's clock ends at 2^53 steps");
         const double end = static_cast<double>(steps_done_ + 1);
+        move_lines_to_now();
         last_step_ = {};
         several_events_ = 0;
         std::uint64_t events = 0;
@@ -250,6 +283,8 @@ private:
           last_event_step_(particles_.size(), -1),
           last_repeat_step_(particles_.size(), -1),
           snapshot_(particles_),
+          by_lines_(cells_.grid().per_side() == 1),
+          reach_(contact_reach(box_)),
           queue_(count(), Event{never, EventKind::cell_crossing, 0, 0}),
           predicted_events_(estimated_events_per_step(world, particles_)),
           event_budget_(event_budget(options, predicted_events_, count())) {}
@@ -267,33 +302,49 @@ private:
     }
 
     template <typename Visit>
-    void for_each_neighbour(std::uint32_t i, Visit&& visit) const {
-        const std::uint32_t cell = cells_.cell_of_particle(i);
-        const int column = cells_.grid().column(cell);
-        const int row = cells_.grid().row(cell);
+    static void for_each_neighbour(const CellList& cells, std::uint32_t i, Visit&& visit) {
+        const std::uint32_t cell = cells.cell_of_particle(i);
+        const int column = cells.grid().column(cell);
+        const int row = cells.grid().row(cell);
         for (int dy = -1; dy <= 1; ++dy) {
             for (int dx = -1; dx <= 1; ++dx) {
-                cells_.for_each_in(column + dx, row + dy, [&](std::uint32_t j) {
+                cells.for_each_in(column + dx, row + dy, [&](std::uint32_t j) {
                     if (j != i) visit(j);
                 });
             }
         }
     }
 
+    template <typename Visit>
+    void for_each_neighbour(std::uint32_t i, Visit&& visit) const {
+        for_each_neighbour(cells_, i, visit);
+    }
+
     // Names the overlapping pair (i, j) with the lowest i, then the first j
     // met: searched cell by cell first (fast), then, only if there is one,
-    // in index order.
+    // in index order. With a single cell (the lines), in the cells the rule
+    // would have chosen: one cell would compare all N^2 / 2 pairs.
     void reject_overlaps() const {
+        if (!by_lines_) {
+            reject_overlaps(cells_);
+            return;
+        }
+        CellList cells(UniformGrid(world_.box_size, cells_per_side_for(world_, count())), count());
+        for (std::uint32_t i = 0; i < count(); ++i) cells.insert(i, cells.grid().cell_of(particles_[i].position));
+        reject_overlaps(cells);
+    }
+
+    void reject_overlaps(const CellList& cells) const {
         const auto overlaps = [&](std::uint32_t i, std::uint32_t j) {
             return j > i && disks_overlap(particles_[j].position - particles_[i].position, box_.contact_dist_sq);
         };
         bool found = false;
-        cells_.for_each_by_cell([&](std::uint32_t i) {
-            if (!found) for_each_neighbour(i, [&](std::uint32_t j) { found = found || overlaps(i, j); });
+        cells.for_each_by_cell([&](std::uint32_t i) {
+            if (!found) for_each_neighbour(cells, i, [&](std::uint32_t j) { found = found || overlaps(i, j); });
         });
         if (!found) return;
         for (std::uint32_t i = 0; i < count(); ++i) {
-            for_each_neighbour(i, [&](std::uint32_t j) {
+            for_each_neighbour(cells, i, [&](std::uint32_t j) {
                 if (overlaps(i, j)) throw OverlappingStart(i, j);
             });
         }
@@ -409,7 +460,35 @@ private:
 
     void predict_pairs(std::uint32_t i) {
         pair_[i] = {};
-        consider_pairs(i, [&](auto&& visit) { for_each_neighbour(i, visit); });
+        if (!by_lines_) {
+            consider_pairs(i, [&](auto&& visit) { for_each_neighbour(i, visit); });
+            return;
+        }
+        near_.clear();
+        lines_.gather_near(i, reach_, near_);
+        consider_pairs(i, [&](auto&& visit) {
+            for (const std::uint32_t j : near_) visit(j);
+        });
+    }
+
+    // The lines' common time (the epoch) is the start of the current step,
+    // so that no line's point lies far outside the box.
+    void make_lines() {
+        if (!by_lines_) return;
+        lines_.assign(particles_, box_);
+        move_lines_to_now();
+    }
+
+    void move_lines_to_now() {
+        if (!by_lines_) return;
+        lines_epoch_ = now_;
+        lines_.move_each([&](std::uint32_t i) { return position_at(i, lines_epoch_); });
+    }
+
+    // After a collision: the particle's new line, through where it would
+    // have been at the epoch.
+    void renew_line(std::uint32_t i) {
+        if (by_lines_) lines_.set(i, position_at(i, lines_epoch_), particles_[i].velocity);
     }
 
     // Puts the first of the particle's three predictions in the queue.
@@ -437,6 +516,7 @@ private:
         const WallHit hit = time_to_wall(p.position, p.velocity, box_);
         bounce_off_wall(p, hit, box_);
         stamp_[i] = now_;
+        renew_line(i);
         ++last_step_.wall_collisions;
         note_event(i);
         predict_wall(i);
@@ -455,6 +535,8 @@ private:
         stamp_[i] = now_;
         stamp_[j] = now_;
         exchange_normal_velocities(a.position, b.position, a.velocity, b.velocity);
+        renew_line(i);
+        renew_line(j);
         ++a.particle_collisions;
         ++b.particle_collisions;
         ++last_step_.particle_collisions;
@@ -515,6 +597,13 @@ private:
     std::vector<std::int64_t> last_event_step_;
     std::vector<std::int64_t> last_repeat_step_;
     std::vector<Particle> snapshot_;  // the state at the last whole step
+    // With a single cell: every particle's line at lines_epoch_, and the
+    // distance the pair test needs (contact_reach()).
+    bool by_lines_;
+    PathLines lines_;
+    double lines_epoch_ = 0.0;
+    double reach_;
+    std::vector<std::uint32_t> near_;
     EventCalendar queue_;
     double now_ = 0.0;
     std::int64_t steps_done_ = 0;

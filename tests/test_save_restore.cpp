@@ -82,8 +82,14 @@ void exact_engine_resumes_bit_for_bit() {
         ++tested;
         check::Context context("scene ", k);
         const auto restore = [&](std::istream& saved) { return ExactSimulation::restore(scene.world, saved); };
+        // And with one cell: the particles' lines (rebuilt on restoring).
+        const auto make_lines = [&] { return ExactSimulation(scene.world, scene.particles, {.cells_per_side = 1}); };
+        const auto restore_lines = [&](std::istream& saved) {
+            return ExactSimulation::restore(scene.world, saved, {.cells_per_side = 1});
+        };
         for (const std::int64_t stop : {std::int64_t{0}, std::int64_t{1}, std::int64_t{7}, scene.steps / 2}) {
             check_resumes_exactly<ExactSimulation>(make, restore, scene.steps, stop);
+            check_resumes_exactly<ExactSimulation>(make_lines, restore_lines, scene.steps, stop);
         }
     }
     CHECK(tested >= 10);
