@@ -266,6 +266,7 @@ public:
     const StepCounts& totals() const { return totals_; }
     std::uint64_t several_events() const { return several_events_; }
     std::uint64_t events_processed() const { return events_processed_; }
+    int cells_per_side() const { return cells_.grid().per_side(); }
 
 private:
     struct Unpredicted {};
@@ -664,6 +665,7 @@ const StepCounts& ExactSimulation::last_step() const { return engine_->last_step
 const StepCounts& ExactSimulation::totals() const { return engine_->totals(); }
 std::uint64_t ExactSimulation::last_step_particles_with_several_events() const { return engine_->several_events(); }
 std::uint64_t ExactSimulation::events_processed() const { return engine_->events_processed(); }
+int ExactSimulation::cells_per_side() const { return engine_->cells_per_side(); }
 
 double estimated_events_per_step(const World& world, std::span<const Particle> particles) {
     double speed_sum = 0.0;  // sum of |vx| + |vy|

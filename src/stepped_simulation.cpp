@@ -112,6 +112,7 @@ public:
     std::int64_t steps_done() const { return steps_done_; }
     const StepCounts& last_step() const { return last_step_; }
     const StepCounts& totals() const { return totals_; }
+    PairSearch pair_search() const { return search_; }
 
 private:
     void micro_step(double duration) {
@@ -206,5 +207,6 @@ const World& SteppedSimulation::world() const { return engine_->world(); }
 std::int64_t SteppedSimulation::steps_done() const { return engine_->steps_done(); }
 const StepCounts& SteppedSimulation::last_step() const { return engine_->last_step(); }
 const StepCounts& SteppedSimulation::totals() const { return engine_->totals(); }
+PairSearch SteppedSimulation::pair_search() const { return engine_->pair_search(); }
 
 }  // namespace particlesim

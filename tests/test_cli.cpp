@@ -278,7 +278,7 @@ void stats() {
         const Result r = simcli_run({"--engine", engine, "--stats"}, scene);
         CHECK_EQ(r.status, 0);
         CHECK(r.out == plain.out);  // stdout untouched
-        CHECK_EQ(std::count(r.err.begin(), r.err.end(), '\n'), engine == "exact" ? 5L : 4L);
+        CHECK_EQ(std::count(r.err.begin(), r.err.end(), '\n'), engine == "exact" ? 6L : 5L);
         CHECK(r.err.find("stats: engine " + engine + ", 50 steps in ") == 0);
         CHECK(r.err.find(" steps/s)") != std::string::npos);
         CHECK(r.err.find("relative energy drift ") != std::string::npos);
@@ -305,6 +305,21 @@ void stats() {
             CHECK(r.err.find(" per second\n") != std::string::npos);
         }
     }
+    // Which search ran: the automatic choice, or the one asked for. 200 disks
+    // in a box of 2000 collide rarely (the paths search, one cell); 2000 in
+    // a box of 200 often (the grid, cells).
+    const std::string crowded = "2000 200 1 5 perf\n";
+    const auto stats_of = [](const std::vector<std::string>& args, const std::string& input) {
+        std::vector<std::string> with_stats = args;
+        with_stats.push_back("--stats");
+        return simcli_run(with_stats, input).err;
+    };
+    CHECK(stats_of({}, scene).find("stats: pair search paths\n") != std::string::npos);
+    CHECK(stats_of({}, crowded).find("stats: pair search grid\n") != std::string::npos);
+    CHECK(stats_of({"--broadphase", "brute"}, scene).find("stats: pair search brute\n") != std::string::npos);
+    CHECK(stats_of({"--engine", "exact"}, scene).find("stats: neighbours by the particles' lines (one cell)\n") !=
+          std::string::npos);
+    CHECK(stats_of({"--engine", "exact"}, crowded).find(" x ") != std::string::npos);
 }
 
 void write_failures() {

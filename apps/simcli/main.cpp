@@ -122,6 +122,16 @@ RunStats write_run(E& engine, const RunSettings& settings, const CliOptions& opt
     return stats;
 }
 
+const char* pair_search_name(particlesim::PairSearch search) {
+    switch (search) {
+    case particlesim::PairSearch::brute_force: return "brute";
+    case particlesim::PairSearch::grid: return "grid";
+    case particlesim::PairSearch::paths: return "paths";
+    case particlesim::PairSearch::automatic: break;
+    }
+    return "auto";
+}
+
 void print_stats(const char* engine, const RunStats& stats, std::int64_t steps) {
     const double per_step = steps > 0 ? 1.0 / static_cast<double>(steps) : 0.0;
     std::fprintf(stderr, "stats: engine %s, %lld steps in %.6f s (%.6g steps/s)\n", engine,
@@ -146,6 +156,12 @@ void run_and_report(E& engine, const RunSettings& settings, const CliOptions& op
         std::fprintf(stderr,
                      "stats: %.0f events (collisions, cell crossings, stale pair predictions), %.6g per second\n",
                      events, stats.seconds > 0.0 ? events / stats.seconds : 0.0);
+        const int side = engine.cells_per_side();
+        std::fprintf(stderr, "stats: neighbours by %s\n",
+                     side == 1 ? "the particles' lines (one cell)"
+                               : (std::to_string(side) + " x " + std::to_string(side) + " cells").c_str());
+    } else {
+        std::fprintf(stderr, "stats: pair search %s\n", pair_search_name(engine.pair_search()));
     }
 }
 

@@ -99,6 +99,10 @@ public:
     // (its speed is quoted in events per second); not saved by save().
     [[nodiscard]] std::uint64_t events_processed() const;
 
+    // The neighbour cells in use, per side: the ones asked for, or the ones
+    // chosen. 1: each particle's straight line against all the others.
+    [[nodiscard]] int cells_per_side() const;
+
 private:
     class Engine;
     explicit ExactSimulation(std::unique_ptr<Engine> engine);

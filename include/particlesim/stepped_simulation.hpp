@@ -70,6 +70,8 @@ public:
     // Summed over the micro-steps of the last step.
     [[nodiscard]] const StepCounts& last_step() const;
     [[nodiscard]] const StepCounts& totals() const;
+    // The pair search in use: the one asked for, or the one automatic chose.
+    [[nodiscard]] PairSearch pair_search() const;
 
 private:
     class Engine;
