@@ -30,6 +30,8 @@ cmake --build --preset release --target particlesim_bench simcli -j "$(nproc)" >
 {
   echo "machine: $machine"
   echo "cpu: $(lscpu | sed -n 's/^Model name: *//p') ($(nproc) cores)"
+  # The widest lanes the searches may choose (x86-64): the same model name has come with and without AVX-512.
+  echo "simd: $(grep -o -w -E 'avx2|fma|avx512f' /proc/cpuinfo 2>/dev/null | sort -u | tr '\n' ' ')"
   echo "memory: $(free -h | awk '/^Mem:/ {print $2}')"
   echo "compiler: $(g++ --version | head -1)"
 } > "$out/machine.txt"
