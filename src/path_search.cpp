@@ -115,7 +115,8 @@ void PathSearch::watch_near(const PairSearchInput& in, std::uint32_t i, double r
             if (c > 0.0 && (half_b >= 0.0 || quarter_disc < 0.0)) continue;
             const double root = std::sqrt(std::max(quarter_disc, 0.0));
             if (c > 0.0) from = c / (root - half_b);
-            until = std::max(root - half_b, 0.0) / speed_sq;
+            // A relative speed whose square underflows: watched until a line changes.
+            until = speed_sq > 0.0 ? std::max(root - half_b, 0.0) / speed_sq : never;
         } else if (c > 0.0) {
             continue;
         }

@@ -134,6 +134,28 @@ int main(int argc, char** argv) {
                            run_hash(scene, {.pair_search = PairSearch::brute_force, .threads = 1, .substeps = 3}));
               }
           }},
+         // Relative speeds whose squares underflow (dv of 1e-200 and 1e-170):
+         // overlapping pairs that approach, recede or move together, beside
+         // ordinary disks; the paths search watches them until a line changes.
+         {"paths search at tiny relative speeds",
+          [] {
+              random_scenes::TestScene scene{World{100.0, 1.0}, 60, {}};
+              for (int k = 0; k < 6; ++k) {
+                  const Vec2 v(0.7 - 0.3 * k, 0.4 + 0.1 * k);
+                  const Vec2 at(10.0 + 14.0 * k, 20.0 + 11.0 * k);
+                  const double tiny = k % 2 == 0 ? 1e-200 : 1e-170;
+                  const Vec2 apart = k % 3 == 0 ? Vec2(1.5, 0.0) : Vec2(1.0, 1.0);  // overlapping
+                  const Vec2 drift = k < 2 ? Vec2(-tiny, 0.0) : k < 4 ? Vec2(tiny, 0.0) : Vec2(0.0, 0.0);
+                  scene.particles.push_back({at, v, 0, 0});
+                  scene.particles.push_back({at + apart, v + drift, 0, 0});
+              }
+              for (int k = 0; k < 40; ++k) {
+                  scene.particles.push_back({Vec2(3.0 + 2.3 * k, 90.0 - 1.7 * k), Vec2(0.9 - 0.05 * k, 0.3), 0, 0});
+              }
+              CHECK(same_candidates_every_step(scene, std::nullopt, 1));
+              CHECK_EQ(run_hash(scene, {.pair_search = PairSearch::paths, .threads = 2}),
+                       run_hash(scene, {.pair_search = PairSearch::brute_force, .threads = 1}));
+          }},
          {"clustered scenes", [] {
               for (std::uint64_t k = 0; k < 12; ++k) {
                   const random_scenes::TestScene scene = random_scenes::make_clustered(k);
