@@ -66,8 +66,12 @@ int cells_per_side_for(const World& world, std::size_t particle_count) {
 // Costs fitted to runs of both from 500 to 16000 disks, sparse to dense
 // (docs/benchmarks.md): an event with the lines about 200 ns plus 0.06 ns a
 // line (AVX-512), an event with the cells 110 ns. Dense scenes' stale pair
-// predictions make the lines dearer than this counts, hence the margin.
+// predictions make the lines dearer than this counts, hence the margin; and
+// no more disks than were measured (the first predictions test all N^2 / 2
+// pairs).
 bool lines_are_cheaper(const World& world, std::size_t particle_count, int cells_per_side) {
+    constexpr std::size_t lines_up_to = 20000;
+    if (particle_count > lines_up_to) return false;
     const double count = static_cast<double>(particle_count);
     const double walls = count / world.box_size;
     const double pairs = 2.0 * std::sqrt(2.0) * count * count * world.radius / (world.box_size * world.box_size);

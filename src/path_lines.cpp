@@ -11,8 +11,8 @@ namespace particlesim {
 
 namespace {
 
-// Lines tested together by the widest test compiled (two groups of AVX2's
-// eight); the arrays are padded to a whole number of them.
+// Lines tested together by the widest test compiled (two groups of
+// AVX-512's sixteen); the arrays are padded to a whole number of them.
 constexpr std::size_t widest_lanes = 32;
 
 // 2^-k with value * 2^-k in [0.5, 1); 1 for zero (or anything not finite,
@@ -35,8 +35,8 @@ struct LineQuery {
 
 // One bit per lane of a comparison's result (all ones or all zeros), lane
 // 0 the lowest: on x86-64 the sign bits, four lanes at a time by SSE's
-// movmskps (any x86-64 has it; no eight-lane vector is passed by value,
-// which would change the calling convention of a build without AVX).
+// movmskps (any x86-64 has it; no wider vector is passed by value, which
+// would change the calling convention of a build without AVX).
 template <typename Mask>
 [[gnu::always_inline]] inline std::uint32_t lane_bits(const Mask& mask) {
     constexpr std::size_t lanes = sizeof(Mask) / sizeof(float);
@@ -67,10 +67,10 @@ template <typename Mask>
 }
 
 // Appends every line j of [0, padded) with |dp x dv|^2 <= reach_term |dv|^2
-// + margin_term to `near`, `Floats` lines (four or eight) to a group, two
-// groups at a time: nearly every pair of groups has no close line, so one
-// test of all their lanes. Always inlined, so that a caller compiled for
-// AVX2 gets its eight lanes.
+// + margin_term to `near`, `Floats` lines (four, eight or sixteen) to a
+// group, two groups at a time: nearly every pair of groups has no close
+// line, so one test of all their lanes. Always inlined, so that a caller
+// compiled for AVX2 or AVX-512 gets its lanes.
 template <typename Floats>
 [[gnu::always_inline]] inline void gather_lanes(const float* x, const float* y, const float* vx, const float* vy,
                                                 std::size_t padded, const LineQuery& query,
