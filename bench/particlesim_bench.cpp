@@ -85,16 +85,6 @@ Measurement measure(const Case& c) {
     return m;
 }
 
-const char* search_name(PairSearch search) {
-    switch (search) {
-    case PairSearch::brute_force: return "brute";
-    case PairSearch::grid: return "grid";
-    case PairSearch::automatic: return "auto";
-    case PairSearch::paths: return "paths";
-    }
-    return "?";
-}
-
 void run_step_case(const Case& c) {
     int channel[2];
     if (pipe(channel) != 0) return;
@@ -119,7 +109,7 @@ void run_step_case(const Case& c) {
     const double peak_bytes = static_cast<double>(usage.ru_maxrss) * 1024.0;
     const double per_step = m.median_seconds / static_cast<double>(c.steps);
     std::printf("%s,%zu,%g,%g,%lld,%s,%d,%d,%.9g,%.9g,%.9g,%.6g,%.1f,%.4g,%.0f,%.1f\n", c.name.c_str(), c.count,
-                c.box_size, c.radius, static_cast<long long>(c.steps), search_name(c.search), c.threads, c.repeats,
+                c.box_size, c.radius, static_cast<long long>(c.steps), pair_search_name(c.search), c.threads, c.repeats,
                 per_step, m.min_seconds / static_cast<double>(c.steps), m.max_seconds / static_cast<double>(c.steps),
                 static_cast<double>(c.count) / per_step, m.pair_tests_per_step, m.collisions_per_step, peak_bytes,
                 peak_bytes / static_cast<double>(c.count));

@@ -288,13 +288,15 @@ private:
           last_event_step_(particles_.size(), -1),
           last_repeat_step_(particles_.size(), -1),
           snapshot_(particles_),
-          by_lines_(cells_.grid().per_side() == 1),
           reach_(contact_reach(box_)),
           queue_(count(), Event{never, EventKind::cell_crossing, 0, 0}),
           predicted_events_(estimated_events_per_step(world, particles_)),
           event_budget_(event_budget(options, predicted_events_, count())) {}
 
     std::uint32_t count() const { return static_cast<std::uint32_t>(particles_.size()); }
+
+    // One cell: neighbours are found by the particles' lines (PathLines).
+    bool by_lines() const { return cells_.grid().per_side() == 1; }
 
     // Changes exactly when the velocity does: at each of the particle's collisions.
     std::uint32_t version(std::uint32_t i) const {
@@ -330,7 +332,7 @@ private:
     // in index order. With a single cell (the lines), in the cells the rule
     // would have chosen: one cell would compare all N^2 / 2 pairs.
     void reject_overlaps() const {
-        if (!by_lines_) {
+        if (!by_lines()) {
             reject_overlaps(cells_);
             return;
         }
@@ -465,7 +467,7 @@ private:
 
     void predict_pairs(std::uint32_t i) {
         pair_[i] = {};
-        if (!by_lines_) {
+        if (!by_lines()) {
             consider_pairs(i, [&](auto&& visit) { for_each_neighbour(i, visit); });
             return;
         }
@@ -479,13 +481,13 @@ private:
     // The lines' common time (the epoch) is the start of the current step,
     // so that no line's point lies far outside the box.
     void make_lines() {
-        if (!by_lines_) return;
+        if (!by_lines()) return;
         lines_.assign(particles_, box_);
         move_lines_to_now();
     }
 
     void move_lines_to_now() {
-        if (!by_lines_) return;
+        if (!by_lines()) return;
         lines_epoch_ = now_;
         lines_.move_each([&](std::uint32_t i) { return position_at(i, lines_epoch_); });
     }
@@ -493,7 +495,7 @@ private:
     // After a collision: the particle's new line, through where it would
     // have been at the epoch.
     void renew_line(std::uint32_t i) {
-        if (by_lines_) lines_.set(i, position_at(i, lines_epoch_), particles_[i].velocity);
+        if (by_lines()) lines_.set(i, position_at(i, lines_epoch_), particles_[i].velocity);
     }
 
     // Puts the first of the particle's three predictions in the queue.
@@ -604,7 +606,6 @@ private:
     std::vector<Particle> snapshot_;  // the state at the last whole step
     // With a single cell: every particle's line at lines_epoch_, and the
     // distance the pair test needs (contact_reach()).
-    bool by_lines_;
     PathLines lines_;
     double lines_epoch_ = 0.0;
     double reach_;

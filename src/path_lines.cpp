@@ -167,20 +167,14 @@ void PathLines::assign(std::span<const Particle> particles, const Box& box) {
     const std::size_t padded = (count_ + widest_lanes - 1) / widest_lanes * widest_lanes;
     for (std::vector<float>* component : {&x_, &y_, &vx_, &vy_}) component->assign(padded, 0.0f);
     for (std::size_t i = 0; i < count_; ++i)
-        store(static_cast<std::uint32_t>(i), particles[i].position, particles[i].velocity);
+        set(static_cast<std::uint32_t>(i), particles[i].position, particles[i].velocity);
 }
 
-void PathLines::set(std::uint32_t i, const Vec2& position, const Vec2& velocity) { store(i, position, velocity); }
-
-void PathLines::store(std::uint32_t i, const Vec2& position, const Vec2& velocity) {
-    const double x = position.x() * position_scale_;
-    const double y = position.y() * position_scale_;
+void PathLines::set(std::uint32_t i, const Vec2& position, const Vec2& velocity) {
+    store_position(i, position);
     const double vx = velocity.x() * velocity_scale_;
     const double vy = velocity.y() * velocity_scale_;
-    largest_coordinate_ = std::max({largest_coordinate_, std::abs(x), std::abs(y)});
     largest_speed_ = std::max({largest_speed_, std::abs(vx), std::abs(vy)});
-    x_[i] = static_cast<float>(x);
-    y_[i] = static_cast<float>(y);
     vx_[i] = static_cast<float>(vx);
     vy_[i] = static_cast<float>(vy);
 }

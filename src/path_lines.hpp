@@ -55,16 +55,7 @@ public:
     // the velocities stay (the particles moved along their lines).
     template <typename PositionOf>
     void move_each(PositionOf&& position_of) {
-        double largest = largest_coordinate_;
-        for (std::uint32_t i = 0; i < count_; ++i) {
-            const Vec2 position = position_of(i);
-            const double x = position.x() * position_scale_;
-            const double y = position.y() * position_scale_;
-            largest = std::max(largest, std::max(std::abs(x), std::abs(y)));
-            x_[i] = static_cast<float>(x);
-            y_[i] = static_cast<float>(y);
-        }
-        largest_coordinate_ = largest;
+        for (std::uint32_t i = 0; i < count_; ++i) store_position(i, position_of(i));
     }
 
     // Replaces one line: `position` is the particle's position at the epoch
@@ -78,7 +69,13 @@ public:
     [[nodiscard]] std::size_t size() const { return count_; }
 
 private:
-    void store(std::uint32_t i, const Vec2& position, const Vec2& velocity);
+    void store_position(std::uint32_t i, const Vec2& position) {
+        const double x = position.x() * position_scale_;
+        const double y = position.y() * position_scale_;
+        largest_coordinate_ = std::max(largest_coordinate_, std::max(std::abs(x), std::abs(y)));
+        x_[i] = static_cast<float>(x);
+        y_[i] = static_cast<float>(y);
+    }
 
     int lanes_ = 4;
     std::size_t count_ = 0;

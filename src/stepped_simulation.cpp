@@ -209,4 +209,14 @@ const StepCounts& SteppedSimulation::last_step() const { return engine_->last_st
 const StepCounts& SteppedSimulation::totals() const { return engine_->totals(); }
 PairSearch SteppedSimulation::pair_search() const { return engine_->pair_search(); }
 
+const char* pair_search_name(PairSearch search) {
+    switch (search) {
+    case PairSearch::automatic: return "auto";
+    case PairSearch::brute_force: return "brute";
+    case PairSearch::grid: return "grid";
+    case PairSearch::paths: return "paths";
+    }
+    return "?";
+}
+
 }  // namespace particlesim

@@ -69,6 +69,14 @@ std::uint64_t parse_unsigned(std::string_view option, std::string_view text, std
     return value;
 }
 
+PairSearch parse_pair_search(std::string_view text) {
+    for (const PairSearch search :
+         {PairSearch::automatic, PairSearch::brute_force, PairSearch::grid, PairSearch::paths}) {
+        if (text == particlesim::pair_search_name(search)) return search;
+    }
+    throw BadInput("--broadphase: expected auto, brute, grid or paths, found \"" + std::string(text) + "\"");
+}
+
 enum LongOnly {
     opt_seed = 256,
     opt_broadphase,
@@ -191,18 +199,7 @@ std::optional<CliOptions> parse_arguments(int argc, char** argv) {
             break;
         case opt_broadphase:
             given.step_engine_options = true;
-            if (value == "auto") {
-                given.pair_search = PairSearch::automatic;
-            } else if (value == "brute") {
-                given.pair_search = PairSearch::brute_force;
-            } else if (value == "grid") {
-                given.pair_search = PairSearch::grid;
-            } else if (value == "paths") {
-                given.pair_search = PairSearch::paths;
-            } else {
-                throw BadInput("--broadphase: expected auto, brute, grid or paths, found \"" + std::string(value) +
-                               "\"");
-            }
+            given.pair_search = parse_pair_search(value);
             break;
         case opt_grid:
             given.step_engine_options = true;

@@ -122,16 +122,6 @@ RunStats write_run(E& engine, const RunSettings& settings, const CliOptions& opt
     return stats;
 }
 
-const char* pair_search_name(particlesim::PairSearch search) {
-    switch (search) {
-    case particlesim::PairSearch::brute_force: return "brute";
-    case particlesim::PairSearch::grid: return "grid";
-    case particlesim::PairSearch::paths: return "paths";
-    case particlesim::PairSearch::automatic: break;
-    }
-    return "auto";
-}
-
 void print_stats(const char* engine, const RunStats& stats, std::int64_t steps) {
     const double per_step = steps > 0 ? 1.0 / static_cast<double>(steps) : 0.0;
     std::fprintf(stderr, "stats: engine %s, %lld steps in %.6f s (%.6g steps/s)\n", engine,
@@ -161,7 +151,7 @@ void run_and_report(E& engine, const RunSettings& settings, const CliOptions& op
                      side == 1 ? "the particles' lines (one cell)"
                                : (std::to_string(side) + " x " + std::to_string(side) + " cells").c_str());
     } else {
-        std::fprintf(stderr, "stats: pair search %s\n", pair_search_name(engine.pair_search()));
+        std::fprintf(stderr, "stats: pair search %s\n", particlesim::pair_search_name(engine.pair_search()));
     }
 }
 

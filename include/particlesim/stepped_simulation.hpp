@@ -26,6 +26,9 @@ enum class PairSearch {
     paths,        // each particle's path kept between its collisions: sparse scenes
 };
 
+// Its name on simcli's command line and in reports: auto, brute, grid, paths.
+[[nodiscard]] const char* pair_search_name(PairSearch search);
+
 // Every option is checked when the engine is built; a bad one throws
 // std::invalid_argument naming it. None changes the results, except substeps.
 struct SteppedOptions {
