@@ -54,19 +54,18 @@ bool same_candidates_every_step(const random_scenes::TestScene& scene, std::opti
     std::vector<Collision> walls;
     PathSearch paths;
     std::vector<ThreadCandidates> path_buffers(static_cast<std::size_t>(threads));
-    bool same = true;
     for (std::int64_t s = 0; s < scene.steps; ++s) {
         detect_wall_candidates(sim.particles(), box, 1.0, wall_time, walls, 1);
         const PairSearchInput in{sim.particles(), wall_time, box, 1.0};
         const std::vector<Collision> reference = pair_candidates(in, std::nullopt, true, 1);
         for (ThreadCandidates& buffer : path_buffers) buffer.found.clear();
         paths.find_pairs(in, path_buffers);
-        const bool same_step =
-            reference == pair_candidates(in, grid_cells, false, threads) && reference == merged(path_buffers);
-        same = same && same_step;
+        if (reference != pair_candidates(in, grid_cells, false, threads) || reference != merged(path_buffers)) {
+            return false;
+        }
         sim.step();
     }
-    return same;
+    return true;
 }
 
 std::uint64_t run_hash(const random_scenes::TestScene& scene, const SteppedOptions& options) {
