@@ -408,6 +408,11 @@ template <std::uint32_t block_groups, std::uint32_t group_lanes = FloatBoxArray:
     });
 }
 
+// The row above is first read here, and only at hits, a pattern the
+// processor's prefetchers miss: its motion states are fetched this many
+// cells ahead (docs/benchmarks.md).
+constexpr int prefetch_cells_ahead = 16;
+
 // The half stencil of every cell in row `cy`: the rest of the cell and the
 // cell to the east (adjacent in the cell order, so one range), then the
 // three cells above (one range), scanned in blocks of `block_groups` groups.
@@ -419,10 +424,16 @@ template <std::uint32_t block_groups, std::uint32_t group_lanes = FloatBoxArray:
     const FloatBoxArray& boxes = ws.boxes_by_cell;
     const PairTestState* states = ws.states_by_cell.data();
     const std::int64_t row = cy * side;
+    const std::uint32_t boxes_binned = start[static_cast<std::int64_t>(side) * side];
     for (int cx = 0; cx < side; ++cx) {
         const std::int64_t cell = row + cx;
         const std::uint32_t first = start[cell];
         const std::uint32_t last = start[cell + 1];
+        if (cy + 1 < side) {
+            const std::uint32_t ahead = start[row + side + std::min(cx + prefetch_cells_ahead, side)];
+            __builtin_prefetch(states + ahead);
+            __builtin_prefetch(states + std::min(ahead + 1, boxes_binned));
+        }
         if (first == last) continue;
         const std::uint32_t east_last = start[cell + (cx + 1 < side ? 2 : 1)];
         std::uint32_t above_first = 0;

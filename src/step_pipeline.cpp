@@ -241,9 +241,12 @@ void resolve_collisions(std::span<Particle> particles, std::span<const std::uint
         PairAtContact pairs[2];
         int waiting = 0;
         for (std::int64_t i = first; i < last; ++i) {
-            // A partner stored a row of cells ahead is a cache miss: fetch it early.
+            // A partner stored a row of cells ahead is a cache miss: fetch it
+            // early, both lines a 48-byte particle may span.
             if (i + partner_lookahead < count && partner[i + partner_lookahead] < wall_collision) {
-                __builtin_prefetch(&particles[partner[i + partner_lookahead]]);
+                const Particle& ahead = particles[partner[i + partner_lookahead]];
+                __builtin_prefetch(&ahead);
+                __builtin_prefetch(reinterpret_cast<const char*>(&ahead) + sizeof ahead - 1);
             }
             const std::uint32_t other = partner[i];
             if (other == no_collision) continue;
