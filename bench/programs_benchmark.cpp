@@ -1,5 +1,5 @@
 // Whole programs, timed side by side in one run:
-//   loaded   : simcli on 1 and 2 threads, quiet and beside a busy process
+//   loaded   : simcli on 1 and 2 threads and its default, quiet and beside a busy process
 //              that this harness starts and stops itself;
 //   programs : simcli against the original team's programs and an
 //              event-driven anchor, on the same scene files (the exact
@@ -182,8 +182,9 @@ void loaded_benchmark(bool quick) {
         std::vector<Row> rows;
         for (const std::string load : {"quiet", "loaded"}) {
             for (const auto& [name, path] : programs) {
-                for (const char* threads : {"1", "2"}) {
-                    rows.push_back({c.scene, name + " -t " + threads, load, {}, c.particle_steps, "particle-steps"});
+                for (const char* threads : {"1", "2", ""}) {
+                    const std::string program = *threads != '\0' ? name + " -t " + threads : name + " default threads";
+                    rows.push_back({c.scene, program, load, {}, c.particle_steps, "particle-steps"});
                 }
             }
         }
@@ -194,9 +195,11 @@ void loaded_benchmark(bool quick) {
                 std::optional<BusyProcess> busy;
                 if (loaded) busy.emplace();
                 for (const auto& [name, path] : programs) {
-                    for (const char* threads : {"1", "2"}) {
-                        rows[row++].seconds.push_back(
-                            run_timed({path, "-t", threads, c.path, "-o", "/dev/null"}).seconds);
+                    for (const char* threads : {"1", "2", ""}) {
+                        const std::vector<std::string> command =
+                            *threads != '\0' ? std::vector<std::string>{path, "-t", threads, c.path, "-o", "/dev/null"}
+                                             : std::vector<std::string>{path, c.path, "-o", "/dev/null"};
+                        rows[row++].seconds.push_back(run_timed(command).seconds);
                     }
                 }
             }

@@ -188,8 +188,10 @@ void GridSearch::find_pairs(const PairSearchInput& in, std::optional<int> forced
     // each slice, and one set of buffers keeps the memory per particle low.
     const bool parallel_slices = threads >= 2 && count < slice_parallel_below;
     const int workers = worker_count(buffers.size(), static_cast<std::int64_t>(count), min_particles_per_thread);
-    workspaces_.resize(parallel_slices ? static_cast<std::size_t>(threads) : 1);
-    for (SliceWorkspace& ws : workspaces_) prepare(ws, count, parallel_slices ? 1 : workers);
+    // Grown, never shrunk: a step may use fewer threads than the one before.
+    const std::size_t workspaces = parallel_slices ? static_cast<std::size_t>(threads) : 1;
+    if (workspaces_.size() < workspaces) workspaces_.resize(workspaces);
+    for (std::size_t k = 0; k < workspaces; ++k) prepare(workspaces_[k], count, parallel_slices ? 1 : workers);
 
     if (parallel_slices) {
         parallel_for_dynamic(

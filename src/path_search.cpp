@@ -16,7 +16,8 @@ std::uint64_t collision_count(const Particle& p) { return p.particle_collisions 
 }  // namespace
 
 void PathSearch::find_pairs(const PairSearchInput& in, std::span<ThreadCandidates> out) {
-    thread_watches_.resize(out.size());
+    // Grown, never shrunk: a step may use fewer threads than the one before.
+    if (thread_watches_.size() < out.size()) thread_watches_.resize(out.size());
     make_lines(in);
     const double reach = contact_reach(in.box);
     const auto new_count = static_cast<std::int64_t>(new_lines_.size());

@@ -13,6 +13,9 @@
 #include "scene_checks.hpp"
 #include "step_pipeline.hpp"
 #include "storage_order.hpp"
+#include "thread_choice.hpp"
+
+#include <chrono>
 
 namespace particlesim {
 
@@ -46,6 +49,11 @@ PairSearch automatic_search(const World& world, std::span<const Particle> partic
 constexpr std::size_t sort_by_position_from = 65536;
 constexpr int automatic_sort_every = 8;
 
+// Up to this many particles, a step whose threads the user did not set
+// runs on one thread whenever short trials find that faster
+// (thread_choice.hpp); larger scenes gain from every thread, quiet or busy.
+constexpr std::size_t threads_by_trials_up_to = 20000;
+
 const SteppedOptions& checked(const SteppedOptions& options) {
     const OptionsCheck check("particlesim::SteppedOptions");
     if (options.grid_cells) {
@@ -72,6 +80,7 @@ public:
             options_.sort_by_position_every.value_or(count >= sort_by_position_from ? automatic_sort_every : 0);
         if (sort_every_ > 0) storage_order_.reserve(count);
         threads_ = options_.threads.value_or(default_thread_count());
+        thread_choice_ = ThreadChoice(threads_, !options_.threads && count <= threads_by_trials_up_to);
         search_ = options_.pair_search;
         if (search_ == PairSearch::automatic) search_ = automatic_search(world_, particles_, options_.substeps);
         wall_time_.resize(count);
@@ -99,7 +108,10 @@ public:
         }
         // 1.0 / 1 is exactly 1.0: one substep is the plain step rules, bit for bit.
         const double duration = 1.0 / options_.substeps;
-        for (int micro = 0; micro < options_.substeps; ++micro) micro_step(duration);
+        const int threads = thread_choice_.threads();
+        const auto begin = std::chrono::steady_clock::now();
+        for (int micro = 0; micro < options_.substeps; ++micro) micro_step(duration, threads);
+        thread_choice_.record(std::chrono::duration<double>(std::chrono::steady_clock::now() - begin).count());
         totals_ += last_step_;
         ++steps_done_;
     }
@@ -115,26 +127,27 @@ public:
     PairSearch pair_search() const { return search_; }
 
 private:
-    void micro_step(double duration) {
+    void micro_step(double duration, int threads) {
         candidates_.clear();
         for (ThreadCandidates& thread : thread_candidates_) {
             thread.found.clear();
             thread.pair_tests = 0;
         }
-        detect_wall_candidates(particles_, box_, duration, wall_time_, candidates_, threads_);
+        const std::span<ThreadCandidates> found =
+            std::span(thread_candidates_).first(static_cast<std::size_t>(threads));
+        detect_wall_candidates(particles_, box_, duration, wall_time_, candidates_, threads);
         const PairSearchInput input{particles_, wall_time_, box_, duration};
         if (search_ == PairSearch::brute_force) {
-            find_pairs_brute_force(input, thread_candidates_);
+            find_pairs_brute_force(input, found);
         } else if (search_ == PairSearch::paths) {
-            paths_.find_pairs(input, thread_candidates_);
+            paths_.find_pairs(input, found);
         } else {
-            grid_.find_pairs(input, options_.grid_cells, thread_candidates_);
+            grid_.find_pairs(input, options_.grid_cells, found);
         }
-        const StepCounts accepted =
-            select_collisions(candidates_, thread_candidates_, CandidateOrder(storage_order_.user_index()), partner_,
-                              wall_time_, selection_, threads_);
-        resolve_collisions(particles_, partner_, wall_time_, box_, duration, threads_);
-        advance_free_particles(particles_, partner_, box_, duration, threads_);
+        const StepCounts accepted = select_collisions(candidates_, found, CandidateOrder(storage_order_.user_index()),
+                                                      partner_, wall_time_, selection_, threads);
+        resolve_collisions(particles_, partner_, wall_time_, box_, duration, threads);
+        advance_free_particles(particles_, partner_, box_, duration, threads);
 
         for (const ThreadCandidates& thread : thread_candidates_) last_step_.pair_tests += thread.pair_tests;
         last_step_.particle_collisions += accepted.particle_collisions;
@@ -145,7 +158,8 @@ private:
     Box box_;
     SteppedOptions options_;
     PairSearch search_ = PairSearch::grid;  // never automatic
-    int threads_ = 1;
+    int threads_ = 1;                       // the most a step uses
+    ThreadChoice thread_choice_{1, false};
     int sort_every_ = 0;  // steps; 0: never
     std::vector<Particle> particles_;
     StorageOrder storage_order_;

@@ -9,6 +9,7 @@
 #include <atomic>
 #include <cstdlib>
 #include <new>
+#include <optional>
 
 namespace {
 std::atomic<long> allocations{0};
@@ -30,16 +31,20 @@ int main(int argc, char** argv) {
         {{"no allocation in the step loop", [] {
               const World params{20000.0, 1.0};
               for (const PairSearch search : {PairSearch::brute_force, PairSearch::grid, PairSearch::paths}) {
-                  for (const int threads : {1, 2}) {
+                  // Unset: small scenes then switch between one thread and all of them (thread_choice.hpp).
+                  for (const std::optional<int> threads :
+                       {std::optional<int>(1), std::optional<int>(2), std::optional<int>()}) {
                       for (const int sort_every : {0, 1}) {  // never / every step stored by position
                           SteppedSimulation sim(
                               params, make_random_particles(1000, params),
                               {.pair_search = search, .threads = threads, .sort_by_position_every = sort_every});
-                          const check::Context context("search ", static_cast<int>(search), ", ", threads,
-                                                       " threads, sorted every ", sort_every);
-                          particlesim::run(sim, 20);  // warm-up: buffers grow to their working size
+                          const check::Context context("search ", static_cast<int>(search), ", ", threads.value_or(0),
+                                                       " threads (0: unset), sorted every ", sort_every);
+                          // Warm-up: buffers grow to their working size (with threads unset, past a first
+                          // trial of both thread counts).
+                          particlesim::run(sim, 40);
                           const long before = allocations.load();
-                          particlesim::run(sim, 200);
+                          particlesim::run(sim, 600);  // with threads unset, two more trials
                           CHECK_EQ(allocations.load() - before, 0L);
                       }
                   }

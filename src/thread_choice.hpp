@@ -1,0 +1,80 @@
+#pragma once
+// How many of its threads a step uses, when the user did not say. On a small
+// scene a step takes tens of microseconds and a second thread gains little:
+// on a quiet machine two threads are faster, but when the second core is
+// taken by something else one thread is (docs/benchmarks.md). Which holds
+// changes with the machine and over minutes, so it is measured: short
+// trials that alternate one thread and all of them step by step, then a
+// longer stretch with the faster, and a trial again. Every thread count
+// gives the same bytes, so only the speed depends on the choice.
+
+#include <cstdint>
+
+namespace particlesim {
+
+class ThreadChoice {
+public:
+    // A trial alternates blocks of steps on one thread and on all of them,
+    // the first step of each block not counted (it pays for the switch:
+    // a worker woken, caches filled on the other core); then steps run
+    // with the faster before the next trial.
+    static constexpr int block_steps = 4;
+    static constexpr int trial_blocks = 4;
+    static constexpr int run_steps = 240;
+    static constexpr int warming_steps = 8;
+
+    // `threads`: the most a step may use. Without `measured`, every step uses them all.
+    ThreadChoice(int threads, bool measured) : most_(threads), measured_(measured && threads > 1) {}
+
+    // For the next step.
+    [[nodiscard]] int threads() const {
+        if (!measured_ || stage_ == Stage::warming) return most_;
+        if (stage_ == Stage::running) return running_;
+        return on_one_thread(step_) ? 1 : most_;
+    }
+
+    // The step just run (with threads()) took `seconds`.
+    void record(double seconds) {
+        if (!measured_) return;
+        ++step_;
+        switch (stage_) {
+        case Stage::warming:  // the first steps fill caches and pages: not a fair trial
+            if (step_ == warming_steps) start(Stage::trying);
+            break;
+        case Stage::trying:
+            if ((step_ - 1) % block_steps != 0) (on_one_thread(step_ - 1) ? one_seconds_ : most_seconds_) += seconds;
+            if (step_ == trial_blocks * block_steps) {
+                // Ties keep all the threads (the choice when nothing is measured).
+                running_ = one_seconds_ < most_seconds_ ? 1 : most_;
+                start(Stage::running);
+            }
+            break;
+        case Stage::running:
+            if (step_ == run_steps) start(Stage::trying);
+            break;
+        }
+    }
+
+private:
+    enum class Stage : std::uint8_t { warming, trying, running };
+
+    // Within a trial: which steps run on one thread.
+    static bool on_one_thread(int step) { return (step / block_steps) % 2 == 0; }
+
+    void start(Stage stage) {
+        stage_ = stage;
+        step_ = 0;
+        one_seconds_ = 0.0;
+        most_seconds_ = 0.0;
+    }
+
+    int most_;
+    bool measured_;
+    Stage stage_ = Stage::warming;
+    int step_ = 0;  // within the stage
+    int running_ = 0;
+    double one_seconds_ = 0.0;
+    double most_seconds_ = 0.0;
+};
+
+}  // namespace particlesim
