@@ -4,9 +4,9 @@
 // on a quiet machine two threads are faster, but when the second core is
 // taken by something else one thread is (docs/benchmarks.md). Which holds
 // changes with the machine and over minutes, so it is measured: short
-// trials that alternate one thread and all of them step by step, then a
-// longer stretch with the faster, and a trial again. Every thread count
-// gives the same bytes, so only the speed depends on the choice.
+// trials that alternate blocks of steps on one thread and on all of them,
+// then a longer stretch with the faster, and a trial again. Every thread
+// count gives the same bytes, so only the speed depends on the choice.
 
 #include <cstdint>
 
