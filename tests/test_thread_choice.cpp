@@ -5,6 +5,7 @@
 
 #include "../src/thread_choice.hpp"
 
+#include <algorithm>
 #include <vector>
 
 using particlesim::ThreadChoice;
@@ -26,10 +27,9 @@ std::vector<int> run(ThreadChoice& choice, int steps, double one, double most) {
     return used;
 }
 
-int count_of(const std::vector<int>& used, int threads, int first, int last) {
-    int count = 0;
-    for (int step = first; step < last; ++step) count += used[static_cast<std::size_t>(step)] == threads ? 1 : 0;
-    return count;
+// Steps in [first, last) that got `threads`.
+long count_of(const std::vector<int>& used, int threads, int first, int last) {
+    return std::count(used.begin() + first, used.begin() + last, threads);
 }
 
 }  // namespace
@@ -48,7 +48,7 @@ int main(int argc, char** argv) {
           [] {
               ThreadChoice choice(2, true);
               const std::vector<int> used = run(choice, warming + trial, 1.0, 1.0);
-              CHECK_EQ(count_of(used, 2, 0, warming), warming);
+              CHECK_EQ(count_of(used, 2, 0, warming), long{warming});
               for (int step = 0; step < trial; ++step) {
                   const int expected = (step / ThreadChoice::block_steps) % 2 == 0 ? 1 : 2;
                   CHECK_EQ(used[static_cast<std::size_t>(warming + step)], expected);
@@ -66,8 +66,8 @@ int main(int argc, char** argv) {
                       const int run_first = warming + k * cycle + trial;
                       const int winner = one_is_faster ? 1 : 2;
                       CHECK_EQ(count_of(used, winner, run_first, run_first + ThreadChoice::run_steps),
-                               ThreadChoice::run_steps);
-                      CHECK_EQ(count_of(used, 1, run_first - trial, run_first), trial / 2);  // the trial before
+                               long{ThreadChoice::run_steps});
+                      CHECK_EQ(count_of(used, 1, run_first - trial, run_first), long{trial / 2});  // the trial before
                   }
               }
           }},
@@ -76,7 +76,7 @@ int main(int argc, char** argv) {
               ThreadChoice choice(3, true);
               const std::vector<int> used = run(choice, warming + trial + ThreadChoice::run_steps, 1.0, 1.0);
               CHECK_EQ(count_of(used, 3, warming + trial, warming + trial + ThreadChoice::run_steps),
-                       ThreadChoice::run_steps);
+                       long{ThreadChoice::run_steps});
           }},
          {"the first step of each block is not counted", [] {
               // Every switch costs a slow step; the steps after it decide.
