@@ -45,4 +45,5 @@ done
 [[ " $modes " == *" accuracy "* ]] && gnuplot -e "results='$out'" bench/plot_accuracy.gp
 [[ " $modes " == *" divergence "* ]] && gnuplot -e "results='$out'" bench/plot_divergence.gp
 [[ " $modes " == *" loaded "* ]] && gnuplot -e "results='$out'" bench/plot_loaded.gp
+[[ " $modes " == *" loaded "* ]] && gnuplot -e "results='$out'" bench/plot_default_threads.gp
 echo "wrote $(for mode in $modes; do printf '%s ' "$out/$mode.csv"; done)and the plots"
