@@ -5,19 +5,8 @@
 # (baseline: what the CSV's baseline rows were built from, runs.txt says)
 if (!exists("results")) results = "bench/results/cpp-2core"
 if (!exists("baseline")) baseline = "the baseline build"
-set terminal pngcairo size 900,580 noenhanced font ",11"
-set output results."/default_threads.png"
-set datafile separator whitespace
-set style data histograms
-set style histogram clustered gap 1
-set style fill solid 0.85 border -1
-set boxwidth 0.9
-set yrange [0:1.45]
-set grid ytics
-set key outside bottom center horizontal maxcols 2
 set ylabel "default thread count / faster of 1 and 2 threads (medians)"
 set title "The default thread count against the best fixed one (2-core machine)"
-set arrow from graph 0, first 1 to graph 1, first 1 nohead dt 2 lw 1.5
 # scene | simcli quiet | simcli loaded | baseline quiet | baseline loaded
 pivot = "< awk -F, 'NR > 1 { split($2, p, \" \"); key = $1 \"|\" p[1] \"|\" $3; " . \
         "t[key, (p[2] == \"default\") ? \"d\" : p[3]] = $5; scenes[$1] = 1 } " . \
@@ -26,7 +15,5 @@ pivot = "< awk -F, 'NR > 1 { split($2, p, \" \"); key = $1 \"|\" p[1] \"|\" $3; 
         "key = s \"|\" prog \"|\" load; best = (t[key, 1] < t[key, 2]) ? t[key, 1] : t[key, 2]; " . \
         "line = line \" \" (((key, \"d\") in t) ? t[key, \"d\"] / best : \"NaN\") } print line } }' " . \
         results."/loaded.csv | sort"
-plot pivot using 2:xtic(1) title "this build, quiet" lc rgb "#9ecae1", \
-     '' using 3 title "this build, beside a busy process" lc rgb "#08519c", \
-     '' using 4 title baseline.", quiet" lc rgb "#fdae6b", \
-     '' using 5 title baseline.", beside a busy process" lc rgb "#d94801"
+image = "default_threads.png"
+call "bench/ratio_bars.gp"

@@ -5,19 +5,8 @@
 # (baseline: what the CSV's baseline rows were built from, runs.txt says)
 if (!exists("results")) results = "bench/results/cpp-2core"
 if (!exists("baseline")) baseline = "the baseline build"
-set terminal pngcairo size 900,580 noenhanced font ",11"
-set output results."/loaded.png"
-set datafile separator whitespace
-set style data histograms
-set style histogram clustered gap 1
-set style fill solid 0.85 border -1
-set boxwidth 0.9
-set yrange [0:1.45]
-set grid ytics
-set key outside bottom center horizontal maxcols 2
 set ylabel "time with 2 threads / time with 1 thread (median)"
 set title "2 threads against 1 thread, quiet and beside one busy process (2-core machine)"
-set arrow from graph 0, first 1 to graph 1, first 1 nohead dt 2 lw 1.5
 set arrow from graph 0, first 1.2 to graph 1, first 1.2 nohead dt 3 lw 1 lc rgb "#cb181d"
 set label "target beside a busy process: 1.2" at graph 0.01, first 1.25 tc rgb "#cb181d"
 # scene | simcli quiet | simcli loaded | baseline quiet | baseline loaded
@@ -26,7 +15,5 @@ pivot = "< awk -F, 'NR > 1 { split($2, p, \" \"); key = $1 \"|\" p[1] \"|\" $3; 
         "for (k = 1; k <= 4; k++) { prog = (k <= 2) ? \"simcli\" : \"baseline\"; load = (k % 2) ? \"quiet\" : \"loaded\"; " . \
         "key = s \"|\" prog \"|\" load; line = line \" \" ((key, 1) in t ? t[key, 2] / t[key, 1] : \"NaN\") } print line } }' " . \
         results."/loaded.csv | sort"
-plot pivot using 2:xtic(1) title "this build, quiet" lc rgb "#9ecae1", \
-     '' using 3 title "this build, beside a busy process" lc rgb "#08519c", \
-     '' using 4 title baseline.", quiet" lc rgb "#fdae6b", \
-     '' using 5 title baseline.", beside a busy process" lc rgb "#d94801"
+image = "loaded.png"
+call "bench/ratio_bars.gp"
