@@ -125,6 +125,8 @@ public:
     const StepCounts& last_step() const { return last_step_; }
     const StepCounts& totals() const { return totals_; }
     PairSearch pair_search() const { return search_; }
+    int threads() const { return threads_; }
+    std::int64_t steps_on_one_thread() const { return thread_choice_.steps_on_one_thread(); }
 
 private:
     void micro_step(double duration, int threads) {
@@ -222,6 +224,8 @@ std::int64_t SteppedSimulation::steps_done() const { return engine_->steps_done(
 const StepCounts& SteppedSimulation::last_step() const { return engine_->last_step(); }
 const StepCounts& SteppedSimulation::totals() const { return engine_->totals(); }
 PairSearch SteppedSimulation::pair_search() const { return engine_->pair_search(); }
+int SteppedSimulation::threads() const { return engine_->threads(); }
+std::int64_t SteppedSimulation::steps_on_one_thread() const { return engine_->steps_on_one_thread(); }
 
 const char* pair_search_name(PairSearch search) {
     switch (search) {

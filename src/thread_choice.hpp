@@ -36,6 +36,7 @@ public:
     // The step just run (with threads()) took `seconds`.
     void record(double seconds) {
         if (!measured_) return;
+        one_thread_steps_ += threads() == 1 ? 1 : 0;
         ++step_;
         switch (stage_) {
         case Stage::warming:  // the first steps fill caches and pages: not a fair trial
@@ -54,6 +55,9 @@ public:
             break;
         }
     }
+
+    // Steps recorded that ran on one thread.
+    [[nodiscard]] std::int64_t steps_on_one_thread() const { return one_thread_steps_; }
 
 private:
     enum class Stage : std::uint8_t { warming, trying, running };
@@ -75,6 +79,7 @@ private:
     int running_ = 0;
     double one_seconds_ = 0.0;
     double most_seconds_ = 0.0;
+    std::int64_t one_thread_steps_ = 0;
 };
 
 }  // namespace particlesim

@@ -278,7 +278,7 @@ void stats() {
         const Result r = simcli_run({"--engine", engine, "--stats"}, scene);
         CHECK_EQ(r.status, 0);
         CHECK(r.out == plain.out);  // stdout untouched
-        CHECK_EQ(std::count(r.err.begin(), r.err.end(), '\n'), engine == "exact" ? 6L : 5L);
+        CHECK_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 6L);
         CHECK(r.err.find("stats: engine " + engine + ", 50 steps in ") == 0);
         CHECK(r.err.find(" steps/s)") != std::string::npos);
         CHECK(r.err.find("relative energy drift ") != std::string::npos);
@@ -320,6 +320,24 @@ void stats() {
     CHECK(stats_of({"--engine", "exact"}, scene).find("stats: neighbours by the particles' lines (one cell)\n") !=
           std::string::npos);
     CHECK(stats_of({"--engine", "exact"}, crowded).find(" x ") != std::string::npos);
+    // The threads: as asked; unset, a small scene's timed trials run 8 of
+    // their 16 steps on one thread, the first trial after 8 steps.
+    CHECK(stats_of({"-t", "1"}, scene).find("stats: threads 1\n") != std::string::npos);
+    CHECK(stats_of({"-t", "3"}, scene).find("stats: threads 3\n") != std::string::npos);
+    const std::string unset = stats_of({}, scene);
+    int most = 0;
+    long long one = 0;
+    long long steps = 0;
+    const std::size_t threads_at = unset.find("stats: threads ");
+    CHECK(threads_at != std::string::npos);
+    const int fields = std::sscanf(unset.c_str() + threads_at, "stats: threads %d, one thread in %lld of %lld steps",
+                                   &most, &one, &steps);
+    if (most > 1) {
+        CHECK_EQ(fields, 3);
+        CHECK(one >= 8 && one <= 50 && steps == 50);
+    } else {
+        CHECK(unset.find("stats: threads 1\n") != std::string::npos);
+    }
 }
 
 void write_failures() {

@@ -6,6 +6,7 @@
 #include "../src/thread_choice.hpp"
 
 #include <algorithm>
+#include <cstdint>
 #include <vector>
 
 using particlesim::ThreadChoice;
@@ -53,6 +54,7 @@ int main(int argc, char** argv) {
                   const int expected = (step / ThreadChoice::block_steps) % 2 == 0 ? 1 : 2;
                   CHECK_EQ(used[static_cast<std::size_t>(warming + step)], expected);
               }
+              CHECK_EQ(choice.steps_on_one_thread(), std::int64_t{trial / 2});
           }},
          {"the faster count runs until the next trial",
           [] {

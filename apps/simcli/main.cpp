@@ -152,6 +152,13 @@ void run_and_report(E& engine, const RunSettings& settings, const CliOptions& op
                                : (std::to_string(side) + " x " + std::to_string(side) + " cells").c_str());
     } else {
         std::fprintf(stderr, "stats: pair search %s\n", particlesim::pair_search_name(engine.pair_search()));
+        if (engine.threads() > 1 && engine.steps_on_one_thread() > 0) {
+            std::fprintf(stderr, "stats: threads %d, one thread in %lld of %lld steps (timed trials)\n",
+                         engine.threads(), static_cast<long long>(engine.steps_on_one_thread()),
+                         static_cast<long long>(settings.steps));
+        } else {
+            std::fprintf(stderr, "stats: threads %d\n", engine.threads());
+        }
     }
 }
 

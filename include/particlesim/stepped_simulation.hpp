@@ -78,6 +78,11 @@ public:
     [[nodiscard]] const StepCounts& totals() const;
     // The pair search in use: the one asked for, or the one automatic chose.
     [[nodiscard]] PairSearch pair_search() const;
+    // The most threads a step uses: the ones asked for, or OpenMP's default.
+    [[nodiscard]] int threads() const;
+    // Of the steps this object ran, those that the thread choice (threads not
+    // set, a small scene: SteppedOptions::threads) ran on one thread.
+    [[nodiscard]] std::int64_t steps_on_one_thread() const;
 
 private:
     class Engine;
