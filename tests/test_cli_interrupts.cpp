@@ -93,6 +93,32 @@ void checkpoint_every_k_resumes_byte_for_byte() {
     }
 }
 
+// --stats of a resumed run counts the steps that run made: 60 steps with a
+// checkpoint every 25 resume at step 50, so 10 steps, the last 2 of them
+// (after 8 warm-up steps) the first steps of a trial, on one thread.
+void resumed_stats_count_the_resumed_steps() {
+    const ScratchDir dir;
+    const std::string checkpoint = dir / "run.checkpoint";
+    const Result first = simcli_run({"--checkpoint", checkpoint, "--checkpoint-every", "25"}, "200 2000 1 60 perf\n");
+    CHECK_EQ(first.status, 0);
+    const Result rest = simcli_run({"--resume", checkpoint, "--stats", "--quiet"});
+    CHECK_EQ(rest.status, 0);
+    const std::size_t at = rest.err.find("stats: threads ");
+    CHECK(at != std::string::npos);
+    int most = 0;
+    long long one = 0;
+    long long steps = 0;
+    const int fields =
+        std::sscanf(rest.err.c_str() + at, "stats: threads %d, one thread in %lld of %lld steps", &most, &one, &steps);
+    if (most > 1) {
+        CHECK_EQ(fields, 3);
+        CHECK_EQ(one, 2LL);
+        CHECK_EQ(steps, 10LL);
+    } else {
+        CHECK(rest.err.find("stats: threads 1\n") != std::string::npos);
+    }
+}
+
 // A real signal at an arbitrary step: the output written so far (a file,
 // renamed into place on the interrupt) and the resumed part equal the whole run.
 void signals_checkpoint_and_resume() {
@@ -219,6 +245,7 @@ int main(int argc, char** argv) {
     return check::run(argc, argv, "test_cli_interrupts",
                       {{"checkpoint every K resumes byte for byte", checkpoint_every_k_resumes_byte_for_byte},
                        {"signals, checkpoint and resume", signals_checkpoint_and_resume},
+                       {"resumed stats count the resumed steps", resumed_stats_count_the_resumed_steps},
                        {"output file replaced only on success", output_file_replaced_only_on_success},
                        {"exact numbers", exact_numbers},
                        {"progress line", progress_line},

@@ -49,6 +49,7 @@ private:
 };
 
 struct RunStats {
+    std::int64_t steps_run = 0;  // by this process: a resumed run starts past 0
     double seconds = 0.0;
     StepCounts totals;
     double initial_energy = 0.0;
@@ -76,6 +77,7 @@ RunStats write_run(E& engine, const RunSettings& settings, const CliOptions& opt
     RunStats stats;
     stats.initial_energy = total_kinetic_energy(engine.particles());
     const std::int64_t first_step = engine.steps_done();
+    stats.steps_run = settings.steps - first_step;
     OutputFile output(options.output_path);
     StateWriter writer(output.stream(), settings.numbers);
     // A resumed run goes on where the first part of its output ends.
@@ -155,7 +157,7 @@ void run_and_report(E& engine, const RunSettings& settings, const CliOptions& op
         if (engine.threads() > 1 && engine.steps_on_one_thread() > 0) {
             std::fprintf(stderr, "stats: threads %d, one thread in %lld of %lld steps (timed trials)\n",
                          engine.threads(), static_cast<long long>(engine.steps_on_one_thread()),
-                         static_cast<long long>(settings.steps));
+                         static_cast<long long>(stats.steps_run));
         } else {
             std::fprintf(stderr, "stats: threads %d\n", engine.threads());
         }
