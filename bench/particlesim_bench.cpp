@@ -8,9 +8,9 @@
 //   particlesim_bench exact    [--quick]   the exact engine's speed (accuracy_benchmark.cpp)
 //   particlesim_bench stress   [--quick]   1e6 steps of a crowded box (stress_benchmark.cpp)
 //   particlesim_bench divergence [--quick] two correct programs drifting apart (divergence_benchmark.cpp)
-//   particlesim_bench loaded   [--quick]   1 and 2 threads and the default, quiet and beside a busy process
-//   (programs_benchmark.cpp) particlesim_bench programs [--quick]   beside the original programs and EDMD
-//   (programs_benchmark.cpp)
+//   particlesim_bench loaded   [--quick]   1 and 2 threads and the default thread count, quiet and
+//                                          beside a busy process (programs_benchmark.cpp)
+//   particlesim_bench programs [--quick]   beside the original programs and EDMD (programs_benchmark.cpp)
 //
 // Every time is the median of repeated runs measured in the same invocation.
 

@@ -175,6 +175,9 @@ void loaded_benchmark(bool quick) {
          static_cast<double>(gas_n) * 20, 3}};
     std::vector<std::pair<std::string, std::string> > programs{{"simcli", simcli}};
     if (const auto baseline = program_from("PARTICLESIM_BASELINE_SIMCLI")) programs.emplace_back("baseline", *baseline);
+    // Each program on one thread, on two, and with its own default: a row's name, and its arguments.
+    const std::vector<std::pair<std::string, std::vector<std::string> > > thread_counts{
+        {" -t 1", {"-t", "1"}}, {" -t 2", {"-t", "2"}}, {" default threads", {}}};
 
     print_header();
     for (const Case& c : cases) {
@@ -182,9 +185,8 @@ void loaded_benchmark(bool quick) {
         std::vector<Row> rows;
         for (const std::string load : {"quiet", "loaded"}) {
             for (const auto& [name, path] : programs) {
-                for (const char* threads : {"1", "2", ""}) {
-                    const std::string program = *threads != '\0' ? name + " -t " + threads : name + " default threads";
-                    rows.push_back({c.scene, program, load, {}, c.particle_steps, "particle-steps"});
+                for (const auto& [suffix, arguments] : thread_counts) {
+                    rows.push_back({c.scene, name + suffix, load, {}, c.particle_steps, "particle-steps"});
                 }
             }
         }
@@ -195,10 +197,10 @@ void loaded_benchmark(bool quick) {
                 std::optional<BusyProcess> busy;
                 if (loaded) busy.emplace();
                 for (const auto& [name, path] : programs) {
-                    for (const char* threads : {"1", "2", ""}) {
-                        const std::vector<std::string> command =
-                            *threads != '\0' ? std::vector<std::string>{path, "-t", threads, c.path, "-o", "/dev/null"}
-                                             : std::vector<std::string>{path, c.path, "-o", "/dev/null"};
+                    for (const auto& [suffix, arguments] : thread_counts) {
+                        std::vector<std::string> command{path};
+                        command.insert(command.end(), arguments.begin(), arguments.end());
+                        command.insert(command.end(), {c.path, "-o", "/dev/null"});
                         rows[row++].seconds.push_back(run_timed(command).seconds);
                     }
                 }
