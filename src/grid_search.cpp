@@ -119,33 +119,27 @@ GridSearch::GridSearch(GridSearch&&) noexcept = default;
 GridSearch& GridSearch::operator=(GridSearch&&) noexcept = default;
 
 GridLayout GridSearch::choose_layout(const PairSearchInput& in, std::optional<int> forced_cells, int threads) {
-    const auto count = static_cast<std::int64_t>(in.particles.size());
-    double length_sum = 0.0;
-    double max_speed = 0.0;
-    std::int64_t present = 0;
-    const int workers = worker_count(static_cast<std::size_t>(threads), count, min_particles_per_thread);
-    // Sums per block of particles, added in block order: the layout (and so
-    // the pair tests counted) does not depend on the thread count.
-    constexpr std::int64_t block = 4096;
-    const std::int64_t blocks = (count + block - 1) / block;
-    block_sums_.assign(static_cast<std::size_t>(blocks), BlockSums{});
-    parallel_for(workers, blocks, [&](std::int64_t b, std::size_t) {
-        BlockSums& sums = block_sums_[b];
-        for (std::int64_t i = b * block; i < std::min(count, (b + 1) * block); ++i) {
-            const double end = sweep_end(in, i);
-            const double speed = in.particles[i].velocity.norm();
-            sums.max_speed = std::max(sums.max_speed, speed);
-            if (end > 0.0) {
-                ++sums.present;
-                sums.length_sum += speed * end;
-            }
-        }
-    });
-    for (const BlockSums& sums : block_sums_) {
-        length_sum += sums.length_sum;
-        present += sums.present;
-        max_speed = std::max(max_speed, sums.max_speed);
+    // The blocks' sums, measured here unless the step has them already.
+    std::span<const BlockStart> blocks = in.blocks;
+    if (blocks.empty()) {
+        const auto count = static_cast<std::int64_t>(in.particles.size());
+        const int workers = worker_count(static_cast<std::size_t>(threads), count, min_particles_per_thread);
+        block_starts_.resize(static_cast<std::size_t>((count + motion_block - 1) / motion_block));
+        parallel_for_blocks(workers, count, motion_block,
+                            [&](std::int64_t block, std::int64_t first, std::int64_t last) {
+                                MotionSums measured;
+                                for (std::int64_t i = first; i < last; ++i) {
+                                    measured.add(in.particles[i].velocity, in.wall_time[i], in.duration);
+                                }
+                                block_starts_[block].motion = measured;
+                            });
+        blocks = block_starts_;
     }
+    MotionSums motion;
+    for (const BlockStart& block : blocks) motion.add(block.motion);
+    const double length_sum = motion.length_sum;
+    const double max_speed = motion.max_speed;
+    const std::int64_t present = motion.present;
 
     const double box_size = in.box.side;
     GridLayout layout;

@@ -87,14 +87,8 @@ private:
     void test_large_pairs(const PairSearchInput& in, const SliceWorkspace& ws, std::span<ThreadCandidates> out,
                           int threads) const;
 
-    struct BlockSums {
-        double length_sum = 0.0;
-        double max_speed = 0.0;
-        std::int64_t present = 0;
-    };
-
     GridLayout layout_;
-    std::vector<BlockSums> block_sums_;
+    std::vector<BlockStart> block_starts_;  // when the step brings none
     std::vector<SliceWorkspace> workspaces_;
 };
 

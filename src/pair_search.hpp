@@ -6,6 +6,7 @@
 #include "collision.hpp"
 #include "particlesim/particle.hpp"
 #include "physics.hpp"
+#include "step_start.hpp"
 
 #include <cstdint>
 #include <span>
@@ -22,6 +23,9 @@ struct PairSearchInput {
     std::span<const double> wall_time;
     Box box;
     double duration = 1.0;  // of the (micro-)step
+    // The blocks' motion, when measured already (step_start.hpp); empty:
+    // a search that needs it measures it.
+    std::span<const BlockStart> blocks = {};
 };
 
 // Candidates found by one thread, on a cache line of its own.

@@ -6,40 +6,41 @@
 #include <algorithm>
 #include <array>
 #include <atomic>
-#include <numeric>
 
 namespace particlesim {
 
-namespace {
-
-// The most ranges the wall candidates are gathered in (eight a thread).
-constexpr std::int64_t max_wall_ranges = 256;
-
-}  // namespace
-
-void detect_wall_candidates(std::span<const Particle> particles, const Box& box, double duration,
-                            std::span<double> wall_time, std::vector<Collision>& candidates, int threads) {
+void measure_step_start(std::span<const Particle> particles, const Box& box, double duration,
+                        std::span<double> wall_time, StepStart& start, int threads) {
     const auto count = static_cast<std::int64_t>(particles.size());
     const int workers = worker_count(static_cast<std::size_t>(threads), count, min_particles_per_thread);
-    // Each range of particles counts its candidates, then writes them from
-    // where the ranges before it end: in index order, on every thread. (A
-    // range past the end, never visited, counts 0.)
-    std::array<std::uint32_t, max_wall_ranges + 1> range_start{};
-    const std::int64_t ranges = std::min<std::int64_t>(max_wall_ranges, 8 * std::int64_t{workers});
-    const auto for_each_range = [&](auto&& body) { parallel_for_ranges(workers, count, ranges, body); };
-    for_each_range([&](std::int64_t range, std::int64_t first, std::int64_t last) {
-        std::uint32_t found = 0;
-        for (std::int64_t i = first; i < last; ++i) {
-            wall_time[i] = time_to_wall(particles[i].position, particles[i].velocity, box).time;
-            found += wall_time[i] <= duration ? 1U : 0U;
-        }
-        range_start[range + 1] = found;
+    start.resize(particles.size());
+    start.with_or_without_motion([&](auto with_motion) {
+        parallel_for_blocks(workers, count, motion_block,
+                            [&](std::int64_t block, std::int64_t first, std::int64_t last) {
+                                BlockStart measured;
+                                for (std::int64_t i = first; i < last; ++i) {
+                                    wall_time[i] = measured.measure<with_motion>(particles[i], box, duration);
+                                }
+                                start.blocks[block] = measured;
+                            });
     });
-    std::partial_sum(range_start.begin(), range_start.end(), range_start.begin());
+    start.measured = true;
+}
+
+void gather_wall_candidates(std::span<const double> wall_time, double duration, StepStart& start,
+                            std::vector<Collision>& candidates, int threads) {
+    const auto count = static_cast<std::int64_t>(wall_time.size());
+    const int workers = worker_count(static_cast<std::size_t>(threads), count, min_particles_per_thread);
+    // Each block writes its candidates from where the blocks before it end: in index order, on every thread.
     const std::size_t before = candidates.size();
-    candidates.resize(before + range_start[ranges]);
-    for_each_range([&](std::int64_t range, std::int64_t first, std::int64_t last) {
-        std::size_t at = before + range_start[range];
+    std::uint32_t found = 0;
+    for (std::size_t block = 0; block < start.blocks.size(); ++block) {
+        start.first_candidate[block] = found;
+        found += start.blocks[block].wall_candidates;
+    }
+    candidates.resize(before + found);
+    parallel_for_blocks(workers, count, motion_block, [&](std::int64_t block, std::int64_t first, std::int64_t last) {
+        std::size_t at = before + start.first_candidate[block];
         for (std::int64_t i = first; i < last; ++i) {
             if (wall_time[i] <= duration)
                 candidates[at++] = Collision::wall(wall_time[i], static_cast<std::uint32_t>(i));
@@ -199,27 +200,31 @@ void resolve_pair(PairAtContact& pair, const Box& box, double duration) {
     finish_pair(pair, box, duration);
 }
 
-// Two pairs at once, one in each lane of the exchange: the same bits as one
-// at a time, in about the time of one.
-void resolve_two_pairs(PairAtContact& first, PairAtContact& second, const Box& box, double duration) {
-    const auto lanes = [&](auto component) { return TwoDoubles{component(first), component(second)}; };
-    ContactPair<TwoDoubles> contact{
-        lanes([](const PairAtContact& p) { return p.moved[0].position.x(); }),
-        lanes([](const PairAtContact& p) { return p.moved[0].position.y(); }),
-        lanes([](const PairAtContact& p) { return p.moved[1].position.x(); }),
-        lanes([](const PairAtContact& p) { return p.moved[1].position.y(); }),
-        lanes([](const PairAtContact& p) { return p.moved[0].velocity.x(); }),
-        lanes([](const PairAtContact& p) { return p.moved[0].velocity.y(); }),
-        lanes([](const PairAtContact& p) { return p.moved[1].velocity.x(); }),
-        lanes([](const PairAtContact& p) { return p.moved[1].velocity.y(); }),
-    };
-    exchange_normal_components(contact);
-    PairAtContact* pairs[2] = {&first, &second};
-    for (int lane = 0; lane < 2; ++lane) {
-        PairAtContact& pair = *pairs[lane];
-        pair.moved[0].velocity = Vec2(contact.vix[lane], contact.viy[lane]);
-        pair.moved[1].velocity = Vec2(contact.vjx[lane], contact.vjy[lane]);
-        finish_pair(pair, box, duration);
+// Four pairs at once, one in each lane of two exchanges: the same bits as
+// one at a time. Each exchange is a long chain of dependent operations; both
+// run before either pair is finished, so the processor overlaps them.
+void resolve_four_pairs(std::span<PairAtContact, 4> pairs, const Box& box, double duration) {
+    ContactPair<TwoDoubles> contacts[2];
+    for (std::size_t k = 0; k < pairs.size(); ++k) {
+        ContactPair<TwoDoubles>& contact = contacts[k / 2];
+        const std::size_t lane = k % 2;
+        const Particle(&moved)[2] = pairs[k].moved;
+        contact.pix[lane] = moved[0].position.x();
+        contact.piy[lane] = moved[0].position.y();
+        contact.pjx[lane] = moved[1].position.x();
+        contact.pjy[lane] = moved[1].position.y();
+        contact.vix[lane] = moved[0].velocity.x();
+        contact.viy[lane] = moved[0].velocity.y();
+        contact.vjx[lane] = moved[1].velocity.x();
+        contact.vjy[lane] = moved[1].velocity.y();
+    }
+    for (ContactPair<TwoDoubles>& contact : contacts) exchange_normal_components(contact);
+    for (std::size_t k = 0; k < pairs.size(); ++k) {
+        const ContactPair<TwoDoubles>& contact = contacts[k / 2];
+        const std::size_t lane = k % 2;
+        pairs[k].moved[0].velocity = Vec2(contact.vix[lane], contact.viy[lane]);
+        pairs[k].moved[1].velocity = Vec2(contact.vjx[lane], contact.vjy[lane]);
+        finish_pair(pairs[k], box, duration);
     }
 }
 
@@ -236,10 +241,10 @@ void resolve_collisions(std::span<Particle> particles, std::span<const std::uint
     // it. A pair is resolved once, at its lower stored index; accepted
     // collisions share no particle, so they resolve independently (and the
     // exchange is symmetric, bit for bit, in its two particles). Pairs wait
-    // for a second to share the exchange.
+    // for three more to share the exchanges.
     parallel_for_blocks(workers, count, block, [&](std::int64_t, std::int64_t first, std::int64_t last) {
-        PairAtContact pairs[2];
-        int waiting = 0;
+        std::array<PairAtContact, 4> pairs;
+        std::size_t waiting = 0;
         for (std::int64_t i = first; i < last; ++i) {
             // A partner stored a row of cells ahead is a cache miss: fetch it
             // early, both lines a 48-byte particle may span.
@@ -254,27 +259,41 @@ void resolve_collisions(std::span<Particle> particles, std::span<const std::uint
                 resolve_wall(particles[i], collision_time[i], box, duration);
             } else if (static_cast<std::uint32_t>(i) < other) {
                 pairs[waiting++] = at_contact(particles[i], particles[other], collision_time[i]);
-                if (waiting == 2) {
-                    resolve_two_pairs(pairs[0], pairs[1], box, duration);
+                if (waiting == pairs.size()) {
+                    resolve_four_pairs(pairs, box, duration);
                     waiting = 0;
                 }
             }
         }
-        if (waiting == 1) resolve_pair(pairs[0], box, duration);
+        for (std::size_t k = 0; k < waiting; ++k) resolve_pair(pairs[k], box, duration);
     });
 }
 
 void advance_free_particles(std::span<Particle> particles, std::span<std::uint32_t> partner, const Box& box,
-                            double duration, int threads) {
+                            double duration, std::span<double> wall_time, StepStart& next, int threads) {
     const auto count = static_cast<std::int64_t>(particles.size());
     const int workers = worker_count(static_cast<std::size_t>(threads), count, min_particles_per_thread);
-    parallel_for(workers, count, [&](std::int64_t i, std::size_t) {
-        if (partner[i] == no_collision) {
-            move_freely(particles[i], duration, box);
-        } else {
-            partner[i] = no_collision;
-        }
+    next.resize(particles.size());
+    next.with_or_without_motion([&](auto with_motion) {
+        parallel_for_blocks(workers, count, motion_block,
+                            [&](std::int64_t block, std::int64_t first, std::int64_t last) {
+                                BlockStart measured;
+                                for (std::int64_t i = first; i < last; ++i) {
+                                    // Measured on the copy: a position read back right after
+                                    // its halves were stored would stall (see resolve_wall()).
+                                    Particle particle = particles[i];
+                                    if (partner[i] == no_collision) {
+                                        move_freely(particle, duration, box);
+                                        particles[i] = particle;
+                                    } else {
+                                        partner[i] = no_collision;
+                                    }
+                                    wall_time[i] = measured.measure<with_motion>(particle, box, duration);
+                                }
+                                next.blocks[block] = measured;
+                            });
     });
+    next.measured = true;
 }
 
 }  // namespace particlesim

@@ -12,6 +12,7 @@
 #include "pair_search.hpp"
 #include "particlesim/engine.hpp"
 #include "particlesim/particle.hpp"
+#include "step_start.hpp"
 
 #include <algorithm>
 #include <cstdint>
@@ -21,10 +22,16 @@
 
 namespace particlesim {
 
-// Writes each particle's first wall time into `wall_time` and appends the
-// wall candidates (time <= duration) to `candidates`, in index order.
-void detect_wall_candidates(std::span<const Particle> particles, const Box& box, double duration,
-                            std::span<double> wall_time, std::vector<Collision>& candidates, int threads);
+// Writes each particle's first wall time into `wall_time`, and the blocks'
+// figures into `start` (step_start.hpp); for a step whose previous one did
+// not measure them (advance_free_particles).
+void measure_step_start(std::span<const Particle> particles, const Box& box, double duration,
+                        std::span<double> wall_time, StepStart& start, int threads);
+
+// Appends the wall candidates (wall time <= duration) to `candidates`, in
+// index order, from the measured start.
+void gather_wall_candidates(std::span<const double> wall_time, double duration, StepStart& start,
+                            std::vector<Collision>& candidates, int threads);
 
 // rules.md "Order" between two candidates: time, walls before pairs, then
 // the lowest user indices. `user_index` maps stored places to user indices
@@ -88,8 +95,10 @@ StepCounts select_collisions(std::vector<Collision>& candidates, std::span<const
 void resolve_collisions(std::span<Particle> particles, std::span<const std::uint32_t> partner,
                         std::span<const double> collision_time, const Box& box, double duration, int threads);
 
-// Moves every particle without a collision, and sets every partner back to no_collision.
+// Moves every particle without a collision, sets every partner back to
+// no_collision, and in the same pass measures the start of the next step of
+// `duration` (as measure_step_start()): one pass over the particles fewer.
 void advance_free_particles(std::span<Particle> particles, std::span<std::uint32_t> partner, const Box& box,
-                            double duration, int threads);
+                            double duration, std::span<double> wall_time, StepStart& next, int threads);
 
 }  // namespace particlesim

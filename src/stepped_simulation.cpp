@@ -85,6 +85,8 @@ public:
         if (search_ == PairSearch::automatic) search_ = automatic_search(world_, particles_, options_.substeps);
         wall_time_.resize(count);
         partner_.assign(count, no_collision);
+        start_.resize(count);
+        start_.with_motion = search_ == PairSearch::grid;
         selection_ = SelectionScratch(count);
         // Room for a busy step from the start, so that steps rarely need to grow it.
         candidates_.reserve(2 * count + 64);
@@ -105,6 +107,7 @@ public:
         if (sort_every_ > 0 && (storage_order_.is_user_order() || steps_done_ % sort_every_ == 0)) {
             storage_order_.sort_by_position(particles_, box_);
             paths_.forget();
+            start_.measured = false;
         }
         // 1.0 / 1 is exactly 1.0: one substep is the plain step rules, bit for bit.
         const double duration = 1.0 / options_.substeps;
@@ -117,6 +120,7 @@ public:
     }
 
     std::span<const Particle> particles() {
+        if (!storage_order_.is_user_order()) start_.measured = false;
         storage_order_.restore_user_order(particles_);
         return particles_;
     }
@@ -137,8 +141,11 @@ private:
         }
         const std::span<ThreadCandidates> found =
             std::span(thread_candidates_).first(static_cast<std::size_t>(threads));
-        detect_wall_candidates(particles_, box_, duration, wall_time_, candidates_, threads);
-        const PairSearchInput input{particles_, wall_time_, box_, duration};
+        if (!start_.measured) measure_step_start(particles_, box_, duration, wall_time_, start_, threads);
+        gather_wall_candidates(wall_time_, duration, start_, candidates_, threads);
+        const PairSearchInput input{
+            particles_, wall_time_, box_, duration,
+            start_.with_motion ? std::span<const BlockStart>(start_.blocks) : std::span<const BlockStart>()};
         if (search_ == PairSearch::brute_force) {
             find_pairs_brute_force(input, found);
         } else if (search_ == PairSearch::paths) {
@@ -149,7 +156,8 @@ private:
         const StepCounts accepted = select_collisions(candidates_, found, CandidateOrder(storage_order_.user_index()),
                                                       partner_, wall_time_, selection_, threads);
         resolve_collisions(particles_, partner_, wall_time_, box_, duration, threads);
-        advance_free_particles(particles_, partner_, box_, duration, threads);
+        // Measures the next step's start as it moves the particles.
+        advance_free_particles(particles_, partner_, box_, duration, wall_time_, start_, threads);
 
         for (const ThreadCandidates& thread : thread_candidates_) last_step_.pair_tests += thread.pair_tests;
         last_step_.particle_collisions += accepted.particle_collisions;
@@ -170,6 +178,7 @@ private:
     // selection on, the time of its accepted collision (one array for both,
     // in turn: 8 bytes a particle fewer).
     std::vector<double> wall_time_;
+    StepStart start_;  // the wall times' blocks, measured by the previous step's advance when it could
     std::vector<std::uint32_t> partner_;  // by particle: its partner, no_collision or wall_collision
     SelectionScratch selection_;
     std::vector<Collision> candidates_;

@@ -51,11 +51,11 @@ bool same_candidates_every_step(const random_scenes::TestScene& scene, std::opti
     SteppedSimulation sim(scene.world, scene.particles, {.pair_search = PairSearch::brute_force, .threads = 1});
     const Box box = Box::of(scene.world);
     std::vector<double> wall_time(scene.particles.size());
-    std::vector<Collision> walls;
+    StepStart start;
     PathSearch paths;
     std::vector<ThreadCandidates> path_buffers(static_cast<std::size_t>(threads));
     for (std::int64_t s = 0; s < scene.steps; ++s) {
-        detect_wall_candidates(sim.particles(), box, 1.0, wall_time, walls, 1);
+        measure_step_start(sim.particles(), box, 1.0, wall_time, start, 1);
         const PairSearchInput in{sim.particles(), wall_time, box, 1.0};
         const std::vector<Collision> reference = pair_candidates(in, std::nullopt, true, 1);
         for (ThreadCandidates& buffer : path_buffers) buffer.found.clear();
