@@ -232,37 +232,51 @@ void resolve_four_pairs(std::span<PairAtContact, 4> pairs, const Box& box, doubl
 
 void resolve_collisions(std::span<Particle> particles, std::span<const std::uint32_t> partner,
                         std::span<const double> collision_time, const Box& box, double duration, int threads) {
-    constexpr std::int64_t partner_lookahead = 32;
     constexpr std::int64_t block = 1024;
+    constexpr std::size_t pair_lookahead = 16;
     const auto count = static_cast<std::int64_t>(particles.size());
     const int workers = worker_count(static_cast<std::size_t>(threads), count, min_particles_per_thread);
-    // In storage order, reading only per-particle arrays: a large scene is
-    // stored by position, so this walks memory instead of jumping through
-    // it. A pair is resolved once, at its lower stored index; accepted
-    // collisions share no particle, so they resolve independently (and the
-    // exchange is symmetric, bit for bit, in its two particles). Pairs wait
-    // for three more to share the exchanges.
+    // In storage order, block by block, reading only per-particle arrays: a
+    // large scene is stored by position, so this walks memory instead of
+    // jumping through it. A pair is resolved once, at its lower stored
+    // index; accepted collisions share no particle, so they resolve
+    // independently (and the exchange is symmetric, bit for bit, in its two
+    // particles).
     parallel_for_blocks(workers, count, block, [&](std::int64_t, std::int64_t first, std::int64_t last) {
+        // The block's collisions are listed first, without a branch on each
+        // particle: which ones collide follows no pattern, and a branch on
+        // it was mispredicted for most that do.
+        std::array<std::uint32_t, block> pair_at;
+        std::array<std::uint32_t, block> wall_at;
+        std::size_t pairs_listed = 0;
+        std::size_t walls_listed = 0;
+        for (std::int64_t i = first; i < last; ++i) {
+            const std::uint32_t other = partner[i];
+            const auto at = static_cast<std::uint32_t>(i);
+            pair_at[pairs_listed] = at;
+            pairs_listed += static_cast<std::size_t>(other < wall_collision) & static_cast<std::size_t>(at < other);
+            wall_at[walls_listed] = at;
+            walls_listed += static_cast<std::size_t>(other == wall_collision);
+        }
+        for (std::size_t k = 0; k < walls_listed; ++k) {
+            resolve_wall(particles[wall_at[k]], collision_time[wall_at[k]], box, duration);
+        }
+        // Pairs wait for three more to share the exchanges. A partner stored
+        // a row of cells ahead is a cache miss: it is fetched a few pairs
+        // early, both lines a 48-byte particle may span.
         std::array<PairAtContact, 4> pairs;
         std::size_t waiting = 0;
-        for (std::int64_t i = first; i < last; ++i) {
-            // A partner stored a row of cells ahead is a cache miss: fetch it
-            // early, both lines a 48-byte particle may span.
-            if (i + partner_lookahead < count && partner[i + partner_lookahead] < wall_collision) {
-                const Particle& ahead = particles[partner[i + partner_lookahead]];
+        for (std::size_t k = 0; k < pairs_listed; ++k) {
+            if (k + pair_lookahead < pairs_listed) {
+                const Particle& ahead = particles[partner[pair_at[k + pair_lookahead]]];
                 __builtin_prefetch(&ahead);
                 __builtin_prefetch(reinterpret_cast<const char*>(&ahead) + sizeof ahead - 1);
             }
-            const std::uint32_t other = partner[i];
-            if (other == no_collision) continue;
-            if (other == wall_collision) {
-                resolve_wall(particles[i], collision_time[i], box, duration);
-            } else if (static_cast<std::uint32_t>(i) < other) {
-                pairs[waiting++] = at_contact(particles[i], particles[other], collision_time[i]);
-                if (waiting == pairs.size()) {
-                    resolve_four_pairs(pairs, box, duration);
-                    waiting = 0;
-                }
+            const std::uint32_t i = pair_at[k];
+            pairs[waiting++] = at_contact(particles[i], particles[partner[i]], collision_time[i]);
+            if (waiting == pairs.size()) {
+                resolve_four_pairs(pairs, box, duration);
+                waiting = 0;
             }
         }
         for (std::size_t k = 0; k < waiting; ++k) resolve_pair(pairs[k], box, duration);
@@ -279,15 +293,19 @@ void advance_free_particles(std::span<Particle> particles, std::span<std::uint32
                             [&](std::int64_t block, std::int64_t first, std::int64_t last) {
                                 BlockStart measured;
                                 for (std::int64_t i = first; i < last; ++i) {
-                                    // Measured on the copy: a position read back right after
-                                    // its halves were stored would stall (see resolve_wall()).
+                                    // Without a branch on whether the particle collided
+                                    // (no pattern to learn): a collided one is stored back
+                                    // as it is. Measured on the copy: a position read back
+                                    // right after its halves were stored would stall (see
+                                    // resolve_wall()).
                                     Particle particle = particles[i];
-                                    if (partner[i] == no_collision) {
-                                        move_freely(particle, duration, box);
-                                        particles[i] = particle;
-                                    } else {
-                                        partner[i] = no_collision;
-                                    }
+                                    Particle moved = particle;
+                                    move_freely(moved, duration, box);
+                                    const bool free = partner[i] == no_collision;
+                                    particle.position.x() = free ? moved.position.x() : particle.position.x();
+                                    particle.position.y() = free ? moved.position.y() : particle.position.y();
+                                    particles[i] = particle;
+                                    partner[i] = no_collision;
                                     wall_time[i] = measured.measure<with_motion>(particle, box, duration);
                                 }
                                 next.blocks[block] = measured;
