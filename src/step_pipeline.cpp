@@ -68,17 +68,29 @@ StepCounts select_collisions(std::vector<Collision>& candidates, std::span<const
         return order.before(candidates[k], candidates[other]) ||
                (k < other && !order.before(candidates[other], candidates[k]));
     };
+    // Whether candidate k comes before the one a particle holds (or it
+    // holds none). Without branches on either: which way it goes follows no
+    // pattern. Times decide all but ties, which take the full order.
+    const auto takes_over = [&](std::uint32_t k, std::uint32_t held) -> bool {
+        const bool none = held == no_collision;
+        const double time = candidates[k].time;
+        const double held_time = candidates[none ? k : held].time;
+        const bool tie = !none & (time == held_time);
+        if (tie) [[unlikely]]
+            return comes_first(k, held);
+        return none | (time < held_time);
+    };
     // Threads may claim one particle at the same time: then each claim is a
     // compare-and-swap, retried while it still comes first.
     const auto claim = [&](std::uint32_t particle, std::uint32_t k, bool shared) {
         if (!shared) {
             std::uint32_t& held = earliest[particle];
-            if (held == no_collision || comes_first(k, held)) held = k;
+            held = takes_over(k, held) ? k : held;
             return;
         }
         std::atomic_ref<std::uint32_t> held(earliest[particle]);
         std::uint32_t current = held.load(std::memory_order_relaxed);
-        while (current == no_collision || comes_first(k, current)) {
+        while (takes_over(k, current)) {
             if (held.compare_exchange_weak(current, k, std::memory_order_relaxed)) return;
         }
     };
