@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <array>
 #include <atomic>
+#include <stdexcept>
 
 namespace particlesim {
 
@@ -158,6 +159,9 @@ StepCounts select_collisions(std::vector<Collision>& candidates, std::span<const
             // A block with nothing dropped before it is in place already.
             end = end == begin ? kept_end : std::move(begin, kept_end, end);
         }
+        // The candidate first in the order is always accepted, so each round
+        // shrinks the list; a round that did not would repeat for ever.
+        if (end == candidates.end()) throw std::logic_error("select_collisions: a round accepted no candidate");
         candidates.erase(end, candidates.end());
     }
     return counts;
