@@ -34,25 +34,27 @@ struct alignas(64) ThreadCandidates {
     std::uint64_t pair_tests = 0;
 };
 
-// What the pair test reads of one particle; searches may keep copies of it
-// in an order of their own (the grid keeps them in cell order, for locality).
-struct PairTestState {
+// What the pair test reads of one particle's motion; searches may keep
+// copies of it in an order of their own (the grid keeps them in cell order,
+// for locality). 32 bytes, aligned: a copy never straddles two cache lines.
+struct alignas(32) PairTestState {
     Vec2 position;
     Vec2 velocity;
-    double wall_time;
 };
 
 inline PairTestState pair_test_state(const PairSearchInput& in, std::uint32_t i) {
-    return {in.particles[i].position, in.particles[i].velocity, in.wall_time[i]};
+    return {in.particles[i].position, in.particles[i].velocity};
 }
 
 // The pair rule of rules.md plus the wall-time pruning above; appends the
-// candidate of particles i < j (states a and b), if any, to `out`.
+// candidate of particles i < j (states a and b), if any, to `out`. The
+// wall times are read only for a contact within the step: few pairs tested
+// have one.
 inline void test_pair(const PairTestState& a, const PairTestState& b, std::uint32_t i, std::uint32_t j,
                       const PairSearchInput& in, ThreadCandidates& out) {
     ++out.pair_tests;
     const double t = contact_time(b.position - a.position, b.velocity - a.velocity, in.box.contact_dist_sq);
-    if (t <= in.duration && t < a.wall_time && t < b.wall_time) out.found.push_back(Collision::pair(t, i, j));
+    if (t <= in.duration && t < in.wall_time[i] && t < in.wall_time[j]) out.found.push_back(Collision::pair(t, i, j));
 }
 
 inline void test_pair(const PairSearchInput& in, std::uint32_t i, std::uint32_t j, ThreadCandidates& out) {
