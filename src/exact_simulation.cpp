@@ -139,7 +139,7 @@ public:
     Engine(const World& world, std::vector<Particle> particles, const ExactOptions& options)
         : Engine(world, std::move(particles), options, Unpredicted{}) {
         for (std::uint32_t i = 0; i < count(); ++i) {
-            cells_.insert(i, cells_.grid().cell_of(particles_[i].position));
+            cells_.insert(i, cells_.grid().cell_of(bodies_[i].particle.position));
         }
         reject_overlaps();
         make_lines();
@@ -174,11 +174,11 @@ public:
             if (in.cell >= cells || in.crossing.cell >= cells) fail("a cell outside the grid");
             if (in.pair.event.i >= count() || in.pair.event.j >= count() || in.pair.partner >= count())
                 fail("a particle index outside the scene");
-            stamp_[i] = in.stamp;
+            bodies_[i].stamp = in.stamp;
             cells_.insert(i, in.cell);
-            wall_time_[i] = in.wall_time;
-            crossing_[i] = in.crossing;
-            pair_[i] = in.pair;
+            bodies_[i].wall_time = in.wall_time;
+            plans_[i].crossing = in.crossing;
+            plans_[i].pair = in.pair;
         }
         for (std::uint32_t i = 0; i < count(); ++i) reschedule(i);
         make_lines();
@@ -217,17 +217,17 @@ public:
         save_counts(out, totals_);
         out << '\n';
         for (std::uint32_t i = 0; i < count(); ++i) {
-            save_particle(out, particles_[i]);
-            save_number(out, stamp_[i]);
+            save_particle(out, bodies_[i].particle);
+            save_number(out, bodies_[i].stamp);
             save_number(out, std::uint64_t{cells_.cell_of_particle(i)});
-            save_number(out, wall_time_[i]);
-            save_number(out, crossing_[i].time);
-            save_number(out, std::uint64_t{crossing_[i].cell});
-            save_number(out, pair_[i].event.time);
-            save_number(out, std::uint64_t{pair_[i].event.i});
-            save_number(out, std::uint64_t{pair_[i].event.j});
-            save_number(out, std::uint64_t{pair_[i].partner});
-            save_number(out, std::uint64_t{pair_[i].partner_version});
+            save_number(out, bodies_[i].wall_time);
+            save_number(out, plans_[i].crossing.time);
+            save_number(out, std::uint64_t{plans_[i].crossing.cell});
+            save_number(out, plans_[i].pair.event.time);
+            save_number(out, std::uint64_t{plans_[i].pair.event.i});
+            save_number(out, std::uint64_t{plans_[i].pair.event.j});
+            save_number(out, std::uint64_t{plans_[i].pair.partner});
+            save_number(out, std::uint64_t{plans_[i].pair.partner_version});
             out << '\n';
         }
     }
@@ -279,33 +279,31 @@ private:
     Engine(const World& world, std::vector<Particle> particles, const ExactOptions& options, Unpredicted)
         : world_(world),
           box_(Box::of(world)),
-          particles_(std::move(particles)),
-          cells_(neighbour_grid(world, particles_.size(), options.cells_per_side), particles_.size()),
-          stamp_(particles_.size(), 0.0),
-          wall_time_(particles_.size(), never),
-          crossing_(particles_.size()),
-          pair_(particles_.size()),
-          last_event_step_(particles_.size(), -1),
-          last_repeat_step_(particles_.size(), -1),
-          snapshot_(particles_),
+          bodies_(particles.begin(), particles.end()),
+          cells_(neighbour_grid(world, particles.size(), options.cells_per_side), particles.size()),
+          plans_(particles.size()),
+          snapshot_(std::move(particles)),
           reach_(contact_reach(box_)),
           queue_(count(), Event{never, EventKind::cell_crossing, 0, 0}),
-          predicted_events_(estimated_events_per_step(world, particles_)),
+          predicted_events_(estimated_events_per_step(world, snapshot_)),
           event_budget_(event_budget(options, predicted_events_, count())) {}
 
-    std::uint32_t count() const { return static_cast<std::uint32_t>(particles_.size()); }
+    std::uint32_t count() const { return static_cast<std::uint32_t>(bodies_.size()); }
 
     // One cell: neighbours are found by the particles' lines (PathLines).
     bool by_lines() const { return cells_.grid().per_side() == 1; }
 
     // Changes exactly when the velocity does: at each of the particle's collisions.
     std::uint32_t version(std::uint32_t i) const {
-        return static_cast<std::uint32_t>(particles_[i].particle_collisions + particles_[i].wall_collisions);
+        return static_cast<std::uint32_t>(bodies_[i].particle.particle_collisions +
+                                          bodies_[i].particle.wall_collisions);
     }
-    bool pair_partner_moved(std::uint32_t i) const { return pair_[i].partner_version != version(pair_[i].partner); }
+    bool pair_partner_moved(std::uint32_t i) const {
+        return plans_[i].pair.partner_version != version(plans_[i].pair.partner);
+    }
 
     Vec2 position_at(std::uint32_t i, double time) const {
-        return particles_[i].position + particles_[i].velocity * (time - stamp_[i]);
+        return bodies_[i].particle.position + bodies_[i].particle.velocity * (time - bodies_[i].stamp);
     }
 
     template <typename Visit>
@@ -337,13 +335,14 @@ private:
             return;
         }
         CellList cells(UniformGrid(world_.box_size, cells_per_side_for(world_, count())), count());
-        for (std::uint32_t i = 0; i < count(); ++i) cells.insert(i, cells.grid().cell_of(particles_[i].position));
+        for (std::uint32_t i = 0; i < count(); ++i) cells.insert(i, cells.grid().cell_of(bodies_[i].particle.position));
         reject_overlaps(cells);
     }
 
     void reject_overlaps(const CellList& cells) const {
         const auto overlaps = [&](std::uint32_t i, std::uint32_t j) {
-            return j > i && disks_overlap(particles_[j].position - particles_[i].position, box_.contact_dist_sq);
+            return j > i &&
+                   disks_overlap(bodies_[j].particle.position - bodies_[i].particle.position, box_.contact_dist_sq);
         };
         bool found = false;
         cells.for_each_by_cell([&](std::uint32_t i) {
@@ -362,8 +361,8 @@ private:
     double not_before_now(double time) const { return std::max(time, now_); }
 
     void predict_wall(std::uint32_t i) {
-        const WallHit hit = time_to_wall(particles_[i].position, particles_[i].velocity, box_);
-        wall_time_[i] = hit.time == never ? never : not_before_now(stamp_[i] + hit.time);
+        const WallHit hit = time_to_wall(bodies_[i].particle.position, bodies_[i].particle.velocity, box_);
+        bodies_[i].wall_time = hit.time == never ? never : not_before_now(bodies_[i].stamp + hit.time);
     }
 
     // The next time the particle leaves its cell, and the cell it enters.
@@ -374,7 +373,7 @@ private:
 
     // The same for a particle in the cell at (column, row).
     void predict_crossing(std::uint32_t i, int column, int row) {
-        const Particle& p = particles_[i];
+        const Particle& p = bodies_[i].particle;
         const UniformGrid& grid = cells_.grid();
         // Both axes at once, each lane the time to the cell edge it moves
         // towards (`never` at the grid's edge or without motion), with
@@ -392,13 +391,13 @@ private:
         const double along_y = to_edge[1];
         const double delay = std::min(along_x, along_y);
         if (delay == never) {
-            crossing_[i] = {};
+            plans_[i].crossing = {};
             return;
         }
         const int x_first = static_cast<int>(along_x <= along_y);
         column += x_first * (2 * static_cast<int>(p.velocity.x() > 0.0) - 1);
         row += (1 - x_first) * (2 * static_cast<int>(p.velocity.y() > 0.0) - 1);
-        crossing_[i] = {not_before_now(stamp_[i] + delay), grid.cell_at(column, row)};
+        plans_[i].crossing = {not_before_now(bodies_[i].stamp + delay), grid.cell_at(column, row)};
     }
 
     // Tests the pair (i, j) at the later of their stamps, and keeps a contact
@@ -407,9 +406,10 @@ private:
     // comes first.
     void consider_pair(std::uint32_t i, std::uint32_t j) {
         ++last_step_.pair_tests;
-        const double reference = std::max(stamp_[i], stamp_[j]);
-        const double delay = contact_time(position_at(j, reference) - position_at(i, reference),
-                                          particles_[j].velocity - particles_[i].velocity, box_.contact_dist_sq);
+        const double reference = std::max(bodies_[i].stamp, bodies_[j].stamp);
+        const double delay =
+            contact_time(position_at(j, reference) - position_at(i, reference),
+                         bodies_[j].particle.velocity - bodies_[i].particle.velocity, box_.contact_dist_sq);
         if (delay != never) keep_contact(i, j, reference + delay);
     }
 
@@ -417,11 +417,11 @@ private:
     // the same operations on the same values, so the same bits.
     void consider_two_pairs(std::uint32_t i, std::uint32_t j, std::uint32_t k) {
         last_step_.pair_tests += 2;
-        const Particle& own = particles_[i];
-        const Particle& first = particles_[j];
-        const Particle& second = particles_[k];
-        const TwoDoubles own_stamp{stamp_[i], stamp_[i]};
-        const TwoDoubles other_stamp{stamp_[j], stamp_[k]};
+        const Particle& own = bodies_[i].particle;
+        const Particle& first = bodies_[j].particle;
+        const Particle& second = bodies_[k].particle;
+        const TwoDoubles own_stamp{bodies_[i].stamp, bodies_[i].stamp};
+        const TwoDoubles other_stamp{bodies_[j].stamp, bodies_[k].stamp};
         const TwoDoubles reference = own_stamp < other_stamp ? other_stamp : own_stamp;  // std::max
         const TwoDoubles own_since = reference - own_stamp;
         const TwoDoubles other_since = reference - other_stamp;
@@ -444,9 +444,9 @@ private:
     // contact that comes in time: most pairs tested never meet.
     void keep_contact(std::uint32_t i, std::uint32_t j, double contact) {
         const double time = not_before_now(contact);
-        if (!(time < wall_time_[i] && time < wall_time_[j] && time <= pair_[i].event.time)) return;
+        if (!(time < bodies_[i].wall_time && time < bodies_[j].wall_time && time <= plans_[i].pair.event.time)) return;
         const Event event{time, EventKind::pair, std::min(i, j), std::max(i, j)};
-        if (event < pair_[i].event) pair_[i] = {event, j, version(j)};
+        if (event < plans_[i].pair.event) plans_[i].pair = {event, j, version(j)};
     }
 
     // consider_pair(i, j) for every j that for_each_candidate(visit) visits,
@@ -466,7 +466,7 @@ private:
     }
 
     void predict_pairs(std::uint32_t i) {
-        pair_[i] = {};
+        plans_[i].pair = {};
         if (!by_lines()) {
             consider_pairs(i, [&](auto&& visit) { for_each_neighbour(i, visit); });
             return;
@@ -482,7 +482,10 @@ private:
     // so that no line's point lies far outside the box.
     void make_lines() {
         if (!by_lines()) return;
-        lines_.assign(particles_, box_);
+        std::vector<Particle> at_stamps;
+        at_stamps.reserve(count());
+        for (const Body& body : bodies_) at_stamps.push_back(body.particle);
+        lines_.assign(at_stamps, box_);
         move_lines_to_now();
     }
 
@@ -495,34 +498,34 @@ private:
     // After a collision: the particle's new line, through where it would
     // have been at the epoch.
     void renew_line(std::uint32_t i) {
-        if (by_lines()) lines_.set(i, position_at(i, lines_epoch_), particles_[i].velocity);
+        if (by_lines()) lines_.set(i, position_at(i, lines_epoch_), bodies_[i].particle.velocity);
     }
 
     // Puts the first of the particle's three predictions in the queue.
     void reschedule(std::uint32_t i) {
-        Event next{wall_time_[i], EventKind::wall, i, 0};
-        const Event crossing{crossing_[i].time, EventKind::cell_crossing, i, crossing_[i].cell};
+        Event next{bodies_[i].wall_time, EventKind::wall, i, 0};
+        const Event crossing{plans_[i].crossing.time, EventKind::cell_crossing, i, plans_[i].crossing.cell};
         if (crossing < next) next = crossing;
-        if (pair_[i].event < next) next = pair_[i].event;
+        if (plans_[i].pair.event < next) next = plans_[i].pair.event;
         queue_.replace(i, next);
     }
 
     void note_event(std::uint32_t i) {
         const std::int64_t step = steps_done_;
-        if (last_event_step_[i] != step) {
-            last_event_step_[i] = step;
-        } else if (last_repeat_step_[i] != step) {
-            last_repeat_step_[i] = step;
+        if (plans_[i].last_event_step != step) {
+            plans_[i].last_event_step = step;
+        } else if (plans_[i].last_repeat_step != step) {
+            plans_[i].last_repeat_step = step;
             ++several_events_;
         }
     }
 
     void collide_with_wall(std::uint32_t i) {
-        Particle& p = particles_[i];
+        Particle& p = bodies_[i].particle;
         // The same start state as the prediction, so the same hit.
         const WallHit hit = time_to_wall(p.position, p.velocity, box_);
         bounce_off_wall(p, hit, box_);
-        stamp_[i] = now_;
+        bodies_[i].stamp = now_;
         renew_line(i);
         ++last_step_.wall_collisions;
         note_event(i);
@@ -533,14 +536,14 @@ private:
     }
 
     void collide_pair(std::uint32_t i, std::uint32_t j) {
-        Particle& a = particles_[i];
-        Particle& b = particles_[j];
+        Particle& a = bodies_[i].particle;
+        Particle& b = bodies_[j].particle;
         a.position = position_at(i, now_);
         b.position = position_at(j, now_);
         clamp_into_box(a.position, box_);
         clamp_into_box(b.position, box_);
-        stamp_[i] = now_;
-        stamp_[j] = now_;
+        bodies_[i].stamp = now_;
+        bodies_[j].stamp = now_;
         exchange_normal_velocities(a.position, b.position, a.velocity, b.velocity);
         renew_line(i);
         renew_line(j);
@@ -587,7 +590,7 @@ private:
     void take_snapshot() {
         for (std::uint32_t i = 0; i < count(); ++i) {
             Particle& out = snapshot_[i];
-            out = particles_[i];
+            out = bodies_[i].particle;
             out.position = position_at(i, now_);
             clamp_into_box(out.position, box_);
         }
@@ -595,14 +598,27 @@ private:
 
     World world_;
     Box box_;
-    std::vector<Particle> particles_;  // each at its own stamp_
+    // What an event reads of a particle first, in one 64-byte line: its
+    // state at its own time stamp (the time of its last collision, or 0),
+    // the stamp, and the absolute time of its next wall event.
+    struct alignas(64) Body {
+        explicit Body(const Particle& at_start) : particle(at_start) {}
+        Particle particle;
+        double stamp = 0.0;
+        double wall_time = never;
+    };
+    std::vector<Body> bodies_;
     CellList cells_;
-    std::vector<double> stamp_;
-    std::vector<double> wall_time_;  // absolute time of the particle's next wall event
-    std::vector<Crossing> crossing_;
-    std::vector<PairPrediction> pair_;
-    std::vector<std::int64_t> last_event_step_;
-    std::vector<std::int64_t> last_repeat_step_;
+    // The rest of what an event reads and writes of its particles, in one
+    // 64-byte line: the crossing and pair predictions, and the steps of the
+    // particle's last two events (counted by note_event()).
+    struct alignas(64) Plans {
+        Crossing crossing;
+        PairPrediction pair;
+        std::int64_t last_event_step = -1;
+        std::int64_t last_repeat_step = -1;
+    };
+    std::vector<Plans> plans_;
     std::vector<Particle> snapshot_;  // the state at the last whole step
     // With a single cell: every particle's line at lines_epoch_, and the
     // distance the pair test needs (contact_reach()).
