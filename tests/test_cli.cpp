@@ -5,6 +5,7 @@
 #include "check.hpp"
 #include "example_scenes.hpp"
 #include "run_process.hpp"
+#include "threads_stats_line.hpp"
 
 #include "particlesim/random_scene.hpp"
 
@@ -324,19 +325,13 @@ void stats() {
     // their 16 steps on one thread, the first trial after 8 steps.
     CHECK(stats_of({"-t", "1"}, scene).find("stats: threads 1\n") != std::string::npos);
     CHECK(stats_of({"-t", "3"}, scene).find("stats: threads 3\n") != std::string::npos);
-    const std::string unset = stats_of({}, scene);
-    int most = 0;
-    long long one = 0;
-    long long steps = 0;
-    const std::size_t threads_at = unset.find("stats: threads ");
-    CHECK(threads_at != std::string::npos);
-    const int fields = std::sscanf(unset.c_str() + threads_at, "stats: threads %d, one thread in %lld of %lld steps",
-                                   &most, &one, &steps);
-    if (most > 1) {
-        CHECK_EQ(fields, 3);
-        CHECK(one >= 8 && one <= 50 && steps == 50);
+    const threads_stats_line::Line unset = threads_stats_line::read(stats_of({}, scene));
+    CHECK(unset.found);
+    if (unset.threads > 1) {
+        CHECK(unset.trials);
+        CHECK(unset.one_thread_steps >= 8 && unset.one_thread_steps <= 50 && unset.steps == 50);
     } else {
-        CHECK(unset.find("stats: threads 1\n") != std::string::npos);
+        CHECK(unset.threads == 1 && !unset.trials);
     }
 }
 

@@ -5,6 +5,7 @@
 
 #include "check.hpp"
 #include "run_process.hpp"
+#include "threads_stats_line.hpp"
 
 #include <signal.h>
 #include <unistd.h>
@@ -103,19 +104,14 @@ void resumed_stats_count_the_resumed_steps() {
     CHECK_EQ(first.status, 0);
     const Result rest = simcli_run({"--resume", checkpoint, "--stats", "--quiet"});
     CHECK_EQ(rest.status, 0);
-    const std::size_t at = rest.err.find("stats: threads ");
-    CHECK(at != std::string::npos);
-    int most = 0;
-    long long one = 0;
-    long long steps = 0;
-    const int fields =
-        std::sscanf(rest.err.c_str() + at, "stats: threads %d, one thread in %lld of %lld steps", &most, &one, &steps);
-    if (most > 1) {
-        CHECK_EQ(fields, 3);
-        CHECK_EQ(one, 2LL);
-        CHECK_EQ(steps, 10LL);
+    const threads_stats_line::Line line = threads_stats_line::read(rest.err);
+    CHECK(line.found);
+    if (line.threads > 1) {
+        CHECK(line.trials);
+        CHECK_EQ(line.one_thread_steps, 2LL);
+        CHECK_EQ(line.steps, 10LL);
     } else {
-        CHECK(rest.err.find("stats: threads 1\n") != std::string::npos);
+        CHECK(line.threads == 1 && !line.trials);
     }
 }
 
