@@ -5,6 +5,8 @@
 // (particles by cell) and its calendar queue (particles by time bucket) are
 // both this.
 
+#include "prefetch.hpp"
+
 #include <algorithm>
 #include <cstdint>
 #include <vector>
@@ -21,6 +23,9 @@ public:
     [[nodiscard]] std::uint32_t bucket_of(std::uint32_t item) const { return links_[item].bucket; }
     [[nodiscard]] std::uint32_t first(std::uint32_t bucket) const { return head_[bucket]; }
     [[nodiscard]] std::uint32_t next(std::uint32_t item) const { return links_[item].next; }
+
+    void prefetch_links(std::uint32_t item) const { prefetch(&links_[slot(item)]); }
+    void prefetch_head(std::uint32_t bucket) const { prefetch(&head_[bucket]); }
 
     // Without branches on whether a neighbour exists (in a queue or a cell
     // list that is random, and was mispredicted half the time): a link of a

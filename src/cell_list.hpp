@@ -19,6 +19,25 @@ public:
     [[nodiscard]] const UniformGrid& grid() const { return grid_; }
     [[nodiscard]] std::uint32_t cell_of_particle(std::uint32_t particle) const { return members_.bucket_of(particle); }
 
+    // For prefetching, the 3 x 3 cells around `cell`, as three runs of
+    // three cell indices, without divisions: at the grid's edges a run may
+    // end in the next row or start in the last (a wasted prefetch), but
+    // never leaves the grid. Needs 2 x 2 cells or more.
+    void prefetch_heads_around(std::uint32_t cell) const {
+        for_each_run_around(cell, [&](std::uint32_t start) {
+            members_.prefetch_head(start);
+            members_.prefetch_head(start + 2);
+        });
+    }
+    // visit(first) for the first member of each of those cells (none if empty).
+    template <typename Visit>
+    void for_each_first_member_around(std::uint32_t cell, Visit&& visit) const {
+        for_each_run_around(cell, [&](std::uint32_t start) {
+            for (std::uint32_t c = start; c < start + 3; ++c) visit(members_.first(c));
+        });
+    }
+    void prefetch_links(std::uint32_t particle) const { members_.prefetch_links(particle); }
+
     void insert(std::uint32_t particle, std::uint32_t cell) { members_.insert(particle, cell); }
     void move(std::uint32_t particle, std::uint32_t cell) { members_.move(particle, cell); }
 
@@ -39,6 +58,15 @@ public:
     }
 
 private:
+    template <typename Visit>
+    void for_each_run_around(std::uint32_t cell, Visit&& visit) const {
+        const auto side = static_cast<std::int64_t>(grid_.per_side());
+        const auto last_start = static_cast<std::int64_t>(grid_.cell_count()) - 3;
+        for (std::int64_t row = -1; row <= 1; ++row) {
+            visit(static_cast<std::uint32_t>(std::clamp(cell + row * side - 1, std::int64_t{0}, last_start)));
+        }
+    }
+
     UniformGrid grid_;
     BucketLists members_;  // particles by cell
 };

@@ -11,6 +11,7 @@
 
 #include "bucket_lists.hpp"
 #include "event_order.hpp"
+#include "prefetch.hpp"
 
 #include <algorithm>
 #include <cstdint>
@@ -54,6 +55,31 @@ public:
         return earliest_;
     }
     [[nodiscard]] const Event& earliest() { return events_[earliest_owner()]; }
+
+    // A look at the events to come, for prefetching: for_each_coming()
+    // visits the owners listed in each bucket once, when the bucket comes
+    // within `ahead` buckets of the current one; after a jump over many
+    // empty buckets, or into a new window, only the nearest few.
+    struct LookAhead {
+        std::uint32_t ahead;
+        std::uint32_t visited_up_to = 0;  // one past the last bucket visited
+    };
+    template <typename Visit>
+    void for_each_coming(LookAhead& look, Visit&& visit) const {
+        constexpr std::uint32_t most_buckets = 4;
+        const std::uint32_t end = current_ + look.ahead + 1;
+        if (look.visited_up_to > end) look.visited_up_to = 0;  // a new window
+        const std::uint32_t first = std::max(look.visited_up_to, end - std::min(end, most_buckets));
+        for (std::uint32_t bucket = first; bucket < std::min(end, buckets_); ++bucket)
+            lists_.for_each_in(bucket, visit);
+        look.visited_up_to = end;
+    }
+    [[nodiscard]] const Event& entry(std::uint32_t owner) const { return events_[owner]; }
+    void prefetch_entry(std::uint32_t owner) const {
+        prefetch(&events_[owner]);
+        prefetch(reinterpret_cast<const char*>(&events_[owner]) + sizeof(Event) - 1);
+        lists_.prefetch_links(owner);
+    }
 
     void replace(std::uint32_t owner, const Event& event) {
         events_[owner] = event;

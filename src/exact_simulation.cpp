@@ -7,6 +7,7 @@
 #include "options_check.hpp"
 #include "path_lines.hpp"
 #include "physics.hpp"
+#include "prefetch.hpp"
 #include "saved_state.hpp"
 #include "scene_checks.hpp"
 #include "uniform_grid.hpp"
@@ -244,6 +245,7 @@ public:
                 throw TooManyEvents(steps_done_ + 1, events - 1, predicted_events_);
             ++events_processed_;
             const std::uint32_t owner = queue_.earliest_owner();
+            if (look_ahead_) prefetch_coming_events();
             const Event event = queue_.earliest();
             if (event.kind == EventKind::pair && pair_partner_moved(owner)) {
                 predict_pairs(owner);
@@ -286,7 +288,8 @@ private:
           reach_(contact_reach(box_)),
           queue_(count(), Event{never, EventKind::cell_crossing, 0, 0}),
           predicted_events_(estimated_events_per_step(world, snapshot_)),
-          event_budget_(event_budget(options, predicted_events_, count())) {}
+          event_budget_(event_budget(options, predicted_events_, count())),
+          look_ahead_(options.look_ahead.value_or(count() >= look_ahead_from) && !by_lines()) {}
 
     std::uint32_t count() const { return static_cast<std::uint32_t>(bodies_.size()); }
 
@@ -354,6 +357,48 @@ private:
                 if (overlaps(i, j)) throw OverlappingStart(i, j);
             });
         }
+    }
+
+    // At 1e6 disks nearly every line an event reads is a miss to memory,
+    // and each waits for the one before (the queue entry names the particle,
+    // the particle its cell, the cell its members): the event rate was a
+    // fifth of 1e4 disks'. The queue already knows the next events, so each
+    // event fetches, in four stages, what those a few buckets behind it will
+    // read: their entries and queue links; their particles; partners and the
+    // heads of the cells they will search; the first member of each of those
+    // cells. Each stage reads only what the stage before fetched. Prefetches
+    // are hints: a queue that changes meanwhile costs a wasted fetch, never a
+    // different event.
+    void prefetch_coming_events() {
+        queue_.for_each_coming(look_entries_, [&](std::uint32_t o) { queue_.prefetch_entry(o); });
+        queue_.for_each_coming(look_particles_, [&](std::uint32_t o) { prefetch_particle(o); });
+        queue_.for_each_coming(look_heads_, [&](std::uint32_t o) {
+            const Event& event = queue_.entry(o);
+            if (event.kind == EventKind::pair) {
+                const std::uint32_t partner = event.i ^ event.j ^ o;  // o is one of the two
+                queue_.prefetch_entry(partner);
+                prefetch_particle(partner);
+            }
+            cells_.prefetch_heads_around(searched_cell(event, o));
+        });
+        queue_.for_each_coming(look_members_, [&](std::uint32_t o) {
+            cells_.for_each_first_member_around(searched_cell(queue_.entry(o), o), [&](std::uint32_t first) {
+                const std::uint32_t j = std::min(first, count() - 1);  // no branch: `none` fetches the last
+                prefetch(&bodies_[j]);
+                cells_.prefetch_links(j);
+            });
+        });
+    }
+
+    void prefetch_particle(std::uint32_t i) const {
+        prefetch(&bodies_[i]);
+        prefetch(&plans_[i]);
+        cells_.prefetch_links(i);
+    }
+
+    // The cell around which the owner's event will search for partners.
+    std::uint32_t searched_cell(const Event& event, std::uint32_t owner) const {
+        return event.kind == EventKind::cell_crossing ? event.j : cells_.cell_of_particle(owner);
     }
 
     // Rounding may put a prediction a hair before the present; time must
@@ -635,6 +680,17 @@ private:
     std::uint64_t events_processed_ = 0;  // by this object, not saved: a measure of work
     double predicted_events_;             // per step
     double event_budget_;                 // per step
+    // Below this, the engine's state (about 250 bytes a particle) mostly
+    // fits in the caches, and the look ahead's own work costs more than it
+    // saves (docs/benchmarks.md).
+    static constexpr std::uint32_t look_ahead_from = 32768;
+    // The prefetching's four stages, each a few buckets nearer than the last
+    // (prefetch_coming_events()).
+    bool look_ahead_;
+    EventCalendar::LookAhead look_entries_{8};
+    EventCalendar::LookAhead look_particles_{6};
+    EventCalendar::LookAhead look_heads_{4};
+    EventCalendar::LookAhead look_members_{2};
 };
 
 namespace {

@@ -64,6 +64,49 @@ void matches_brute_force(std::uint32_t owners, std::uint64_t seed, int operation
     CHECK_EQ(mismatches, 0);
 }
 
+// The look ahead (the engine's prefetching) visits each entry at most once
+// while it stays in the queue unchanged, and nearly every entry before it
+// comes up, in a schedule like a large engine's: most events many buckets
+// ahead, some never, a partner's entry replaced now and then.
+void look_ahead_visits_each_coming_entry_once(std::uint32_t owners, std::uint32_t ahead, std::uint64_t seed) {
+    particlesim::SplitMix64 rng(seed);
+    EventCalendar calendar(owners, Event{never, EventKind::wall, 0, 0});
+    std::vector<std::uint32_t> version(owners, 0);
+    std::vector<std::uint32_t> visited_version(owners, ~0U);
+    const auto schedule = [&](std::uint32_t owner, double now) {
+        ++version[owner];
+        const double time = rng.next() % 16 == 0 ? never : now + rng.uniform();
+        calendar.replace(owner, Event{time, EventKind::wall, owner, 0});
+    };
+    for (std::uint32_t owner = 0; owner < owners; ++owner) schedule(owner, 0.0);
+    EventCalendar::LookAhead look{ahead};
+    int taken = 0;
+    int visited_before_taken = 0;
+    int visited_twice = 0;
+    int strays = 0;
+    for (int k = 0; k < 20 * static_cast<int>(owners); ++k) {
+        const std::uint32_t owner = calendar.earliest_owner();
+        if (calendar.earliest().time == never) break;
+        calendar.for_each_coming(look, [&](std::uint32_t visited) {
+            if (visited >= owners) {
+                ++strays;
+                return;
+            }
+            visited_twice += visited_version[visited] == version[visited] ? 1 : 0;
+            visited_version[visited] = version[visited];
+        });
+        ++taken;
+        visited_before_taken += visited_version[owner] == version[owner] ? 1 : 0;
+        const double now = calendar.earliest().time;
+        schedule(owner, now);
+        if (rng.next() % 4 == 0) schedule(static_cast<std::uint32_t>(rng.next() % owners), now);
+    }
+    CHECK_EQ(strays, 0);
+    CHECK_EQ(visited_twice, 0);
+    CHECK(taken > 10 * static_cast<int>(owners));
+    CHECK(visited_before_taken > taken / 100 * 99);
+}
+
 void all_never() {
     EventCalendar calendar(5, Event{never, EventKind::wall, 0, 0});
     CHECK(calendar.earliest().time == never);
@@ -77,7 +120,8 @@ void all_never() {
 
 int main(int argc, char** argv) {
     return check::run(argc, argv, "test_event_calendar",
-                      {{"calendar against brute-force minimum", [] {
+                      {{"calendar against brute-force minimum",
+                        [] {
                             all_never();
                             for (const std::uint32_t owners : {1U, 2U, 7U, 100U, 5000U, 20000U}) {
                                 for (std::uint64_t seed = 0; seed < 4; ++seed)
@@ -86,6 +130,12 @@ int main(int argc, char** argv) {
                             for (const double scale : {1e-320, 1e-310, 1e-300, 1e300}) {
                                 for (const std::uint32_t owners : {2U, 100U, 5000U})
                                     matches_brute_force(owners, 7, 4000, scale);
+                            }
+                        }},
+                       {"look ahead visits each coming entry once", [] {
+                            for (const std::uint32_t owners : {5000U, 40000U}) {
+                                for (const std::uint32_t ahead : {1U, 3U, 8U})
+                                    look_ahead_visits_each_coming_entry_once(owners, ahead, owners + ahead);
                             }
                         }}});
 }

@@ -10,6 +10,7 @@
 #include "particlesim/accuracy.hpp"
 #include "particlesim/exact_simulation.hpp"
 #include "particlesim/random_scene.hpp"
+#include "particlesim/scene_families.hpp"
 #include "particlesim/stepped_simulation.hpp"
 
 #include <cmath>
@@ -87,18 +88,42 @@ void same_events_for_every_cell_size() {
         ExactSimulation automatic(scene.world, scene.particles);
         ExactSimulation one_cell(scene.world, scene.particles, {1});
         ExactSimulation seven(scene.world, scene.particles, {7});
+        ExactSimulation seven_looking_ahead(scene.world, scene.particles, {7, std::nullopt, true});
         for (std::int64_t s = 0; s < scene.steps; ++s) {
             automatic.step();
             one_cell.step();
             seven.step();
+            seven_looking_ahead.step();
             const std::uint64_t h = state_hash::hash(automatic.particles());
             CHECK_EQ(state_hash::hash(one_cell.particles()), h);
             CHECK_EQ(state_hash::hash(seven.particles()), h);
+            CHECK_EQ(state_hash::hash(seven_looking_ahead.particles()), h);
         }
+        CHECK_EQ(seven_looking_ahead.events_processed(), seven.events_processed());
         CHECK_EQ(automatic.totals().particle_collisions, one_cell.totals().particle_collisions);
         compared += automatic.totals().particle_collisions > 0 ? 1 : 0;
     }
     CHECK(compared >= 20);  // the comparison saw collisions
+}
+
+// The look ahead only prefetches: on or off, in a scene large enough to
+// have it on by default (a dense gas: events of every kind, many stale
+// pair predictions), the same events and states.
+void look_ahead_changes_no_event() {
+    SceneFamilyOptions options;
+    options.particles = 40000;
+    options.area_fraction = 0.3;
+    options.speeds = SpeedRange{0.1, 1.0};
+    const Scene scene = make_family_scene(SceneFamily::gas, options);
+    ExactSimulation automatic(scene.world, scene.particles);
+    ExactSimulation without(scene.world, scene.particles, {std::nullopt, std::nullopt, false});
+    for (int s = 0; s < 6; ++s) {
+        automatic.step();
+        without.step();
+        CHECK_EQ(state_hash::hash(automatic.particles()), state_hash::hash(without.particles()));
+    }
+    CHECK_EQ(automatic.events_processed(), without.events_processed());
+    CHECK(automatic.totals().particle_collisions > 20000U);
 }
 
 // Worked out on paper: disks at x = 6 and 14 (y = 10, L = 20, r = 1) meet
@@ -237,5 +262,6 @@ int main(int argc, char** argv) {
                        {"conserves and stays inside", conserves_and_stays_inside},
                        {"refuses overlaps and bad scenes", refuses_overlaps_and_bad_scenes},
                        {"estimates events", estimates_events},
-                       {"counts events", counts_events}});
+                       {"counts events", counts_events},
+                       {"look ahead changes no event", look_ahead_changes_no_event}});
 }
