@@ -94,7 +94,8 @@ void checkpoint_every_k_resumes_byte_for_byte() {
     }
 }
 
-// --stats of a resumed run counts the steps that run made: 60 steps with a
+// --stats of a resumed run counts the steps that run made (in its time and
+// rate, and its threads line): 60 steps with a
 // checkpoint every 25 resume at step 50, so 10 steps, the last 2 of them
 // (after 8 warm-up steps) the first steps of a trial, on one thread.
 void resumed_stats_count_the_resumed_steps() {
@@ -104,6 +105,7 @@ void resumed_stats_count_the_resumed_steps() {
     CHECK_EQ(first.status, 0);
     const Result rest = simcli_run({"--resume", checkpoint, "--stats", "--quiet"});
     CHECK_EQ(rest.status, 0);
+    CHECK(rest.err.find("stats: engine step, 10 steps in ") != std::string::npos);
     const threads_stats_line::Line line = threads_stats_line::read(rest.err);
     CHECK(line.found);
     if (line.threads > 1) {

@@ -124,11 +124,13 @@ RunStats write_run(E& engine, const RunSettings& settings, const CliOptions& opt
     return stats;
 }
 
+// The time and rate are this process's (a resumed run's steps since its
+// checkpoint); the counts are the whole run's, over all its steps.
 void print_stats(const char* engine, const RunStats& stats, std::int64_t steps) {
     const double per_step = steps > 0 ? 1.0 / static_cast<double>(steps) : 0.0;
     std::fprintf(stderr, "stats: engine %s, %lld steps in %.6f s (%.6g steps/s)\n", engine,
-                 static_cast<long long>(steps), stats.seconds,
-                 stats.seconds > 0.0 ? static_cast<double>(steps) / stats.seconds : 0.0);
+                 static_cast<long long>(stats.steps_run), stats.seconds,
+                 stats.seconds > 0.0 ? static_cast<double>(stats.steps_run) / stats.seconds : 0.0);
     std::fprintf(stderr, "stats: %llu particle collisions, %llu wall collisions\n",
                  static_cast<unsigned long long>(stats.totals.particle_collisions),
                  static_cast<unsigned long long>(stats.totals.wall_collisions));
