@@ -359,10 +359,10 @@ private:
         }
     }
 
-    // At 1e6 disks nearly every line an event reads is a miss to memory,
+    // In a large scene nearly every line an event reads is a miss to memory,
     // and each waits for the one before (the queue entry names the particle,
-    // the particle its cell, the cell its members): the event rate was a
-    // fifth of 1e4 disks'. The queue already knows the next events, so each
+    // the particle its cell, the cell its members), so the event rate fell
+    // with N. The queue already knows the next events, so each
     // event fetches, in four stages, what those a few buckets behind it will
     // read: their entries and queue links; their particles; partners and the
     // heads of the cells they will search; the first member of each of those
@@ -680,9 +680,8 @@ private:
     std::uint64_t events_processed_ = 0;  // by this object, not saved: a measure of work
     double predicted_events_;             // per step
     double event_budget_;                 // per step
-    // Below this, the engine's state (about 250 bytes a particle) mostly
-    // fits in the caches, and the look ahead's own work costs more than it
-    // saves (docs/benchmarks.md).
+    // Below this, the engine's state mostly fits in the caches, and the look
+    // ahead's own work costs more than it saves (docs/benchmarks.md).
     static constexpr std::uint32_t look_ahead_from = 32768;
     // The prefetching's four stages, each a few buckets nearer than the last
     // (prefetch_coming_events()).

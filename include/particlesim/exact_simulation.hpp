@@ -61,10 +61,10 @@ struct ExactOptions {
     // Empty: 1e6 + 100 x (predicted events per step + N), reached within about a second.
     std::optional<std::uint64_t> max_events_per_step = std::nullopt;
     // Whether each event prefetches what the events a few places behind it
-    // in the queue will read, so that their misses to memory overlap
-    // (docs/benchmarks.md: about 1.7 times the events a second at 1e6 disks,
-    // slower while the state fits in the caches). Empty: on from 32 768
-    // particles. No effect with one cell. Every value gives the same events.
+    // in the queue will read, so that their misses to memory overlap: much
+    // faster where the state outgrows the caches, slower where it fits
+    // (docs/benchmarks.md). Empty: on from 32 768 particles. No effect with
+    // one cell. Every value gives the same events.
     std::optional<bool> look_ahead = std::nullopt;
 };
 
