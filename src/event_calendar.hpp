@@ -76,8 +76,7 @@ public:
     }
     [[nodiscard]] const Event& entry(std::uint32_t owner) const { return events_[owner]; }
     void prefetch_entry(std::uint32_t owner) const {
-        prefetch(&events_[owner]);
-        prefetch(reinterpret_cast<const char*>(&events_[owner]) + sizeof(Event) - 1);
+        prefetch_lines_of(events_[owner]);
         lists_.prefetch_links(owner);
     }
 

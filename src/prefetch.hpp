@@ -3,15 +3,22 @@
 // keeps even in a loop that does nothing else: GCC deletes loops whose only
 // effect is __builtin_prefetch (-ffinite-loops, on from -O2 in C++), as it
 // did to the exact engine's look ahead at first. Each hint also passes its
-// address to an empty volatile asm, an effect that must stay. The stepped
-// engine's hints sit in loops that do other work, and stay plain
-// __builtin_prefetch there.
+// address to an empty volatile asm, an effect that must stay (it emits no
+// instruction).
 
 namespace particlesim {
 
 inline void prefetch(const void* address) {
     __builtin_prefetch(address);
     asm volatile("" : : "r"(address));
+}
+
+// Both lines a record may straddle (any record of up to 64 bytes).
+template <typename Record>
+void prefetch_lines_of(const Record& record) {
+    static_assert(sizeof(Record) <= 64);
+    prefetch(&record);
+    prefetch(reinterpret_cast<const char*>(&record) + sizeof(Record) - 1);
 }
 
 }  // namespace particlesim

@@ -2,6 +2,7 @@
 
 #include "parallel.hpp"
 #include "physics.hpp"
+#include "prefetch.hpp"
 
 #include <algorithm>
 #include <array>
@@ -279,11 +280,7 @@ void resolve_collisions(std::span<Particle> particles, std::span<const std::uint
         std::array<PairAtContact, 4> pairs;
         std::size_t waiting = 0;
         for (std::size_t k = 0; k < pairs_listed; ++k) {
-            if (k + pair_lookahead < pairs_listed) {
-                const Particle& ahead = particles[partner[pair_at[k + pair_lookahead]]];
-                __builtin_prefetch(&ahead);
-                __builtin_prefetch(reinterpret_cast<const char*>(&ahead) + sizeof ahead - 1);
-            }
+            if (k + pair_lookahead < pairs_listed) prefetch_lines_of(particles[partner[pair_at[k + pair_lookahead]]]);
             const std::uint32_t i = pair_at[k];
             pairs[waiting++] = at_contact(particles[i], particles[partner[i]], collision_time[i]);
             if (waiting == pairs.size()) {
