@@ -4,6 +4,7 @@
 // is the median of plain runs. Also the exact engine's own speed.
 
 #include "benchmarks.hpp"
+#include "named_scene.hpp"
 #include "statistics.hpp"
 
 #include "particlesim/accuracy.hpp"
@@ -22,13 +23,6 @@ using namespace particlesim;
 namespace bench {
 
 namespace {
-
-struct AccuracyScene {
-    std::string name;
-    World world;
-    std::int64_t steps = 0;
-    std::vector<Particle> particles;
-};
 
 template <typename MakeEngine>
 double median_run_seconds(MakeEngine&& make_engine, std::int64_t steps, int repeats) {
@@ -50,7 +44,7 @@ double counting_noise(std::uint64_t run, std::uint64_t truth) {
     return std::sqrt(1.0 / static_cast<double>(run) + 1.0 / static_cast<double>(truth));
 }
 
-void print_row(const AccuracyScene& scene, const char* engine, int substeps, int threads, int repeats, double seconds,
+void print_row(const NamedScene& scene, const char* engine, int substeps, int threads, int repeats, double seconds,
                const RunRecord& run, const RunRecord& truth, const AccuracyReport& report) {
     std::printf("%s,%zu,%lld,%s,%d,%d,%d,%.6f,%llu,%llu,%.6g,%.6g,%.6g,%.6g,%.6g,%.3g,%.3g\n", scene.name.c_str(),
                 scene.particles.size(), static_cast<long long>(scene.steps), engine, substeps, threads, repeats,
@@ -62,11 +56,11 @@ void print_row(const AccuracyScene& scene, const char* engine, int substeps, int
     std::fflush(stdout);
 }
 
-AccuracyScene crowded_box(std::int64_t steps) {
+NamedScene crowded_box(std::int64_t steps) {
     // Area fraction 0.3, speeds 0.1 to 1 r per step (the dense gas, smaller).
     const std::size_t count = 2000;
     const double box = std::sqrt(static_cast<double>(count) * std::numbers::pi / 0.3);
-    AccuracyScene scene{"crowded box", {box, 1.0}, steps, {}};
+    NamedScene scene{"crowded box", {box, 1.0}, steps, {}};
     scene.particles = make_random_particles(count, scene.world, {3210, SpeedRange{0.1, 1.0}});
     return scene;
 }
@@ -81,9 +75,9 @@ void accuracy_benchmark(bool quick) {
     const std::int64_t steps = quick ? 100 : 1000;
     const int repeats = quick ? 1 : 3;
     const int threads = 2;
-    AccuracyScene default_scene{"default", {20000.0, 1.0}, steps, {}};
+    NamedScene default_scene{"default", {20000.0, 1.0}, steps, {}};
     default_scene.particles = make_random_particles(1000, default_scene.world);
-    for (const AccuracyScene& scene : {default_scene, crowded_box(steps)}) {
+    for (const NamedScene& scene : {default_scene, crowded_box(steps)}) {
         const World& params = scene.world;
         ExactSimulation exact(params, scene.particles);
         const RunRecord truth = record_run(exact, steps);

@@ -38,7 +38,7 @@ void stress_benchmark(bool quick) {
         "scene,n,box_size,steps,engine,every_step_valid,largest_energy_drift,drift_within_1e-12,"
         "particle_collisions,wall_collisions,seconds\n");
     const std::int64_t steps = quick ? 20000 : 1000000;
-    const stress_scenes::StressScene scene = stress_scenes::crowded_box();
+    const NamedScene scene = stress_scenes::crowded_box();
     for (const int threads : {1, 2}) {
         SteppedSimulation stepped(scene.world, scene.particles, {.threads = threads});
         stress_row(threads == 1 ? "step (1 thread)" : "step (2 threads)", stepped, scene.world, steps);

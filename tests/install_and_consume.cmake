@@ -15,15 +15,15 @@ set(prefix "${WORK_DIR}/prefix")
 run_step(${CMAKE_COMMAND} --install "${BUILD_DIR}" --prefix "${prefix}")
 
 # The public API, and nothing else.
-set(public_headers accuracy.hpp engine.hpp exact_simulation.hpp particle.hpp particlesim.hpp random_scene.hpp
-                   scene.hpp scene_families.hpp state_writer.hpp step_check.hpp stepped_simulation.hpp version.hpp
-                   world.hpp)
+set(public_headers accuracy.hpp engine.hpp exact_simulation.hpp output_reader.hpp particle.hpp particlesim.hpp
+                   random_scene.hpp saved_state.hpp scene.hpp scene_families.hpp state_writer.hpp step_check.hpp
+                   stepped_simulation.hpp version.hpp world.hpp)
 file(GLOB installed RELATIVE "${prefix}/include/particlesim" "${prefix}/include/particlesim/*")
 list(SORT installed)
 if(NOT installed STREQUAL public_headers)
   message(FATAL_ERROR "installed headers:\n  ${installed}\nexpected:\n  ${public_headers}")
 endif()
-set(required lib/libparticlesim.a lib/cmake/particlesim/particlesimConfig.cmake)
+set(required lib/libparticlesim.a lib/libparticlesim_check.a lib/cmake/particlesim/particlesimConfig.cmake)
 if(APPS_BUILT)
   list(APPEND required bin/simcli bin/simgen bin/simcheck)
 endif()

@@ -1,7 +1,6 @@
 # The build options configure alone and together: none, each one, the apps
-# without tests, and all (the sanitizers change flags, not what is built); the
-# library alone, which no other build of the suite makes, is also built (at
-# -O0, for speed).
+# without tests, and all (the sanitizers change flags, not what is built).
+# The library alone is built by subdirectory_consumer.cmake.
 # Inputs: SOURCE_DIR, WORK_DIR.
 file(REMOVE_RECURSE "${WORK_DIR}")
 set(options PARTICLESIM_BUILD_APPS PARTICLESIM_BUILD_TESTS PARTICLESIM_BUILD_BENCH PARTICLESIM_SANITIZE)
@@ -24,21 +23,10 @@ foreach(mask RANGE 15)
     math(EXPR bit "${bit} * 2")
   endforeach()
   set(build_dir "${WORK_DIR}/${name}")
-  execute_process(COMMAND ${CMAKE_COMMAND} -S "${SOURCE_DIR}" -B "${build_dir}" ${args} -DCMAKE_BUILD_TYPE=Debug
-                  "-DCMAKE_CXX_FLAGS_DEBUG=-O0" RESULT_VARIABLE status OUTPUT_QUIET ERROR_VARIABLE err)
+  execute_process(COMMAND ${CMAKE_COMMAND} -S "${SOURCE_DIR}" -B "${build_dir}" ${args} -DCMAKE_BUILD_TYPE=Debug RESULT_VARIABLE status OUTPUT_QUIET ERROR_VARIABLE err)
   if(NOT status EQUAL 0)
     message(FATAL_ERROR "configure failed with ${args}:\n${err}")
   endif()
-  # 0000: the library alone.
-  if(name STREQUAL "0000")
-    execute_process(COMMAND ${CMAKE_COMMAND} --build "${build_dir}" -j 2 RESULT_VARIABLE status OUTPUT_VARIABLE out
-                    ERROR_VARIABLE err)
-    if(NOT status EQUAL 0)
-      message(FATAL_ERROR "build failed with ${args}:\n${out}\n${err}")
-    endif()
-    message(STATUS "configured and built: ${args}")
-  else()
-    message(STATUS "configured: ${args}")
-  endif()
+  message(STATUS "configured: ${args}")
   file(REMOVE_RECURSE "${build_dir}")
 endforeach()

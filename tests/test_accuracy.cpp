@@ -4,7 +4,7 @@
 
 #include "check.hpp"
 
-#include "overlap_counter.hpp"
+#include "measure/overlap_counter.hpp"
 #include "particlesim/accuracy.hpp"
 #include "particlesim/random_scene.hpp"
 

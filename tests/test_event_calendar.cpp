@@ -6,8 +6,8 @@
 
 #include "check.hpp"
 
-#include "../src/event_calendar.hpp"
-#include "random.hpp"
+#include "core/random.hpp"
+#include "exact/event_calendar.hpp"
 
 #include <algorithm>
 #include <limits>

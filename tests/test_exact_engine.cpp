@@ -84,7 +84,7 @@ void same_events_for_every_cell_size() {
     int compared = 0;
     for (std::uint64_t k = 0; k < 60; ++k) {
         // The family's non-overlapping regimes: 0 (default speeds) and 3 (slow).
-        const random_scenes::TestScene scene = random_scenes::make(k * 5 + (k % 2 == 0 ? 0 : 3));
+        const NamedScene scene = random_scenes::make(k * 5 + (k % 2 == 0 ? 0 : 3));
         ExactSimulation automatic(scene.world, scene.particles);
         ExactSimulation one_cell(scene.world, scene.particles, {1});
         ExactSimulation seven(scene.world, scene.particles, {7});
@@ -179,7 +179,7 @@ void agrees_with_stepped_engine_when_events_do_not_share_a_particle() {
 
 void conserves_and_stays_inside() {
     for (std::uint64_t k = 0; k < 30; ++k) {
-        const random_scenes::TestScene scene = random_scenes::make(k * 5 + (k % 2 == 0 ? 0 : 3));
+        const NamedScene scene = random_scenes::make(k * 5 + (k % 2 == 0 ? 0 : 3));
         ExactSimulation exact(scene.world, scene.particles);
         const double e0 = total_kinetic_energy(exact.particles());
         Vec2 momentum0 = Vec2::Zero();

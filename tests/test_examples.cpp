@@ -6,7 +6,7 @@
 #include <optional>
 #include "example_scenes.hpp"
 
-#include "physics.hpp"
+#include "core/physics.hpp"
 
 #include <cmath>
 

@@ -9,11 +9,11 @@
 #include "random_scenes.hpp"
 #include "state_hash.hpp"
 
-#include "brute_force_search.hpp"
-#include "grid_search.hpp"
 #include "particlesim/stepped_simulation.hpp"
-#include "path_search.hpp"
-#include "step_pipeline.hpp"
+#include "search/brute_force_search.hpp"
+#include "search/grid_search.hpp"
+#include "search/path_search.hpp"
+#include "stepped/step_pipeline.hpp"
 
 #include <algorithm>
 #include <optional>
@@ -26,7 +26,8 @@ namespace {
 std::vector<Collision> merged(const std::vector<ThreadCandidates>& buffers) {
     std::vector<Collision> all;
     for (const ThreadCandidates& thread : buffers) all.insert(all.end(), thread.found.begin(), thread.found.end());
-    std::sort(all.begin(), all.end());
+    // Any total order makes equal sets equal lists: (t, kind, i, j) on the stored indices.
+    std::sort(all.begin(), all.end(), [](const Collision& a, const Collision& b) { return comes_before(a, b); });
     all.erase(std::unique(all.begin(), all.end()), all.end());
     return all;
 }
@@ -47,7 +48,7 @@ std::vector<Collision> pair_candidates(const PairSearchInput& in, std::optional<
 // Runs the scene with the brute force, comparing at every step the grid's
 // candidate set (with `grid_cells`, or sized from the motion) and the paths
 // search's (which keeps its lines from step to step) on the same state.
-bool same_candidates_every_step(const random_scenes::TestScene& scene, std::optional<int> grid_cells, int threads) {
+bool same_candidates_every_step(const NamedScene& scene, std::optional<int> grid_cells, int threads) {
     SteppedSimulation sim(scene.world, scene.particles, {.pair_search = PairSearch::brute_force, .threads = 1});
     const Box box = Box::of(scene.world);
     std::vector<double> wall_time(scene.particles.size());
@@ -68,7 +69,7 @@ bool same_candidates_every_step(const random_scenes::TestScene& scene, std::opti
     return true;
 }
 
-std::uint64_t run_hash(const random_scenes::TestScene& scene, const SteppedOptions& options) {
+std::uint64_t run_hash(const NamedScene& scene, const SteppedOptions& options) {
     SteppedSimulation sim(scene.world, scene.particles, options);
     std::uint64_t h = state_hash::hash(sim.particles());
     particlesim::run(sim, scene.steps,
@@ -86,7 +87,7 @@ int main(int argc, char** argv) {
         {{"random scenes",
           [] {
               for (std::uint64_t k = 0; k < 200; ++k) {
-                  const random_scenes::TestScene scene = random_scenes::make(k);
+                  const NamedScene scene = random_scenes::make(k);
                   const int forced = forced_grids[k % 6];
                   const int threads = thread_counts[(k / 6) % 4];
                   const std::optional<int> grid = k % 2 == 0 ? std::nullopt : std::optional<int>(forced);
@@ -116,7 +117,7 @@ int main(int argc, char** argv) {
          {"paths search over long runs",
           [] {
               for (std::uint64_t k = 0; k < 6; ++k) {
-                  random_scenes::TestScene scene = random_scenes::make(k * 7 + 3);
+                  NamedScene scene = random_scenes::make(k * 7 + 3);
                   scene.particles.resize(std::min<std::size_t>(scene.particles.size(), 60));
                   scene.steps = 1100;
                   const int threads = thread_counts[k % 4];
@@ -138,7 +139,7 @@ int main(int argc, char** argv) {
          // ordinary disks; the paths search watches them until a line changes.
          {"paths search at tiny relative speeds",
           [] {
-              random_scenes::TestScene scene{World{100.0, 1.0}, 60, {}};
+              NamedScene scene{"", World{100.0, 1.0}, 60, {}};
               for (int k = 0; k < 6; ++k) {
                   const Vec2 v(0.7 - 0.3 * k, 0.4 + 0.1 * k);
                   const Vec2 at(10.0 + 14.0 * k, 20.0 + 11.0 * k);
@@ -157,7 +158,7 @@ int main(int argc, char** argv) {
           }},
          {"clustered scenes", [] {
               for (std::uint64_t k = 0; k < 12; ++k) {
-                  const random_scenes::TestScene scene = random_scenes::make_clustered(k);
+                  const NamedScene scene = random_scenes::make_clustered(k);
                   const int threads = thread_counts[k % 4];
                   const check::Context context("clustered scene ", k, ", ", threads, " threads");
                   CHECK(same_candidates_every_step(scene, std::nullopt, threads));

@@ -5,8 +5,8 @@
 #include "check.hpp"
 #include "random_scenes.hpp"
 
+#include "core/physics.hpp"
 #include "particlesim/stepped_simulation.hpp"
-#include "physics.hpp"
 
 #include <cmath>
 
@@ -21,7 +21,7 @@ int main(int argc, char** argv) {
               int energy_drift = 0;
               int counter_mismatch = 0;
               for (std::uint64_t k = 0; k < 60; ++k) {
-                  const random_scenes::TestScene scene = random_scenes::make(k);
+                  const NamedScene scene = random_scenes::make(k);
                   SteppedSimulation sim(scene.world, scene.particles);
                   double initial_energy = 0.0;
                   for (const Particle& p : sim.particles()) initial_energy += kinetic_energy(p);

@@ -3,8 +3,8 @@
 
 #include "check.hpp"
 
-#include "number_format.hpp"
-#include "random.hpp"
+#include "core/random.hpp"
+#include "io/number_format.hpp"
 
 #include <cmath>
 #include <cstdio>

@@ -4,8 +4,8 @@
 
 #include "check.hpp"
 
-#include "../src/path_lines.hpp"
-#include "random.hpp"
+#include "core/random.hpp"
+#include "search/path_lines.hpp"
 
 #include <algorithm>
 #include <cmath>

@@ -2,8 +2,8 @@
 
 #include "check.hpp"
 
-#include "physics.hpp"
-#include "random.hpp"
+#include "core/physics.hpp"
+#include "core/random.hpp"
 
 #include <bit>
 #include <cmath>

@@ -3,8 +3,8 @@
 
 #include "check.hpp"
 
+#include "core/physics.hpp"
 #include "particlesim/random_scene.hpp"
-#include "physics.hpp"
 
 #include <chrono>
 #include <cmath>

@@ -3,9 +3,9 @@
 
 #include "check.hpp"
 
+#include "core/random.hpp"
 #include "particlesim/stepped_simulation.hpp"
-#include "random.hpp"
-#include "step_pipeline.hpp"
+#include "stepped/step_pipeline.hpp"
 
 #include <algorithm>
 #include <vector>
@@ -108,7 +108,8 @@ bool selection_matches_greedy(SplitMix64& rng, std::uint32_t particles, int cand
         }
         sorted.push_back(c);
     }
-    std::sort(sorted.begin(), sorted.end());
+    // Renamed to user indices, the stored order is the rules' order.
+    std::sort(sorted.begin(), sorted.end(), [](const Collision& a, const Collision& b) { return comes_before(a, b); });
     std::vector<std::uint32_t> stored_of(particles);
     for (std::uint32_t i = 0; i < particles; ++i) stored_of[user_index[i]] = i;
     std::vector<std::uint32_t> expected(particles, no_collision);

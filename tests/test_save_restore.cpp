@@ -50,7 +50,7 @@ void check_resumes_exactly(Make&& make, Restore&& restore, std::int64_t steps, s
 
 void stepped_engine_resumes_bit_for_bit() {
     for (std::uint64_t k = 0; k < 10; ++k) {
-        const random_scenes::TestScene scene = random_scenes::make(k);
+        const NamedScene scene = random_scenes::make(k);
         for (const int substeps : {1, 3}) {
             check::Context context("scene ", k, ", substeps ", substeps);
             const auto make = [&] {
@@ -71,7 +71,7 @@ void stepped_engine_resumes_bit_for_bit() {
 void exact_engine_resumes_bit_for_bit() {
     int tested = 0;
     for (std::uint64_t k = 0; k < 40; ++k) {
-        const random_scenes::TestScene scene = random_scenes::make(k);
+        const NamedScene scene = random_scenes::make(k);
         if (estimated_events_per_step(scene.world, scene.particles) * static_cast<double>(scene.steps) > 2e5) continue;
         const auto make = [&] { return ExactSimulation(scene.world, scene.particles); };
         try {
@@ -126,7 +126,7 @@ std::string with_token(const std::string& text, std::size_t n, const std::string
 }
 
 void damaged_states_are_refused() {
-    const random_scenes::TestScene scene = random_scenes::make(0);
+    const NamedScene scene = random_scenes::make(0);
     SteppedSimulation stepped(scene.world, scene.particles);
     stepped.step();
     const std::string good_stepped = saved_text(stepped);

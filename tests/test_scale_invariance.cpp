@@ -6,6 +6,7 @@
 
 #include "check.hpp"
 #include "example_scenes.hpp"
+#include "named_scene.hpp"
 #include "random_scenes.hpp"
 
 #include "particlesim/exact_simulation.hpp"
@@ -22,13 +23,6 @@ using namespace particlesim;
 
 namespace {
 
-struct NamedScene {
-    std::string name;
-    World world;
-    std::int64_t steps = 0;
-    std::vector<Particle> particles;
-};
-
 std::vector<NamedScene> scenes() {
     std::vector<NamedScene> all;
     for (const auto& entry : std::filesystem::directory_iterator(PARTICLESIM_EXAMPLES_DIR)) {
@@ -39,7 +33,7 @@ std::vector<NamedScene> scenes() {
             {entry.path().filename().string(), scene.world, std::min<std::int64_t>(scene.steps, 40), scene.particles});
     }
     for (std::uint64_t k = 0; k < 12; ++k) {
-        random_scenes::TestScene scene = random_scenes::make(k);
+        NamedScene scene = random_scenes::make(k);
         all.push_back({"random " + std::to_string(k), scene.world, 20, std::move(scene.particles)});
     }
     return all;

@@ -72,7 +72,7 @@ std::string run_simcli(const std::string& scene, std::vector<std::string> args) 
     return r.out;
 }
 
-Scene as_scene(const random_scenes::TestScene& t, OutputMode mode = OutputMode::print) {
+Scene as_scene(const NamedScene& t, OutputMode mode = OutputMode::print) {
     Scene scene;
     scene.world = t.world;
     scene.steps = t.steps;

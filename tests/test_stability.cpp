@@ -18,7 +18,7 @@ namespace {
 constexpr double max_drift = 1e-12;
 
 void adversarial_scenes() {
-    for (const stress_scenes::StressScene& scene : stress_scenes::all()) {
+    for (const NamedScene& scene : stress_scenes::all()) {
         for (const int substeps : {1, 4}) {
             for (const PairSearch search : {PairSearch::brute_force, PairSearch::grid}) {
                 SteppedSimulation stepped(scene.world, scene.particles,
@@ -49,7 +49,7 @@ void adversarial_scenes() {
 
 void exact_engine_refuses_what_would_hang() {
     // Exactly the scenes skipped above: the guard sees them coming.
-    for (const stress_scenes::StressScene& scene : stress_scenes::all()) {
+    for (const NamedScene& scene : stress_scenes::all()) {
         if (scene.name.rfind("tiny radius", 0) == 0 || scene.name.rfind("speeds far above", 0) == 0) {
             CHECK(estimated_events_per_step(scene.world, scene.particles) > 1e7);
         }
@@ -66,7 +66,7 @@ void exact_engine_refuses_what_would_hang() {
 }
 
 void crowded_box_quick() {
-    const stress_scenes::StressScene scene = stress_scenes::crowded_box();
+    const NamedScene scene = stress_scenes::crowded_box();
     SteppedSimulation stepped(scene.world, scene.particles, {.threads = 1});
     CHECK(stress_scenes::run_checked(stepped, scene.world, 20000) <= max_drift);
     ExactSimulation exact(scene.world, scene.particles);

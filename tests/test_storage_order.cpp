@@ -9,7 +9,7 @@
 
 #include "particlesim/random_scene.hpp"
 #include "particlesim/stepped_simulation.hpp"
-#include "storage_order.hpp"
+#include "stepped/storage_order.hpp"
 
 #include <cmath>
 #include <cstdio>
@@ -111,13 +111,13 @@ int main(int argc, char** argv) {
                                 same_as_unsorted(name, scene.world, scene.steps, scene.particles);
                             }
                             // Symmetric and tied scenes: ties must still go by the user's indices.
-                            for (const stress_scenes::StressScene& s : stress_scenes::all())
+                            for (const NamedScene& s : stress_scenes::all())
                                 same_as_unsorted(s.name.c_str(), s.world, s.steps, s.particles);
-                            stress_scenes::StressScene crowded = stress_scenes::crowded_box();
+                            NamedScene crowded = stress_scenes::crowded_box();
                             crowded.steps = 300;
                             same_as_unsorted(crowded.name.c_str(), crowded.world, crowded.steps, crowded.particles);
                             for (std::uint64_t k = 0; k < 60; ++k) {
-                                const random_scenes::TestScene scene = random_scenes::make(k);
+                                const NamedScene scene = random_scenes::make(k);
                                 same_as_unsorted("random scene", scene.world, scene.steps, scene.particles);
                             }
                         }}});

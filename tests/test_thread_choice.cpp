@@ -3,7 +3,7 @@
 
 #include "check.hpp"
 
-#include "../src/thread_choice.hpp"
+#include "stepped/thread_choice.hpp"
 
 #include <algorithm>
 #include <cstdint>

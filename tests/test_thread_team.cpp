@@ -6,7 +6,7 @@
 
 #include "check.hpp"
 
-#include "../src/parallel.hpp"
+#include "parallel/parallel.hpp"
 
 #include <sys/wait.h>
 #include <unistd.h>

@@ -2,7 +2,7 @@
 // cell a point falls in, clamped, worked out by hand.
 
 #include "check.hpp"
-#include "uniform_grid.hpp"
+#include "core/uniform_grid.hpp"
 
 #include <cmath>
 #include <limits>

@@ -5,7 +5,7 @@
 //   2: bad usage or an unreadable scene or output; 3: no verdict possible.
 
 #include "output_check.hpp"
-#include "output_reader.hpp"
+#include "particlesim/output_reader.hpp"
 #include "report.hpp"
 
 #include "particlesim/scene.hpp"
@@ -139,7 +139,7 @@ int run(const Arguments& args) {
     const std::string output_name = display_name(args.output_path);
     std::FILE* file = args.output_path == "-" ? stdin : std::fopen(args.output_path.c_str(), "rb");
     if (!file) throw BadUsage(output_name + ": cannot open: " + std::strerror(errno));
-    OutputReader reader(file, output_name);
+    particlesim::OutputReader reader(file, output_name);
     Report report;
     try {
         report = check_output(scene, reader, args.options);

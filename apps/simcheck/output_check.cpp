@@ -23,10 +23,10 @@ class BlockReader {
 public:
     // Nothing of size N is allocated before N lines have been read: a scene
     // may claim millions of particles over an output of three lines.
-    BlockReader(OutputReader& output, std::size_t count) : output_(output), count_(count) {}
+    BlockReader(particlesim::OutputReader& output, std::size_t count) : output_(output), count_(count) {}
 
     std::optional<Finding> read(std::int64_t step, bool final_block) {
-        OutputLine line;
+        particlesim::OutputLine line;
         particles_.clear();
         lines_.clear();
         for (std::size_t i = 0; i < count_; ++i) {
@@ -58,7 +58,7 @@ public:
     }
 
     std::optional<Finding> expect_end(std::int64_t last_step) {
-        OutputLine line;
+        particlesim::OutputLine line;
         if (!output_.next(line)) return std::nullopt;
         return Finding{last_step, line.line,
                        "the output goes on after the final block: line " + std::to_string(line.line) + " reads \"" +
@@ -70,7 +70,7 @@ public:
     [[nodiscard]] long line_of(std::size_t particle) const { return lines_[particle]; }
 
 private:
-    OutputReader& output_;
+    particlesim::OutputReader& output_;
     std::size_t count_;
     std::vector<Particle> particles_;
     std::vector<long> lines_;
@@ -168,7 +168,7 @@ void add_notes(Report& report, std::int64_t step, const std::vector<std::string>
 
 }  // namespace
 
-Report check_output(const Scene& scene, OutputReader& output, const StepCheckOptions& options) {
+Report check_output(const Scene& scene, particlesim::OutputReader& output, const StepCheckOptions& options) {
     Report report;
     const std::size_t count = scene.particle_count;
     const std::int64_t steps = scene.steps;
@@ -178,7 +178,7 @@ Report check_output(const Scene& scene, OutputReader& output, const StepCheckOpt
 
     BlockReader block(output, count);
     if (auto wrong = block.read(0, false)) return broken(report, *wrong);
-    report.uncertainty = output.style() == NumberStyle::fixed8 ? fixed8_uncertainty : 0.0;
+    report.uncertainty = output.format() == particlesim::NumberFormat::fixed8 ? fixed8_uncertainty : 0.0;
     std::vector<Particle> previous = block.particles();
     if (auto wrong = check_initial_block(scene, block, previous, report.uncertainty)) return broken(report, *wrong);
     // The first step starts from the scene's own numbers where it lists them.

@@ -6,7 +6,7 @@
 // order). A perf-mode output, with nothing between its first and last block,
 // is judged from the initial state as long as the rules stay decided.
 
-#include "output_reader.hpp"
+#include "particlesim/output_reader.hpp"
 
 #include "particlesim/scene.hpp"
 #include "particlesim/step_check.hpp"
@@ -42,7 +42,7 @@ struct Report {
     std::vector<std::int64_t> steps_within_rounding;  // every step with such a decision, ascending
 };
 
-Report check_output(const particlesim::Scene& scene, OutputReader& output,
+Report check_output(const particlesim::Scene& scene, particlesim::OutputReader& output,
                     const particlesim::StepCheckOptions& options);
 
 }  // namespace simcheck

@@ -34,10 +34,6 @@ using namespace simcli;
 constexpr int exit_failure = 1;
 constexpr int exit_bad_input = 2;
 
-// Beyond this many estimated events the exact engine would run for hours (or
-// forever: a disk that fills the box, speeds far above the box per step).
-constexpr double exact_event_limit = 2e9;
-
 // A run stopped by SIGINT or SIGTERM, after a clean flush: exit 128 + signal.
 class Interrupted : public std::runtime_error {
 public:
@@ -195,18 +191,10 @@ std::string at_line(const std::string& name, long line) { return name + ":" + st
 
 ExactSimulation make_exact_engine(const Scene& scene, std::vector<Particle> particles, const std::string& name,
                                   const SceneLines& lines) {
-    if (scene.steps > max_exact_steps) {
-        throw BadInput(at_line(name, lines.steps) + "S = " + std::to_string(scene.steps) +
-                       " is beyond the exact engine's clock (at most 2^53 steps)");
-    }
-    const double events = estimated_events_per_step(scene.world, particles) * static_cast<double>(scene.steps);
-    if (!(events <= exact_event_limit)) {
-        char message[200];
-        std::snprintf(message, sizeof message,
-                      "the exact engine would need about %.3g events for this scene (limit %.3g); "
-                      "use fewer steps or the step engine",
-                      events, exact_event_limit);
-        throw BadInput(at_line(name, lines.steps) + message);
+    try {
+        require_feasible_exact_run(scene.world, particles, scene.steps);
+    } catch (const std::invalid_argument& e) {
+        throw BadInput(at_line(name, lines.steps) + e.what());
     }
     try {
         return ExactSimulation(scene.world, std::move(particles));

@@ -110,9 +110,9 @@ public:
     [[nodiscard]] int cells_per_side() const;
 
 private:
-    class Engine;
-    explicit ExactSimulation(std::unique_ptr<Engine> engine);
-    std::unique_ptr<Engine> engine_;
+    class Implementation;
+    explicit ExactSimulation(std::unique_ptr<Implementation> engine);
+    std::unique_ptr<Implementation> engine_;
 };
 
 // A rough count of the events (wall and particle collisions) per step of a
@@ -120,5 +120,16 @@ private:
 // lets a caller refuse runs that would take hours, or never end (a particle
 // much faster than the box bounces many times per step).
 double estimated_events_per_step(const World& world, std::span<const Particle> particles);
+
+// The most events a whole run may be estimated to need: about an hour of the
+// engine at its slowest. Beyond it a run takes hours, or never ends (a
+// moving disk that fills the box, speeds far above the box per step).
+inline constexpr double max_estimated_run_events = 2e9;
+
+// The exact engine's two guards against runs that would not end: before the
+// run, this one (std::invalid_argument naming the estimate and the limit, or
+// past max_exact_steps); during it, TooManyEvents for a single step that
+// runs away.
+void require_feasible_exact_run(const World& world, std::span<const Particle> particles, std::int64_t steps);
 
 }  // namespace particlesim

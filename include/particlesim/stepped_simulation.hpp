@@ -85,8 +85,8 @@ public:
     [[nodiscard]] std::int64_t steps_on_one_thread() const;
 
 private:
-    class Engine;
-    std::unique_ptr<Engine> engine_;
+    class Implementation;
+    std::unique_ptr<Implementation> engine_;
 };
 
 }  // namespace particlesim

@@ -2,8 +2,9 @@
 // Random test scenes across the regimes that matter: sparse and dense boxes,
 // slow particles and particles faster than the box per step, overlapping starts.
 
+#include "core/random.hpp"
+#include "named_scene.hpp"
 #include "particlesim/random_scene.hpp"
-#include "random.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -11,17 +12,11 @@
 
 namespace random_scenes {
 
-struct TestScene {
-    particlesim::World world;
-    std::int64_t steps = 0;
-    std::vector<particlesim::Particle> particles;
-};
-
 // Scene number `k` of a reproducible family; k varies the regime.
-inline TestScene make(std::uint64_t k) {
+inline NamedScene make(std::uint64_t k) {
     using namespace particlesim;
     SplitMix64 rng(1000 + k);
-    TestScene scene;
+    NamedScene scene;
     const int regime = static_cast<int>(k % 5);
     const std::size_t count = 2 + rng.next() % (regime == 4 ? 40 : 300);
     const double box_size = regime == 1 ? 60.0 + 100.0 * rng.uniform() : 200.0 + 20000.0 * rng.uniform();
@@ -56,10 +51,10 @@ inline TestScene make(std::uint64_t k) {
 // Scene number `k` of a family where a cluster of particles shares a few
 // grid cells, fast enough to be binned over many time slices: small
 // clusters overflow a few cells, large ones crowd them.
-inline TestScene make_clustered(std::uint64_t k) {
+inline NamedScene make_clustered(std::uint64_t k) {
     using namespace particlesim;
     SplitMix64 rng(5000 + k);
-    TestScene scene;
+    NamedScene scene;
     const double box_size = 20000.0;
     scene.world = World{box_size, 1.0};
     scene.steps = 20;

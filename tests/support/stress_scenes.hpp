@@ -2,9 +2,10 @@
 // Adversarial scenes for the stability tests (quick ones in CTest, long ones
 // in the benchmark tree), and the check every step of them must pass.
 
+#include "core/random.hpp"
+#include "named_scene.hpp"
 #include "particlesim/accuracy.hpp"
 #include "particlesim/random_scene.hpp"
-#include "random.hpp"
 
 #include <cmath>
 #include <string>
@@ -14,14 +15,6 @@ namespace stress_scenes {
 
 using namespace particlesim;
 
-struct StressScene {
-    std::string name;
-    World world;
-    std::int64_t steps = 0;
-    std::vector<Particle> particles;
-    bool overlapping = false;  // the exact engine refuses such a start
-};
-
 inline Particle disk(double x, double y, double vx, double vy) {
     Particle p;
     p.position = Vec2(x, y);
@@ -29,12 +22,12 @@ inline Particle disk(double x, double y, double vx, double vy) {
     return p;
 }
 
-inline std::vector<StressScene> all() {
-    std::vector<StressScene> scenes;
+inline std::vector<NamedScene> all() {
+    std::vector<NamedScene> scenes;
     SplitMix64 rng(77);
     {
         // Pairs whose closest approach is 2r within a few ulps, either side.
-        StressScene s{"near-grazing pairs", {1000.0, 1.0}, 200, {}};
+        NamedScene s{"near-grazing pairs", {1000.0, 1.0}, 200, {}};
         for (int k = 0; k < 40; ++k) {
             const double y = 20.0 + 24.0 * k;
             const double offset = 2.0 + (k - 20) * 1e-15;
@@ -45,7 +38,7 @@ inline std::vector<StressScene> all() {
     }
     {
         // Centres a hair apart, approaching or receding: they overlap.
-        StressScene s{"near-coincident centres", {100.0, 1.0}, 200, {}, true};
+        NamedScene s{"near-coincident centres", {100.0, 1.0}, 200, {}, true};
         for (int k = 0; k < 20; ++k) {
             const double x = 10.0 + 4.0 * k;
             s.particles.push_back(disk(x, 50.0, 0.3, -0.2));
@@ -56,13 +49,13 @@ inline std::vector<StressScene> all() {
     {
         // A touching line moving together (the original design's worst case),
         // into a wall and back through itself.
-        StressScene s{"line moving together", {200.0, 1.0}, 400, {}};
+        NamedScene s{"line moving together", {200.0, 1.0}, 400, {}};
         for (int k = 0; k < 60; ++k) s.particles.push_back(disk(30.0 + 2.0 * k, 100.0, 1.5, 0.0));
         scenes.push_back(std::move(s));
     }
     {
         // Everything on one wall, pressing into it, touching neighbours.
-        StressScene s{"everything against one wall", {400.0, 1.0}, 300, {}};
+        NamedScene s{"everything against one wall", {400.0, 1.0}, 300, {}};
         for (int k = 0; k < 150; ++k)
             s.particles.push_back(disk(1.0, 2.0 + 2.0 * k, -0.5 - rng.uniform(), rng.uniform() - 0.5));
         scenes.push_back(std::move(s));
@@ -70,7 +63,7 @@ inline std::vector<StressScene> all() {
     {
         // A lattice of head-on pairs, all touching at t = 0.5 of step 1 on the
         // same instant, plus a ring converging on one point.
-        StressScene s{"simultaneous collisions", {200.0, 1.0}, 100, {}};
+        NamedScene s{"simultaneous collisions", {200.0, 1.0}, 100, {}};
         for (int row = 0; row < 10; ++row) {
             for (int column = 0; column < 8; ++column) {
                 const double x = 10.0 + 12.0 * column;
@@ -87,23 +80,23 @@ inline std::vector<StressScene> all() {
         scenes.push_back(std::move(s));
     }
     {
-        StressScene s{"huge box (L = 1e12, r = 1e-3)", {1e12, 1e-3}, 100, {}};
+        NamedScene s{"huge box (L = 1e12, r = 1e-3)", {1e12, 1e-3}, 100, {}};
         s.particles = make_random_particles(300, s.world, {3, {}});
         scenes.push_back(std::move(s));
     }
     {
         // The rules' speeds for r = 1e-9, L = 1 reach 1.25e8 boxes a step.
-        StressScene s{"tiny radius (r = 1e-9, L = 1)", {1.0, 1e-9}, 100, {}};
+        NamedScene s{"tiny radius (r = 1e-9, L = 1)", {1.0, 1e-9}, 100, {}};
         s.particles = make_random_particles(300, s.world, {4, {}});
         scenes.push_back(std::move(s));
     }
     {
-        StressScene s{"zero velocities", {50.0, 1.0}, 50, {}};
+        NamedScene s{"zero velocities", {50.0, 1.0}, 50, {}};
         s.particles = make_random_particles(100, s.world, {5, SpeedRange{0.0, 0.0}});
         scenes.push_back(std::move(s));
     }
     {
-        StressScene s{"speeds far above L per step", {100.0, 1.0}, 100, {}};
+        NamedScene s{"speeds far above L per step", {100.0, 1.0}, 100, {}};
         s.particles = make_random_particles(200, s.world, {6, SpeedRange{1e6, 1e9}});
         scenes.push_back(std::move(s));
     }
@@ -134,8 +127,8 @@ double run_checked(Engine& engine, const World& params, std::int64_t steps) {
 }
 
 // The crowded box of the long stability run (area fraction 0.39).
-inline StressScene crowded_box() {
-    StressScene s{"crowded box", {40.0, 1.0}, 0, {}};
+inline NamedScene crowded_box() {
+    NamedScene s{"crowded box", {40.0, 1.0}, 0, {}};
     s.particles = make_random_particles(200, s.world, {8, SpeedRange{0.1, 1.0}});
     return s;
 }

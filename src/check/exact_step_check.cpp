@@ -1,0 +1,208 @@
+#include "check/exact_step_check.hpp"
+
+#include "check/close_pairs.hpp"
+#include "core/physics.hpp"
+#include "core/random.hpp"
+#include "io/number_format.hpp"
+#include "particlesim/exact_simulation.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <stdexcept>
+#include <string>
+
+namespace particlesim {
+
+namespace {
+
+// The printed state and three copies moved within its uncertainty.
+constexpr int ensemble_size = 4;
+// Where the program may land, in spreads of the ensemble beyond its extremes:
+// three samples underestimate the true spread, a factor 4 covers it.
+constexpr double spread_factor = 4.0;
+// A perf-mode run is judged only while its ensemble stays this close, in r.
+constexpr double judged_spread = 1e-3;
+// A particle whose step amplifies the printing's rounding more than this is
+// not judged: in such a step (several collisions at speeds far above r per
+// step) a collision a few 1e-9 from grazing may go either way, and a handful
+// of samples cannot say which way the program's own state went.
+constexpr double judged_amplification = 1e3;
+
+}  // namespace
+
+ExactStepCheck::ExactStepCheck(const World& world) : world_(world), box_(Box::of(world)) {}
+
+template <typename AfterStep>
+void ExactStepCheck::run_ensemble(const PrintedState& start, std::int64_t steps, AfterStep after_step) {
+    // Even from exact numbers another correct program rounds differently.
+    const auto shift = [&](double value) { return std::max(start.uncertainty, 0x1p-40 * std::fabs(value)); };
+    SplitMix64 random(0x5eedULL);
+    const auto moved = [&](double value) { return value + (2.0 * random.uniform() - 1.0) * shift(value); };
+    std::vector<ExactSimulation> runs;
+    std::string refusal;
+    for (int member = 0; member < ensemble_size; ++member) {
+        std::vector<Particle> copy(start.particles.begin(), start.particles.end());
+        for (Particle& p : copy) {
+            p.particle_collisions = p.wall_collisions = 0;
+            for (int axis = 0; axis < 2; ++axis) {
+                if (member > 0) {
+                    p.position[axis] = moved(p.position[axis]);
+                    p.velocity[axis] = moved(p.velocity[axis]);
+                }
+                p.position[axis] = std::clamp(p.position[axis], box_.lower, box_.upper);
+            }
+        }
+        try {
+            runs.emplace_back(world_, std::move(copy));
+        } catch (const std::invalid_argument& e) {
+            if (refusal.empty()) refusal = e.what();
+        }
+    }
+    if (runs.empty()) throw std::invalid_argument("the exact engine cannot start from this state: " + refusal);
+    states_.resize(runs.size());
+    for (std::int64_t s = 1; s <= steps; ++s) {
+        for (std::size_t m = 0; m < runs.size(); ++m) {
+            runs[m].step();
+            const auto particles = runs[m].particles();
+            states_[m].assign(particles.begin(), particles.end());
+        }
+        if (!after_step(s)) return;
+    }
+}
+
+void ExactStepCheck::measure_bounds(const PrintedState& start) {
+    const std::size_t count = start.particles.size();
+    bounds_.lower.assign(count, Particle{});
+    bounds_.upper.assign(count, Particle{});
+    bounds_.collisions.assign(count, CollisionRange{});
+    bounds_.widest = 0.0;
+    bounds_.unjudged.clear();
+    const double base = 4.0 * start.uncertainty;
+    const double shift = std::max(start.uncertainty, 0x1p-40 * world_.box_size);
+    for (std::size_t p = 0; p < count; ++p) {
+        Particle& lower = bounds_.lower[p];
+        Particle& upper = bounds_.upper[p];
+        CollisionRange& counts = bounds_.collisions[p];
+        lower = upper = states_[0][p];
+        counts = {lower.particle_collisions, lower.particle_collisions, lower.wall_collisions, lower.wall_collisions};
+        for (const auto& state : states_) {
+            const Particle& q = state[p];
+            lower.position = lower.position.cwiseMin(q.position);
+            upper.position = upper.position.cwiseMax(q.position);
+            lower.velocity = lower.velocity.cwiseMin(q.velocity);
+            upper.velocity = upper.velocity.cwiseMax(q.velocity);
+            counts.particle_min = std::min(counts.particle_min, q.particle_collisions);
+            counts.particle_max = std::max(counts.particle_max, q.particle_collisions);
+            counts.wall_min = std::min(counts.wall_min, q.wall_collisions);
+            counts.wall_max = std::max(counts.wall_max, q.wall_collisions);
+        }
+        const Vec2 position_spread = upper.position - lower.position;
+        const Vec2 velocity_spread = upper.velocity - lower.velocity;
+        bounds_.widest = std::max(bounds_.widest, position_spread.maxCoeff());
+        if (states_.size() > 1 &&
+            std::max(position_spread.maxCoeff(), velocity_spread.maxCoeff()) > judged_amplification * shift) {
+            bounds_.unjudged.push_back(static_cast<std::uint32_t>(p));
+            constexpr double anything = std::numeric_limits<double>::infinity();
+            lower.position = lower.velocity = Vec2::Constant(-anything);
+            upper.position = upper.velocity = Vec2::Constant(anything);
+            counts = {0, std::numeric_limits<std::uint64_t>::max(), 0, std::numeric_limits<std::uint64_t>::max()};
+            continue;
+        }
+        const Vec2 margin = Vec2::Constant(base);
+        lower.position -= spread_factor * position_spread + margin;
+        upper.position += spread_factor * position_spread + margin;
+        lower.velocity -= spread_factor * velocity_spread + margin;
+        upper.velocity += spread_factor * velocity_spread + margin;
+    }
+}
+
+StepCheck ExactStepCheck::check(const PrintedState& before, const PrintedState& after) {
+    StepCheck result;
+    // Hard disks never overlap: a printed overlap deeper than the printing's
+    // rounding and the engines' contact tolerance breaks the rules.
+    positions_.resize(after.particles.size());
+    for (std::size_t p = 0; p < positions_.size(); ++p) positions_[p] = after.particles[p].position;
+    const double diameter = 2.0 * box_.lower;
+    const double closest = diameter * (1.0 - overlap_tolerance) - 3.0 * after.uncertainty - 0x1p-50 * world_.box_size;
+    std::optional<std::pair<std::uint32_t, std::uint32_t>> overlap;
+    for_each_close_pair(positions_, world_.box_size, closest, [&](std::uint32_t i, std::uint32_t j) {
+        if (!overlap || std::make_pair(i, j) < *overlap) overlap = std::make_pair(i, j);
+    });
+    if (overlap) {
+        const auto [i, j] = *overlap;
+        const double distance = (positions_[j] - positions_[i]).norm();
+        result.violation = RuleViolation{
+            i,
+            "particles " + std::to_string(i) + " and " + std::to_string(j) + " overlap: their centres are " +
+                format_brief(distance) + " apart, and hard disks never come closer than 2r = " + format_short(diameter),
+            after.particles[i], after.particles[i]};
+        return result;
+    }
+
+    run_ensemble(before, 1, [](std::int64_t) { return true; });
+    measure_bounds(before);
+    if (!bounds_.unjudged.empty()) {
+        // One chaotic particle may have met any other in the step: none is judged.
+        result.within_rounding.push_back(
+            "particle " + std::to_string(bounds_.unjudged.front()) + " (and " +
+            std::to_string(bounds_.unjudged.size() - 1) +
+            " more): hard disks started within rounding of the printed state part by over " +
+            format_brief(judged_amplification) + " times the rounding in this step (chaos); the step is not judged");
+        result.collisions.assign(after.particles.size(), {0, std::numeric_limits<std::uint64_t>::max(), 0,
+                                                          std::numeric_limits<std::uint64_t>::max()});
+        return result;
+    }
+    for (std::uint32_t p = 0; p < after.particles.size(); ++p) {
+        const Particle& printed = after.particles[p];
+        const auto fits = [&](double value, double lower, double upper) {
+            const double slack = after.uncertainty + std::fabs(value) * 0x1p-51;
+            return lower - slack <= value && value <= upper + slack;
+        };
+        bool fine = true;
+        for (int axis = 0; axis < 2; ++axis) {
+            fine =
+                fine && fits(printed.position[axis], bounds_.lower[p].position[axis], bounds_.upper[p].position[axis]);
+            fine =
+                fine && fits(printed.velocity[axis], bounds_.lower[p].velocity[axis], bounds_.upper[p].velocity[axis]);
+        }
+        if (fine) continue;
+        const Particle& expected = states_[0][p];
+        const std::uint64_t events = expected.particle_collisions + expected.wall_collisions;
+        std::string what =
+            "particle " + std::to_string(p) + ": continuous-time hard disks from the printed state before ";
+        what += events == 0
+                    ? "move it freely in this step (no collision)"
+                    : "give it " + std::to_string(expected.particle_collisions) + " collision(s) with disks and " +
+                          std::to_string(expected.wall_collisions) + " with walls in this step";
+        what += ", and the printed state does not follow";
+        result.violation = RuleViolation{p, what, expected, printed};
+        return result;
+    }
+    result.collisions = bounds_.collisions;
+    return result;
+}
+
+StepChecker::Run ExactStepCheck::run(const PrintedState& start, std::int64_t steps) {
+    StepChecker::Run result;
+    run_ensemble(start, steps, [&](std::int64_t s) {
+        measure_bounds(start);
+        if (bounds_.widest <= judged_spread * box_.lower) return true;
+        result.undecided_from = s;
+        result.undecided_why = "hard disks started within the printing's rounding of the initial state are " +
+                               format_brief(bounds_.widest) + " apart after step " + std::to_string(s) +
+                               " (chaos): the final state cannot be judged from the initial one";
+        return false;
+    });
+    if (steps == 0) {
+        states_.assign(1, std::vector<Particle>(start.particles.begin(), start.particles.end()));
+        for (Particle& p : states_[0]) p.particle_collisions = p.wall_collisions = 0;
+        measure_bounds(start);
+    }
+    result.lower = bounds_.lower;
+    result.upper = bounds_.upper;
+    result.collisions = bounds_.collisions;
+    return result;
+}
+
+}  // namespace particlesim

@@ -1,0 +1,42 @@
+#pragma once
+// The step checker for continuous-time hard disks (simcli --engine exact).
+// Event-driven dynamics has no small set of decisions to bound one by one,
+// so the tolerance is measured instead: the exact engine is run from the
+// printed state and from copies moved within the printing's uncertainty,
+// and the printed next state must lie within a wide margin of where they go.
+
+#include "core/box.hpp"
+#include "particlesim/step_check.hpp"
+
+#include <cstdint>
+#include <vector>
+
+namespace particlesim {
+
+class ExactStepCheck {
+public:
+    explicit ExactStepCheck(const World& world);
+
+    [[nodiscard]] StepCheck check(const PrintedState& before, const PrintedState& after);
+    [[nodiscard]] StepChecker::Run run(const PrintedState& start, std::int64_t steps);
+
+private:
+    struct Bounds {
+        std::vector<Particle> lower, upper;
+        std::vector<CollisionRange> collisions;
+        double widest = 0.0;                  // the largest spread of a position between the runs
+        std::vector<std::uint32_t> unjudged;  // particles whose step is too chaotic to judge
+    };
+    // Runs the ensemble `steps` steps on, calling `after_step(s)` after each.
+    template <typename AfterStep>
+    void run_ensemble(const PrintedState& start, std::int64_t steps, AfterStep after_step);
+    void measure_bounds(const PrintedState& start);
+
+    World world_;
+    Box box_;
+    std::vector<std::vector<Particle>> states_;  // of each run that could start
+    std::vector<Vec2> positions_;
+    Bounds bounds_;
+};
+
+}  // namespace particlesim

@@ -1,0 +1,426 @@
+#include "particlesim/step_check.hpp"
+
+#include "check/exact_step_check.hpp"
+#include "check/uncertain_step.hpp"
+#include "core/box.hpp"
+#include "input/options_check.hpp"
+#include "input/scene_checks.hpp"
+#include "io/number_format.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+#include <string>
+
+namespace particlesim {
+
+namespace {
+
+// How far a printed number may be from the value its program held.
+double tolerance(double printed, double uncertainty) { return uncertainty + std::fabs(printed) * 0x1p-51; }
+
+bool matches(const UncertainParticle& allowed, const Particle& printed, double uncertainty) {
+    const auto fits = [&](const Uncertain& bounds, double value) {
+        return bounds.contains(value, tolerance(value, uncertainty));
+    };
+    return fits(allowed.x, printed.position.x()) && fits(allowed.y, printed.position.y()) &&
+           fits(allowed.vx, printed.velocity.x()) && fits(allowed.vy, printed.velocity.y());
+}
+
+std::string time_text(const Uncertain& time) {
+    if (!std::isfinite(time.hi)) return "a time within rounding of the step";
+    return "t = " + format_brief(time.mid());
+}
+
+std::string describe(const PossibleCollision& c, std::uint32_t particle) {
+    if (c.kind == CollisionKind::wall) {
+        const bool corner = c.on_x == Tri::yes && c.on_y == Tri::yes;
+        return "particle " + std::to_string(particle) + " reaches the " + (corner ? "corner" : "wall") + " at " +
+               time_text(c.time);
+    }
+    if (c.touching == Tri::yes) {
+        return "particles " + std::to_string(c.i) + " and " + std::to_string(c.j) +
+               " overlap at the start of the step and approach each other, so they collide at t = 0";
+    }
+    return "particles " + std::to_string(c.i) + " and " + std::to_string(c.j) + " meet at " + time_text(c.time);
+}
+
+// A collision as the subject of a sentence.
+std::string event_name(const PossibleCollision& c) {
+    if (c.kind == CollisionKind::wall) {
+        const bool corner = c.on_x == Tri::yes && c.on_y == Tri::yes;
+        return "particle " + std::to_string(c.i) + "'s " + (corner ? "corner" : "wall") + " hit at " +
+               time_text(c.time);
+    }
+    return "the meeting of particles " + std::to_string(c.i) + " and " + std::to_string(c.j) + " at " +
+           time_text(c.time);
+}
+
+}  // namespace
+
+class StepChecker::Impl {
+public:
+    Impl(const World& world, const StepCheckOptions& options)
+        : world_(world), box_(Box::of(world)), options_(options), step_(box_), exact_(world) {}
+
+    StepCheck check(const PrintedState& before, const PrintedState& after) {
+        require_printed_state(before);
+        if (after.particles.size() != before.particles.size()) {
+            throw std::invalid_argument("the two states have different numbers of particles");
+        }
+        StepCheck result;
+        if (auto outside = outside_box(after)) {
+            result.violation = std::move(outside);
+            return result;
+        }
+        if (options_.rules == CheckedRules::exact) return exact_.check(before, after);
+        return check_stepped(before, after);
+    }
+
+    Run run(const PrintedState& start, std::int64_t steps) {
+        require_printed_state(start);
+        if (options_.rules == CheckedRules::exact) return exact_.run(start, steps);
+        Run result;
+        const std::size_t count = start.particles.size();
+        state_.resize(count);
+        for (std::size_t p = 0; p < count; ++p) state_[p] = uncertain_particle(start.particles[p], start.uncertainty);
+        result.collisions.assign(count, CollisionRange{});
+        for (std::int64_t s = 1; s <= steps && !result.undecided_from; ++s) {
+            for (int micro = 0; micro < options_.substeps && !result.undecided_from; ++micro) {
+                advance_micro_step(result.collisions, &result.undecided_why);
+                if (!result.undecided_why.empty()) result.undecided_from = s;
+            }
+        }
+        result.lower.resize(count);
+        result.upper.resize(count);
+        for (std::size_t p = 0; p < count; ++p) {
+            result.lower[p].position = Vec2(state_[p].x.lo, state_[p].y.lo);
+            result.lower[p].velocity = Vec2(state_[p].vx.lo, state_[p].vy.lo);
+            result.upper[p].position = Vec2(state_[p].x.hi, state_[p].y.hi);
+            result.upper[p].velocity = Vec2(state_[p].vx.hi, state_[p].vy.hi);
+        }
+        return result;
+    }
+
+private:
+    // A state printed by a correct program: valid within its uncertainty (the
+    // bounds made of it are clamped into the box, where the true state lies).
+    void require_printed_state(const PrintedState& state) const {
+        for (std::size_t p = 0; p < state.particles.size(); ++p) {
+            const Particle& q = state.particles[p];
+            for (int axis = 0; axis < 2; ++axis) {
+                const double value = q.position[axis];
+                const double velocity = q.velocity[axis];
+                const double allowed = tolerance(value, state.uncertainty);
+                if (!(value >= box_.lower - allowed && value <= box_.upper + allowed) ||
+                    !(std::fabs(velocity) <= max_magnitude)) {
+                    throw std::invalid_argument("StepChecker: particle " + std::to_string(p) +
+                                                " of the state before the step is outside the box or beyond the "
+                                                "accepted range");
+                }
+            }
+        }
+    }
+
+    // Every printed state must be valid (rules.md "World"), within its printing.
+    std::optional<RuleViolation> outside_box(const PrintedState& after) const {
+        for (std::uint32_t p = 0; p < after.particles.size(); ++p) {
+            const Particle& printed = after.particles[p];
+            for (int axis = 0; axis < 2; ++axis) {
+                const double value = printed.position[axis];
+                const double slack = tolerance(value, after.uncertainty);
+                const char* name = axis == 0 ? "x" : "y";
+                std::string what;
+                if (!(value >= box_.lower - slack)) {
+                    what = "particle " + std::to_string(p) + " is outside the box: " + name + " = " +
+                           format_short(value) + " is below r = " + format_short(box_.lower);
+                } else if (!(value <= box_.upper + slack)) {
+                    what = "particle " + std::to_string(p) + " is outside the box: " + name + " = " +
+                           format_short(value) + " is beyond L - r = " + format_short(box_.upper);
+                }
+                if (!what.empty()) {
+                    Particle expected = printed;
+                    expected.position[axis] = std::clamp(value, box_.lower, box_.upper);
+                    return RuleViolation{p, what, expected, printed};
+                }
+            }
+        }
+        return std::nullopt;
+    }
+
+    // One micro-step on the bounds, every allowed fate merged; says why when
+    // a particle may go more than one way.
+    void advance_micro_step(std::vector<CollisionRange>& counts, std::string* undecided) {
+        step_.predict(state_, 1.0 / options_.substeps);
+        next_.resize(state_.size());
+        for (std::uint32_t p = 0; p < state_.size(); ++p) {
+            step_.fates_of(p, fates_);
+            if (fates_.size() > 1 && undecided && undecided->empty()) *undecided = why_undecided(p);
+            add_counts(counts[p], fates_);
+            next_[p] = fates_.front().outcome;
+            for (const Fate& f : fates_) next_[p] = hull(next_[p], f.outcome);
+        }
+        state_.swap(next_);
+    }
+
+    void add_counts(CollisionRange& counts, const std::vector<Fate>& fates) const {
+        std::uint64_t pmin = 1, pmax = 0, wmin = 1, wmax = 0;
+        for (const Fate& f : fates) {
+            const bool pair = f.candidate >= 0 && step_.candidates()[f.candidate].kind == CollisionKind::pair;
+            const bool wall = f.candidate >= 0 && !pair;
+            pmin = std::min<std::uint64_t>(pmin, pair);
+            pmax = std::max<std::uint64_t>(pmax, pair);
+            wmin = std::min<std::uint64_t>(wmin, wall);
+            wmax = std::max<std::uint64_t>(wmax, wall);
+        }
+        counts.particle_min += pmin;
+        counts.particle_max += pmax;
+        counts.wall_min += wmin;
+        counts.wall_max += wmax;
+    }
+
+    std::string why_undecided(std::uint32_t particle) const {
+        for (const std::uint32_t k : step_.candidates_of(particle)) {
+            if (step_.candidates()[k].accepted == Tri::maybe) return why_undecided(step_.candidates()[k]);
+        }
+        return "particle " + std::to_string(particle) + ": a decision within rounding";
+    }
+
+    static std::string why_undecided(const PossibleCollision& c) {
+        const std::string who = c.kind == CollisionKind::wall
+                                    ? "particle " + std::to_string(c.i)
+                                    : "particles " + std::to_string(c.i) + " and " + std::to_string(c.j);
+        if (c.exists == Tri::maybe) {
+            if (c.kind == CollisionKind::wall && !std::isfinite(c.time.hi)) {
+                return who + " creeps along a wall: whether it reaches it in this step is within rounding";
+            }
+            if (c.kind == CollisionKind::wall) return who + " reaches the wall within rounding of the end of the step";
+            if (c.touching == Tri::maybe)
+                return who + " touch within rounding: whether they collide at t = 0 is within rounding";
+            if (c.approaching == Tri::maybe) {
+                return who +
+                       " move neither towards nor away from each other, within rounding: whether they collide is "
+                       "within rounding";
+            }
+            if (c.time.lo <= 1.0 && 1.0 <= c.time.hi) return who + " meet within rounding of the end of the step";
+            return who + " graze: whether they touch is within rounding";
+        }
+        return describe(c, c.i) + ", and whether it comes before another collision of " +
+               (c.kind == CollisionKind::wall ? "it" : "theirs") + " is within rounding (a near tie)";
+    }
+
+    StepCheck check_stepped(const PrintedState& before, const PrintedState& after) {
+        StepCheck result;
+        const std::size_t count = before.particles.size();
+        state_.resize(count);
+        for (std::size_t p = 0; p < count; ++p) {
+            state_[p] = uncertain_particle(before.particles[p], before.uncertainty);
+        }
+        result.collisions.assign(count, CollisionRange{});
+        std::string undecided;
+        for (int micro = 1; micro < options_.substeps; ++micro) {
+            advance_micro_step(result.collisions, &undecided);
+            if (!undecided.empty()) {
+                result.within_rounding.push_back("micro-step " + std::to_string(micro) + ": " + undecided);
+                undecided.clear();
+            }
+        }
+        // The last micro-step is matched fate by fate against the printed state.
+        step_.predict(state_, 1.0 / options_.substeps);
+        matched_.assign(count, {});
+        for (std::uint32_t p = 0; p < count; ++p) {
+            step_.fates_of(p, fates_);
+            for (const Fate& f : fates_) {
+                if (matches(f.outcome, after.particles[p], after.uncertainty)) matched_[p].push_back(f.candidate);
+            }
+        }
+        // A particle that no fate explains on its own comes first; then one
+        // whose collision its partner's printed state does not show.
+        for (std::uint32_t p = 0; p < count; ++p) {
+            if (matched_[p].empty()) {
+                result.violation = explain(p, after);
+                return result;
+            }
+        }
+        drop_one_sided_pairs();
+        for (std::uint32_t p = 0; p < count; ++p) {
+            if (matched_[p].empty()) {
+                result.violation = explain(p, after);
+                return result;
+            }
+            step_.fates_of(p, fates_);
+            if (fates_.size() > 1) note_either_way(p, result.within_rounding);
+            fates_.erase(std::remove_if(fates_.begin(), fates_.end(),
+                                        [&](const Fate& f) {
+                                            return std::find(matched_[p].begin(), matched_[p].end(), f.candidate) ==
+                                                   matched_[p].end();
+                                        }),
+                         fates_.end());
+            add_counts(result.collisions[p], fates_);
+        }
+        return result;
+    }
+
+    // A pair fate needs both particles: drop it where the other does not match it.
+    void drop_one_sided_pairs() {
+        for (bool changed = true; changed;) {
+            changed = false;
+            for (std::uint32_t p = 0; p < matched_.size(); ++p) {
+                auto& mine = matched_[p];
+                const auto one_sided = [&](int k) {
+                    if (k < 0) return false;
+                    const PossibleCollision& c = step_.candidates()[k];
+                    if (c.kind != CollisionKind::pair) return false;
+                    const auto& theirs = matched_[c.other(p)];
+                    return std::find(theirs.begin(), theirs.end(), k) == theirs.end();
+                };
+                const auto end = std::remove_if(mine.begin(), mine.end(), one_sided);
+                if (end != mine.end()) {
+                    mine.erase(end, mine.end());
+                    changed = true;
+                }
+            }
+        }
+    }
+
+    void note_either_way(std::uint32_t particle, std::vector<std::string>& notes) const {
+        for (const std::uint32_t k : step_.candidates_of(particle)) {
+            const PossibleCollision& c = step_.candidates()[k];
+            // Each undecided candidate once: a pair at its lower index.
+            if (c.accepted == Tri::maybe && particle == c.i) notes.push_back(why_undecided(c));
+        }
+    }
+
+    // The first particle that no allowed fate explains: what the rules do,
+    // and what the output seems to have done instead.
+    RuleViolation explain(std::uint32_t particle, const PrintedState& after) const {
+        RuleViolation v;
+        v.particle = particle;
+        v.printed = after.particles[particle];
+        std::vector<Fate> fates;
+        step_.fates_of(particle, fates);
+        // The expected fate: the accepted collision, else the first allowed.
+        const Fate* expected = &fates.front();
+        for (const Fate& f : fates) {
+            if (f.candidate >= 0 && step_.candidates()[f.candidate].accepted == Tri::yes) expected = &f;
+        }
+        v.expected = midpoint(expected->outcome);
+        const std::string mine = "particle " + std::to_string(particle);
+        const auto printed_matches = [&](int candidate) {
+            return matches(step_.outcome(particle, candidate), v.printed, after.uncertainty);
+        };
+        if (expected->candidate < 0) {
+            v.what = mine + " has no collision in this step";
+            if (printed_matches(-1)) {
+                v.what += "; its partner's printed state does not match the collision it shows";
+                return v;
+            }
+            for (const std::uint32_t k : step_.candidates_of(particle)) {
+                if (!printed_matches(static_cast<int>(k))) continue;
+                const PossibleCollision& lost = step_.candidates()[k];
+                v.what += ": " + describe(lost, particle) + ", but ";
+                const PossibleCollision* winner = winner_over(lost);
+                v.what += winner ? event_name(*winner) + " comes first" : "that collision is not selected";
+                if (winner && winner->time.is_exact() && lost.time.is_exact() && winner->time.lo == lost.time.lo) {
+                    v.what += " (a tie: at equal times a wall comes before a particle, then the lowest indices win)";
+                }
+                v.what += "; the output carries it out";
+                return v;
+            }
+            v.what += " and moves freely, but the output changes its state";
+            return v;
+        }
+        const PossibleCollision& c = step_.candidates()[static_cast<std::size_t>(expected->candidate)];
+        const std::string rule = describe(c, particle);
+        if (printed_matches(expected->candidate)) {
+            v.what = rule + ", but only particle " + std::to_string(particle) + "'s printed state shows it: particle " +
+                     std::to_string(c.other(particle)) + "'s does not follow from it";
+            return v;
+        }
+        if (printed_matches(-1)) {
+            v.what = rule + (c.kind == CollisionKind::wall ? ", and the output lets it pass"
+                                                           : ", and the output lets them pass");
+            return v;
+        }
+        for (const std::uint32_t k : step_.candidates_of(particle)) {
+            if (static_cast<int>(k) == expected->candidate || !printed_matches(static_cast<int>(k))) continue;
+            const PossibleCollision& other = step_.candidates()[k];
+            v.what = rule + ", but the output carries out another collision first: " + describe(other, particle);
+            if (other.time.is_exact() && c.time.is_exact() && other.time.lo == c.time.lo) {
+                v.what += " (a tie: at equal times a wall comes before a particle, then the lowest indices win)";
+            }
+            return v;
+        }
+        if (c.kind == CollisionKind::wall && c.on_x == Tri::yes && c.on_y == Tri::yes) {
+            const bool only_x = v.printed.velocity.x() * v.expected.velocity.x() > 0.0 &&
+                                v.printed.velocity.y() * v.expected.velocity.y() < 0.0;
+            const bool only_y = v.printed.velocity.x() * v.expected.velocity.x() < 0.0 &&
+                                v.printed.velocity.y() * v.expected.velocity.y() > 0.0;
+            if (only_x || only_y) {
+                v.what = rule + ": both vx and vy flip, but the output flips only " + (only_x ? "vx" : "vy");
+                return v;
+            }
+        }
+        if (const char* axis = stopped_at_wall(v.expected)) {
+            const bool reflected = (axis[0] == 'x' ? v.printed.velocity.x() * v.expected.velocity.x()
+                                                   : v.printed.velocity.y() * v.expected.velocity.y()) < 0.0;
+            if (reflected) {
+                v.what = rule + "; after it " + mine + " must stop at the wall (" + axis + " = " +
+                         format_short(axis[0] == 'x' ? v.expected.position.x() : v.expected.position.y()) +
+                         ") and bounce at t = 0 of the next step, but the output bounces it within this step";
+                return v;
+            }
+        }
+        v.what = rule + " (its one collision in this step), but " + mine + "'s printed state does not follow from it";
+        return v;
+    }
+
+    // The accepted collision that takes a particle of `lost` before it.
+    const PossibleCollision* winner_over(const PossibleCollision& lost) const {
+        for (const std::uint32_t particle : {lost.i, lost.j}) {
+            for (const std::uint32_t k : step_.candidates_of(particle)) {
+                const PossibleCollision& c = step_.candidates()[k];
+                if (&c != &lost && c.accepted == Tri::yes) return &c;
+            }
+        }
+        return nullptr;
+    }
+
+    // "x" or "y" when the expected state sits on a wall it moves towards.
+    const char* stopped_at_wall(const Particle& expected) const {
+        const auto towards = [&](double position, double velocity) {
+            return (position == box_.lower && velocity < 0.0) || (position == box_.upper && velocity > 0.0);
+        };
+        if (towards(expected.position.x(), expected.velocity.x())) return "x";
+        if (towards(expected.position.y(), expected.velocity.y())) return "y";
+        return nullptr;
+    }
+
+    World world_;
+    Box box_;
+    StepCheckOptions options_;
+    UncertainStep step_;
+    ExactStepCheck exact_;
+    std::vector<UncertainParticle> state_, next_;
+    std::vector<Fate> fates_;
+    std::vector<std::vector<int>> matched_;
+};
+
+StepChecker::StepChecker(const World& world, const StepCheckOptions& options) {
+    require_valid_scene("StepChecker", world, {});
+    OptionsCheck check("StepCheckOptions");
+    check.at_least("substeps", options.substeps, 1);
+    impl_ = std::make_unique<Impl>(world, options);
+}
+
+StepChecker::~StepChecker() = default;
+StepChecker::StepChecker(StepChecker&&) noexcept = default;
+StepChecker& StepChecker::operator=(StepChecker&&) noexcept = default;
+
+StepCheck StepChecker::check(const PrintedState& before, const PrintedState& after) {
+    return impl_->check(before, after);
+}
+
+StepChecker::Run StepChecker::run(const PrintedState& start, std::int64_t steps) { return impl_->run(start, steps); }
+
+}  // namespace particlesim

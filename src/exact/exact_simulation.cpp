@@ -1,0 +1,786 @@
+#include "particlesim/exact_simulation.hpp"
+#include "particlesim/saved_state.hpp"
+
+#include "core/assert.hpp"
+#include "core/box.hpp"
+#include "core/physics.hpp"
+#include "core/prefetch.hpp"
+#include "core/uniform_grid.hpp"
+#include "exact/cell_list.hpp"
+#include "exact/event_calendar.hpp"
+#include "input/options_check.hpp"
+#include "input/scene_checks.hpp"
+#include "io/number_format.hpp"
+#include "search/path_lines.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <optional>
+#include <string>
+
+namespace particlesim {
+
+OverlappingStart::OverlappingStart(std::uint32_t first, std::uint32_t second)
+    : std::invalid_argument("particles " + std::to_string(first) + " and " + std::to_string(second) +
+                            " overlap; the exact engine needs a start where no two disks overlap"),
+      first_(first),
+      second_(second) {}
+
+TooManyEvents::TooManyEvents(std::int64_t step, std::uint64_t events, double predicted)
+    : std::runtime_error("step " + std::to_string(step) + ": the exact engine has processed " + std::to_string(events) +
+                         " events in this step, against about " + format_brief(predicted) +
+                         " predicted from the speeds and density; stopped rather than run on for hours (disks "
+                         "trapped in a gap far narrower than their radius bounce without end)"),
+      step_(step),
+      events_(events),
+      predicted_(predicted) {}
+
+namespace {
+
+// A step may take this many events beyond the prediction before it counts
+// as runaway: generous (dense clusters collide far more often than an ideal
+// gas), yet reached within about a second.
+constexpr double runaway_floor = 1e6;
+constexpr double runaway_factor = 100.0;
+
+double event_budget(const ExactOptions& options, double predicted, std::size_t count) {
+    if (options.max_events_per_step) return static_cast<double>(*options.max_events_per_step);
+    return runaway_floor + runaway_factor * (predicted + static_cast<double>(count));
+}
+
+// Cells at least a diameter wide, so that a contact is always between
+// neighbouring cells. Wider cells mean fewer crossing events but more pair
+// tests per event, so: about 4 particles per cell in a sparse box, and no
+// wider than half a mean free path (1 / (4 r N / L^2)) in a dense one. Either
+// way the cell count stays O(N) (the choice is measured in docs/benchmarks.md).
+int cells_per_side_for(const World& world, std::size_t particle_count) {
+    const double count = static_cast<double>(particle_count);
+    const double by_count = std::ceil(0.5 * std::sqrt(count));
+    const double by_free_path = std::ceil(8.0 * world.radius * count / world.box_size);
+    return UniformGrid::cells_per_side(world.box_size, 2.0 * world.radius, std::max(by_count, by_free_path));
+}
+
+// Per unit of speed, events a step with one cell and the lines' test (walls
+// and both partners of each collision: each tests its new line against all
+// N) against events with the cells (walls, collisions and crossings, each
+// testing the disks of a few cells). Speeds cancel, so the choice depends
+// on N, r and L alone, and a restored run makes the one its start made.
+// Costs fitted to runs of both from 500 to 16000 disks, sparse to dense
+// (docs/benchmarks.md): an event with the lines about 200 ns plus 0.06 ns a
+// line (AVX-512), an event with the cells 110 ns. Dense scenes' stale pair
+// predictions make the lines dearer than this counts, hence the margin; and
+// no more disks than were measured (the first predictions test all N^2 / 2
+// pairs).
+bool lines_are_cheaper(const World& world, std::size_t particle_count, int cells_per_side) {
+    constexpr std::size_t lines_up_to = 20000;
+    if (particle_count > lines_up_to) return false;
+    const double count = static_cast<double>(particle_count);
+    const double walls = count / world.box_size;
+    const double pairs = 2.0 * std::sqrt(2.0) * count * count * world.radius / (world.box_size * world.box_size);
+    const double crossings = count * cells_per_side / world.box_size;
+    const double with_lines = (walls + 2.0 * pairs) * (200.0 + 0.06 * count);
+    const double with_cells = (walls + pairs + crossings) * 110.0;
+    return with_lines < 0.8 * with_cells;
+}
+
+UniformGrid neighbour_grid(const World& world, std::size_t particle_count, std::optional<int> cells_per_side) {
+    if (cells_per_side) return UniformGrid(world.box_size, *cells_per_side);
+    const int side = cells_per_side_for(world, particle_count);
+    if (lines_are_cheaper(world, particle_count, side)) return UniformGrid(world.box_size, 1);
+    return UniformGrid(world.box_size, side);
+}
+
+}  // namespace
+
+// The engine's state. A particle's stored position is where it was at its
+// own time stamp, the time of its last collision (or 0); it is moved only by
+// its own collisions, so that every prediction reads an unchanged state.
+//
+// With a single cell (a sparse scene of few particles: neighbour_grid()),
+// there are no crossings, and a particle's neighbours are the particles
+// whose lines come near its own (PathLines, in float lanes): the same pairs
+// get the same tests as with the cells, but far fewer events.
+//
+// Each particle keeps three predictions: its wall event, its next cell
+// crossing, and the earliest pair event found for it; its queue entry is the
+// first of the three. A pair prediction goes stale when the partner collides
+// elsewhere first; that is noticed when the entry comes up, and the particle
+// then predicts its pairs afresh. No collision is missed: a particle's pair
+// prediction is never later than any valid pair event with a neighbour, and a
+// collision partner is always a neighbour (cells are wider than a diameter).
+class ExactSimulation::Implementation {
+public:
+    struct Crossing {
+        double time = never;
+        std::uint32_t cell = 0;  // the cell entered
+    };
+    struct PairPrediction {
+        Event event{never, EventKind::pair, 0, 0};
+        std::uint32_t partner = 0;
+        std::uint32_t partner_version = 0;  // the partner's version when predicted
+    };
+
+    // What save() writes for a particle besides its state: its time stamp,
+    // its cell and its three predictions.
+    struct SavedPredictions {
+        double stamp = 0.0;
+        std::uint32_t cell = 0;
+        double wall_time = never;
+        Crossing crossing;
+        PairPrediction pair;
+    };
+    struct SavedRun {
+        std::int64_t steps_done = 0;
+        StepCounts totals;
+        // Both grow with the input, whatever its header says.
+        std::vector<Particle> particles;  // each at its own stamp
+        std::vector<SavedPredictions> predictions;
+    };
+
+    // A scene to run from its start: every prediction made here.
+    Implementation(const World& world, std::vector<Particle> particles, const ExactOptions& options)
+        : Implementation(world, std::move(particles), options, Unpredicted{}) {
+        for (std::uint32_t i = 0; i < count(); ++i) {
+            cells_.insert(i, cells_.grid().cell_of(bodies_[i].particle.position));
+        }
+        reject_overlaps();
+        make_lines();
+        // Every wall time first: the pair predictions read them. A particle's
+        // predictions read nothing another's change, so any order gives the
+        // same ones; cell by cell, a large scene's neighbours are read from
+        // the caches instead of memory.
+        for (std::uint32_t i = 0; i < count(); ++i) predict_wall(i);
+        cells_.for_each_by_cell([&](std::uint32_t i) {
+            predict_crossing(i);
+            predict_pairs(i);
+            reschedule(i);
+        });
+    }
+
+    // Continues from the state save() wrote (read by read_saved(), its
+    // particles checked by require_valid_scene()); the queue is rebuilt from
+    // the saved predictions.
+    Implementation(const World& world, SavedRun saved, const ExactOptions& options)
+        : Implementation(world, std::move(saved.particles), options, Unpredicted{}) {
+        now_ = static_cast<double>(saved.steps_done);
+        steps_done_ = saved.steps_done;
+        totals_ = saved.totals;
+        const std::uint64_t cells = cells_.grid().cell_count();
+        const auto fail = [](const std::string& why) {
+            throw std::invalid_argument("particlesim::ExactSimulation::restore: the saved state is damaged (" + why +
+                                        ")");
+        };
+        for (std::uint32_t i = 0; i < count(); ++i) {
+            const SavedPredictions& in = saved.predictions[i];
+            if (!(in.stamp >= 0.0 && in.stamp <= now_)) fail("a time stamp outside the run");
+            if (in.cell >= cells || in.crossing.cell >= cells) fail("a cell outside the grid");
+            if (in.pair.event.i >= count() || in.pair.event.j >= count() || in.pair.partner >= count())
+                fail("a particle index outside the scene");
+            bodies_[i].stamp = in.stamp;
+            cells_.insert(i, in.cell);
+            bodies_[i].wall_time = in.wall_time;
+            plans_[i].crossing = in.crossing;
+            plans_[i].pair = in.pair;
+        }
+        for (std::uint32_t i = 0; i < count(); ++i) reschedule(i);
+        make_lines();
+        take_snapshot();
+    }
+
+    static SavedRun read_saved(SavedStateReader& in) {
+        SavedRun run;
+        const std::uint64_t count = in.count(0xfffffffeU);
+        const double now = in.real();
+        run.steps_done = static_cast<std::int64_t>(in.count(max_exact_steps));
+        if (now != static_cast<double>(run.steps_done)) in.fail("time and step disagree");
+        run.totals = read_counts(in);
+        for (std::uint64_t i = 0; i < count; ++i) {
+            run.particles.push_back(read_particle(in));
+            SavedPredictions p;
+            p.stamp = in.real();
+            p.cell = static_cast<std::uint32_t>(in.count(UINT32_MAX));
+            p.wall_time = in.real();
+            p.crossing.time = in.real();
+            p.crossing.cell = static_cast<std::uint32_t>(in.count(UINT32_MAX));
+            p.pair.event.time = in.real();
+            p.pair.event.i = static_cast<std::uint32_t>(in.count(UINT32_MAX));
+            p.pair.event.j = static_cast<std::uint32_t>(in.count(UINT32_MAX));
+            p.pair.partner = static_cast<std::uint32_t>(in.count(UINT32_MAX));
+            p.pair.partner_version = static_cast<std::uint32_t>(in.count(UINT32_MAX));
+            run.predictions.push_back(p);
+        }
+        return run;
+    }
+
+    void save(std::ostream& out) const {
+        save_number(out, std::uint64_t{count()});
+        save_number(out, now_);
+        save_number(out, static_cast<std::uint64_t>(steps_done_));
+        save_counts(out, totals_);
+        out << '\n';
+        for (std::uint32_t i = 0; i < count(); ++i) {
+            save_particle(out, bodies_[i].particle);
+            save_number(out, bodies_[i].stamp);
+            save_number(out, std::uint64_t{cells_.cell_of_particle(i)});
+            save_number(out, bodies_[i].wall_time);
+            save_number(out, plans_[i].crossing.time);
+            save_number(out, std::uint64_t{plans_[i].crossing.cell});
+            save_number(out, plans_[i].pair.event.time);
+            save_number(out, std::uint64_t{plans_[i].pair.event.i});
+            save_number(out, std::uint64_t{plans_[i].pair.event.j});
+            save_number(out, std::uint64_t{plans_[i].pair.partner});
+            save_number(out, std::uint64_t{plans_[i].pair.partner_version});
+            out << '\n';
+        }
+    }
+
+    void step() {
+        if (steps_done_ >= max_exact_steps) throw std::overflow_error("the exact engine's clock ends at 2^53 steps");
+        const double end = static_cast<double>(steps_done_ + 1);
+        move_lines_to_now();
+        last_step_ = {};
+        several_events_ = 0;
+        std::uint64_t events = 0;
+        while (!queue_.empty() && queue_.earliest().time <= end) {
+            if (static_cast<double>(++events) > event_budget_)
+                throw TooManyEvents(steps_done_ + 1, events - 1, predicted_events_);
+            ++events_processed_;
+            const std::uint32_t owner = queue_.earliest_owner();
+            if (look_ahead_) prefetch_coming_events();
+            const Event event = queue_.earliest();
+            if (event.kind == EventKind::pair && pair_partner_moved(owner)) {
+                predict_pairs(owner);
+                reschedule(owner);
+                continue;
+            }
+            PARTICLESIM_ASSERT(event.time >= now_, "the calendar hands out events in time order");
+            if constexpr (validating) {
+                if (events % 1024 == 1) require_earliest_in_calendar(event);
+            }
+            now_ = event.time;
+            switch (event.kind) {
+            case EventKind::wall: collide_with_wall(event.i); break;
+            case EventKind::pair: collide_pair(event.i, event.j); break;
+            case EventKind::cell_crossing: cross_cell(event.i, event.j); break;
+            }
+        }
+        now_ = end;
+        ++steps_done_;
+        take_snapshot();
+        totals_ += last_step_;
+    }
+
+    const std::vector<Particle>& snapshot() const { return snapshot_; }
+    const World& world() const { return world_; }
+    std::int64_t steps_done() const { return steps_done_; }
+    const StepCounts& last_step() const { return last_step_; }
+    const StepCounts& totals() const { return totals_; }
+    std::uint64_t several_events() const { return several_events_; }
+    std::uint64_t events_processed() const { return events_processed_; }
+    int cells_per_side() const { return cells_.grid().per_side(); }
+
+private:
+    struct Unpredicted {};
+
+    // Every member sized for the particles; no cell filled, nothing predicted.
+    Implementation(const World& world, std::vector<Particle> particles, const ExactOptions& options, Unpredicted)
+        : world_(world),
+          box_(Box::of(world)),
+          bodies_(particles.begin(), particles.end()),
+          cells_(neighbour_grid(world, particles.size(), options.cells_per_side), particles.size()),
+          plans_(particles.size()),
+          snapshot_(std::move(particles)),
+          reach_(contact_reach(box_)),
+          queue_(count(), Event{never, EventKind::cell_crossing, 0, 0}),
+          predicted_events_(estimated_events_per_step(world, snapshot_)),
+          event_budget_(event_budget(options, predicted_events_, count())),
+          look_ahead_(options.look_ahead.value_or(count() >= look_ahead_from) && !by_lines()) {}
+
+    std::uint32_t count() const { return static_cast<std::uint32_t>(bodies_.size()); }
+
+    // One cell: neighbours are found by the particles' lines (PathLines).
+    bool by_lines() const { return cells_.grid().per_side() == 1; }
+
+    // Changes exactly when the velocity does: at each of the particle's collisions.
+    std::uint32_t version(std::uint32_t i) const {
+        return static_cast<std::uint32_t>(bodies_[i].particle.particle_collisions +
+                                          bodies_[i].particle.wall_collisions);
+    }
+    bool pair_partner_moved(std::uint32_t i) const {
+        return plans_[i].pair.partner_version != version(plans_[i].pair.partner);
+    }
+
+    Vec2 position_at(std::uint32_t i, double time) const {
+        return bodies_[i].particle.position + bodies_[i].particle.velocity * (time - bodies_[i].stamp);
+    }
+
+    template <typename Visit>
+    static void for_each_neighbour(const CellList& cells, std::uint32_t i, Visit&& visit) {
+        const std::uint32_t cell = cells.cell_of_particle(i);
+        const int column = cells.grid().column(cell);
+        const int row = cells.grid().row(cell);
+        for (int dy = -1; dy <= 1; ++dy) {
+            for (int dx = -1; dx <= 1; ++dx) {
+                cells.for_each_in(column + dx, row + dy, [&](std::uint32_t j) {
+                    if (j != i) visit(j);
+                });
+            }
+        }
+    }
+
+    template <typename Visit>
+    void for_each_neighbour(std::uint32_t i, Visit&& visit) const {
+        for_each_neighbour(cells_, i, visit);
+    }
+
+    // Names the overlapping pair (i, j) with the lowest i, then the first j
+    // met: searched cell by cell first (fast), then, only if there is one,
+    // in index order. With a single cell (the lines), in the cells the rule
+    // would have chosen: one cell would compare all N^2 / 2 pairs.
+    void reject_overlaps() const {
+        if (!by_lines()) {
+            reject_overlaps(cells_);
+            return;
+        }
+        CellList cells(UniformGrid(world_.box_size, cells_per_side_for(world_, count())), count());
+        for (std::uint32_t i = 0; i < count(); ++i) cells.insert(i, cells.grid().cell_of(bodies_[i].particle.position));
+        reject_overlaps(cells);
+    }
+
+    void reject_overlaps(const CellList& cells) const {
+        const auto overlaps = [&](std::uint32_t i, std::uint32_t j) {
+            return j > i &&
+                   disks_overlap(bodies_[j].particle.position - bodies_[i].particle.position, box_.contact_dist_sq);
+        };
+        bool found = false;
+        cells.for_each_by_cell([&](std::uint32_t i) {
+            if (!found) for_each_neighbour(cells, i, [&](std::uint32_t j) { found = found || overlaps(i, j); });
+        });
+        if (!found) return;
+        for (std::uint32_t i = 0; i < count(); ++i) {
+            for_each_neighbour(cells, i, [&](std::uint32_t j) {
+                if (overlaps(i, j)) throw OverlappingStart(i, j);
+            });
+        }
+    }
+
+    // In a large scene nearly every line an event reads is a miss to memory,
+    // and each waits for the one before (the queue entry names the particle,
+    // the particle its cell, the cell its members), so the event rate fell
+    // with N. The queue already knows the next events, so each
+    // event fetches, in four stages, what those a few buckets behind it will
+    // read: their entries and queue links; their particles; partners and the
+    // heads of the cells they will search; the first member of each of those
+    // cells. Each stage reads only what the stage before fetched. Prefetches
+    // are hints: a queue that changes meanwhile costs a wasted fetch, never a
+    // different event.
+    void prefetch_coming_events() {
+        queue_.for_each_coming(look_entries_, [&](std::uint32_t o) { queue_.prefetch_entry(o); });
+        queue_.for_each_coming(look_particles_, [&](std::uint32_t o) { prefetch_particle(o); });
+        queue_.for_each_coming(look_heads_, [&](std::uint32_t o) {
+            const Event& event = queue_.entry(o);
+            if (event.kind == EventKind::pair) {
+                const std::uint32_t partner = event.i ^ event.j ^ o;  // o is one of the two
+                queue_.prefetch_entry(partner);
+                prefetch_particle(partner);
+            }
+            cells_.prefetch_heads_around(searched_cell(event, o));
+        });
+        queue_.for_each_coming(look_members_, [&](std::uint32_t o) {
+            cells_.for_each_first_member_around(searched_cell(queue_.entry(o), o), [&](std::uint32_t first) {
+                const std::uint32_t j = std::min(first, count() - 1);  // no branch: `none` fetches the last
+                prefetch(&bodies_[j]);
+                cells_.prefetch_links(j);
+            });
+        });
+    }
+
+    void prefetch_particle(std::uint32_t i) const {
+        prefetch(&bodies_[i]);
+        prefetch(&plans_[i]);
+        cells_.prefetch_links(i);
+    }
+
+    // The cell around which the owner's event will search for partners.
+    std::uint32_t searched_cell(const Event& event, std::uint32_t owner) const {
+        return event.kind == EventKind::cell_crossing ? event.j : cells_.cell_of_particle(owner);
+    }
+
+    // Rounding may put a prediction a hair before the present; time must
+    // never go back.
+    double not_before_now(double time) const { return std::max(time, now_); }
+
+    // The calendar's earliest event comes before every other entry in the
+    // rules' order (a check of O(N)).
+    void require_earliest_in_calendar(const Event& earliest) const {
+        for (std::uint32_t owner = 0; owner < bodies_.size(); ++owner) {
+            PARTICLESIM_ASSERT(!comes_before(queue_.entry(owner), earliest), "the calendar's earliest entry is first");
+        }
+    }
+
+    void predict_wall(std::uint32_t i) {
+        const WallHit hit = time_to_wall(bodies_[i].particle.position, bodies_[i].particle.velocity, box_);
+        bodies_[i].wall_time = hit.time == never ? never : not_before_now(bodies_[i].stamp + hit.time);
+    }
+
+    // The next time the particle leaves its cell, and the cell it enters.
+    void predict_crossing(std::uint32_t i) {
+        const std::uint32_t cell = cells_.cell_of_particle(i);
+        predict_crossing(i, cells_.grid().column(cell), cells_.grid().row(cell));
+    }
+
+    // The same for a particle in the cell at (column, row).
+    void predict_crossing(std::uint32_t i, int column, int row) {
+        const Particle& p = bodies_[i].particle;
+        const UniformGrid& grid = cells_.grid();
+        // Both axes at once, each lane the time to the cell edge it moves
+        // towards (`never` at the grid's edge or without motion), with
+        // selects instead of branches on the velocity's signs, which are
+        // random (as in time_to_wall()); the same IEEE operations as one
+        // axis at a time.
+        const TwoDoubles where{p.position.x(), p.position.y()};
+        const TwoDoubles speed{p.velocity.x(), p.velocity.y()};
+        const TwoDoubles index{static_cast<double>(column), static_cast<double>(row)};
+        const double last = static_cast<double>(grid.per_side() - 1);
+        const TwoDoubles edge = (speed > 0.0 ? index + 1.0 : index) * grid.cell_size();
+        const TwoMasks exits = ((speed > 0.0) & (index < last)) | ((speed < 0.0) & (index > 0.0));
+        const TwoDoubles to_edge = exits ? (edge - where) / speed : TwoDoubles{never, never};
+        const double along_x = to_edge[0];
+        const double along_y = to_edge[1];
+        const double delay = std::min(along_x, along_y);
+        if (delay == never) {
+            plans_[i].crossing = {};
+            return;
+        }
+        const int x_first = static_cast<int>(along_x <= along_y);
+        column += x_first * (2 * static_cast<int>(p.velocity.x() > 0.0) - 1);
+        row += (1 - x_first) * (2 * static_cast<int>(p.velocity.y() > 0.0) - 1);
+        plans_[i].crossing = {not_before_now(bodies_[i].stamp + delay), grid.cell_at(column, row)};
+    }
+
+    // Tests the pair (i, j) at the later of their stamps, and keeps a contact
+    // as i's pair prediction if it comes first. contact_time() gives the same
+    // bits for (i, j) and (j, i) (negating dp and dv changes no product), so i
+    // comes first.
+    void consider_pair(std::uint32_t i, std::uint32_t j) {
+        ++last_step_.pair_tests;
+        const double reference = std::max(bodies_[i].stamp, bodies_[j].stamp);
+        const double delay =
+            contact_time(position_at(j, reference) - position_at(i, reference),
+                         bodies_[j].particle.velocity - bodies_[i].particle.velocity, box_.contact_dist_sq);
+        if (delay != never) keep_contact(i, j, reference + delay);
+    }
+
+    // consider_pair() for (i, j) and (i, k) at once, one pair in each lane:
+    // the same operations on the same values, so the same bits.
+    void consider_two_pairs(std::uint32_t i, std::uint32_t j, std::uint32_t k) {
+        last_step_.pair_tests += 2;
+        const Particle& own = bodies_[i].particle;
+        const Particle& first = bodies_[j].particle;
+        const Particle& second = bodies_[k].particle;
+        const TwoDoubles own_stamp{bodies_[i].stamp, bodies_[i].stamp};
+        const TwoDoubles other_stamp{bodies_[j].stamp, bodies_[k].stamp};
+        const TwoDoubles reference = own_stamp < other_stamp ? other_stamp : own_stamp;  // std::max
+        const TwoDoubles own_since = reference - own_stamp;
+        const TwoDoubles other_since = reference - other_stamp;
+        const TwoDoubles own_x = own.position.x() + own.velocity.x() * own_since;
+        const TwoDoubles own_y = own.position.y() + own.velocity.y() * own_since;
+        const TwoDoubles other_vx{first.velocity.x(), second.velocity.x()};
+        const TwoDoubles other_vy{first.velocity.y(), second.velocity.y()};
+        const TwoDoubles other_x = TwoDoubles{first.position.x(), second.position.x()} + other_vx * other_since;
+        const TwoDoubles other_y = TwoDoubles{first.position.y(), second.position.y()} + other_vy * other_since;
+        const TwoDoubles delay = contact_times(other_x - own_x, other_y - own_y, other_vx - own.velocity.x(),
+                                               other_vy - own.velocity.y(), box_.contact_dist_sq);
+        if (delay[0] != never) keep_contact(i, j, reference[0] + delay[0]);
+        if (delay[1] != never) keep_contact(i, k, reference[1] + delay[1]);
+    }
+
+    // Keeps the pair event of (i, j), a contact at `contact`, as i's pair
+    // prediction if it comes first. Pair events at or after either
+    // particle's wall event can never happen: the wall event comes first in
+    // the order and changes a velocity. The event is built only for a
+    // contact that comes in time: most pairs tested never meet.
+    void keep_contact(std::uint32_t i, std::uint32_t j, double contact) {
+        const double time = not_before_now(contact);
+        if (!(time < bodies_[i].wall_time && time < bodies_[j].wall_time && time <= plans_[i].pair.event.time)) return;
+        const Event event{time, EventKind::pair, std::min(i, j), std::max(i, j)};
+        if (event < plans_[i].pair.event) plans_[i].pair = {event, j, version(j)};
+    }
+
+    // consider_pair(i, j) for every j that for_each_candidate(visit) visits,
+    // two at a time. The prediction kept is the earliest, whatever the order.
+    template <typename ForEachCandidate>
+    void consider_pairs(std::uint32_t i, ForEachCandidate&& for_each_candidate) {
+        std::uint32_t waiting = BucketLists::none;
+        for_each_candidate([&](std::uint32_t j) {
+            if (waiting == BucketLists::none) {
+                waiting = j;
+                return;
+            }
+            consider_two_pairs(i, waiting, j);
+            waiting = BucketLists::none;
+        });
+        if (waiting != BucketLists::none) consider_pair(i, waiting);
+    }
+
+    void predict_pairs(std::uint32_t i) {
+        plans_[i].pair = {};
+        if (!by_lines()) {
+            consider_pairs(i, [&](auto&& visit) { for_each_neighbour(i, visit); });
+            return;
+        }
+        near_.clear();
+        lines_.gather_near(i, reach_, near_);
+        consider_pairs(i, [&](auto&& visit) {
+            for (const std::uint32_t j : near_) visit(j);
+        });
+    }
+
+    // The lines' common time (the epoch) is the start of the current step,
+    // so that no line's point lies far outside the box.
+    void make_lines() {
+        if (!by_lines()) return;
+        std::vector<Particle> at_stamps;
+        at_stamps.reserve(count());
+        for (const Body& body : bodies_) at_stamps.push_back(body.particle);
+        lines_.assign(at_stamps, box_);
+        move_lines_to_now();
+    }
+
+    void move_lines_to_now() {
+        if (!by_lines()) return;
+        lines_epoch_ = now_;
+        lines_.move_each([&](std::uint32_t i) { return position_at(i, lines_epoch_); });
+    }
+
+    // After a collision: the particle's new line, through where it would
+    // have been at the epoch.
+    void renew_line(std::uint32_t i) {
+        if (by_lines()) lines_.set(i, position_at(i, lines_epoch_), bodies_[i].particle.velocity);
+    }
+
+    // Puts the first of the particle's three predictions in the queue.
+    void reschedule(std::uint32_t i) {
+        Event next{bodies_[i].wall_time, EventKind::wall, i, 0};
+        const Event crossing{plans_[i].crossing.time, EventKind::cell_crossing, i, plans_[i].crossing.cell};
+        if (crossing < next) next = crossing;
+        if (plans_[i].pair.event < next) next = plans_[i].pair.event;
+        queue_.replace(i, next);
+    }
+
+    void note_event(std::uint32_t i) {
+        const std::int64_t step = steps_done_;
+        if (plans_[i].last_event_step != step) {
+            plans_[i].last_event_step = step;
+        } else if (plans_[i].last_repeat_step != step) {
+            plans_[i].last_repeat_step = step;
+            ++several_events_;
+        }
+    }
+
+    void collide_with_wall(std::uint32_t i) {
+        Particle& p = bodies_[i].particle;
+        // The same start state as the prediction, so the same hit.
+        const WallHit hit = time_to_wall(p.position, p.velocity, box_);
+        bounce_off_wall(p, hit, box_);
+        bodies_[i].stamp = now_;
+        renew_line(i);
+        ++last_step_.wall_collisions;
+        note_event(i);
+        predict_wall(i);
+        predict_crossing(i);
+        predict_pairs(i);
+        reschedule(i);
+    }
+
+    void collide_pair(std::uint32_t i, std::uint32_t j) {
+        Particle& a = bodies_[i].particle;
+        Particle& b = bodies_[j].particle;
+        a.position = position_at(i, now_);
+        b.position = position_at(j, now_);
+        clamp_into_box(a.position, box_);
+        clamp_into_box(b.position, box_);
+        bodies_[i].stamp = now_;
+        bodies_[j].stamp = now_;
+        exchange_normal_velocities(a.position, b.position, a.velocity, b.velocity);
+        renew_line(i);
+        renew_line(j);
+        ++a.particle_collisions;
+        ++b.particle_collisions;
+        ++last_step_.particle_collisions;
+        note_event(i);
+        note_event(j);
+        // Both wall times before any pair prediction: the pruning reads them.
+        predict_wall(i);
+        predict_wall(j);
+        for (const std::uint32_t k : {i, j}) {
+            predict_crossing(k);
+            predict_pairs(k);
+            reschedule(k);
+        }
+    }
+
+    // Only the cells that have just become neighbours need new predictions.
+    void cross_cell(std::uint32_t i, std::uint32_t cell) {
+        const std::uint32_t old_cell = cells_.cell_of_particle(i);
+        cells_.move(i, cell);
+        const UniformGrid& grid = cells_.grid();
+        const int column = grid.column(cell);
+        const int row = grid.row(cell);
+        // The cell entered is the next one along one axis, so the step is
+        // told by the indices alone (one division fewer). The three cells
+        // that become neighbours lie one further along that axis and run
+        // across the other. All in arithmetic: the axis and the direction
+        // are random, and branches on them were mispredicted half the time.
+        const int step_x = static_cast<int>(cell == old_cell + 1) - static_cast<int>(cell + 1 == old_cell);
+        const int across_x = 1 - step_x * step_x;  // 1 when the step is along y
+        const int step_y = across_x * (2 * static_cast<int>(cell > old_cell) - 1);
+        const int across_y = 1 - across_x;
+        consider_pairs(i, [&](auto&& visit) {
+            for (int k = -1; k <= 1; ++k) {
+                cells_.for_each_in(column + step_x + across_x * k, row + step_y + across_y * k, visit);
+            }
+        });
+        predict_crossing(i, column, row);
+        reschedule(i);
+    }
+
+    void take_snapshot() {
+        for (std::uint32_t i = 0; i < count(); ++i) {
+            Particle& out = snapshot_[i];
+            out = bodies_[i].particle;
+            out.position = position_at(i, now_);
+            clamp_into_box(out.position, box_);
+        }
+    }
+
+    World world_;
+    Box box_;
+    // What an event reads of a particle first, in one 64-byte line: its
+    // state at its own time stamp (the time of its last collision, or 0),
+    // the stamp, and the absolute time of its next wall event.
+    struct alignas(64) Body {
+        explicit Body(const Particle& at_start) : particle(at_start) {}
+        Particle particle;
+        double stamp = 0.0;
+        double wall_time = never;
+    };
+    std::vector<Body> bodies_;
+    CellList cells_;
+    // The rest of what an event reads and writes of its particles, in one
+    // 64-byte line: the crossing and pair predictions, and the steps of the
+    // particle's last two events (counted by note_event()).
+    struct alignas(64) Plans {
+        Crossing crossing;
+        PairPrediction pair;
+        std::int64_t last_event_step = -1;
+        std::int64_t last_repeat_step = -1;
+    };
+    std::vector<Plans> plans_;
+    std::vector<Particle> snapshot_;  // the state at the last whole step
+    // With a single cell: every particle's line at lines_epoch_, and the
+    // distance the pair test needs (contact_reach()).
+    PathLines lines_;
+    double lines_epoch_ = 0.0;
+    double reach_;
+    std::vector<std::uint32_t> near_;
+    EventCalendar queue_;
+    double now_ = 0.0;
+    std::int64_t steps_done_ = 0;
+    StepCounts last_step_;
+    StepCounts totals_;
+    std::uint64_t several_events_ = 0;
+    std::uint64_t events_processed_ = 0;  // by this object, not saved: a measure of work
+    double predicted_events_;             // per step
+    double event_budget_;                 // per step
+    // Below this, the engine's state mostly fits in the caches, and the look
+    // ahead's own work costs more than it saves (docs/benchmarks.md).
+    static constexpr std::uint32_t look_ahead_from = 32768;
+    // The prefetching's four stages, each a few buckets nearer than the last
+    // (prefetch_coming_events()).
+    bool look_ahead_;
+    EventCalendar::LookAhead look_entries_{8};
+    EventCalendar::LookAhead look_particles_{6};
+    EventCalendar::LookAhead look_heads_{4};
+    EventCalendar::LookAhead look_members_{2};
+};
+
+namespace {
+
+void check_options(const ExactOptions& options) {
+    const OptionsCheck check("particlesim::ExactOptions");
+    if (options.cells_per_side) check.in_range("cells_per_side", *options.cells_per_side, 1, max_grid_cells);
+    if (options.max_events_per_step && *options.max_events_per_step == 0)
+        check.fail("max_events_per_step must be >= 1");
+}
+
+std::vector<Particle> checked(const World& world, std::vector<Particle> particles, const ExactOptions& options) {
+    check_options(options);
+    require_valid_scene("particlesim::ExactSimulation", world, particles);
+    return particles;
+}
+
+}  // namespace
+
+ExactSimulation::ExactSimulation(const World& world, std::vector<Particle> particles, const ExactOptions& options)
+    : engine_(std::make_unique<Implementation>(world, checked(world, std::move(particles), options), options)) {}
+
+ExactSimulation::ExactSimulation(std::unique_ptr<Implementation> engine) : engine_(std::move(engine)) {}
+
+ExactSimulation ExactSimulation::restore(const World& world, std::istream& saved, const ExactOptions& options) {
+    check_options(options);
+    SavedStateReader reader(saved, "particlesim::ExactSimulation::restore: the saved state is damaged");
+    reader.expect("exact-engine-state");
+    reader.expect("1");
+    Implementation::SavedRun run = Implementation::read_saved(reader);
+    require_valid_scene("particlesim::ExactSimulation::restore", world, run.particles);
+    return ExactSimulation(std::make_unique<Implementation>(world, std::move(run), options));
+}
+
+void ExactSimulation::save(std::ostream& out) const {
+    out << "exact-engine-state 1\n";
+    engine_->save(out);
+}
+
+ExactSimulation::~ExactSimulation() = default;
+ExactSimulation::ExactSimulation(ExactSimulation&&) noexcept = default;
+ExactSimulation& ExactSimulation::operator=(ExactSimulation&&) noexcept = default;
+
+void ExactSimulation::step() { engine_->step(); }
+std::span<const Particle> ExactSimulation::particles() const { return engine_->snapshot(); }
+const World& ExactSimulation::world() const { return engine_->world(); }
+std::int64_t ExactSimulation::steps_done() const { return engine_->steps_done(); }
+const StepCounts& ExactSimulation::last_step() const { return engine_->last_step(); }
+const StepCounts& ExactSimulation::totals() const { return engine_->totals(); }
+std::uint64_t ExactSimulation::last_step_particles_with_several_events() const { return engine_->several_events(); }
+std::uint64_t ExactSimulation::events_processed() const { return engine_->events_processed(); }
+int ExactSimulation::cells_per_side() const { return engine_->cells_per_side(); }
+
+double estimated_events_per_step(const World& world, std::span<const Particle> particles) {
+    double speed_sum = 0.0;  // sum of |vx| + |vy|
+    for (const Particle& p : particles) speed_sum += std::abs(p.velocity.x()) + std::abs(p.velocity.y());
+    if (speed_sum == 0.0) return 0.0;
+    const double span = world.upper() - world.lower();
+    if (!(span > 0.0)) return never;  // a moving disk that fills the box bounces forever
+    const double walls = speed_sum / span;
+    // Ideal gas: collision length 4r per unit path, density of the others (N - 1) / L^2,
+    // relative speeds about sqrt(2) times the speeds.
+    const double density = static_cast<double>(particles.size() - 1) / (world.box_size * world.box_size);
+    const double pairs = 0.5 * speed_sum * 4.0 * world.radius * density * std::sqrt(2.0);
+    return walls + pairs;
+}
+
+void require_feasible_exact_run(const World& world, std::span<const Particle> particles, std::int64_t steps) {
+    if (steps > max_exact_steps) {
+        throw std::invalid_argument("S = " + std::to_string(steps) +
+                                    " is beyond the exact engine's clock (at most 2^53 steps)");
+    }
+    const double events = estimated_events_per_step(world, particles) * static_cast<double>(steps);
+    if (!(events <= max_estimated_run_events)) {
+        throw std::invalid_argument("the exact engine would need about " + format_brief(events) +
+                                    " events for this scene (limit " + format_brief(max_estimated_run_events) +
+                                    "); use fewer steps or the step engine");
+    }
+}
+
+}  // namespace particlesim

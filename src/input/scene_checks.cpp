@@ -1,0 +1,28 @@
+#include "input/scene_checks.hpp"
+
+#include <cmath>
+#include <stdexcept>
+#include <string>
+
+namespace particlesim {
+
+void require_valid_scene(const char* engine, const World& world, std::span<const Particle> particles) {
+    const auto fail = [engine](const std::string& what) {
+        throw std::invalid_argument(std::string(engine) + ": " + what);
+    };
+    const auto in_range = [](double length) { return length >= min_length && length <= max_magnitude; };
+    if (!in_range(world.box_size)) fail("box size must lie in [1e-60, 1e60] (the accepted range)");
+    if (!in_range(world.radius)) fail("radius must lie in [1e-60, 1e60] (the accepted range)");
+    if (!(2.0 * world.radius <= world.box_size)) fail("2 * radius must be <= box size");
+    if (particles.size() >= std::size_t{0xffffffffU}) fail("too many particles");
+    for (std::size_t i = 0; i < particles.size(); ++i) {
+        const Particle& p = particles[i];
+        const bool inside = p.position.x() >= world.lower() && p.position.x() <= world.upper() &&
+                            p.position.y() >= world.lower() && p.position.y() <= world.upper();
+        if (!inside) fail("particle " + std::to_string(i) + " is outside [r, L - r]");
+        if (!(std::fabs(p.velocity.x()) <= max_magnitude && std::fabs(p.velocity.y()) <= max_magnitude))
+            fail("particle " + std::to_string(i) + " has a velocity component beyond 1e60 (the accepted range)");
+    }
+}
+
+}  // namespace particlesim

@@ -1,0 +1,70 @@
+#include "particlesim/state_writer.hpp"
+
+#include "io/number_format.hpp"
+
+#include <cerrno>
+#include <charconv>
+#include <cstring>
+#include <string>
+
+namespace particlesim {
+
+namespace {
+
+constexpr std::size_t buffer_size = std::size_t{1} << 20;
+// The longest line: two integers, four numbers, two counters, separators.
+constexpr std::size_t max_line_length = 4 * 21 + 4 * (max_fixed8_length + 1) + 1;
+
+}  // namespace
+
+StateWriter::StateWriter(std::FILE* out, NumberFormat format) : out_(out), format_(format), buffer_(buffer_size) {}
+
+void StateWriter::write_state(std::int64_t step, std::span<const Particle> particles) {
+    write_block(step, particles, false);
+}
+
+void StateWriter::write_final(std::int64_t step, std::span<const Particle> particles) {
+    write_block(step, particles, true);
+}
+
+void StateWriter::write_block(std::int64_t step, std::span<const Particle> particles, bool with_counters) {
+    char step_text[24];
+    const std::size_t step_length =
+        static_cast<std::size_t>(std::to_chars(step_text, step_text + 24, step).ptr - step_text);
+    for (std::size_t i = 0; i < particles.size(); ++i) {
+        if (buffer_.size() - used_ < max_line_length) drain();
+        char* out = buffer_.data() + used_;
+        std::memcpy(out, step_text, step_length);
+        out += step_length;
+        *out++ = ' ';
+        out = std::to_chars(out, out + 21, i).ptr;
+        const Particle& p = particles[i];
+        for (const double value : {p.position.x(), p.position.y(), p.velocity.x(), p.velocity.y()}) {
+            *out++ = ' ';
+            out = format_ == NumberFormat::fixed8 ? write_fixed8(out, value) : write_shortest(out, value);
+        }
+        if (with_counters) {
+            *out++ = ' ';
+            out = std::to_chars(out, out + 21, p.particle_collisions).ptr;
+            *out++ = ' ';
+            out = std::to_chars(out, out + 21, p.wall_collisions).ptr;
+        }
+        *out++ = '\n';
+        used_ = static_cast<std::size_t>(out - buffer_.data());
+    }
+}
+
+void StateWriter::drain() {
+    if (used_ == 0) return;
+    if (std::fwrite(buffer_.data(), 1, used_, out_) != used_) {
+        throw OutputError(std::string("cannot write the output: ") + std::strerror(errno));
+    }
+    used_ = 0;
+}
+
+void StateWriter::flush() {
+    drain();
+    if (std::fflush(out_) != 0) throw OutputError(std::string("cannot write the output: ") + std::strerror(errno));
+}
+
+}  // namespace particlesim

@@ -1,0 +1,297 @@
+#include "particlesim/scene_families.hpp"
+
+#include "core/random.hpp"
+#include "input/scene_checks.hpp"
+#include "io/number_format.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+#include <stdexcept>
+#include <string>
+
+namespace particlesim {
+
+namespace {
+
+Particle disk(double x, double y, double vx = 0.0, double vy = 0.0) {
+    Particle p;
+    p.position = Vec2(x, y);
+    p.velocity = Vec2(vx, vy);
+    return p;
+}
+
+Scene scene_of(const SceneFamilyOptions& options, double box_size, std::vector<Particle> particles) {
+    Scene scene;
+    scene.world = World{box_size, options.radius};
+    scene.steps = options.steps;
+    scene.mode = options.mode;
+    scene.particle_count = particles.size();
+    scene.particles = std::move(particles);
+    require_valid_scene("particlesim::make_family_scene", scene.world, scene.particles);
+    return scene;
+}
+
+SpeedRange speeds_or(const SceneFamilyOptions& options, SpeedRange fallback) {
+    return options.speeds.value_or(fallback);
+}
+
+double area_fraction_or(const SceneFamilyOptions& options, double fallback, double most) {
+    const double fraction = options.area_fraction.value_or(fallback);
+    if (!(fraction > 0.0 && fraction <= most)) {
+        throw std::invalid_argument("particlesim::make_family_scene: the area fraction must be in (0, " +
+                                    format_short(most) + "], not " + format_short(fraction));
+    }
+    return fraction;
+}
+
+// The side of a box that holds `count` disks at `fraction` of its area.
+double side_for(std::size_t count, double radius, double fraction) {
+    return std::sqrt(static_cast<double>(std::max<std::size_t>(count, 1)) * std::numbers::pi * radius * radius /
+                     fraction);
+}
+
+void give_random_velocities(std::vector<Particle>& particles, SpeedRange speeds, SplitMix64& rng) {
+    for (Particle& p : particles) {
+        const double speed = speeds.min + rng.uniform() * (speeds.max - speeds.min);
+        p.velocity = speed * random_direction(rng);
+    }
+}
+
+Scene random_scene(const SceneFamilyOptions& o) {
+    const World world{o.box_size.value_or(20000.0), o.radius};
+    RandomSceneOptions random{o.seed, o.speeds};
+    return scene_of(o, world.box_size, make_random_particles(o.particles.value_or(1000), world, random));
+}
+
+Scene gas(const SceneFamilyOptions& o) {
+    const std::size_t count = o.particles.value_or(400);
+    const double box = side_for(count, o.radius, area_fraction_or(o, 0.3, 0.5));
+    const RandomSceneOptions random{o.seed, speeds_or(o, {0.1 * o.radius, o.radius})};
+    return scene_of(o, box, make_random_particles(count, World{box, o.radius}, random));
+}
+
+// Rows of disks 2r (1 + gap) apart, every other row shifted by half a
+// spacing, each disk moved at random by at most 0.3 gap r on each axis (too
+// little to make two overlap).
+Scene lattice(const SceneFamilyOptions& o) {
+    const std::size_t count = o.particles.value_or(400);
+    const double r = o.radius;
+    constexpr double gap = 0.05;
+    const double spacing = 2.0 * r * (1.0 + gap);
+    const double row_height = spacing * std::sqrt(3.0) / 2.0;
+    const double jitter = 0.3 * gap * r;
+    const auto columns =
+        static_cast<std::size_t>(std::ceil(std::sqrt(static_cast<double>(count) * 2.0 / std::sqrt(3.0))));
+    const std::size_t rows = (count + columns - 1) / std::max<std::size_t>(columns, 1);
+    const double margin = r + jitter;
+    const double box = 2.0 * margin + std::max(spacing * (static_cast<double>(columns) - 0.5),
+                                               row_height * static_cast<double>(rows > 0 ? rows - 1 : 0));
+    SplitMix64 rng(o.seed);
+    std::vector<Particle> particles;
+    for (std::size_t k = 0; k < count; ++k) {
+        const std::size_t row = k / columns, column = k % columns;
+        const double x = margin + spacing * (static_cast<double>(column) + (row % 2 == 1 ? 0.5 : 0.0));
+        const double y = margin + row_height * static_cast<double>(row);
+        const double dx = (2.0 * rng.uniform() - 1.0) * jitter;
+        const double dy = (2.0 * rng.uniform() - 1.0) * jitter;
+        particles.push_back(disk(std::clamp(x + dx, r, box - r), std::clamp(y + dy, r, box - r)));
+    }
+    give_random_velocities(particles, speeds_or(o, {0.01 * r, 0.1 * r}), rng);
+    return scene_of(o, box, std::move(particles));
+}
+
+// Disks 4r apart on one line, all with the same velocity towards the left
+// wall: the first bounces back into the second, and so on down the row.
+Scene line(const SceneFamilyOptions& o) {
+    const std::size_t count = o.particles.value_or(100);
+    const double r = o.radius;
+    const double box = o.box_size.value_or(4.0 * r * static_cast<double>(count + 1));
+    const double speed = speeds_or(o, {r, r}).max;
+    std::vector<Particle> particles;
+    for (std::size_t k = 0; k < count; ++k) {
+        particles.push_back(disk(3.0 * r + 4.0 * r * static_cast<double>(k), box / 2.0, -speed, 0.0));
+    }
+    return scene_of(o, box, std::move(particles));
+}
+
+// N - 1 disks touching in a row at rest; disk 0 comes in from the left at
+// r/2 per step and reaches the row after 8 steps. Under the step rules the
+// momentum passes one disk per step (one collision per particle per step).
+Scene cradle(const SceneFamilyOptions& o) {
+    const std::size_t count = std::max<std::size_t>(o.particles.value_or(5), 2);
+    const double r = o.radius;
+    const double box = 4.0 * r * static_cast<double>(count + 4);
+    const double speed = speeds_or(o, {0.5 * r, 0.5 * r}).max;
+    std::vector<Particle> particles{disk(box / 2.0 - 6.0 * r, box / 2.0, speed, 0.0)};
+    for (std::size_t k = 1; k < count; ++k) {
+        particles.push_back(disk(box / 2.0 + 2.0 * r * static_cast<double>(k - 1), box / 2.0));
+    }
+    return scene_of(o, box, std::move(particles));
+}
+
+// Four square clusters of random disks at the given area fraction, in the
+// quarters of a box four clusters wide, drifting towards the centre.
+Scene clusters(const SceneFamilyOptions& o) {
+    const std::size_t count = o.particles.value_or(400);
+    const double r = o.radius;
+    const double fraction = area_fraction_or(o, 0.4, 0.5);
+    const std::size_t per_cluster = (count + 3) / 4;
+    const double side = side_for(per_cluster, r, fraction);
+    const double box = 4.0 * side;
+    const SpeedRange thermal = speeds_or(o, {0.0, 0.1 * r});
+    SplitMix64 rng(o.seed);
+    std::vector<Particle> particles;
+    for (int c = 0; c < 4 && particles.size() < count; ++c) {
+        const std::size_t here = std::min(per_cluster, count - particles.size());
+        const RandomSceneOptions random{o.seed + 1 + static_cast<std::uint64_t>(c), thermal};
+        const Vec2 centre(box * (c % 2 == 0 ? 0.25 : 0.75), box * (c / 2 == 0 ? 0.25 : 0.75));
+        const Vec2 drift = (Vec2(box / 2.0, box / 2.0) - centre).normalized() * (side / 20.0);
+        for (Particle p : make_random_particles(here, World{side, r}, random)) {
+            p.position += centre - Vec2(side / 2.0, side / 2.0);
+            p.velocity += drift;
+            particles.push_back(p);
+        }
+    }
+    return scene_of(o, box, std::move(particles));
+}
+
+// Motifs in units of r (exact for r a power of two) in a box of 64 r; each
+// decides a tie rule in the first step with numbers every formula computes
+// exactly (docs/checking.md lists them).
+Scene ties(const SceneFamilyOptions& o) {
+    const double r = o.radius;
+    const double side = 64.0;
+    std::vector<Particle> u;
+    // A wall and a particle at t = 0.5 for particle 0: the wall wins.
+    u.push_back(disk(2, 8, -2, 0));
+    u.push_back(disk(1, 11, 0, -2));
+    // The same at the right wall, mirrored, the disk at the wall listed
+    // second: the wall (kind 0) still comes before the pair (2, 3).
+    u.push_back(disk(side - 1, 11, 0, -2));
+    u.push_back(disk(side - 2, 8, 2, 0));
+    // Two pairs at t = 0.5 sharing the disk at rest (index 4): the lowest indices win.
+    u.push_back(disk(32, 32));
+    u.push_back(disk(29, 32, 2, 0));
+    u.push_back(disk(35, 32, -2, 0));
+    // The same with the shared disk last (index 9): (7, 9) before (8, 9).
+    u.push_back(disk(29, 44, 2, 0));
+    u.push_back(disk(35, 44, -2, 0));
+    u.push_back(disk(32, 44));
+    // Exact corners at t = 0.5: both velocity components flip.
+    u.push_back(disk(2, 2, -2, -2));
+    u.push_back(disk(side - 2, side - 2, 2, 2));
+    // Two disjoint pairs meeting at exactly t = 1 (a candidate: t <= 1).
+    u.push_back(disk(10, 20, 1, 0));
+    u.push_back(disk(14, 20, -1, 0));
+    u.push_back(disk(10, 26, 1, 0));
+    u.push_back(disk(14, 26, -1, 0));
+    // A wall reached at exactly t = 1.
+    u.push_back(disk(3, 40, -2, 0));
+    // A pair at t = 0.5 after which disk 18 reaches the wall exactly at the
+    // end of the step: it stops there and bounces at t = 0 of the next step.
+    u.push_back(disk(5, 52, -2, 0));
+    u.push_back(disk(2, 52));
+    for (Particle& p : u) {
+        p.position *= r;
+        p.velocity *= r;
+    }
+    return scene_of(o, side * r, std::move(u));
+}
+
+Scene fast(const SceneFamilyOptions& o) {
+    const World world{o.box_size.value_or(100.0 * o.radius), o.radius};
+    const RandomSceneOptions random{o.seed, speeds_or(o, {2.0 * world.box_size, 5.0 * world.box_size})};
+    return scene_of(o, world.box_size, make_random_particles(o.particles.value_or(50), world, random));
+}
+
+// Half the disks sit on the four walls in turn (some moving into them: a
+// wall collision at t = 0), the rest in pairs that touch, in rows inside.
+Scene walls(const SceneFamilyOptions& o) {
+    const std::size_t count = o.particles.value_or(64);
+    const double r = o.radius;
+    const double box = o.box_size.value_or(8.0 * r * std::ceil(std::sqrt(static_cast<double>(count))) + 16.0 * r);
+    const std::size_t on_walls = count / 2;
+    SplitMix64 rng(o.seed);
+    std::vector<Particle> particles;
+    for (std::size_t k = 0; k < on_walls; ++k) {
+        const double along = 3.0 * r + 4.0 * r * static_cast<double>(k / 4);
+        if (along > box - 3.0 * r)
+            throw std::invalid_argument("particlesim::make_family_scene: the box is too small for the walls family");
+        switch (k % 4) {
+        case 0: particles.push_back(disk(r, along)); break;
+        case 1: particles.push_back(disk(along, r)); break;
+        case 2: particles.push_back(disk(box - r, box - along)); break;
+        default: particles.push_back(disk(box - along, box - r)); break;
+        }
+    }
+    for (double y = 5.0 * r; particles.size() < count; y += 4.0 * r) {
+        if (y > box - 5.0 * r)
+            throw std::invalid_argument("particlesim::make_family_scene: the box is too small for the walls family");
+        for (double x = 5.0 * r; x + 2.0 * r <= box - 5.0 * r && particles.size() < count; x += 6.0 * r) {
+            particles.push_back(disk(x, y));
+            if (particles.size() < count) particles.push_back(disk(x + 2.0 * r, y));
+        }
+    }
+    give_random_velocities(particles, speeds_or(o, {0.1 * r, r}), rng);
+    return scene_of(o, box, std::move(particles));
+}
+
+}  // namespace
+
+const std::vector<SceneFamilyInfo>& scene_families() {
+    static const std::vector<SceneFamilyInfo> families{
+        {SceneFamily::random, "random", "the rules' random scene, exactly as simcli draws it for N, L, r and --seed"},
+        {SceneFamily::gas, "gas", "random disks at an area fraction (default 0.3), speeds 0.1 r to r per step"},
+        {SceneFamily::lattice, "lattice",
+         "a perturbed triangular lattice, area fraction about 0.8: denser than random placement"},
+        {SceneFamily::line, "line", "N disks in one row moving together into a wall: the original design's worst case"},
+        {SceneFamily::cradle, "cradle", "Newton's cradle: a touching row at rest, one disk moving into it"},
+        {SceneFamily::clusters, "clusters", "four dense clusters in an empty box, drifting into each other"},
+        {SceneFamily::ties, "ties",
+         "simultaneous collisions in exact numbers: walls before pairs, lowest indices, corners, t = 1"},
+        {SceneFamily::fast, "fast", "speeds of 2 to 5 box sides per step"},
+        {SceneFamily::walls, "walls", "disks starting on the walls and pairs starting in contact"},
+    };
+    return families;
+}
+
+std::optional<SceneFamily> scene_family_named(std::string_view name) {
+    for (const SceneFamilyInfo& info : scene_families()) {
+        if (name == info.name) return info.family;
+    }
+    return std::nullopt;
+}
+
+Scene make_family_scene(SceneFamily family, const SceneFamilyOptions& options) {
+    if (options.steps < 0) throw std::invalid_argument("particlesim::make_family_scene: steps must be >= 0");
+    switch (family) {
+    case SceneFamily::random: return random_scene(options);
+    case SceneFamily::gas: return gas(options);
+    case SceneFamily::lattice: return lattice(options);
+    case SceneFamily::line: return line(options);
+    case SceneFamily::cradle: return cradle(options);
+    case SceneFamily::clusters: return clusters(options);
+    case SceneFamily::ties: return ties(options);
+    case SceneFamily::fast: return fast(options);
+    case SceneFamily::walls: return walls(options);
+    }
+    throw std::invalid_argument("particlesim::make_family_scene: unknown family");
+}
+
+void write_scene(std::ostream& out, const Scene& scene) {
+    char number[32];
+    const auto shortest = [&](double value) { return std::string(number, write_shortest(number, value)); };
+    out << scene.particles.size() << '\n'
+        << shortest(scene.world.box_size) << '\n'
+        << shortest(scene.world.radius) << '\n'
+        << scene.steps << '\n'
+        << (scene.mode == OutputMode::print ? "print" : "perf") << '\n';
+    for (std::size_t i = 0; i < scene.particles.size(); ++i) {
+        const Particle& p = scene.particles[i];
+        out << i << ' ' << shortest(p.position.x()) << ' ' << shortest(p.position.y()) << ' '
+            << shortest(p.velocity.x()) << ' ' << shortest(p.velocity.y()) << '\n';
+    }
+}
+
+}  // namespace particlesim

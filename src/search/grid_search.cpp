@@ -1,0 +1,532 @@
+#include "search/grid_search.hpp"
+
+#include "core/prefetch.hpp"
+#include "core/uniform_grid.hpp"
+#include "parallel/parallel.hpp"
+#include "search/float_bounds_array.hpp"
+
+#include <algorithm>
+#include <atomic>
+#include <cmath>
+#include <limits>
+#include <numeric>
+#include <utility>
+
+namespace particlesim {
+
+struct GridSearch::SliceWorkspace {
+    std::vector<std::uint32_t> cell_of;  // by particle: its cell, or absent / large
+    std::vector<std::uint32_t> cell_start;
+    std::vector<std::uint32_t> cell_fill;  // per worker after the first: its count, then its next place, in each cell
+    std::vector<std::uint32_t> by_cell;    // the particle of each box (or piece), sorted by cell
+    FloatBoundsArray boxes_by_cell;        // those boxes, in the same order
+    std::vector<PairTestState> states_by_cell;  // their particles' motion, in the same order
+    std::vector<std::uint32_t> large;           // particles whose path fits no cell, even in pieces
+    std::vector<SweptBounds> large_boxes;       // their boxes, in the same order
+    std::vector<std::uint32_t> large_start;     // per worker: its first place in `large`
+    std::vector<std::uint32_t> range_start;     // per range of cells: its first place in by_cell
+};
+
+namespace {
+
+// A path whose box exceeds a cell is cut into at most this many equal pieces
+// in time, each binned as a box of its own: fast particles then cost a few
+// more boxes instead of joining the large boxes, which meet each other in a
+// quadratic loop. Longer paths stay large.
+constexpr int max_pieces = 8;
+
+// Marks in cell_of, above every cell index: not moving in the slice, large,
+// and cut into k pieces (large_marker - k).
+constexpr std::uint32_t absent_marker = std::numeric_limits<std::uint32_t>::max();
+constexpr std::uint32_t large_marker = absent_marker - 1;
+constexpr std::uint32_t first_piece_marker = large_marker - max_pieces;
+
+constexpr int max_slices = 64;
+// The cells' places are summed in this many ranges of cells a worker.
+constexpr std::size_t cell_ranges_per_worker = 8;
+// Below this many particles, threads take whole slices.
+constexpr std::size_t slice_parallel_below = 50000;
+
+// Generous against rounding: the contact time and the swept boxes carry
+// errors of a few ulps of the coordinates and velocities; 1e-8 relative is
+// ten million times that, and still far below any cell size it could disturb.
+constexpr double relative_margin = 1e-8;
+
+// Boxes whose side is within 2^+-100 are put in float as they are; beyond,
+// scaled into [1, 2) first (float spans only 1e-38 to 3e38).
+constexpr int float_safe_exponent = 100;
+
+// Automatic layouts cut slices so that a typical path in a slice is this many
+// particle spacings long. Fewer, longer slices bin fewer boxes but test more
+// pairs; 4/3 was the fastest from N = 1000 to 32000 (see docs/benchmarks.md).
+constexpr double slice_sweep_in_spacings = 4.0 / 3.0;
+// Forced grids cut slices so that a typical path covers at most half a cell,
+// so that most boxes fit their cell.
+constexpr double slice_sweep_in_forced_cells = 0.5;
+
+// A box that fits a cell with this slack keeps its neighbours within one cell
+// even after the rounding of the cell index computation.
+constexpr double cell_fit_slack = 1.0 - 1e-6;
+
+// The time span of one slice. A particle's path in it runs from `begin` to
+// the particle's sweep end (its wall time or the step's end), if earlier.
+struct SliceSpan {
+    double begin, end;
+
+    [[nodiscard]] bool holds_path(double sweep_end) const { return sweep_end > 0.0 && !(sweep_end < begin); }
+    [[nodiscard]] double path_end(double sweep_end) const { return std::min(end, sweep_end); }
+};
+
+// A particle's path ends at its wall time or at the end of the step.
+double sweep_end(const PairSearchInput& in, std::int64_t particle) {
+    return std::min(in.duration, in.wall_time[particle]);
+}
+
+SliceSpan slice_span(const PairSearchInput& in, int slice, int slices) {
+    const double begin = in.duration * slice / slices;
+    const double end = slice + 1 == slices ? in.duration : in.duration * (slice + 1) / slices;
+    return {begin, end};
+}
+
+bool fits_cell(const SweptBounds& box, double fit) {
+    return box.max_x - box.min_x <= fit && box.max_y - box.min_y <= fit;
+}
+
+// Cells [x_first, x_last] x [y_first, y_last] of the grid.
+struct CellRegion {
+    int x_first, y_first, x_last, y_last;
+};
+
+// The cells whose fitting boxes can meet `box`: a fitting box that meets it
+// has its lower corner at most one cell below or left of this box's lower
+// corner.
+CellRegion cells_reaching(const SweptBounds& box, const UniformGrid& grid) {
+    return {std::max(grid.column_of(box.min_x) - 1, 0), std::max(grid.column_of(box.min_y) - 1, 0),
+            grid.column_of(box.max_x), grid.column_of(box.max_y)};
+}
+
+// Always inlined: it runs for every binned box, and a call costs as much as it does.
+[[gnu::always_inline]] inline FloatBounds float_bounds(const SweptBounds& box, double scale) {
+    if (scale != 1.0) {  // the same way for every box of a step: predicted
+        return {float_at_most(box.min_x * scale), float_at_most(box.min_y * scale), float_at_least(box.max_x * scale),
+                float_at_least(box.max_y * scale)};
+    }
+    return {float_at_most(box.min_x), float_at_most(box.min_y), float_at_least(box.max_x), float_at_least(box.max_y)};
+}
+
+}  // namespace
+
+GridSearch::GridSearch() = default;
+GridSearch::~GridSearch() = default;
+GridSearch::GridSearch(GridSearch&&) noexcept = default;
+GridSearch& GridSearch::operator=(GridSearch&&) noexcept = default;
+
+GridLayout GridSearch::choose_layout(const PairSearchInput& in, std::optional<int> forced_cells, int threads) {
+    // The blocks' sums, measured here unless the step has them already.
+    std::span<const BlockStart> blocks = in.blocks;
+    if (blocks.empty()) {
+        const auto count = static_cast<std::int64_t>(in.particles.size());
+        const int workers = worker_count(static_cast<std::size_t>(threads), count, min_particles_per_thread);
+        block_starts_.resize(static_cast<std::size_t>((count + motion_block - 1) / motion_block));
+        parallel_for_blocks(workers, count, motion_block,
+                            [&](std::int64_t block, std::int64_t first, std::int64_t last) {
+                                MotionSums measured;
+                                for (std::int64_t i = first; i < last; ++i) {
+                                    measured.add(in.particles[i].velocity, in.wall_time[i], in.duration);
+                                }
+                                block_starts_[block].motion = measured;
+                            });
+        blocks = block_starts_;
+    }
+    MotionSums motion;
+    for (const BlockStart& block : blocks) motion.add(block.motion);
+    const double length_sum = motion.length_sum;
+    const double max_speed = motion.max_speed;
+    const std::int64_t present = motion.present;
+
+    const double box_size = in.box.side;
+    GridLayout layout;
+    layout.reach = in.box.lower + relative_margin * (box_size + max_speed * in.duration);
+    // Floats keep 24 bits of any coordinate between 1e-30 and 1e30 of L: only
+    // boxes beyond that are scaled.
+    const int exponent = std::ilogb(box_size);
+    layout.float_scale = std::abs(exponent) > float_safe_exponent ? std::ldexp(1.0, -exponent) : 1.0;
+    const double mean_sweep = length_sum / static_cast<double>(std::max<std::int64_t>(present, 1));
+    const double diameter = 2.0 * layout.reach;
+    const auto slices_for = [&](double slice_sweep) {
+        if (!(slice_sweep > 0.0)) return 1;
+        return static_cast<int>(std::clamp(std::ceil(mean_sweep / slice_sweep), 1.0, double{max_slices}));
+    };
+
+    if (forced_cells) {
+        layout.grid = UniformGrid(box_size, *forced_cells);
+        layout.slices = slices_for(slice_sweep_in_forced_cells * (layout.grid.cell_size() - diameter));
+    } else {
+        // Cells at least a particle spacing wide and twice a typical slice
+        // path, so that most swept boxes fit their cell; at most ~4 cells per
+        // particle, so that memory stays O(N).
+        const double spacing = box_size / std::sqrt(static_cast<double>(std::max<std::int64_t>(present, 1)));
+        layout.slices = slices_for(slice_sweep_in_spacings * spacing);
+        const double wanted = std::max(spacing, diameter + 2.0 * mean_sweep / layout.slices);
+        const double max_side = std::floor(std::sqrt(4.0 * static_cast<double>(present))) + 1.0;
+        layout.grid = UniformGrid(box_size, UniformGrid::cells_per_side(box_size, wanted, max_side));
+    }
+    return layout;
+}
+
+void GridSearch::find_pairs(const PairSearchInput& in, std::optional<int> forced_cells,
+                            std::span<ThreadCandidates> buffers) {
+    const int threads = static_cast<int>(buffers.size());
+    layout_ = choose_layout(in, forced_cells, threads);
+
+    const std::size_t count = in.particles.size();
+    // Small scenes: one thread a slice, each with buffers of its own (fixed by
+    // the scene, so they are allocated once). Large scenes: all threads share
+    // each slice, and one set of buffers keeps the memory per particle low.
+    const bool parallel_slices = threads >= 2 && count < slice_parallel_below;
+    const int workers = worker_count(buffers.size(), static_cast<std::int64_t>(count), min_particles_per_thread);
+    // Grown, never shrunk: a step may use fewer threads than the one before.
+    const std::size_t workspaces = parallel_slices ? static_cast<std::size_t>(threads) : 1;
+    if (workspaces_.size() < workspaces) workspaces_.resize(workspaces);
+    for (std::size_t k = 0; k < workspaces; ++k) prepare(workspaces_[k], count, parallel_slices ? 1 : workers);
+
+    if (parallel_slices) {
+        parallel_for_dynamic(
+            std::min(threads, layout_.slices), layout_.slices, 1, [&](std::int64_t slice, std::size_t thread) {
+                process_slice(in, static_cast<int>(slice), workspaces_[thread], buffers.subspan(thread, 1), 1);
+            });
+    } else {
+        for (int slice = 0; slice < layout_.slices; ++slice) {
+            process_slice(in, slice, workspaces_[0], buffers, workers);
+        }
+    }
+}
+
+void GridSearch::prepare(SliceWorkspace& ws, std::size_t count, int workers) const {
+    const std::size_t cells = layout_.grid.cell_count();
+    // Room for every particle's box, plus pieces of a few fast paths.
+    const std::size_t boxes = count + count / 4 + 64;
+    ws.cell_of.resize(count);
+    ws.by_cell.resize(boxes);
+    ws.boxes_by_cell.resize(boxes);
+    ws.states_by_cell.resize(boxes);
+    ws.cell_start.resize(cells + 1);
+    ws.cell_fill.resize(cells * static_cast<std::size_t>(workers - 1));  // counts of workers 1, 2, ...
+    ws.large.reserve(count);
+    ws.large_boxes.reserve(count);
+    ws.large_start.resize(static_cast<std::size_t>(workers) + 1);
+    ws.range_start.resize(cell_ranges_per_worker * static_cast<std::size_t>(workers) + 1);
+}
+
+void GridSearch::process_slice(const PairSearchInput& in, int slice, SliceWorkspace& ws,
+                               std::span<ThreadCandidates> out, int threads) const {
+    bin_slice(in, slice, ws, threads);
+    test_small_pairs(in, ws, out, threads);
+    test_large_pairs(in, ws, out, threads);
+}
+
+int GridSearch::pieces_to_fit(const Particle& particle, double begin, double end, double fit) const {
+    const double room = fit - 2.0 * layout_.reach;
+    const double travel = std::max(std::abs(particle.velocity.x()), std::abs(particle.velocity.y())) * (end - begin);
+    if (!(room > 0.0) || !(travel < room * max_pieces)) return 0;
+    const int pieces = std::max(2, static_cast<int>(std::ceil(travel / room)));
+    if (pieces > max_pieces) return 0;
+    // The rounding of the piece ends may still push a box past the cell.
+    for (int piece = 0; piece < pieces; ++piece) {
+        if (!fits_cell(piece_bounds(particle, begin, end, piece, pieces), fit)) return 0;
+    }
+    return pieces;
+}
+
+void GridSearch::bin_slice(const PairSearchInput& in, int slice, SliceWorkspace& ws, int threads) const {
+    const SliceSpan span = slice_span(in, slice, layout_.slices);
+    const UniformGrid& grid = layout_.grid;
+    const auto cell_of_box = [&](const SweptBounds& box) { return grid.cell_of(box.min_x, box.min_y); };
+    const double fit = grid.cell_size() * cell_fit_slack;
+    const auto count = static_cast<std::int64_t>(in.particles.size());
+    const auto path_end = [&](std::int64_t i) { return span.path_end(sweep_end(in, i)); };
+    const auto slice_box = [&](std::int64_t i) { return swept_bounds(in.particles[i], span.begin, path_end(i)); };
+    const auto for_each_piece = [&](std::int64_t i, int pieces, auto&& body) {
+        for (int piece = 0; piece < pieces; ++piece) {
+            body(piece_bounds(in.particles[i], span.begin, path_end(i), piece, pieces));
+        }
+    };
+
+    // Counting sort of the fitting boxes (and pieces) by cell, the large ones
+    // aside. Each worker counts and then places a contiguous block of
+    // particles. (The order within a cell does not change the pairs tested.)
+    // Worker 0 counts in cell_start itself, the others in cell_fill.
+    const auto cells = static_cast<std::int64_t>(ws.cell_start.size()) - 1;
+    const std::int64_t block = (count + threads - 1) / threads;
+    const auto block_of = [&](std::int64_t worker) {
+        return std::pair{worker * block, std::min(count, (worker + 1) * block)};
+    };
+    const auto counts_of = [&](std::int64_t worker) {
+        return worker == 0 ? ws.cell_start.data() : ws.cell_fill.data() + (worker - 1) * cells;
+    };
+    // Long paths, in a loop of their own (as in the placement below).
+    const auto count_pieces = [&](std::int64_t first, std::int64_t last, std::uint32_t* counts, std::size_t& counted,
+                                  std::uint32_t& large) {
+        for (std::int64_t i = first; i < last; ++i) {
+            if (ws.cell_of[i] != large_marker) continue;
+            const int pieces = pieces_to_fit(in.particles[i], span.begin, path_end(i), fit);
+            ws.cell_of[i] = large_marker - static_cast<std::uint32_t>(pieces);
+            for_each_piece(i, pieces, [&](const SweptBounds& piece) { ++counts[cell_of_box(piece)]; });
+            counted += static_cast<std::size_t>(pieces);
+            large -= pieces > 0 ? 1U : 0U;
+        }
+    };
+    const auto count_boxes = [&](bool cut_into_pieces) {
+        std::atomic<std::size_t> boxes{0};
+        parallel_for(threads, threads, [&](std::int64_t worker, std::size_t) {
+            std::uint32_t* counts = counts_of(worker);
+            std::fill(counts, counts + cells, 0U);
+            const auto [first, last] = block_of(worker);
+            std::size_t counted = 0;
+            std::uint32_t large = 0;
+            for (std::int64_t i = first; i < last; ++i) {
+                if (!span.holds_path(sweep_end(in, i))) {
+                    ws.cell_of[i] = absent_marker;
+                    continue;
+                }
+                const SweptBounds box = slice_box(i);
+                const bool fits = fits_cell(box, fit);
+                const std::uint32_t cell = cell_of_box(box);
+                ws.cell_of[i] = fits ? cell : large_marker;
+                counts[cell] += fits ? 1U : 0U;
+                counted += fits ? 1U : 0U;
+                large += fits ? 0U : 1U;
+            }
+            if (cut_into_pieces) count_pieces(first, last, counts, counted, large);
+            boxes += counted;
+            ws.large_start[worker + 1] = large;
+        });
+        return boxes.load();
+    };
+    // Pieces that would not fit the buffers (many fast particles): the slice
+    // is counted again with the long paths large instead.
+    if (count_boxes(true) > ws.by_cell.size()) count_boxes(false);
+
+    // Each worker's first place in each cell, cell by cell, from `placed`.
+    const auto place_cells = [&](std::int64_t first, std::int64_t last, std::uint32_t placed) {
+        for (std::int64_t cell = first; cell < last; ++cell) {
+            for (std::int64_t worker = 0; worker < threads; ++worker) {
+                std::uint32_t& next = counts_of(worker)[cell];
+                placed += std::exchange(next, placed);
+            }
+        }
+    };
+    // On a large grid, in ranges of cells on every thread (a serial pass
+    // would leave the others waiting): each range sums its boxes, then
+    // places them from where the ranges before it end.
+    const auto ranges = static_cast<std::int64_t>(ws.range_start.size()) - 1;
+    const int range_workers = worker_count(static_cast<std::size_t>(threads), cells, min_particles_per_thread);
+    const auto for_each_range = [&](auto&& body) { parallel_for_ranges(range_workers, cells, ranges, body); };
+    if (range_workers == 1) {
+        place_cells(0, cells, 0);
+    } else {
+        std::fill(ws.range_start.begin(), ws.range_start.end(), 0U);  // a range past the end is not visited
+        for_each_range([&](std::int64_t range, std::int64_t first, std::int64_t last) {
+            std::uint32_t boxes = 0;
+            for (std::int64_t worker = 0; worker < threads; ++worker) {
+                const std::uint32_t* counts = counts_of(worker);
+                for (std::int64_t cell = first; cell < last; ++cell) boxes += counts[cell];
+            }
+            ws.range_start[range + 1] = boxes;
+        });
+        std::partial_sum(ws.range_start.begin(), ws.range_start.end(), ws.range_start.begin());
+        for_each_range([&](std::int64_t range, std::int64_t first, std::int64_t last) {
+            place_cells(first, last, ws.range_start[range]);
+        });
+    }
+    ws.large_start[0] = 0;
+    std::partial_sum(ws.large_start.begin(), ws.large_start.end(), ws.large_start.begin());
+    ws.large.resize(ws.large_start[threads]);
+    ws.large_boxes.resize(ws.large_start[threads]);
+
+    parallel_for(threads, threads, [&](std::int64_t worker, std::size_t) {
+        std::uint32_t* next = counts_of(worker);
+        const auto [first, last] = block_of(worker);
+        const auto place = [&](std::int64_t i, std::uint32_t cell, const SweptBounds& box) {
+            const std::uint32_t at = next[cell]++;
+            ws.by_cell[at] = static_cast<std::uint32_t>(i);
+            ws.boxes_by_cell.set(at, float_bounds(box, layout_.float_scale));
+            ws.states_by_cell[at] = pair_test_state(in, static_cast<std::uint32_t>(i));
+        };
+        // The pieces in a loop of their own: the main loop stays short enough
+        // for the processor to overlap the cache misses of many particles.
+        for (std::int64_t i = first; i < last; ++i) {
+            const std::uint32_t mark = ws.cell_of[i];
+            if (mark < first_piece_marker) place(i, mark, slice_box(i));
+        }
+        std::uint32_t next_large = ws.large_start[worker];
+        for (std::int64_t i = first; i < last; ++i) {
+            const std::uint32_t mark = ws.cell_of[i];
+            if (mark < first_piece_marker || mark == absent_marker) continue;
+            if (mark == large_marker) {
+                ws.large[next_large] = static_cast<std::uint32_t>(i);
+                ws.large_boxes[next_large] = slice_box(i);
+                ++next_large;
+                continue;
+            }
+            for_each_piece(i, static_cast<int>(large_marker - mark),
+                           [&](const SweptBounds& piece) { place(i, cell_of_box(piece), piece); });
+        }
+    });
+    // The last worker's next place in a cell is now where the next cell
+    // starts. A lone worker's places are cell_start itself: from the top
+    // down, that overwrites only what is spent.
+    const std::uint32_t* ends = counts_of(threads - 1);
+    if (threads == 1) {
+        for (std::int64_t cell = cells - 1; cell >= 0; --cell) ws.cell_start[cell + 1] = ends[cell];
+    } else {
+        for_each_range([&](std::int64_t, std::int64_t first, std::int64_t last) {
+            std::copy(ends + first, ends + last, ws.cell_start.begin() + first + 1);
+        });
+    }
+    ws.cell_start[0] = 0;
+}
+
+namespace {
+
+// Tests particle `a` (box `box`, state `state`) against the boxes stored at
+// positions [first, last) of the cell order whose float bounds meet its own.
+template <std::uint32_t block_groups, std::uint32_t group_lanes = FloatBoundsArray::lanes>
+[[gnu::always_inline]] inline void test_against_range(const PairSearchInput& in, const GridSearch::SliceWorkspace& ws,
+                                                      std::uint32_t a, const FloatBounds& box,
+                                                      const PairTestState& state, std::uint32_t first,
+                                                      std::uint32_t last, ThreadCandidates& out) {
+    ws.boxes_by_cell.for_each_overlap<block_groups, group_lanes>(first, last, box, [&](std::uint32_t m) {
+        const std::uint32_t b = ws.by_cell[m];
+        if (b == a) return;  // another piece of the same path
+        const PairTestState& other = ws.states_by_cell[m];
+        if (a < b) {
+            test_pair(state, other, a, b, in, out);
+        } else {
+            test_pair(other, state, b, a, in, out);
+        }
+    });
+}
+
+// The row above is first read here, and only at hits, a pattern the
+// processor's prefetchers miss: its motion states are fetched this many
+// cells ahead (docs/benchmarks.md).
+constexpr int prefetch_cells_ahead = 16;
+
+// The half stencil of every cell in row `cy`: the rest of the cell and the
+// cell to the east (adjacent in the cell order, so one range), then the
+// three cells above (one range), scanned in blocks of `block_groups` groups.
+template <std::uint32_t block_groups, std::uint32_t group_lanes = FloatBoundsArray::lanes>
+[[gnu::always_inline]] inline void scan_row(const PairSearchInput& in, const GridSearch::SliceWorkspace& ws, int side,
+                                            std::int64_t cy, ThreadCandidates& found) {
+    const std::uint32_t* start = ws.cell_start.data();
+    const std::uint32_t* ids = ws.by_cell.data();
+    const FloatBoundsArray& boxes = ws.boxes_by_cell;
+    const PairTestState* states = ws.states_by_cell.data();
+    const std::int64_t row = cy * side;
+    const std::uint32_t boxes_binned = start[static_cast<std::int64_t>(side) * side];
+    for (int cx = 0; cx < side; ++cx) {
+        const std::int64_t cell = row + cx;
+        const std::uint32_t first = start[cell];
+        const std::uint32_t last = start[cell + 1];
+        if (cy + 1 < side) {
+            const std::uint32_t ahead = start[row + side + std::min(cx + prefetch_cells_ahead, side)];
+            prefetch(states + ahead);
+            prefetch(states + std::min(ahead + 1, boxes_binned));
+        }
+        if (first == last) continue;
+        const std::uint32_t east_last = start[cell + (cx + 1 < side ? 2 : 1)];
+        std::uint32_t above_first = 0;
+        std::uint32_t above_last = 0;
+        if (cy + 1 < side) {
+            above_first = start[row + side + std::max(cx - 1, 0)];
+            above_last = start[row + side + std::min(cx + 1, side - 1) + 1];
+        }
+        for (std::uint32_t k = first; k < last; ++k) {
+            test_against_range<block_groups, group_lanes>(in, ws, ids[k], boxes[k], states[k], k + 1, east_last, found);
+            test_against_range<block_groups, group_lanes>(in, ws, ids[k], boxes[k], states[k], above_first, above_last,
+                                                          found);
+        }
+    }
+}
+
+// One row in blocks of `block_groups` groups of four boxes, or (x86-64) of
+// eight, compiled for AVX2: chosen at run time, so that one build runs on
+// every x86-64 processor. Lanes only filter boxes; every pair test is the
+// same double arithmetic (no fused multiply-add), so results do not change.
+template <std::uint32_t block_groups>
+void scan_row_four(const PairSearchInput& in, const GridSearch::SliceWorkspace& ws, int side, std::int64_t cy,
+                   ThreadCandidates& found) {
+    scan_row<block_groups>(in, ws, side, cy, found);
+}
+
+#if defined(__x86_64__)
+template <std::uint32_t block_groups>
+[[gnu::target("avx2")]] void scan_row_eight(const PairSearchInput& in, const GridSearch::SliceWorkspace& ws, int side,
+                                            std::int64_t cy, ThreadCandidates& found) {
+    scan_row<block_groups, FloatBoundsArray::wide_lanes>(in, ws, side, cy, found);
+}
+
+bool has_eight_lanes() {
+    static const bool available = [] {
+        __builtin_cpu_init();  // in case this first runs before the library's constructors
+        return __builtin_cpu_supports("avx2") != 0;
+    }();
+    return available;
+}
+#endif
+
+}  // namespace
+
+void GridSearch::test_small_pairs(const PairSearchInput& in, const SliceWorkspace& ws, std::span<ThreadCandidates> out,
+                                  int threads) const {
+    const int side = layout_.grid.per_side();
+    const auto scan = [&](auto scan_one_row) {
+        parallel_for_dynamic(threads, side, 4,
+                             [&](std::int64_t cy, std::size_t thread) { scan_one_row(in, ws, side, cy, out[thread]); });
+    };
+    // A range that fits one block is scanned without a mispredicted exit
+    // from a loop over its groups: blocks of two groups suit cells of a few
+    // boxes (sparse scenes), of eight boxes each where AVX2 has the lanes;
+    // one group of four suits cells of about one box (dense scenes), where
+    // more lanes only add work (docs/benchmarks.md).
+    const double boxes_per_cell = static_cast<double>(ws.cell_start.back()) / layout_.grid.cell_count();
+    if (boxes_per_cell < 2.0) {
+        scan(scan_row_four<1>);
+        return;
+    }
+#if defined(__x86_64__)
+    if (has_eight_lanes()) {
+        scan(scan_row_eight<2>);
+        return;
+    }
+#endif
+    scan(scan_row_four<2>);
+}
+
+void GridSearch::test_large_pairs(const PairSearchInput& in, const SliceWorkspace& ws, std::span<ThreadCandidates> out,
+                                  int threads) const {
+    const UniformGrid& grid = layout_.grid;
+    const int side = grid.per_side();
+    const auto large_count = static_cast<std::int64_t>(ws.large.size());
+
+    parallel_for_dynamic(large_count > 1 ? threads : 1, large_count, 1, [&](std::int64_t k, std::size_t thread) {
+        ThreadCandidates& found = out[thread];
+        const std::uint32_t a = ws.large[k];
+        const SweptBounds& box = ws.large_boxes[k];
+        const FloatBounds bounds = float_bounds(box, layout_.float_scale);
+        const PairTestState state = pair_test_state(in, a);
+        const CellRegion region = cells_reaching(box, grid);
+        for (int cy = region.y_first; cy <= region.y_last; ++cy) {
+            const auto row = static_cast<std::size_t>(cy) * side;
+            test_against_range<1>(in, ws, a, bounds, state, ws.cell_start[row + region.x_first],
+                                  ws.cell_start[row + region.x_last + 1], found);
+        }
+        for (std::int64_t other = k + 1; other < large_count; ++other) {
+            const std::uint32_t b = ws.large[other];
+            if (box.overlaps(ws.large_boxes[other])) test_pair(in, std::min(a, b), std::max(a, b), found);
+        }
+    });
+}
+
+}  // namespace particlesim

@@ -1,0 +1,96 @@
+#pragma once
+// The fast pair search: exact for any speeds. It never assumes a speed limit:
+// the step is cut into time slices, and in each slice every particle's swept
+// box (its path in that slice, widened by r and a rounding margin) is binned
+// by its lower corner into a uniform grid (a counting sort, with the boxes
+// kept as float boxes in cell order). Two boxes that fit a cell can only
+// overlap when their cells are neighbours, so a half stencil of contiguous
+// ranges finds each such pair once, four boxes per comparison. A path too
+// long for a cell is cut into pieces in time; one too long even for that is
+// a large box, scanned against the cells it covers and against every other
+// large box. Every pair whose boxes overlap in some slice gets the shared
+// pair test, a superset of the pairs that can collide, so the result is
+// exactly the brute-force candidate set.
+
+#include "core/uniform_grid.hpp"
+#include "search/pair_search.hpp"
+
+#include <algorithm>
+#include <cstdint>
+#include <optional>
+#include <span>
+#include <vector>
+
+namespace particlesim {
+
+// The shape of the search in one step; chosen per step from the scene.
+struct GridLayout {
+    UniformGrid grid;
+    int slices = 1;
+    double reach = 0.0;  // r plus the rounding margin added around each path
+    // 1, or for a box far from 1 the power of two that brings L into [1, 2):
+    // float bounds are taken of scaled coordinates, so they keep their
+    // precision at every scale of the accepted range.
+    double float_scale = 1.0;
+};
+
+// A particle's path within one time slice, widened by the layout's reach.
+struct SweptBounds {
+    double min_x, min_y, max_x, max_y;
+
+    // Branch-free: in a grid most tested boxes miss, in no predictable pattern.
+    [[nodiscard]] bool overlaps(const SweptBounds& other) const {
+        return (min_x <= other.max_x) & (other.min_x <= max_x) & (min_y <= other.max_y) & (other.min_y <= max_y);
+    }
+};
+
+class GridSearch {
+public:
+    GridSearch();
+    ~GridSearch();
+    GridSearch(GridSearch&&) noexcept;
+    GridSearch& operator=(GridSearch&&) noexcept;
+
+    // forced_cells imposes a G x G grid (still exact); without it the grid is
+    // sized from the particles' motion in this step and r.
+    void find_pairs(const PairSearchInput& in, std::optional<int> forced_cells, std::span<ThreadCandidates> buffers);
+
+    // Per-slice buffers; one per thread when slices run in parallel.
+    struct SliceWorkspace;  // defined in grid_search.cpp
+
+private:
+    // Inline: it runs once per particle and slice.
+    [[nodiscard]] SweptBounds swept_bounds(const Particle& particle, double begin, double end) const {
+        const Vec2 from = particle.position + particle.velocity * begin;
+        const Vec2 to = particle.position + particle.velocity * end;
+        const double reach = layout_.reach;
+        return {std::min(from.x(), to.x()) - reach, std::min(from.y(), to.y()) - reach,
+                std::max(from.x(), to.x()) + reach, std::max(from.y(), to.y()) + reach};
+    }
+    // Piece `piece` of `pieces` equal parts in time of the path from `begin` to `end`.
+    [[nodiscard]] SweptBounds piece_bounds(const Particle& particle, double begin, double end, int piece,
+                                           int pieces) const {
+        const double span = end - begin;
+        const double piece_begin = begin + span * piece / pieces;
+        const double piece_end = piece + 1 == pieces ? end : begin + span * (piece + 1) / pieces;
+        return swept_bounds(particle, piece_begin, piece_end);
+    }
+    // How many pieces a path must be cut into for each to fit a cell; 0 when
+    // too many.
+    [[nodiscard]] int pieces_to_fit(const Particle& particle, double begin, double end, double fit) const;
+    GridLayout choose_layout(const PairSearchInput& in, std::optional<int> forced_cells, int threads);
+    void process_slice(const PairSearchInput& in, int slice, SliceWorkspace& ws, std::span<ThreadCandidates> out,
+                       int threads) const;
+    void prepare(SliceWorkspace& ws, std::size_t count, int workers) const;
+    void bin_slice(const PairSearchInput& in, int slice, SliceWorkspace& ws, int threads) const;
+    void test_small_pairs(const PairSearchInput& in, const SliceWorkspace& ws, std::span<ThreadCandidates> out,
+                          int threads) const;
+    void test_large_pairs(const PairSearchInput& in, const SliceWorkspace& ws, std::span<ThreadCandidates> out,
+                          int threads) const;
+
+    GridLayout layout_;
+    std::vector<BlockStart> block_starts_;  // when the step brings none
+    std::vector<SliceWorkspace> workspaces_;
+};
+
+}  // namespace particlesim

@@ -1,0 +1,64 @@
+#pragma once
+// What every pair search (brute force, grid) receives and produces, and the one
+// pair test they all apply, so that their candidate sets are identical.
+
+#include "core/box.hpp"
+#include "core/collision.hpp"
+#include "core/physics.hpp"
+#include "particlesim/particle.hpp"
+#include "stepped/step_start.hpp"
+
+#include <cstdint>
+#include <span>
+#include <vector>
+
+namespace particlesim {
+
+struct PairSearchInput {
+    std::span<const Particle> particles;
+    // First wall time of each particle from the start of the step (`never`
+    // without one). A pair candidate at or after either particle's wall time
+    // can never be selected: that particle's wall candidate comes first in
+    // the order and marks it. Every search drops those candidates alike.
+    std::span<const double> wall_time;
+    Box box;
+    double duration = 1.0;  // of the (micro-)step
+    // The blocks' motion, when measured already (step_start.hpp); empty:
+    // a search that needs it measures it.
+    std::span<const BlockStart> blocks = {};
+};
+
+// Candidates found by one thread, on a cache line of its own.
+struct alignas(64) ThreadCandidates {
+    std::vector<Collision> found;
+    std::uint64_t pair_tests = 0;
+};
+
+// What the pair test reads of one particle's motion; searches may keep
+// copies of it in an order of their own (the grid keeps them in cell order,
+// for locality). 32 bytes, aligned: a copy never straddles two cache lines.
+struct alignas(32) PairTestState {
+    Vec2 position;
+    Vec2 velocity;
+};
+
+inline PairTestState pair_test_state(const PairSearchInput& in, std::uint32_t i) {
+    return {in.particles[i].position, in.particles[i].velocity};
+}
+
+// The pair rule of rules.md plus the wall-time pruning above; appends the
+// candidate of particles i < j (states a and b), if any, to `out`. The
+// wall times are read only for a contact within the step: few pairs tested
+// have one.
+inline void test_pair(const PairTestState& a, const PairTestState& b, std::uint32_t i, std::uint32_t j,
+                      const PairSearchInput& in, ThreadCandidates& out) {
+    ++out.pair_tests;
+    const double t = contact_time(b.position - a.position, b.velocity - a.velocity, in.box.contact_dist_sq);
+    if (t <= in.duration && t < in.wall_time[i] && t < in.wall_time[j]) out.found.push_back(Collision::pair(t, i, j));
+}
+
+inline void test_pair(const PairSearchInput& in, std::uint32_t i, std::uint32_t j, ThreadCandidates& out) {
+    test_pair(pair_test_state(in, i), pair_test_state(in, j), i, j, in, out);
+}
+
+}  // namespace particlesim

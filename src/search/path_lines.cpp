@@ -1,0 +1,211 @@
+#include "search/path_lines.hpp"
+
+#include <algorithm>
+#include <bit>
+#include <cmath>
+#include <cstring>
+#include <stdexcept>
+#include <string>
+
+namespace particlesim {
+
+namespace {
+
+// Lines tested together by the widest test compiled (two groups of
+// AVX-512's sixteen); the arrays are padded to a whole number of them.
+constexpr std::size_t widest_lanes = 32;
+
+// 2^-k with value * 2^-k in [0.5, 1); 1 for zero (or anything not finite,
+// which valid scenes never hold).
+double power_of_two_below(double value) {
+    if (!(value > 0.0 && std::isfinite(value))) return 1.0;
+    return std::ldexp(1.0, -(std::ilogb(value) + 1));
+}
+
+using FourFloats = float __attribute__((vector_size(16)));
+using EightFloats = float __attribute__((vector_size(32)));
+using SixteenFloats = float __attribute__((vector_size(64)));
+using FourInts = std::int32_t __attribute__((vector_size(16)));
+
+struct LineQuery {
+    float x, y, vx, vy;  // the line tested against all, scaled
+    float reach_term;    // times |dv|^2
+    float margin_term;   // added
+};
+
+// One bit per lane of a comparison's result (all ones or all zeros), lane
+// 0 the lowest: on x86-64 the sign bits, four lanes at a time by SSE's
+// movmskps (any x86-64 has it; no wider vector is passed by value, which
+// would change the calling convention of a build without AVX).
+template <typename Mask>
+[[gnu::always_inline]] inline std::uint32_t lane_bits(const Mask& mask) {
+    constexpr std::size_t lanes = sizeof(Mask) / sizeof(float);
+    std::uint32_t bits = 0;
+#if defined(__SSE__)
+    for (std::size_t quarter = 0; quarter < lanes / 4; ++quarter) {
+        FourFloats four;
+        std::memcpy(&four, reinterpret_cast<const char*>(&mask) + quarter * sizeof four, sizeof four);
+        bits |= static_cast<std::uint32_t>(__builtin_ia32_movmskps(four)) << (4 * quarter);
+    }
+#else
+    for (std::size_t lane = 0; lane < lanes; ++lane) bits |= mask[lane] != 0 ? 1U << lane : 0U;
+#endif
+    return bits;
+}
+
+// Whether any lane of a comparison's result is set: its quarters or'd into
+// four lanes first, then one movmskps.
+template <typename Mask>
+[[gnu::always_inline]] inline bool any_lane(const Mask& mask) {
+    FourInts either{};
+    for (std::size_t quarter = 0; quarter < sizeof(Mask) / sizeof(FourInts); ++quarter) {
+        FourInts four;
+        std::memcpy(&four, reinterpret_cast<const char*>(&mask) + quarter * sizeof four, sizeof four);
+        either |= four;
+    }
+    return lane_bits(either) != 0;
+}
+
+// Appends every line j of [0, padded) with |dp x dv|^2 <= reach_term |dv|^2
+// + margin_term to `near`, `Floats` lines (four, eight or sixteen) to a
+// group, two groups at a time: nearly every pair of groups has no close
+// line, so one test of all their lanes. Always inlined, so that a caller
+// compiled for AVX2 or AVX-512 gets its lanes.
+template <typename Floats>
+[[gnu::always_inline]] inline void gather_lanes(const float* x, const float* y, const float* vx, const float* vy,
+                                                std::size_t padded, const LineQuery& query,
+                                                std::vector<std::uint32_t>& near) {
+    using Mask = decltype(Floats{} < Floats{});
+    constexpr std::size_t lanes = sizeof(Floats) / sizeof(float);
+    // A copy: `near` could alias the query as far as the compiler knows.
+    const LineQuery q = query;
+    for (std::size_t j = 0; j < padded; j += 2 * lanes) {
+        Mask close[2];
+        for (std::size_t group = 0; group < 2; ++group) {
+            const std::size_t at = j + group * lanes;
+            Floats dx, dy, dvx, dvy;
+            std::memcpy(&dx, x + at, sizeof(Floats));
+            std::memcpy(&dy, y + at, sizeof(Floats));
+            std::memcpy(&dvx, vx + at, sizeof(Floats));
+            std::memcpy(&dvy, vy + at, sizeof(Floats));
+            dx -= q.x;
+            dy -= q.y;
+            dvx -= q.vx;
+            dvy -= q.vy;
+            const Floats cross = dx * dvy - dy * dvx;
+            const Floats speed_sq = dvx * dvx + dvy * dvy;
+            close[group] = cross * cross <= q.reach_term * speed_sq + q.margin_term;
+        }
+        if (!any_lane(close[0] | close[1])) continue;
+        std::uint32_t bits = lane_bits(close[0]) | lane_bits(close[1]) << lanes;
+        for (; bits != 0; bits &= bits - 1) {
+            near.push_back(static_cast<std::uint32_t>(j) + static_cast<std::uint32_t>(std::countr_zero(bits)));
+        }
+    }
+}
+
+void gather_four(const float* x, const float* y, const float* vx, const float* vy, std::size_t padded,
+                 const LineQuery& q, std::vector<std::uint32_t>& near) {
+    gather_lanes<FourFloats>(x, y, vx, vy, padded, q, near);
+}
+
+#if defined(__x86_64__)
+[[gnu::target("avx2,fma")]] void gather_eight(const float* x, const float* y, const float* vx, const float* vy,
+                                              std::size_t padded, const LineQuery& q,
+                                              std::vector<std::uint32_t>& near) {
+    gather_lanes<EightFloats>(x, y, vx, vy, padded, q, near);
+}
+
+[[gnu::target("avx512f,fma")]] void gather_sixteen(const float* x, const float* y, const float* vx, const float* vy,
+                                                   std::size_t padded, const LineQuery& q,
+                                                   std::vector<std::uint32_t>& near) {
+    gather_lanes<SixteenFloats>(x, y, vx, vy, padded, q, near);
+}
+
+bool cpu_supports_lanes(int lanes) {
+    static const bool sixteen = [] {
+        __builtin_cpu_init();  // in case this first runs before the library's constructors
+        return __builtin_cpu_supports("avx512f") != 0 && __builtin_cpu_supports("fma") != 0;
+    }();
+    static const bool eight = __builtin_cpu_supports("avx2") != 0 && __builtin_cpu_supports("fma") != 0;
+    return lanes == 4 || (lanes == 8 && eight) || (lanes == 16 && sixteen);
+}
+#endif
+
+}  // namespace
+
+bool PathLines::supports_lanes(int lanes) {
+#if defined(__x86_64__)
+    return cpu_supports_lanes(lanes);
+#else
+    return lanes == 4;
+#endif
+}
+
+PathLines::PathLines(int lanes) : lanes_(lanes) {
+    if (lanes == 0) {
+        for (const int widest : {16, 8, 4}) {
+            if (supports_lanes(widest)) {
+                lanes_ = widest;
+                break;
+            }
+        }
+    } else if (!supports_lanes(lanes)) {
+        throw std::invalid_argument("PathLines: no " + std::to_string(lanes) + "-lane test on this processor");
+    }
+}
+
+void PathLines::assign(std::span<const Particle> particles, const Box& box) {
+    count_ = particles.size();
+    double fastest = 0.0;
+    for (const Particle& p : particles)
+        fastest = std::max({fastest, std::abs(p.velocity.x()), std::abs(p.velocity.y())});
+    position_scale_ = power_of_two_below(box.side);
+    velocity_scale_ = power_of_two_below(fastest);
+    largest_coordinate_ = box.side * position_scale_;
+    largest_speed_ = 0.0;
+    const std::size_t padded = (count_ + widest_lanes - 1) / widest_lanes * widest_lanes;
+    for (std::vector<float>* component : {&x_, &y_, &vx_, &vy_}) component->assign(padded, 0.0f);
+    for (std::size_t i = 0; i < count_; ++i)
+        set(static_cast<std::uint32_t>(i), particles[i].position, particles[i].velocity);
+}
+
+void PathLines::set(std::uint32_t i, const Vec2& position, const Vec2& velocity) {
+    store_position(i, position);
+    const double vx = velocity.x() * velocity_scale_;
+    const double vy = velocity.y() * velocity_scale_;
+    largest_speed_ = std::max({largest_speed_, std::abs(vx), std::abs(vy)});
+    vx_[i] = static_cast<float>(vx);
+    vy_[i] = static_cast<float>(vy);
+}
+
+void PathLines::gather_near(std::uint32_t i, double reach, std::vector<std::uint32_t>& near) const {
+    // Rounding each scaled value to float moves it by at most 2^-24 of the
+    // largest coordinate or speed (M, V); the differences, products and sum
+    // of the cross product then err by less than 64 * 2^-24 M V, and the
+    // computed |dv| by less than 6 * 2^-24 V. With (a + b)^2 <= 1.25 a^2 +
+    // 5 b^2, and slack for the three float roundings of the comparison:
+    const double reach_scaled = reach * position_scale_;
+    const double error =
+        128.0 * 0x1p-24 * largest_coordinate_ * largest_speed_ + 12.0 * 0x1p-24 * reach_scaled * largest_speed_;
+    LineQuery q{x_[i],
+                y_[i],
+                vx_[i],
+                vy_[i],
+                static_cast<float>(1.3 * reach_scaled * reach_scaled),
+                static_cast<float>(6.0 * error * error)};
+    const std::size_t first = near.size();
+    switch (lanes_) {
+#if defined(__x86_64__)
+    case 16: gather_sixteen(x_.data(), y_.data(), vx_.data(), vy_.data(), x_.size(), q, near); break;
+    case 8: gather_eight(x_.data(), y_.data(), vx_.data(), vy_.data(), x_.size(), q, near); break;
+#endif
+    default: gather_four(x_.data(), y_.data(), vx_.data(), vy_.data(), x_.size(), q, near); break;
+    }
+    // The padding's lines and i's own are not neighbours.
+    near.erase(std::remove_if(near.begin() + static_cast<std::ptrdiff_t>(first), near.end(),
+                              [&](std::uint32_t j) { return j == i || j >= count_; }),
+               near.end());
+}
+
+}  // namespace particlesim

@@ -1,0 +1,90 @@
+#pragma once
+// Every particle's straight path as a line in single precision, and a test
+// of one line against all the others in float lanes: which particles could
+// ever come within a given distance of this one, were both to keep their
+// velocities. For scenes so sparse that a particle changes its velocity a
+// few times in its crossing of the box, testing its new line against every
+// other line costs less than a spatial search every step.
+//
+// Two particles' separation moves along a line, so they come within `reach`
+// of each other only if that line passes within `reach` of the origin:
+// |dp x dv| <= reach |dv|, whatever the time. The lines' points must all be
+// taken at one common time (the epoch), and the test looks both ways in time
+// (the caller drops meetings in the past); it needs no division and no
+// square root.
+//
+// The test is conservative: rounding to float, and the float arithmetic,
+// are covered by a margin derived from the largest coordinate and speed
+// stored, so a pair that the double-precision tests would find is never
+// dropped; a few more pass. Positions and velocities are scaled by powers of
+// two (exactly) so that the largest are about 1: nothing overflows in float,
+// and rounding any value (even a tiny one) errs by at most 2^-24 of them.
+
+#include "core/box.hpp"
+#include "particlesim/particle.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <span>
+#include <vector>
+
+namespace particlesim {
+
+// The distance a pair must be kept within, for a contact distance of 2r:
+// above 2r by far more than the rounding of a double-precision pair test
+// (a few ulps of L in dp) and of free motion along a line over 1024 steps
+// (at most 2^-51 L a step and coordinate while a particle stays in the box).
+inline double contact_reach(const Box& box) {
+    return std::sqrt(box.contact_dist_sq) * (1.0 + 0x1p-30) + 0x1p-36 * box.side;
+}
+
+class PathLines {
+public:
+    // Tests `lanes` lines at a time: 4 (any processor), 8 (x86-64 with AVX2
+    // and FMA) or 16 (AVX-512); 0 picks the widest this processor has. All
+    // keep every pair within reach; the tests run each one there is.
+    explicit PathLines(int lanes = 0);
+    [[nodiscard]] static bool supports_lanes(int lanes);
+
+    // Lines through the particles' positions (all at the epoch) along their
+    // velocities; the box sets the position scale.
+    void assign(std::span<const Particle> particles, const Box& box);
+
+    // Moves every line's point to a new epoch, position_of(i) for each i;
+    // the velocities stay (the particles moved along their lines).
+    template <typename PositionOf>
+    void move_each(PositionOf&& position_of) {
+        for (std::uint32_t i = 0; i < count_; ++i) store_position(i, position_of(i));
+    }
+
+    // Replaces one line: `position` is the particle's position at the epoch
+    // (extrapolated back, if it changed velocity after the epoch).
+    void set(std::uint32_t i, const Vec2& position, const Vec2& velocity);
+
+    // Appends to `near` every j != i whose line may come within `reach` of
+    // i's line (see above), in increasing order.
+    void gather_near(std::uint32_t i, double reach, std::vector<std::uint32_t>& near) const;
+
+    [[nodiscard]] std::size_t size() const { return count_; }
+
+private:
+    void store_position(std::uint32_t i, const Vec2& position) {
+        const double x = position.x() * position_scale_;
+        const double y = position.y() * position_scale_;
+        largest_coordinate_ = std::max(largest_coordinate_, std::max(std::abs(x), std::abs(y)));
+        x_[i] = static_cast<float>(x);
+        y_[i] = static_cast<float>(y);
+    }
+
+    int lanes_ = 4;
+    std::size_t count_ = 0;
+    double position_scale_ = 1.0;  // powers of two
+    double velocity_scale_ = 1.0;
+    double largest_coordinate_ = 0.0;  // scaled, of any line stored since assign()
+    double largest_speed_ = 0.0;       // scaled, of any component stored since assign()
+    // Scaled, one array per component, padded to a whole number of lane groups.
+    std::vector<float> x_, y_, vx_, vy_;
+};
+
+}  // namespace particlesim

@@ -1,0 +1,304 @@
+#include "particlesim/stepped_simulation.hpp"
+#include "particlesim/saved_state.hpp"
+
+#include "core/assert.hpp"
+#include "core/box.hpp"
+#include "core/collision.hpp"
+#include "input/options_check.hpp"
+#include "input/scene_checks.hpp"
+#include "parallel/parallel.hpp"
+#include "particlesim/exact_simulation.hpp"
+#include "search/brute_force_search.hpp"
+#include "search/grid_search.hpp"
+#include "search/pair_search.hpp"
+#include "search/path_search.hpp"
+#include "stepped/step_pipeline.hpp"
+#include "stepped/storage_order.hpp"
+#include "stepped/thread_choice.hpp"
+
+#include <chrono>
+
+namespace particlesim {
+
+namespace {
+
+// Below this many particles the brute-force search is the faster one.
+constexpr std::size_t brute_force_is_faster_below = 48;
+
+// The paths search tests each particle that collided against all the others:
+// it beats the grid while fewer collisions than this are expected in a
+// micro-step (about one in four particles colliding in the default scene's
+// steps, measured in docs/benchmarks.md). Its first micro-step tests all
+// N^2 / 2 pairs, which bounds the scenes it is chosen for.
+constexpr double paths_below_collisions_per_micro_step = 800.0;
+constexpr std::size_t paths_up_to = 20000;
+
+PairSearch automatic_search(const World& world, std::span<const Particle> particles, int substeps) {
+    const std::size_t count = particles.size();
+    if (count < brute_force_is_faster_below) return PairSearch::brute_force;
+    if (count <= paths_up_to &&
+        estimated_events_per_step(world, particles) / substeps < paths_below_collisions_per_micro_step) {
+        return PairSearch::paths;
+    }
+    return PairSearch::grid;
+}
+
+// Automatic sorting by position: from this many particles on (below, they
+// stay in the caches in any order), every this many steps (particles fast
+// enough to scramble the order in fewer steps gain nothing from it, and lose
+// one pass over the particles in this many steps).
+constexpr std::size_t sort_by_position_from = 65536;
+constexpr int automatic_sort_every = 8;
+
+// Up to this many particles, a step whose threads the user did not set
+// runs on one thread whenever short trials find that faster
+// (thread_choice.hpp); larger scenes gain from every thread, quiet or busy.
+constexpr std::size_t threads_by_trials_up_to = 20000;
+
+const SteppedOptions& checked(const SteppedOptions& options) {
+    const OptionsCheck check("particlesim::SteppedOptions");
+    if (options.grid_cells) {
+        check.in_range("grid_cells", *options.grid_cells, 1, max_grid_cells);
+        if (options.pair_search != PairSearch::grid) check.fail("grid_cells needs pair_search = PairSearch::grid");
+    }
+    if (options.threads) check.at_least("threads", *options.threads, 1);
+    check.at_least("substeps", options.substeps, 1);
+    if (options.sort_by_position_every) check.at_least("sort_by_position_every", *options.sort_by_position_every, 0);
+    return options;
+}
+
+}  // namespace
+
+// The particles and every buffer the step pipeline reuses, sized once so that
+// a step allocates nothing.
+class SteppedSimulation::Implementation {
+public:
+    Implementation(const World& world, std::vector<Particle> particles, const SteppedOptions& options)
+        : world_(world), box_(Box::of(world)), options_(checked(options)), particles_(std::move(particles)) {
+        require_valid_scene("particlesim::SteppedSimulation", world_, particles_);
+        const std::size_t count = particles_.size();
+        sort_every_ =
+            options_.sort_by_position_every.value_or(count >= sort_by_position_from ? automatic_sort_every : 0);
+        if (sort_every_ > 0) storage_order_.reserve(count);
+        threads_ = options_.threads.value_or(default_thread_count());
+        thread_choice_ = ThreadChoice(threads_, !options_.threads && count <= threads_by_trials_up_to);
+        search_ = options_.pair_search;
+        if (search_ == PairSearch::automatic) search_ = automatic_search(world_, particles_, options_.substeps);
+        particle_time_.resize(count);
+        partner_.assign(count, no_collision);
+        start_.resize(count);
+        start_.with_motion = search_ == PairSearch::grid;
+        selection_ = SelectionScratch(count);
+        // Room for a busy step from the start, so that steps rarely need to grow it.
+        candidates_.reserve(2 * count + 64);
+        thread_candidates_.resize(static_cast<std::size_t>(threads_));
+        for (ThreadCandidates& thread : thread_candidates_) {
+            thread.found.reserve(count / static_cast<std::size_t>(threads_) + 64);
+        }
+    }
+
+    // A saved run's step count and totals (its particles came to the constructor).
+    void continue_from(std::int64_t steps_done, const StepCounts& totals) {
+        steps_done_ = steps_done;
+        totals_ = totals;
+    }
+
+    void step() {
+        last_step_ = {};
+        if (sort_every_ > 0 && (storage_order_.is_user_order() || steps_done_ % sort_every_ == 0)) {
+            storage_order_.sort_by_position(particles_, box_);
+            particles_reordered();
+            PARTICLESIM_ASSERT(storage_order_.is_permutation(), "the storage order is a permutation of the particles");
+        }
+        // 1.0 / 1 is exactly 1.0: one substep is the plain step rules, bit for bit.
+        const double duration = 1.0 / options_.substeps;
+        const int threads = thread_choice_.threads();
+        const auto begin = std::chrono::steady_clock::now();
+        for (int micro = 0; micro < options_.substeps; ++micro) micro_step(duration, threads);
+        thread_choice_.record(std::chrono::duration<double>(std::chrono::steady_clock::now() - begin).count());
+        if constexpr (validating) require_inside_box();
+        totals_ += last_step_;
+        ++steps_done_;
+    }
+
+    // The particles in the user's order: puts the stored ones back in it
+    // (the next step sorts them again), which changes no result.
+    std::span<const Particle> put_in_user_order() {
+        if (!storage_order_.is_user_order()) {
+            storage_order_.restore_user_order(particles_);
+            particles_reordered();
+        }
+        return particles_;
+    }
+    const World& world() const { return world_; }
+    std::int64_t steps_done() const { return steps_done_; }
+    const StepCounts& last_step() const { return last_step_; }
+    const StepCounts& totals() const { return totals_; }
+    PairSearch pair_search() const { return search_; }
+    int threads() const { return threads_; }
+    std::int64_t steps_on_one_thread() const { return thread_choice_.steps_on_one_thread(); }
+
+private:
+    // What is kept by stored index and must be measured or made afresh once
+    // the particles change places.
+    void particles_reordered() {
+        paths_.forget();
+        start_.measured = false;
+    }
+
+    void require_inside_box() const {
+        for (const Particle& p : particles_) {
+            PARTICLESIM_ASSERT(p.position.x() >= box_.lower && p.position.x() <= box_.upper &&
+                                   p.position.y() >= box_.lower && p.position.y() <= box_.upper,
+                               "every particle is inside [r, L - r] after a step");
+        }
+    }
+
+    // The step start the previous step's free flight measured equals one measured afresh.
+    void require_measured_start_is_current(double duration, int threads) {
+        std::vector<double>& wall_time = validation_.wall_time;
+        StepStart& fresh = validation_.start;
+        wall_time.resize(particles_.size());
+        fresh.with_motion = start_.with_motion;
+        fresh.resize(particles_.size());
+        measure_step_start(particles_, box_, duration, wall_time, fresh, threads);
+        PARTICLESIM_ASSERT(std::equal(wall_time.begin(), wall_time.end(), particle_time_.begin()),
+                           "the measured wall times are those of the particles as they are");
+        for (std::size_t b = 0; b < fresh.blocks.size(); ++b) {
+            const BlockStart& now = fresh.blocks[b];
+            const BlockStart& kept = start_.blocks[b];
+            PARTICLESIM_ASSERT(now.wall_candidates == kept.wall_candidates &&
+                                   now.motion.present == kept.motion.present &&
+                                   (!start_.with_motion || (now.motion.length_sum == kept.motion.length_sum &&
+                                                            now.motion.max_speed == kept.motion.max_speed)),
+                               "the measured blocks are those of the particles as they are");
+        }
+    }
+
+    void micro_step(double duration, int threads) {
+        candidates_.clear();
+        for (ThreadCandidates& thread : thread_candidates_) {
+            thread.found.clear();
+            thread.pair_tests = 0;
+        }
+        const std::span<ThreadCandidates> found =
+            std::span(thread_candidates_).first(static_cast<std::size_t>(threads));
+        // particle_time_ holds each particle's first wall time up to the search ...
+        const std::span<double> wall_time = particle_time_;
+        if (!start_.measured) {
+            measure_step_start(particles_, box_, duration, wall_time, start_, threads);
+        } else if constexpr (validating) {
+            require_measured_start_is_current(duration, threads);
+        }
+        gather_wall_candidates(wall_time, duration, start_, candidates_, threads);
+        const PairSearchInput input{
+            particles_, wall_time, box_, duration,
+            start_.with_motion ? std::span<const BlockStart>(start_.blocks) : std::span<const BlockStart>()};
+        if (search_ == PairSearch::brute_force) {
+            find_pairs_brute_force(input, found);
+        } else if (search_ == PairSearch::paths) {
+            paths_.find_pairs(input, found);
+        } else {
+            grid_.find_pairs(input, options_.grid_cells, found);
+        }
+        // ... then, from the selection on, the time of its accepted collision ...
+        const std::span<double> collision_time = particle_time_;
+        const StepCounts accepted = select_collisions(candidates_, found, CandidateOrder(storage_order_.user_index()),
+                                                      partner_, collision_time, selection_, threads);
+        resolve_collisions(particles_, partner_, collision_time, box_, duration, threads);
+        // ... and the next step's first wall time again, measured as the free flight moves the particles.
+        advance_free_particles(particles_, partner_, box_, duration, particle_time_, start_, threads);
+
+        for (const ThreadCandidates& thread : thread_candidates_) last_step_.pair_tests += thread.pair_tests;
+        last_step_.particle_collisions += accepted.particle_collisions;
+        last_step_.wall_collisions += accepted.wall_collisions;
+    }
+
+    World world_;
+    Box box_;
+    SteppedOptions options_;
+    PairSearch search_ = PairSearch::grid;  // never automatic
+    int threads_ = 1;                       // the most a step uses
+    ThreadChoice thread_choice_{1, false};
+    int sort_every_ = 0;  // steps; 0: never
+    std::vector<Particle> particles_;
+    StorageOrder storage_order_;
+
+    // By particle, one array for two times in turn (8 bytes a particle
+    // fewer): up to the search, its first wall time; from the selection on,
+    // the time of its accepted collision. micro_step() names each use.
+    std::vector<double> particle_time_;
+    StepStart start_;  // the wall times' blocks, measured by the previous step's advance when it could
+    std::vector<std::uint32_t> partner_;  // by particle: its partner, no_collision or wall_collision
+    SelectionScratch selection_;
+    std::vector<Collision> candidates_;
+    std::vector<ThreadCandidates> thread_candidates_;
+    GridSearch grid_;
+    PathSearch paths_;
+    struct {  // scratch of the invariant checks (PARTICLESIM_VALIDATE), reused
+        std::vector<double> wall_time;
+        StepStart start;
+    } validation_;
+
+    std::int64_t steps_done_ = 0;
+    StepCounts last_step_;
+    StepCounts totals_;
+};
+
+SteppedSimulation::SteppedSimulation(const World& world, std::vector<Particle> particles, const SteppedOptions& options)
+    : engine_(std::make_unique<Implementation>(world, std::move(particles), options)) {}
+
+SteppedSimulation SteppedSimulation::restore(const World& world, std::istream& saved, const SteppedOptions& options) {
+    SavedStateReader in(saved, "particlesim::SteppedSimulation::restore: the saved state is damaged");
+    in.expect("stepped-engine-state");
+    in.expect("1");
+    const std::uint64_t count = in.count(0xfffffffeU);
+    const auto steps_done = static_cast<std::int64_t>(in.count(INT64_MAX));
+    const StepCounts totals = read_counts(in);
+    std::vector<Particle> particles;  // grows with the input, whatever its header says
+    for (std::uint64_t i = 0; i < count; ++i) particles.push_back(read_particle(in));
+    SteppedSimulation simulation(world, std::move(particles), options);
+    simulation.engine_->continue_from(steps_done, totals);
+    return simulation;
+}
+
+void SteppedSimulation::save(std::ostream& out) const {
+    const std::span<const Particle> particles = this->particles();
+    out << "stepped-engine-state 1\n";
+    save_number(out, std::uint64_t{particles.size()});
+    save_number(out, static_cast<std::uint64_t>(steps_done()));
+    save_counts(out, totals());
+    out << '\n';
+    for (const Particle& p : particles) {
+        save_particle(out, p);
+        out << '\n';
+    }
+}
+
+SteppedSimulation::~SteppedSimulation() = default;
+SteppedSimulation::SteppedSimulation(SteppedSimulation&&) noexcept = default;
+SteppedSimulation& SteppedSimulation::operator=(SteppedSimulation&&) noexcept = default;
+
+void SteppedSimulation::step() { engine_->step(); }
+// Logically const: putting the stored particles back in the user's order
+// changes no result (and the pointer does not make the engine const).
+std::span<const Particle> SteppedSimulation::particles() const { return engine_->put_in_user_order(); }
+const World& SteppedSimulation::world() const { return engine_->world(); }
+std::int64_t SteppedSimulation::steps_done() const { return engine_->steps_done(); }
+const StepCounts& SteppedSimulation::last_step() const { return engine_->last_step(); }
+const StepCounts& SteppedSimulation::totals() const { return engine_->totals(); }
+PairSearch SteppedSimulation::pair_search() const { return engine_->pair_search(); }
+int SteppedSimulation::threads() const { return engine_->threads(); }
+std::int64_t SteppedSimulation::steps_on_one_thread() const { return engine_->steps_on_one_thread(); }
+
+const char* pair_search_name(PairSearch search) {
+    switch (search) {
+    case PairSearch::automatic: return "auto";
+    case PairSearch::brute_force: return "brute";
+    case PairSearch::grid: return "grid";
+    case PairSearch::paths: return "paths";
+    }
+    return "?";
+}
+
+}  // namespace particlesim
