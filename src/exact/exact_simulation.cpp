@@ -8,6 +8,7 @@
 #include "core/uniform_grid.hpp"
 #include "exact/cell_list.hpp"
 #include "exact/event_calendar.hpp"
+#include "exact/exact_tuning.hpp"
 #include "input/options_check.hpp"
 #include "input/scene_checks.hpp"
 #include "io/number_format.hpp"
@@ -40,8 +41,8 @@ namespace {
 // A step may take this many events beyond the prediction before it counts
 // as runaway: generous (dense clusters collide far more often than an ideal
 // gas), yet reached within about a second.
-constexpr double runaway_floor = 1e6;
-constexpr double runaway_factor = 100.0;
+constexpr double runaway_floor = exact_tuning::runaway_floor;
+constexpr double runaway_factor = exact_tuning::runaway_factor;
 
 double event_budget(const ExactOptions& options, double predicted, std::size_t count) {
     if (options.max_events_per_step) return static_cast<double>(*options.max_events_per_step);
@@ -55,8 +56,10 @@ double event_budget(const ExactOptions& options, double predicted, std::size_t c
 // way the cell count stays O(N) (the choice is measured in docs/benchmarks.md).
 int cells_per_side_for(const World& world, std::size_t particle_count) {
     const double count = static_cast<double>(particle_count);
-    const double by_count = std::ceil(0.5 * std::sqrt(count));
-    const double by_free_path = std::ceil(8.0 * world.radius * count / world.box_size);
+    const double by_count = std::ceil(std::sqrt(count / exact_tuning::particles_per_cell));
+    // The mean free path is 1 / (4 r N / L^2).
+    const double by_free_path =
+        std::ceil(4.0 * world.radius * count / (exact_tuning::cell_in_free_paths * world.box_size));
     return UniformGrid::cells_per_side(world.box_size, 2.0 * world.radius, std::max(by_count, by_free_path));
 }
 
@@ -65,22 +68,20 @@ int cells_per_side_for(const World& world, std::size_t particle_count) {
 // N) against events with the cells (walls, collisions and crossings, each
 // testing the disks of a few cells). Speeds cancel, so the choice depends
 // on N, r and L alone, and a restored run makes the one its start made.
-// Costs fitted to runs of both from 500 to 16000 disks, sparse to dense
-// (docs/benchmarks.md): an event with the lines about 200 ns plus 0.06 ns a
-// line (AVX-512), an event with the cells 110 ns. Dense scenes' stale pair
-// predictions make the lines dearer than this counts, hence the margin; and
-// no more disks than were measured (the first predictions test all N^2 / 2
-// pairs).
+// The costs of an event each way are exact_tuning's; dense scenes' stale
+// pair predictions make the lines dearer than this counts, hence the margin;
+// and no more disks than were measured (the first predictions test all
+// N^2 / 2 pairs).
 bool lines_are_cheaper(const World& world, std::size_t particle_count, int cells_per_side) {
-    constexpr std::size_t lines_up_to = 20000;
+    using namespace exact_tuning;
     if (particle_count > lines_up_to) return false;
     const double count = static_cast<double>(particle_count);
     const double walls = count / world.box_size;
     const double pairs = 2.0 * std::sqrt(2.0) * count * count * world.radius / (world.box_size * world.box_size);
     const double crossings = count * cells_per_side / world.box_size;
-    const double with_lines = (walls + 2.0 * pairs) * (200.0 + 0.06 * count);
-    const double with_cells = (walls + pairs + crossings) * 110.0;
-    return with_lines < 0.8 * with_cells;
+    const double with_lines = (walls + 2.0 * pairs) * (line_event_ns + line_test_ns * count);
+    const double with_cells = (walls + pairs + crossings) * cell_event_ns;
+    return with_lines < lines_chosen_below * with_cells;
 }
 
 UniformGrid neighbour_grid(const World& world, std::size_t particle_count, std::optional<int> cells_per_side) {
@@ -695,14 +696,14 @@ private:
     double event_budget_;                 // per step
     // Below this, the engine's state mostly fits in the caches, and the look
     // ahead's own work costs more than it saves (docs/benchmarks.md).
-    static constexpr std::uint32_t look_ahead_from = 32768;
+    static constexpr std::uint32_t look_ahead_from = exact_tuning::look_ahead_from;
     // The prefetching's four stages, each a few buckets nearer than the last
     // (prefetch_coming_events()).
     bool look_ahead_;
-    EventCalendar::LookAhead look_entries_{8};
-    EventCalendar::LookAhead look_particles_{6};
-    EventCalendar::LookAhead look_heads_{4};
-    EventCalendar::LookAhead look_members_{2};
+    EventCalendar::LookAhead look_entries_{exact_tuning::look_entries_buckets};
+    EventCalendar::LookAhead look_particles_{exact_tuning::look_particles_buckets};
+    EventCalendar::LookAhead look_heads_{exact_tuning::look_heads_buckets};
+    EventCalendar::LookAhead look_members_{exact_tuning::look_members_buckets};
 };
 
 namespace {

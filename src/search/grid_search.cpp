@@ -4,6 +4,7 @@
 #include "core/uniform_grid.hpp"
 #include "parallel/parallel.hpp"
 #include "search/float_bounds_array.hpp"
+#include "stepped/stepped_tuning.hpp"
 
 #include <algorithm>
 #include <atomic>
@@ -33,7 +34,7 @@ namespace {
 // in time, each binned as a box of its own: fast particles then cost a few
 // more boxes instead of joining the large boxes, which meet each other in a
 // quadratic loop. Longer paths stay large.
-constexpr int max_pieces = 8;
+constexpr int max_pieces = stepped_tuning::max_pieces;
 
 // Marks in cell_of, above every cell index: not moving in the slice, large,
 // and cut into k pieces (large_marker - k).
@@ -41,11 +42,11 @@ constexpr std::uint32_t absent_marker = std::numeric_limits<std::uint32_t>::max(
 constexpr std::uint32_t large_marker = absent_marker - 1;
 constexpr std::uint32_t first_piece_marker = large_marker - max_pieces;
 
-constexpr int max_slices = 64;
+constexpr int max_slices = stepped_tuning::max_slices;
 // The cells' places are summed in this many ranges of cells a worker.
-constexpr std::size_t cell_ranges_per_worker = 8;
+constexpr std::size_t cell_ranges_per_worker = stepped_tuning::cell_ranges_per_worker;
 // Below this many particles, threads take whole slices.
-constexpr std::size_t slice_parallel_below = 50000;
+constexpr std::size_t slice_parallel_below = stepped_tuning::slice_parallel_below;
 
 // Generous against rounding: the contact time and the swept boxes carry
 // errors of a few ulps of the coordinates and velocities; 1e-8 relative is
@@ -59,10 +60,10 @@ constexpr int float_safe_exponent = 100;
 // Automatic layouts cut slices so that a typical path in a slice is this many
 // particle spacings long. Fewer, longer slices bin fewer boxes but test more
 // pairs; 4/3 was the fastest from N = 1000 to 32000 (see docs/benchmarks.md).
-constexpr double slice_sweep_in_spacings = 4.0 / 3.0;
+constexpr double slice_sweep_in_spacings = stepped_tuning::slice_sweep_in_spacings;
 // Forced grids cut slices so that a typical path covers at most half a cell,
 // so that most boxes fit their cell.
-constexpr double slice_sweep_in_forced_cells = 0.5;
+constexpr double slice_sweep_in_forced_cells = stepped_tuning::slice_sweep_in_forced_cells;
 
 // A box that fits a cell with this slack keeps its neighbours within one cell
 // even after the rounding of the cell index computation.
@@ -411,7 +412,7 @@ template <std::uint32_t block_groups, std::uint32_t group_lanes = FloatBoundsArr
 // The row above is first read here, and only at hits, a pattern the
 // processor's prefetchers miss: its motion states are fetched this many
 // cells ahead (docs/benchmarks.md).
-constexpr int prefetch_cells_ahead = 16;
+constexpr int prefetch_cells_ahead = stepped_tuning::scan_fetch_cells_ahead;
 
 // The half stencil of every cell in row `cy`: the rest of the cell and the
 // cell to the east (adjacent in the cell order, so one range), then the

@@ -4,6 +4,7 @@
 #include "core/physics.hpp"
 #include "core/prefetch.hpp"
 #include "parallel/parallel.hpp"
+#include "stepped/stepped_tuning.hpp"
 
 #include <algorithm>
 #include <array>
@@ -54,7 +55,7 @@ void gather_wall_candidates(std::span<const double> wall_time, double duration, 
 namespace {
 
 // Candidates a parallel pass of the selection hands out at a time.
-constexpr std::int64_t selection_block = 4096;
+constexpr std::int64_t selection_block = stepped_tuning::selection_block;
 
 }  // namespace
 
@@ -305,8 +306,8 @@ void resolve_four_pairs(std::span<PairAtContact, 4> pairs, const Box& box, doubl
 
 void resolve_collisions(std::span<Particle> particles, std::span<const std::uint32_t> partner,
                         std::span<const double> collision_time, const Box& box, double duration, int threads) {
-    constexpr std::int64_t block = 1024;
-    constexpr std::size_t pair_lookahead = 16;
+    constexpr std::int64_t block = stepped_tuning::resolution_block;
+    constexpr std::size_t pair_lookahead = stepped_tuning::resolution_fetch_ahead;
     const auto count = static_cast<std::int64_t>(particles.size());
     const int workers = worker_count(static_cast<std::size_t>(threads), count, min_particles_per_thread);
     // In storage order, block by block, reading only per-particle arrays: a

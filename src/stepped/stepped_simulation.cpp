@@ -13,6 +13,7 @@
 #include "search/pair_search.hpp"
 #include "search/path_search.hpp"
 #include "stepped/step_pipeline.hpp"
+#include "stepped/stepped_tuning.hpp"
 #include "stepped/storage_order.hpp"
 #include "stepped/thread_choice.hpp"
 
@@ -22,38 +23,17 @@ namespace particlesim {
 
 namespace {
 
-// Below this many particles the brute-force search is the faster one.
-constexpr std::size_t brute_force_is_faster_below = 48;
-
-// The paths search tests each particle that collided against all the others:
-// it beats the grid while fewer collisions than this are expected in a
-// micro-step (about one in four particles colliding in the default scene's
-// steps, measured in docs/benchmarks.md). Its first micro-step tests all
-// N^2 / 2 pairs, which bounds the scenes it is chosen for.
-constexpr double paths_below_collisions_per_micro_step = 800.0;
-constexpr std::size_t paths_up_to = 20000;
+using namespace stepped_tuning;
 
 PairSearch automatic_search(const World& world, std::span<const Particle> particles, int substeps) {
     const std::size_t count = particles.size();
-    if (count < brute_force_is_faster_below) return PairSearch::brute_force;
+    if (count < brute_force_below) return PairSearch::brute_force;
     if (count <= paths_up_to &&
         estimated_events_per_step(world, particles) / substeps < paths_below_collisions_per_micro_step) {
         return PairSearch::paths;
     }
     return PairSearch::grid;
 }
-
-// Automatic sorting by position: from this many particles on (below, they
-// stay in the caches in any order), every this many steps (particles fast
-// enough to scramble the order in fewer steps gain nothing from it, and lose
-// one pass over the particles in this many steps).
-constexpr std::size_t sort_by_position_from = 65536;
-constexpr int automatic_sort_every = 8;
-
-// Up to this many particles, a step whose threads the user did not set
-// runs on one thread whenever short trials find that faster
-// (thread_choice.hpp); larger scenes gain from every thread, quiet or busy.
-constexpr std::size_t threads_by_trials_up_to = 20000;
 
 const SteppedOptions& checked(const SteppedOptions& options) {
     const OptionsCheck check("particlesim::SteppedOptions");
@@ -77,8 +57,7 @@ public:
         : world_(world), box_(Box::of(world)), options_(checked(options)), particles_(std::move(particles)) {
         require_valid_scene("particlesim::SteppedSimulation", world_, particles_);
         const std::size_t count = particles_.size();
-        sort_every_ =
-            options_.sort_by_position_every.value_or(count >= sort_by_position_from ? automatic_sort_every : 0);
+        sort_every_ = options_.sort_by_position_every.value_or(count >= sort_by_position_from ? sort_every_steps : 0);
         if (sort_every_ > 0) storage_order_.reserve(count);
         threads_ = options_.threads.value_or(default_thread_count());
         thread_choice_ = ThreadChoice(threads_, !options_.threads && count <= threads_by_trials_up_to);

@@ -2,6 +2,7 @@
 
 #include "core/prefetch.hpp"
 #include "core/uniform_grid.hpp"
+#include "stepped/stepped_tuning.hpp"
 
 #include <algorithm>
 #include <bit>
@@ -15,12 +16,12 @@ namespace {
 
 // About two particles a cell: fine enough that a grid cell's particles sit
 // together in memory, coarse enough that the cell counts stay small.
-constexpr double particles_per_cell = 2.0;
+constexpr double particles_per_cell = stepped_tuning::sort_particles_per_cell;
 
 // Sorted again after a few steps, a large scene's particles move at most a
 // few rows of cells in the order (a row holds about sqrt(2 N) particles), so
 // a window this long holds every particle displaced ahead of its turn.
-constexpr std::size_t max_window = 16384;
+constexpr std::size_t max_window = stepped_tuning::sort_window;
 
 UniformGrid sorting_grid(double box_size, std::size_t count) {
     const double wanted = std::sqrt(static_cast<double>(count) / particles_per_cell);
@@ -106,7 +107,7 @@ void StorageOrder::move_along_cycles(std::span<Particle> particles) {
     // destination, which is carried on. The places ahead on the cycle are
     // fetched early: every place is a cache miss, and the chain of
     // destinations is the only dependent load.
-    constexpr int lookahead = 8;
+    constexpr int lookahead = stepped_tuning::sort_fetch_ahead;
     std::vector<std::uint32_t>& destination = stored_index_;
     for (std::size_t start = 0; start < particles.size(); ++start) {
         if (destination[start] == start) continue;

@@ -8,6 +8,8 @@
 // then a longer stretch with the faster, and a trial again. Every thread
 // count gives the same bytes, so only the speed depends on the choice.
 
+#include "stepped/stepped_tuning.hpp"
+
 #include <cstdint>
 
 namespace particlesim {
@@ -18,10 +20,10 @@ public:
     // the first step of each block not counted (it pays for the switch:
     // a worker woken, caches filled on the other core); then steps run
     // with the faster before the next trial.
-    static constexpr int block_steps = 4;
-    static constexpr int trial_blocks = 4;
-    static constexpr int run_steps = 240;
-    static constexpr int warming_steps = 8;
+    static constexpr int block_steps = stepped_tuning::trial_block_steps;
+    static constexpr int trial_blocks = stepped_tuning::trial_blocks;
+    static constexpr int run_steps = stepped_tuning::trial_run_steps;
+    static constexpr int warming_steps = stepped_tuning::trial_warm_up_steps;
 
     // `threads`: the most a step may use. Without `measured`, every step uses them all.
     ThreadChoice(int threads, bool measured) : most_(threads), measured_(measured && threads > 1) {}

@@ -1,0 +1,53 @@
+#pragma once
+// The exact engine's tuning: thresholds that choose how events are found,
+// never which events happen (every value gives the same events; the tests
+// force the other choices too). Measured on the 2-core benchmark machine
+// (docs/benchmarks.md); figures that depend on the machine say so.
+
+#include <cstdint>
+
+namespace particlesim::exact_tuning {
+
+// --- Runaway steps (TooManyEvents)
+
+// Events a step may take beyond the prediction before it counts as runaway:
+// floor + factor x (predicted events + particles). Generous (dense clusters
+// collide far more often than an ideal gas), yet reached within about a
+// second.
+inline constexpr double runaway_floor = 1e6;
+inline constexpr double runaway_factor = 100.0;
+
+// --- Neighbour cells
+
+// Cells are at least a diameter wide; in a sparse box about this many
+// particles share one.
+inline constexpr double particles_per_cell = 4.0;
+// In a dense box a cell is no wider than this fraction of the mean free path.
+inline constexpr double cell_in_free_paths = 0.5;
+
+// --- One cell and the particles' lines instead of cells (sparse scenes)
+
+// A cost model of one event, fitted to runs of both ways from 500 to 16 000
+// disks, sparse to dense. Machine dependent (nanoseconds of the benchmark
+// machine, AVX-512): only their ratios matter.
+inline constexpr double line_event_ns = 200.0;       // an event with the lines ...
+inline constexpr double line_test_ns = 0.06;         // ... plus this a line tested
+inline constexpr double cell_event_ns = 110.0;       // an event with the cells
+inline constexpr double lines_chosen_below = 0.8;    // lines' cost / cells' cost; the margin covers stale predictions
+inline constexpr std::uint32_t lines_up_to = 20000;  // particles: the first predictions test all N^2 / 2 pairs
+
+// --- The look ahead along the queue
+
+// Particles from which each event prefetches what the next events will
+// read: below, the state mostly fits in the caches and the prefetching's own
+// work costs more than it saves.
+inline constexpr std::uint32_t look_ahead_from = 32768;
+// The four stages' distances in calendar buckets: entries and links, then
+// particles, then partners and cell heads, then the cells' first members
+// ((16, 12, 8, 4) to (4, 3, 2, 1) measured within noise of one another).
+inline constexpr std::uint32_t look_entries_buckets = 8;
+inline constexpr std::uint32_t look_particles_buckets = 6;
+inline constexpr std::uint32_t look_heads_buckets = 4;
+inline constexpr std::uint32_t look_members_buckets = 2;
+
+}  // namespace particlesim::exact_tuning

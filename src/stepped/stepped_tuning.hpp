@@ -1,0 +1,83 @@
+#pragma once
+// The stepped engine's tuning: every threshold that chooses how a step is
+// computed, never what it computes (each value gives the same bytes; the
+// tests force the other choices too). Measured on the 2-core benchmark
+// machine (docs/benchmarks.md); figures that depend on the machine say so.
+
+#include <cstddef>
+#include <cstdint>
+
+namespace particlesim::stepped_tuning {
+
+// --- Which pair search `PairSearch::automatic` takes (stepped_simulation.cpp)
+
+// Particles below which the brute force beats the grid (both cost 0.2 to
+// 2 us a step at N = 4 and 16; the grid wins from N = 64).
+inline constexpr std::size_t brute_force_below = 48;
+// Expected collisions a micro-step below which the paths search beats the
+// grid: it tests each particle that collided against all the others. Machine
+// dependent: the crossing point measured about 800 to 2000 here.
+inline constexpr double paths_below_collisions_per_micro_step = 800.0;
+// Particles up to which the paths search may be chosen: its first
+// micro-step tests all N^2 / 2 pairs.
+inline constexpr std::size_t paths_up_to = 20000;
+
+// --- Storage sorted by position (stepped/storage_order.*)
+
+// Particles from which the storage is sorted by position: below, the state
+// stays in the caches in any order.
+inline constexpr std::size_t sort_by_position_from = 65536;
+// Steps between sorts: faster particles scramble the order sooner, and each
+// sort costs a pass over the particles (16 and 32 measured no different).
+inline constexpr int sort_every_steps = 8;
+// Cells of the sort's grid hold about this many particles.
+inline constexpr double sort_particles_per_cell = 2.0;
+// Places a displaced particle may wait for its turn when a scene sorted a
+// few steps ago is sorted again (particles: 48 bytes each).
+inline constexpr std::size_t sort_window = 16384;
+// Hops along a permutation cycle fetched ahead when moving particles.
+inline constexpr int sort_fetch_ahead = 8;
+
+// --- Threads (parallel/parallel.hpp, stepped/thread_choice.hpp)
+
+// Particles up to which a step whose threads the user did not set times one
+// thread against all now and then and runs the faster: a small scene's step
+// (tens of microseconds) loses to a second core that something else holds.
+inline constexpr std::size_t threads_by_trials_up_to = 20000;
+// The trials: after `trial_warm_up_steps`, `trial_blocks` blocks of
+// `trial_block_steps` on each count (the first step of a block, which pays
+// for the switch, not counted); then the faster count runs `trial_run_steps`.
+inline constexpr int trial_warm_up_steps = 8;
+inline constexpr int trial_block_steps = 4;
+inline constexpr int trial_blocks = 4;
+inline constexpr int trial_run_steps = 240;
+
+// --- Blocks of the stages (stepped/step_pipeline.cpp)
+
+// Candidates a block of the selection's passes holds.
+inline constexpr std::int64_t selection_block = 4096;
+// Particles a block of the resolution lists at once, and how many listed
+// pairs ahead their partners are fetched.
+inline constexpr std::int64_t resolution_block = 1024;
+inline constexpr std::size_t resolution_fetch_ahead = 16;
+
+// --- The grid search (search/grid_search.cpp)
+
+// A slice's typical path, in mean particle spacings: fewer, longer slices bin
+// fewer boxes but test more pairs (1.5 to 3 measured the same on 2 threads).
+inline constexpr double slice_sweep_in_spacings = 4.0 / 3.0;
+// With a forced grid, a slice's typical path in cells.
+inline constexpr double slice_sweep_in_forced_cells = 0.5;
+// The most slices a step is cut into.
+inline constexpr int max_slices = 64;
+// The most pieces a long path is cut into before it is a large box.
+inline constexpr int max_pieces = 8;
+// Particles below which threads take whole slices each; from here on a
+// step has one slice, which the threads share.
+inline constexpr std::size_t slice_parallel_below = 50000;
+// Ranges of cells each worker sums when the threads share a slice's binning.
+inline constexpr std::size_t cell_ranges_per_worker = 8;
+// Cells ahead in the row above whose motion states the scan fetches.
+inline constexpr int scan_fetch_cells_ahead = 16;
+
+}  // namespace particlesim::stepped_tuning
