@@ -210,17 +210,21 @@ void loaded_benchmark(bool quick) {
     }
 }
 
-void programs_benchmark(bool quick) {
-    const std::string simcli = simcli_path("programs");
-    const std::optional<std::string> baseline = program_from("PARTICLESIM_BASELINE_SIMCLI");
-    const std::optional<std::string> sequential = program_from("ORIGINAL_SEQUENTIAL");
-    const std::optional<std::string> openmp = program_from("ORIGINAL_OPENMP");
-    const std::optional<std::string> edmd = program_from("EDMD_HARDDISKS");
-    const std::string dir = temporary_directory();
-    const int runs = quick ? 3 : 5;
-    print_header();
+namespace {
 
-    // Stepped scenes: every program reads the same file (all particles listed).
+// The programs compared, the scenes' directory and the runs of each.
+struct Programs {
+    std::string simcli;
+    std::optional<std::string> baseline;
+    std::optional<std::string> sequential;
+    std::optional<std::string> openmp;
+    std::optional<std::string> edmd;
+    std::string dir;
+    int runs;
+};
+
+// Stepped scenes: every program reads the same file (all particles listed).
+void stepped_rows(const Programs& p, bool quick) {
     struct SteppedCase {
         std::string scene;
         World world;
@@ -240,7 +244,7 @@ void programs_benchmark(bool quick) {
     if (!quick) stepped.push_back({"N=32000 S=1000", sparse, 32000, 1000, std::nullopt, false});
     for (const SteppedCase& c : stepped) {
         if (!wanted(c.scene)) continue;
-        const std::string path = write_scene_file(dir + "/scene.in", c.world, c.count, c.steps, c.speeds);
+        const std::string path = write_scene_file(p.dir + "/scene.in", c.world, c.count, c.steps, c.speeds);
         const std::string text = run_process::slurp(path);
         struct Command {
             std::string name;
@@ -249,13 +253,13 @@ void programs_benchmark(bool quick) {
         };
         std::vector<Command> commands;
         for (const char* threads : {"1", "2"}) {
-            commands.push_back({std::string("simcli -t ") + threads, {simcli, "-t", threads, path}, false});
-            if (baseline)
-                commands.push_back({std::string("baseline -t ") + threads, {*baseline, "-t", threads, path}, false});
+            commands.push_back({std::string("simcli -t ") + threads, {p.simcli, "-t", threads, path}, false});
+            if (p.baseline)
+                commands.push_back({std::string("baseline -t ") + threads, {*p.baseline, "-t", threads, path}, false});
         }
-        if (c.original_too && sequential) commands.push_back({"original sequential", {*sequential}, true});
-        if (c.original_too && openmp) commands.push_back({"original OpenMP 2 threads", {*openmp, "2"}, true});
-        const int case_runs = c.steps >= 1000 && c.count >= 32000 ? 1 : (c.count >= 1000000 ? 3 : runs);
+        if (c.original_too && p.sequential) commands.push_back({"original sequential", {*p.sequential}, true});
+        if (c.original_too && p.openmp) commands.push_back({"original OpenMP 2 threads", {*p.openmp, "2"}, true});
+        const int case_runs = c.steps >= 1000 && c.count >= 32000 ? 1 : (c.count >= 1000000 ? 3 : p.runs);
         std::vector<Row> rows;
         for (const Command& command : commands) {
             rows.push_back(
@@ -268,7 +272,9 @@ void programs_benchmark(bool quick) {
         }
         for (const Row& row : rows) print_row(row);
     }
+}
 
+void exact_rows(const Programs& p, bool quick) {
     // The exact engine against EDMD's hard disks, area fraction 0.3. EDMD's
     // box is periodic and its disks have diameter 1 and temperature 1: run
     // for a time that gives about as many collisions as ours. Both rates are
@@ -284,10 +290,10 @@ void programs_benchmark(bool quick) {
         const std::string scene = "exact N=" + std::to_string(c.count) + " area fraction 0.3";
         if (!wanted(scene)) continue;
         const World world = dense_gas_world(c.count);
-        const std::string path = write_scene_file(dir + "/exact.in", world, c.count, c.steps, SpeedRange{0.1, 1.0});
-        const std::string empty = write_scene_file(dir + "/exact0.in", world, c.count, 0, SpeedRange{0.1, 1.0});
-        const std::string edmd_input = dir + "/edmd.dat";
-        const std::string edmd_empty = dir + "/edmd0.dat";
+        const std::string path = write_scene_file(p.dir + "/exact.in", world, c.count, c.steps, SpeedRange{0.1, 1.0});
+        const std::string empty = write_scene_file(p.dir + "/exact0.in", world, c.count, 0, SpeedRange{0.1, 1.0});
+        const std::string edmd_input = p.dir + "/edmd.dat";
+        const std::string edmd_empty = p.dir + "/edmd0.dat";
         const auto edmd_parameters = [&](const std::string& file, double time) {
             std::ofstream out(file);
             out << "N_particles " << c.count << "\narea_fraction 0.3\ninitial_configuration random\ntime " << time
@@ -301,7 +307,7 @@ void programs_benchmark(bool quick) {
         Row ours_events{scene, "simcli --engine exact", "quiet", {}, 0.0, "events"};
         Row theirs{scene, "EDMD mdhdd", "quiet", {}, 0.0, "collisions"};
         Row ours_previous{scene, "baseline --engine exact", "quiet", {}, 0.0, "collisions"};
-        const int exact_runs = c.count >= 1000000 ? 3 : runs;
+        const int exact_runs = c.count >= 1000000 ? 3 : p.runs;
         for (int round = 0; round < exact_runs; ++round) {
             // Returns the run's --stats lines.
             const auto time_simcli = [&](const std::string& program, Row& row) {
@@ -311,13 +317,13 @@ void programs_benchmark(bool quick) {
                 row.seconds.push_back(run.seconds < 0 || setup.seconds < 0 ? -1.0 : run.seconds - setup.seconds);
                 return run.err;
             };
-            const std::string stats = time_simcli(simcli, ours);
+            const std::string stats = time_simcli(p.simcli, ours);
             ours_events.seconds.push_back(ours.seconds.back());
             ours_events.work = simcli_events(stats);
-            if (baseline) time_simcli(*baseline, ours_previous);
-            if (edmd) {
+            if (p.baseline) time_simcli(*p.baseline, ours_previous);
+            if (p.edmd) {
                 // mdhdd writes its snapshots into the working directory.
-                const std::string in_dir = "cd " + dir + " && exec " + *edmd + " ";
+                const std::string in_dir = "cd " + p.dir + " && exec " + *p.edmd + " ";
                 const Timed run = run_timed({"/bin/sh", "-c", in_dir + edmd_input});
                 const Timed setup = run_timed({"/bin/sh", "-c", in_dir + edmd_empty});
                 theirs.work = edmd_collisions(run.out);
@@ -326,19 +332,22 @@ void programs_benchmark(bool quick) {
         }
         print_row(ours);
         if (ours_events.work > 0.0) print_row(ours_events);
-        if (baseline) print_row(ours_previous);
-        if (edmd) print_row(theirs);
+        if (p.baseline) print_row(ours_previous);
+        if (p.edmd) print_row(theirs);
     }
+}
 
+void exact_default_scene_rows(const Programs& p) {
+    const World sparse{20000.0, 1.0};
     // The exact engine on the default scene: walls, which EDMD's periodic box has not.
     if (wanted("exact default scene")) {
-        const std::string path = write_scene_file(dir + "/default.in", sparse, 1000, 1000, std::nullopt);
-        std::vector<std::pair<std::string, std::string> > programs{{"simcli --engine exact", simcli}};
-        if (baseline) programs.emplace_back("baseline --engine exact", *baseline);
+        const std::string path = write_scene_file(p.dir + "/default.in", sparse, 1000, 1000, std::nullopt);
+        std::vector<std::pair<std::string, std::string> > programs{{"simcli --engine exact", p.simcli}};
+        if (p.baseline) programs.emplace_back("baseline --engine exact", *p.baseline);
         std::vector<Row> rows;
         for (const auto& [name, program] : programs)
             rows.push_back({"exact default scene", name, "quiet", {}, 0.0, "collisions"});
-        for (int round = 0; round < runs; ++round) {
+        for (int round = 0; round < p.runs; ++round) {
             for (std::size_t k = 0; k < programs.size(); ++k) {
                 const Timed run =
                     run_timed({programs[k].second, "--engine", "exact", "--stats", path, "-o", "/dev/null"});
@@ -348,6 +357,22 @@ void programs_benchmark(bool quick) {
         }
         for (const Row& row : rows) print_row(row);
     }
+}
+
+}  // namespace
+
+void programs_benchmark(bool quick) {
+    const Programs programs{simcli_path("programs"),
+                            program_from("PARTICLESIM_BASELINE_SIMCLI"),
+                            program_from("ORIGINAL_SEQUENTIAL"),
+                            program_from("ORIGINAL_OPENMP"),
+                            program_from("EDMD_HARDDISKS"),
+                            temporary_directory(),
+                            quick ? 3 : 5};
+    print_header();
+    stepped_rows(programs, quick);
+    exact_rows(programs, quick);
+    exact_default_scene_rows(programs);
 }
 
 }  // namespace bench

@@ -4,13 +4,7 @@
 # main.cpp) that finds the package with find_package(particlesim).
 # Inputs: BUILD_DIR, WORK_DIR, CONSUMER_DIR, LIBRARY_USAGE_SOURCE, APPS_BUILT.
 file(REMOVE_RECURSE "${WORK_DIR}")
-function(run_step)
-  execute_process(COMMAND ${ARGV} RESULT_VARIABLE status OUTPUT_VARIABLE out ERROR_VARIABLE err)
-  if(NOT status EQUAL 0)
-    message(FATAL_ERROR "failed (${status}): ${ARGV}\n${out}\n${err}")
-  endif()
-  set(last_output "${out}" PARENT_SCOPE)
-endfunction()
+include("${CMAKE_CURRENT_LIST_DIR}/run_step.cmake")
 set(prefix "${WORK_DIR}/prefix")
 run_step(${CMAKE_COMMAND} --install "${BUILD_DIR}" --prefix "${prefix}")
 
@@ -43,3 +37,17 @@ if(NOT last_output MATCHES "wall and [0-9]+ particle collisions in 100 steps\nex
   message(FATAL_ERROR "unexpected consumer output:\n${last_output}")
 endif()
 message(STATUS "consumer ran:\n${last_output}")
+
+# Found twice, the second time with the grader's component: the config
+# defines its targets once and knows the component.
+file(WRITE "${WORK_DIR}/twice/CMakeLists.txt" [=[
+cmake_minimum_required(VERSION 3.25)
+project(particlesim_found_twice LANGUAGES CXX)
+find_package(particlesim 0.1 REQUIRED)
+find_package(particlesim 0.1 REQUIRED COMPONENTS check)
+if(NOT TARGET particlesim::check)
+  message(FATAL_ERROR "particlesim::check is missing")
+endif()
+]=])
+run_step(${CMAKE_COMMAND} -S "${WORK_DIR}/twice" -B "${WORK_DIR}/twice-build" "-DCMAKE_PREFIX_PATH=${prefix}")
+message(STATUS "found twice, with the check component")

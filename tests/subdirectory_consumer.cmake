@@ -5,13 +5,7 @@
 # defaults to off below the top level).
 # Inputs: SOURCE_DIR, WORK_DIR, LIBRARY_USAGE_SOURCE.
 file(REMOVE_RECURSE "${WORK_DIR}")
-function(run_step)
-  execute_process(COMMAND ${ARGV} RESULT_VARIABLE status OUTPUT_VARIABLE out ERROR_VARIABLE err)
-  if(NOT status EQUAL 0)
-    message(FATAL_ERROR "failed (${status}): ${ARGV}\n${out}\n${err}")
-  endif()
-  set(last_output "${out}" PARENT_SCOPE)
-endfunction()
+include("${CMAKE_CURRENT_LIST_DIR}/run_step.cmake")
 file(COPY "${SOURCE_DIR}/tests/subdirectory_consumer/CMakeLists.txt" DESTINATION "${WORK_DIR}/consumer")
 configure_file("${LIBRARY_USAGE_SOURCE}" "${WORK_DIR}/consumer/main.cpp" COPYONLY)
 run_step(${CMAKE_COMMAND} -S "${WORK_DIR}/consumer" -B "${WORK_DIR}/build" -DCMAKE_BUILD_TYPE=Debug

@@ -208,11 +208,11 @@ void bad_input() {
                     "simcli: <stdin>:1: ", "more particles than this machine can hold");
     expect_rejected({}, "500\n20\n1\n1\nperf\n", "simcli: <stdin>:1: ", "cannot place 500 non-overlapping disks");
     expect_rejected({}, std::string(100000, '7'), "simcli: <stdin>:1: ", "longer than");
-    // Issue 12, finding 1: a random scene whose speeds would leave the accepted
-    // range is refused on the line of r, instead of printing NUL bytes.
+    // A random scene whose speeds would leave the accepted range is refused
+    // on the line of r (not printed as garbage).
     expect_rejected({}, "3\n20000\n1e-300\n1\nprint\n", "simcli: <stdin>:3: ", "below the accepted range");
     expect_rejected({}, "3\n1e10\n1e-55\n1\nprint\n", "simcli: <stdin>:3: ", "draws speeds up to L/(8r) = 1.25e+64");
-    // Finding 5: readable numbers, escaped bytes, no message cut at a NUL.
+    // Messages: readable numbers, escaped bytes, none cut at a NUL.
     expect_rejected({}, "200\n1e-8\n1e-9\n1\nperf\n",
                     "simcli: <stdin>:1: ", "radius 1e-09 in a box of side 1e-08 (area fraction 6.283");
     expect_rejected({}, "1\n1e-50\n2e-51\n1\nperf\n0 1e-50 5e-51 0 0\n",
@@ -247,7 +247,7 @@ void exact_engine() {
                     "simcli: <stdin>:1: the exact engine would need", "inf");
     expect_rejected({"--engine", "exact"}, "1 20 1 9007199254740993 perf\n0 5 5 0 0\n",
                     "simcli: <stdin>:1: S = 9007199254740993", "at most 2^53 steps");
-    // Issue 12, finding 3: two disks in a 1e-9 gap pass the start estimate
+    // Two disks in a 1e-9 gap pass the start estimate
     // (1.5 events a step) but bounce ~1e9 times a step: stopped within a
     // second, exit 1, naming the step and the event count against the prediction.
     const Result trapped =

@@ -205,7 +205,7 @@ void progress_line() {
     CHECK(forced.err.find(" of 100000 (") != std::string::npos);
     CHECK(forced.err.find(" steps/s, about ") != std::string::npos);
     CHECK(forced.out.find("0 0 ") == 0);  // nothing of it on stdout
-    // Issue 12, finding 3: a resting disk for 2^63 - 1 steps now shows its (very long) way.
+    // A resting disk for 2^63 - 1 steps shows its (very long) way, without overflow.
     const Result endless = simcli_run({"--progress"}, "1 20 1 9223372036854775807 perf\n0 5 5 0 0\n", {SIGINT, 3000});
     CHECK_EQ(endless.status, 130);
     CHECK(endless.err.find("simcli: step ") == 0);

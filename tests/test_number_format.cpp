@@ -77,7 +77,7 @@ int main(int argc, char** argv) {
               }
               CHECK_EQ(mismatches, 0);
           }},
-         // Issue 12, finding 1: every finite double, from the smallest subnormal to
+         // Every finite double, from the smallest subnormal to
          // DBL_MAX (309 integer digits), as printf writes it, never a NUL byte.
          {"every finite double", [] {
               const double extremes[] = {std::numeric_limits<double>::max(),

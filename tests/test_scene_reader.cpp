@@ -123,7 +123,7 @@ void bad_particles() {
     expect_error(header + std::string(5000, '1') + "\n", 6, "longer than");
 }
 
-// Issue 12, item 2: the accepted range (docs/accepted-range.md).
+// The accepted range (docs/accepted-range.md).
 void accepted_range() {
     CHECK(read("1 1e60 1e-60 1 perf\n0 5e59 5e59 1e60 -1e60\n").ok);
     expect_error("1 1e60 1e-61 1 perf\n", 1, "r = 1e-61 is below the accepted range (L and r at least 1e-60");
@@ -140,7 +140,7 @@ void accepted_range() {
     CHECK(read("3\n1\n1e-50\n1\nprint\n").ok);
 }
 
-// Issue 12, item 5: what every C and Python reader accepts, and messages a person can read.
+// What every C and Python reader accepts, and messages a person can read.
 void friendly_input() {
     const Outcome plus = read("+2 +20 +1 +5 print\n+0 +5 +5 +1e-1 -0\n1 15 12 +.5 0\n");
     CHECK(plus.ok);
@@ -177,10 +177,10 @@ void friendly_input() {
     expect_error("1 20 1 5 perf\n0 1e-300 5 0 0\n", 2, "x = 1e-300 is outside [1, 19]");
 }
 
-// Issue 12, item 3: memory follows the input, not the header's claim.
+// Memory follows the input, not the header's claim.
 void memory_follows_the_input() {
-    // Finding 4: a 43-byte file claiming N = 9e7 used to allocate 4.9 GB before
-    // failing; now nothing much larger than the file is allocated.
+    // A 43-byte file claiming N = 9e7 allocates nothing much larger than the
+    // file before failing (not the 4.9 GB the claim would take).
     largest_allocation = 0;
     const Outcome o = read("90000000 20000 1 10 perf\n0 1 1 1 1\n");
     CHECK(largest_allocation.load() < (std::size_t{1} << 20));

@@ -239,80 +239,109 @@ int GridSearch::pieces_to_fit(const Particle& particle, double begin, double end
     return pieces;
 }
 
-void GridSearch::bin_slice(const PairSearchInput& in, int slice, SliceWorkspace& ws, int threads) const {
-    const SliceSpan span = slice_span(in, slice, layout_.slices);
-    const UniformGrid& grid = layout_.grid;
-    const auto cell_of_box = [&](const SweptBounds& box) { return grid.cell_of(box.min_x, box.min_y); };
-    const double fit = grid.cell_size() * cell_fit_slack;
-    const auto count = static_cast<std::int64_t>(in.particles.size());
-    const auto path_end = [&](std::int64_t i) { return span.path_end(sweep_end(in, i)); };
-    const auto slice_box = [&](std::int64_t i) { return swept_bounds(in.particles[i], span.begin, path_end(i)); };
-    const auto for_each_piece = [&](std::int64_t i, int pieces, auto&& body) {
-        for (int piece = 0; piece < pieces; ++piece) {
-            body(piece_bounds(in.particles[i], span.begin, path_end(i), piece, pieces));
-        }
-    };
+// What the steps of binning one slice share. Each worker counts and then
+// places a contiguous block of particles; worker 0 counts in cell_start
+// itself, the others in cell_fill.
+struct GridSearch::Binning {
+    const PairSearchInput& in;
+    SliceWorkspace& ws;
+    SliceSpan span;
+    const UniformGrid& grid;
+    double fit;  // the largest box side that fits a cell
+    int threads;
+    std::int64_t count;  // particles
+    std::int64_t cells;
+    std::int64_t block;  // particles a worker
 
-    // Counting sort of the fitting boxes (and pieces) by cell, the large ones
-    // aside. Each worker counts and then places a contiguous block of
-    // particles. (The order within a cell does not change the pairs tested.)
-    // Worker 0 counts in cell_start itself, the others in cell_fill.
-    const auto cells = static_cast<std::int64_t>(ws.cell_start.size()) - 1;
-    const std::int64_t block = (count + threads - 1) / threads;
-    const auto block_of = [&](std::int64_t worker) {
+    [[nodiscard]] std::pair<std::int64_t, std::int64_t> block_of(std::int64_t worker) const {
         return std::pair{worker * block, std::min(count, (worker + 1) * block)};
-    };
-    const auto counts_of = [&](std::int64_t worker) {
+    }
+    [[nodiscard]] std::uint32_t* counts_of(std::int64_t worker) const {
         return worker == 0 ? ws.cell_start.data() : ws.cell_fill.data() + (worker - 1) * cells;
-    };
-    // Long paths, in a loop of their own (as in the placement below).
+    }
+    [[nodiscard]] std::uint32_t cell_of_box(const SweptBounds& box) const { return grid.cell_of(box.min_x, box.min_y); }
+    [[nodiscard]] double path_end(std::int64_t i) const { return span.path_end(sweep_end(in, i)); }
+};
+
+// Counting sort of the fitting boxes (and pieces) by cell, the large ones
+// aside. (The order within a cell does not change the pairs tested.)
+void GridSearch::bin_slice(const PairSearchInput& in, int slice, SliceWorkspace& ws, int threads) const {
+    const auto count = static_cast<std::int64_t>(in.particles.size());
+    const Binning binning{in,
+                          ws,
+                          slice_span(in, slice, layout_.slices),
+                          layout_.grid,
+                          layout_.grid.cell_size() * cell_fit_slack,
+                          threads,
+                          count,
+                          static_cast<std::int64_t>(ws.cell_start.size()) - 1,
+                          (count + threads - 1) / threads};
+    // Pieces that would not fit the buffers (many fast particles): the slice
+    // is counted again with the long paths large instead.
+    if (count_boxes(binning, true) > ws.by_cell.size()) count_boxes(binning, false);
+    sum_cell_places(binning);
+    place_boxes(binning);
+    close_cell_starts(binning);
+}
+
+// Counts each worker's boxes by cell and its large boxes; returns the boxes to place.
+std::size_t GridSearch::count_boxes(const Binning& binning, bool cut_into_pieces) const {
+    const PairSearchInput& in = binning.in;
+    SliceWorkspace& ws = binning.ws;
+    const SliceSpan span = binning.span;
+    // Long paths, in a loop of their own (as in the placement).
     const auto count_pieces = [&](std::int64_t first, std::int64_t last, std::uint32_t* counts, std::size_t& counted,
                                   std::uint32_t& large) {
         for (std::int64_t i = first; i < last; ++i) {
             if (ws.cell_of[i] != large_marker) continue;
-            const int pieces = pieces_to_fit(in.particles[i], span.begin, path_end(i), fit);
+            const int pieces = pieces_to_fit(in.particles[i], span.begin, binning.path_end(i), binning.fit);
             ws.cell_of[i] = large_marker - static_cast<std::uint32_t>(pieces);
-            for_each_piece(i, pieces, [&](const SweptBounds& piece) { ++counts[cell_of_box(piece)]; });
+            for (int piece = 0; piece < pieces; ++piece) {
+                ++counts[binning.cell_of_box(
+                    piece_bounds(in.particles[i], span.begin, binning.path_end(i), piece, pieces))];
+            }
             counted += static_cast<std::size_t>(pieces);
             large -= pieces > 0 ? 1U : 0U;
         }
     };
-    const auto count_boxes = [&](bool cut_into_pieces) {
-        std::atomic<std::size_t> boxes{0};
-        parallel_for(threads, threads, [&](std::int64_t worker, std::size_t) {
-            std::uint32_t* counts = counts_of(worker);
-            std::fill(counts, counts + cells, 0U);
-            const auto [first, last] = block_of(worker);
-            std::size_t counted = 0;
-            std::uint32_t large = 0;
-            for (std::int64_t i = first; i < last; ++i) {
-                if (!span.holds_path(sweep_end(in, i))) {
-                    ws.cell_of[i] = absent_marker;
-                    continue;
-                }
-                const SweptBounds box = slice_box(i);
-                const bool fits = fits_cell(box, fit);
-                const std::uint32_t cell = cell_of_box(box);
-                ws.cell_of[i] = fits ? cell : large_marker;
-                counts[cell] += fits ? 1U : 0U;
-                counted += fits ? 1U : 0U;
-                large += fits ? 0U : 1U;
+    std::atomic<std::size_t> boxes{0};
+    parallel_for(binning.threads, binning.threads, [&](std::int64_t worker, std::size_t) {
+        std::uint32_t* counts = binning.counts_of(worker);
+        std::fill(counts, counts + binning.cells, 0U);
+        const auto [first, last] = binning.block_of(worker);
+        std::size_t counted = 0;
+        std::uint32_t large = 0;
+        for (std::int64_t i = first; i < last; ++i) {
+            if (!span.holds_path(sweep_end(in, i))) {
+                ws.cell_of[i] = absent_marker;
+                continue;
             }
-            if (cut_into_pieces) count_pieces(first, last, counts, counted, large);
-            boxes += counted;
-            ws.large_start[worker + 1] = large;
-        });
-        return boxes.load();
-    };
-    // Pieces that would not fit the buffers (many fast particles): the slice
-    // is counted again with the long paths large instead.
-    if (count_boxes(true) > ws.by_cell.size()) count_boxes(false);
+            const SweptBounds box = swept_bounds(in.particles[i], span.begin, binning.path_end(i));
+            const bool fits = fits_cell(box, binning.fit);
+            const std::uint32_t cell = binning.cell_of_box(box);
+            ws.cell_of[i] = fits ? cell : large_marker;
+            counts[cell] += fits ? 1U : 0U;
+            counted += fits ? 1U : 0U;
+            large += fits ? 0U : 1U;
+        }
+        if (cut_into_pieces) count_pieces(first, last, counts, counted, large);
+        boxes += counted;
+        ws.large_start[worker + 1] = large;
+    });
+    return boxes.load();
+}
 
+// Turns the counts into each worker's first place in each cell, and the
+// large boxes' counts into their places.
+void GridSearch::sum_cell_places(const Binning& binning) const {
+    SliceWorkspace& ws = binning.ws;
+    const int threads = binning.threads;
+    const std::int64_t cells = binning.cells;
     // Each worker's first place in each cell, cell by cell, from `placed`.
     const auto place_cells = [&](std::int64_t first, std::int64_t last, std::uint32_t placed) {
         for (std::int64_t cell = first; cell < last; ++cell) {
             for (std::int64_t worker = 0; worker < threads; ++worker) {
-                std::uint32_t& next = counts_of(worker)[cell];
+                std::uint32_t& next = binning.counts_of(worker)[cell];
                 placed += std::exchange(next, placed);
             }
         }
@@ -322,32 +351,40 @@ void GridSearch::bin_slice(const PairSearchInput& in, int slice, SliceWorkspace&
     // places them from where the ranges before it end.
     const auto ranges = static_cast<std::int64_t>(ws.range_start.size()) - 1;
     const int range_workers = worker_count(static_cast<std::size_t>(threads), cells, min_particles_per_thread);
-    const auto for_each_range = [&](auto&& body) { parallel_for_ranges(range_workers, cells, ranges, body); };
     if (range_workers == 1) {
         place_cells(0, cells, 0);
     } else {
         std::fill(ws.range_start.begin(), ws.range_start.end(), 0U);  // a range past the end is not visited
-        for_each_range([&](std::int64_t range, std::int64_t first, std::int64_t last) {
-            std::uint32_t boxes = 0;
-            for (std::int64_t worker = 0; worker < threads; ++worker) {
-                const std::uint32_t* counts = counts_of(worker);
-                for (std::int64_t cell = first; cell < last; ++cell) boxes += counts[cell];
-            }
-            ws.range_start[range + 1] = boxes;
-        });
+        parallel_for_ranges(range_workers, cells, ranges,
+                            [&](std::int64_t range, std::int64_t first, std::int64_t last) {
+                                std::uint32_t boxes = 0;
+                                for (std::int64_t worker = 0; worker < threads; ++worker) {
+                                    const std::uint32_t* counts = binning.counts_of(worker);
+                                    for (std::int64_t cell = first; cell < last; ++cell) boxes += counts[cell];
+                                }
+                                ws.range_start[range + 1] = boxes;
+                            });
         std::partial_sum(ws.range_start.begin(), ws.range_start.end(), ws.range_start.begin());
-        for_each_range([&](std::int64_t range, std::int64_t first, std::int64_t last) {
-            place_cells(first, last, ws.range_start[range]);
-        });
+        parallel_for_ranges(range_workers, cells, ranges,
+                            [&](std::int64_t range, std::int64_t first, std::int64_t last) {
+                                place_cells(first, last, ws.range_start[range]);
+                            });
     }
     ws.large_start[0] = 0;
     std::partial_sum(ws.large_start.begin(), ws.large_start.end(), ws.large_start.begin());
     ws.large.resize(ws.large_start[threads]);
     ws.large_boxes.resize(ws.large_start[threads]);
+}
 
-    parallel_for(threads, threads, [&](std::int64_t worker, std::size_t) {
-        std::uint32_t* next = counts_of(worker);
-        const auto [first, last] = block_of(worker);
+// Places each worker's boxes at its places in cell order (bounds in float,
+// motion states copied beside them), and its large boxes in its share.
+void GridSearch::place_boxes(const Binning& binning) const {
+    const PairSearchInput& in = binning.in;
+    SliceWorkspace& ws = binning.ws;
+    const SliceSpan span = binning.span;
+    parallel_for(binning.threads, binning.threads, [&](std::int64_t worker, std::size_t) {
+        std::uint32_t* next = binning.counts_of(worker);
+        const auto [first, last] = binning.block_of(worker);
         const auto place = [&](std::int64_t i, std::uint32_t cell, const SweptBounds& box) {
             const std::uint32_t at = next[cell]++;
             ws.by_cell[at] = static_cast<std::uint32_t>(i);
@@ -358,7 +395,8 @@ void GridSearch::bin_slice(const PairSearchInput& in, int slice, SliceWorkspace&
         // for the processor to overlap the cache misses of many particles.
         for (std::int64_t i = first; i < last; ++i) {
             const std::uint32_t mark = ws.cell_of[i];
-            if (mark < first_piece_marker) place(i, mark, slice_box(i));
+            if (mark < first_piece_marker)
+                place(i, mark, swept_bounds(in.particles[i], span.begin, binning.path_end(i)));
         }
         std::uint32_t next_large = ws.large_start[worker];
         for (std::int64_t i = first; i < last; ++i) {
@@ -366,22 +404,33 @@ void GridSearch::bin_slice(const PairSearchInput& in, int slice, SliceWorkspace&
             if (mark < first_piece_marker || mark == absent_marker) continue;
             if (mark == large_marker) {
                 ws.large[next_large] = static_cast<std::uint32_t>(i);
-                ws.large_boxes[next_large] = slice_box(i);
+                ws.large_boxes[next_large] = swept_bounds(in.particles[i], span.begin, binning.path_end(i));
                 ++next_large;
                 continue;
             }
-            for_each_piece(i, static_cast<int>(large_marker - mark),
-                           [&](const SweptBounds& piece) { place(i, cell_of_box(piece), piece); });
+            const int pieces = static_cast<int>(large_marker - mark);
+            for (int piece = 0; piece < pieces; ++piece) {
+                const SweptBounds box = piece_bounds(in.particles[i], span.begin, binning.path_end(i), piece, pieces);
+                place(i, binning.cell_of_box(box), box);
+            }
         }
     });
-    // The last worker's next place in a cell is now where the next cell
-    // starts. A lone worker's places are cell_start itself: from the top
-    // down, that overwrites only what is spent.
-    const std::uint32_t* ends = counts_of(threads - 1);
-    if (threads == 1) {
+}
+
+// The last worker's next place in a cell is now where the next cell starts.
+// A lone worker's places are cell_start itself: from the top down, that
+// overwrites only what is spent.
+void GridSearch::close_cell_starts(const Binning& binning) const {
+    SliceWorkspace& ws = binning.ws;
+    const std::int64_t cells = binning.cells;
+    const std::uint32_t* ends = binning.counts_of(binning.threads - 1);
+    if (binning.threads == 1) {
         for (std::int64_t cell = cells - 1; cell >= 0; --cell) ws.cell_start[cell + 1] = ends[cell];
     } else {
-        for_each_range([&](std::int64_t, std::int64_t first, std::int64_t last) {
+        const auto ranges = static_cast<std::int64_t>(ws.range_start.size()) - 1;
+        const int range_workers =
+            worker_count(static_cast<std::size_t>(binning.threads), cells, min_particles_per_thread);
+        parallel_for_ranges(range_workers, cells, ranges, [&](std::int64_t, std::int64_t first, std::int64_t last) {
             std::copy(ends + first, ends + last, ws.cell_start.begin() + first + 1);
         });
     }

@@ -82,7 +82,13 @@ private:
     void process_slice(const PairSearchInput& in, int slice, SliceWorkspace& ws, std::span<ThreadCandidates> out,
                        int threads) const;
     void prepare(SliceWorkspace& ws, std::size_t count, int workers) const;
+    // Binning a slice: a counting sort of the paths' boxes by cell, in four steps.
+    struct Binning;  // what the steps share; defined in grid_search.cpp
     void bin_slice(const PairSearchInput& in, int slice, SliceWorkspace& ws, int threads) const;
+    std::size_t count_boxes(const Binning& binning, bool cut_into_pieces) const;
+    void sum_cell_places(const Binning& binning) const;
+    void place_boxes(const Binning& binning) const;
+    void close_cell_starts(const Binning& binning) const;
     void test_small_pairs(const PairSearchInput& in, const SliceWorkspace& ws, std::span<ThreadCandidates> out,
                           int threads) const;
     void test_large_pairs(const PairSearchInput& in, const SliceWorkspace& ws, std::span<ThreadCandidates> out,

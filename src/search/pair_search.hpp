@@ -1,5 +1,5 @@
 #pragma once
-// What every pair search (brute force, grid) receives and produces, and the one
+// What every pair search (brute force, grid, paths) receives and produces, and the one
 // pair test they all apply, so that their candidate sets are identical.
 
 #include "core/box.hpp"

@@ -354,8 +354,8 @@ void resolve_collisions(std::span<Particle> particles, std::span<const std::uint
 }
 
 // The same block loop as measure_step_start(), written out: sharing one
-// through a callback that hands over the moved particle cost the dense gas
-// 2 % (docs/benchmarks.md, tenth session of issue 15).
+// through a callback that hands over the moved particle was slower
+// (docs/benchmarks.md, "Tried, measured, not kept").
 void advance_free_particles(std::span<Particle> particles, std::span<std::uint32_t> partner, const Box& box,
                             double duration, std::span<double> wall_time, StepStart& next, int threads) {
     const auto count = static_cast<std::int64_t>(particles.size());

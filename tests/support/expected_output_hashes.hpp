@@ -1,9 +1,8 @@
 #pragma once
 // FNV-1a hashes of simcli's exit status and output for every case of
-// test_output_hashes.cpp, in its order. Recorded first with the build of commit
-// 24c9cea (before the public API was reshaped), and again when the exchange
-// moved from long double to double-double (issue 12): 123 of the 1260 outputs
-// changed then, by the last bit of some velocities after particle collisions.
+// test_output_hashes.cpp, in its order, recorded with a trusted build (the
+// commit that last changed this file says which and why; CHANGELOG.md lists
+// the changes of output).
 // Regenerate only from a trusted build:
 //   build/tests/test_output_hashes --generate path/to/simcli
 
