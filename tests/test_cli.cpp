@@ -325,6 +325,11 @@ void stats() {
     // their 16 steps on one thread, the first trial after 8 steps.
     CHECK(stats_of({"-t", "1"}, scene).find("stats: threads 1\n") != std::string::npos);
     CHECK(stats_of({"-t", "3"}, scene).find("stats: threads 3\n") != std::string::npos);
+    // Unset, OpenMP's default: OMP_NUM_THREADS.
+    const threads_stats_line::Line from_openmp =
+        threads_stats_line::read(run_process::run("/usr/bin/env", {"OMP_NUM_THREADS=3", simcli, "--stats"}, scene).err);
+    CHECK(from_openmp.found);
+    CHECK_EQ(from_openmp.threads, 3);
     const threads_stats_line::Line unset = threads_stats_line::read(stats_of({}, scene));
     CHECK(unset.found);
     if (unset.threads > 1) {

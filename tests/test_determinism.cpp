@@ -22,7 +22,8 @@ std::uint64_t final_hash(const World& params, std::int64_t steps, const std::vec
 
 // `forced_grid`: a G x G grid to impose besides the automatic one.
 void same_hash_everywhere(const char* name, const World& params, std::int64_t steps,
-                          const std::vector<Particle>& particles, int forced_grid, bool with_brute, int substeps = 1) {
+                          const std::vector<Particle>& particles, int forced_grid, bool with_brute, int substeps = 1,
+                          bool with_paths = false) {
     const std::uint64_t reference =
         final_hash(params, steps, particles, {.pair_search = PairSearch::grid, .threads = 1, .substeps = substeps});
     int differing = 0;
@@ -47,6 +48,11 @@ void same_hash_everywhere(const char* name, const World& params, std::int64_t st
                                  .threads = threads,
                                  .substeps = substeps,
                                  .sort_by_position_every = 0}) != reference;
+        if (with_paths) {
+            differing +=
+                final_hash(params, steps, particles,
+                           {.pair_search = PairSearch::paths, .threads = threads, .substeps = substeps}) != reference;
+        }
         if (with_brute)
             differing +=
                 final_hash(params, steps, particles,
@@ -66,7 +72,9 @@ int main(int argc, char** argv) {
         {{"same hash for every search and thread count", [] {
               // The paper's scene (fast particles, sparse box), 200 steps.
               const World paper{20000.0, 1.0};
-              same_hash_everywhere("default scene", paper, 200, make_random_particles(1000, paper), 4, true);
+              same_hash_everywhere("default scene", paper, 200, make_random_particles(1000, paper), 4, true, 1, true);
+              // Enough new lines a step (about 5 M line tests) for the paths search to share them between threads.
+              same_hash_everywhere("4000 particles", paper, 30, make_random_particles(4000, paper), 8, false, 1, true);
               // Substeps: micro-steps of 1/K under the same rules, the same everywhere too.
               const World short_paper{20000.0, 1.0};
               for (const int substeps : {2, 3, 8}) {

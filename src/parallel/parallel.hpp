@@ -1,14 +1,19 @@
 #pragma once
-// Parallel loops over the library's thread team (thread_team.hpp), and how
-// many threads a piece of work deserves. One thread runs the loop in place.
+// Parallel loops on OpenMP, and how many threads a piece of work deserves.
+// One thread runs the loop in place, without a parallel region.
+//
+// Every loop hands its items out in chunks to whichever thread of the region
+// is free (schedule(dynamic)): a thread the system deschedules, on a machine
+// where another process keeps a core busy, delays only the chunk it holds,
+// not a static share that the others would wait for at the barrier. How idle
+// threads wait between regions is the OpenMP runtime's (OMP_WAIT_POLICY,
+// README "Threads").
 
-#include "parallel/thread_team.hpp"
+#include <omp.h>
 
 #include <algorithm>
 #include <cstddef>
 #include <cstdint>
-#include <memory>
-#include <type_traits>
 #include <utility>
 
 namespace particlesim {
@@ -17,8 +22,16 @@ namespace particlesim {
 inline constexpr std::int64_t min_particles_per_thread = 2048;
 inline constexpr std::int64_t min_pair_work_per_thread = 4096;
 
-// Threads when none are asked for: OpenMP's default (OMP_NUM_THREADS, else the cores this process may use).
+// Threads when none are asked for: OpenMP's default (OMP_NUM_THREADS, else
+// the cores this process may use); 1 inside a parallel region of the caller's.
 int default_thread_count();
+
+// Whether a loop may start threads here: not inside a parallel region of the
+// caller's (the library then runs on the thread it is given instead of
+// oversubscribing the machine), and not in a child forked from this process
+// after it ran a parallel loop (libgomp's threads do not survive a fork, and
+// its next region would wait for them for ever).
+bool loops_may_start_threads();
 
 inline int worker_count(std::size_t available, std::int64_t work, std::int64_t min_work_per_thread) {
     const std::int64_t useful = std::max<std::int64_t>(1, work / min_work_per_thread);
@@ -26,20 +39,20 @@ inline int worker_count(std::size_t available, std::int64_t work, std::int64_t m
 }
 
 // body(i, thread) for i in [0, count), in chunks of `chunk` items claimed by
-// whichever of the `workers` threads is free (thread < workers).
+// whichever of the `workers` threads is free (thread < workers). The body
+// must not throw.
 template <typename Body>
 void parallel_for_dynamic(int workers, std::int64_t count, std::int64_t chunk, Body&& body) {
-    if (workers <= 1) {
+    if (workers <= 1 || count <= chunk || !loops_may_start_threads()) {
         for (std::int64_t i = 0; i < count; ++i) body(i, std::size_t{0});
         return;
     }
-    using Stored = std::remove_reference_t<Body>;
-    const auto run_chunk = [](void* context, std::int64_t first, std::int64_t last, std::size_t thread) {
-        Stored& stored = *static_cast<Stored*>(context);
-        for (std::int64_t i = first; i < last; ++i) stored(i, thread);
-    };
-    ThreadTeam::shared().run(workers, count, chunk, run_chunk,
-                             const_cast<void*>(static_cast<const void*>(std::addressof(body))));
+#pragma omp parallel num_threads(workers)
+    {
+        const auto thread = static_cast<std::size_t>(omp_get_thread_num());
+#pragma omp for schedule(dynamic, chunk) nowait
+        for (std::int64_t i = 0; i < count; ++i) body(i, thread);
+    }
 }
 
 // The same for items of even work: eight chunks per thread, so that a thread

@@ -1,6 +1,7 @@
 #include "search/path_search.hpp"
 
 #include "parallel/parallel.hpp"
+#include "stepped/stepped_tuning.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -21,8 +22,8 @@ void PathSearch::find_pairs(const PairSearchInput& in, std::span<ThreadCandidate
     make_lines(in);
     const double reach = contact_reach(in.box);
     const auto new_count = static_cast<std::int64_t>(new_lines_.size());
-    const int workers =
-        worker_count(out.size(), new_count * static_cast<std::int64_t>(in.particles.size()), min_pair_work_per_thread);
+    const int workers = worker_count(out.size(), new_count * static_cast<std::int64_t>(in.particles.size()),
+                                     stepped_tuning::paths_line_tests_per_thread);
     parallel_for_dynamic(workers, new_count, 4, [&](std::int64_t k, std::size_t thread) {
         watch_near(in, new_lines_[static_cast<std::size_t>(k)], reach, thread_watches_[thread]);
     });

@@ -21,6 +21,11 @@ inline constexpr double paths_below_collisions_per_micro_step = 800.0;
 // Particles up to which the paths search may be chosen: its first
 // micro-step tests all N^2 / 2 pairs.
 inline constexpr std::size_t paths_up_to = 20000;
+// Line tests (new lines x particles) a micro-step must give each thread
+// before the paths search shares them out: a second thread cost 1.19 times
+// one's time at 1.1 M tests a micro-step (N = 2000) and 1.25 at 0.25 M (the
+// default scene), and paid from about 5 M (N = 4000: 0.82).
+inline constexpr std::int64_t paths_line_tests_per_thread = std::int64_t{1} << 21;
 
 // --- Storage sorted by position (stepped/storage_order.*)
 

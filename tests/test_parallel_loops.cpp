@@ -1,8 +1,8 @@
-// The thread team behind every parallel loop: each item runs exactly once, on
-// a participant below the loop's thread count, however loops follow, nest or
-// race each other; and workers really take part. Also built with
-// ThreadSanitizer (test_thread_team_tsan), which checks the team's hand-off
-// of loops between threads.
+// The parallel loops (OpenMP regions): each item runs exactly once, on a
+// thread below the loop's thread count, however loops follow, nest or race
+// each other; a second thread really takes part; a loop inside a parallel
+// region of the caller's runs on the caller alone; and a child forked after
+// loops ran finishes its own loops and exits.
 
 #include "check.hpp"
 
@@ -11,8 +11,10 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <omp.h>
 #include <atomic>
 #include <chrono>
+
 #include <csignal>
 #include <cstdint>
 #include <cstdio>
@@ -27,8 +29,9 @@ namespace {
 }  // namespace
 
 #ifdef __SANITIZE_ADDRESS__
-// LeakSanitizer's hook: the forked child's exit finds the parent's workers in
-// its records, cannot suspend them and would only warn; the parent is checked.
+// LeakSanitizer's hook: the forked child's exit finds the parent's OpenMP
+// threads in its records, cannot suspend them and would only warn; the
+// parent is checked.
 extern "C" int __lsan_is_turned_off() { return in_forked_child ? 1 : 0; }
 #endif
 
@@ -76,8 +79,8 @@ void many_short_loops_in_a_row() {
     CHECK_EQ(wrong, 0);
 }
 
-// A loop started from inside a loop's body, or by a second thread while the
-// team is busy, runs on its own caller.
+// A loop started from inside a loop's body runs on its own caller; loops
+// started by several threads at once each complete.
 void nested_and_concurrent_loops_are_complete() {
     std::atomic<std::int64_t> inner_items{0};
     std::atomic<int> bad_participant{0};
@@ -126,10 +129,10 @@ void a_worker_takes_part() {
     CHECK(!waited_out.load());
 }
 
-// A child forked after loops have started workers has none of them: its
+// A child forked after loops have started threads has none of them: its
 // loops must still finish (on the child alone), and so must its exit.
 void a_forked_child_runs_loops_and_exits() {
-#ifdef __SANITIZE_THREAD__
+#if defined(__SANITIZE_THREAD__) || defined(PARTICLESIM_TSAN_BUILD)
     std::puts("  (skipped under ThreadSanitizer, which does not follow a multi-threaded fork)");
 #else
     parallel_for(2, 1000, [](std::int64_t, std::size_t) {});
@@ -157,13 +160,41 @@ void a_forked_child_runs_loops_and_exits() {
 #endif
 }
 
+// Inside a parallel region of the caller's (a host program's own OpenMP
+// threads), every loop runs on its caller alone, even where the host allows
+// nested regions: nothing oversubscribes the machine.
+void loops_inside_a_host_region_run_on_the_caller() {
+    for (const int levels : {1, 4}) {
+        check::Context context("max active levels " + std::to_string(levels));
+        const int previous = omp_get_max_active_levels();
+        omp_set_max_active_levels(levels);
+        std::atomic<std::int64_t> items{0};
+        std::atomic<int> not_the_caller{0};
+        std::atomic<int> defaults_above_one{0};
+#pragma omp parallel num_threads(2)
+        {
+            if (default_thread_count() != 1) defaults_above_one.fetch_add(1);
+            const int caller_level = omp_get_level();
+            parallel_for(2, 10000, [&](std::int64_t, std::size_t thread) {
+                items.fetch_add(1);
+                if (thread != 0 || omp_get_level() != caller_level) not_the_caller.fetch_add(1);
+            });
+        }
+        omp_set_max_active_levels(previous);
+        CHECK_EQ(items.load(), 2 * 10000);
+        CHECK_EQ(not_the_caller.load(), 0);
+        CHECK_EQ(defaults_above_one.load(), 0);
+    }
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
-    return check::run(argc, argv, "test_thread_team",
+    return check::run(argc, argv, "test_parallel_loops",
                       {{"every item runs once", every_item_runs_once},
                        {"many short loops in a row", many_short_loops_in_a_row},
                        {"nested and concurrent loops are complete", nested_and_concurrent_loops_are_complete},
                        {"a worker takes part", a_worker_takes_part},
-                       {"a forked child runs loops and exits", a_forked_child_runs_loops_and_exits}});
+                       {"a forked child runs loops and exits", a_forked_child_runs_loops_and_exits},
+                       {"loops inside a host region run on the caller", loops_inside_a_host_region_run_on_the_caller}});
 }

@@ -1,0 +1,70 @@
+// Every parallel stage of a step on two threads against one: the grid search
+// with a slice per thread and with one slice shared, the paths search, the
+// brute force, the selection, the resolution, the free flight and the storage
+// sort, on scenes just large enough for each to share its work. The final
+// states must be the same bits. Small on purpose: the suite also runs it
+// under ThreadSanitizer (scripts/tsan-parallel.sh), which checks that no two
+// threads of a stage touch the same memory without order.
+
+#include "check.hpp"
+#include "state_hash.hpp"
+
+#include "particlesim/random_scene.hpp"
+#include "particlesim/stepped_simulation.hpp"
+
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <vector>
+
+using namespace particlesim;
+
+namespace {
+
+struct StageScene {
+    std::string name;
+    World world;
+    std::size_t count;
+    std::int64_t steps;
+    SteppedOptions options;  // threads set below
+    std::optional<SpeedRange> speeds;
+};
+
+std::uint64_t final_hash(const StageScene& scene, const std::vector<Particle>& start, int threads) {
+    SteppedOptions options = scene.options;
+    options.threads = threads;
+    SteppedSimulation simulation(scene.world, start, options);
+    run(simulation, scene.steps);
+    return state_hash::hash(simulation.particles());
+}
+
+void two_threads_give_one_threads_bits() {
+    // Area fraction 0.3, speeds 0.1 to 1 r a step: thousands of collisions
+    // and candidates a step, so the selection's passes are shared too.
+    const SpeedRange slow{0.1, 1.0};
+    const std::vector<StageScene> scenes{
+        {"grid, a slice per thread", World{250.0, 1.0}, 6000, 4, {.pair_search = PairSearch::grid}, slow},
+        {"grid, one slice shared, storage sorted every step",
+         World{720.0, 1.0},
+         50000,
+         2,
+         {.pair_search = PairSearch::grid, .sort_by_position_every = 1},
+         slow},
+        {"paths search", World{20000.0, 1.0}, 4000, 6, {.pair_search = PairSearch::paths}, std::nullopt},
+        {"brute force", World{250.0, 1.0}, 3000, 2, {.pair_search = PairSearch::brute_force}, slow},
+    };
+    for (const StageScene& scene : scenes) {
+        check::Context context(scene.name);
+        RandomSceneOptions random{.seed = 5};
+        random.speeds = scene.speeds;
+        const std::vector<Particle> start = make_random_particles(scene.count, scene.world, random);
+        CHECK_EQ(final_hash(scene, start, 2), final_hash(scene, start, 1));
+    }
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+    return check::run(argc, argv, "test_parallel_stages",
+                      {{"two threads give one thread's bits", two_threads_give_one_threads_bits}});
+}
