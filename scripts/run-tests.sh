@@ -1,14 +1,17 @@
 #!/usr/bin/env bash
 # Quick start 2: installs what is missing, then builds and runs the whole test
 # suite twice: a Release build (every test), and a build under
-# AddressSanitizer and UndefinedBehaviorSanitizer (any report fails the run).
-# The Release pass also cross-checks the bytes on aarch64 under qemu and
-# fuzzes for a minute. About 9 minutes on a fresh 2-core machine.
+# AddressSanitizer and UndefinedBehaviorSanitizer with the library's invariant
+# checks compiled in (any report fails the run). The Release pass also
+# cross-checks the bytes on aarch64 under qemu, runs the parallel stages under
+# ThreadSanitizer (clang's OpenMP) and fuzzes for 20 seconds.
+# @DURATION@
 set -euo pipefail
 cd "$(dirname "$0")/.."
 scripts/ensure-deps.sh clang-format
 # The heavier test tools: the aarch64 cross compiler and qemu (the same bytes
-# on another architecture), clang with libFuzzer and its OpenMP (a minute of fuzzing).
+# on another architecture), clang with libFuzzer, its OpenMP and Archer (fuzzing,
+# ThreadSanitizer over OpenMP), chromium (the animation page).
 scripts/ensure-deps.sh --optional g++-aarch64-linux-gnu qemu-user clang libclang-rt-dev libomp-dev chromium
 jobs=$(nproc)
 
