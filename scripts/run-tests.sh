@@ -4,7 +4,7 @@
 # AddressSanitizer and UndefinedBehaviorSanitizer with the library's invariant
 # checks compiled in (any report fails the run). The Release pass also
 # cross-checks the bytes on aarch64 under qemu, runs the parallel stages under
-# ThreadSanitizer (clang's OpenMP) and fuzzes for 20 seconds.
+# ThreadSanitizer (clang's OpenMP) and fuzzes for 10 seconds.
 # @DURATION@
 set -euo pipefail
 cd "$(dirname "$0")/.."
