@@ -2,10 +2,8 @@
 
 #include "particlesim/saved_state.hpp"
 
-#include <charconv>
 #include <cmath>
 #include <fstream>
-#include <iomanip>
 #include <stdexcept>
 #include <string_view>
 
@@ -22,19 +20,17 @@ double finite_real(particlesim::SavedStateReader& in) {
     return value;
 }
 
-std::string shortest_text(double value) {
-    char text[32];
-    return std::string(text, std::to_chars(text, text + sizeof text, value).ptr);
-}
-
 }  // namespace
 
 void write_settings(std::ostream& out, const RunSettings& s) {
-    out << magic << ' ' << format_version << '\n'
-        << "box-size " << shortest_text(s.world.box_size) << " radius " << shortest_text(s.world.radius) << " steps "
-        << s.steps << " mode " << (s.mode == particlesim::OutputMode::print ? "print" : "perf") << " engine "
-        << (s.engine == EngineChoice::exact ? "exact" : "step") << " substeps " << s.substeps << " numbers "
-        << (s.numbers == particlesim::NumberFormat::shortest ? "shortest" : "fixed8") << '\n';
+    // The numbers as the engines' saved states write them (exact, shortest form).
+    out << magic << ' ' << format_version << '\n' << "box-size ";
+    particlesim::save_number(out, s.world.box_size);
+    out << "radius ";
+    particlesim::save_number(out, s.world.radius);
+    out << "steps " << s.steps << " mode " << (s.mode == particlesim::OutputMode::print ? "print" : "perf")
+        << " engine " << (s.engine == EngineChoice::exact ? "exact" : "step") << " substeps " << s.substeps
+        << " numbers " << (s.numbers == particlesim::NumberFormat::shortest ? "shortest" : "fixed8") << '\n';
 }
 
 Checkpoint read_checkpoint(const std::string& path) {

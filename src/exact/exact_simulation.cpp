@@ -38,15 +38,13 @@ TooManyEvents::TooManyEvents(std::int64_t step, std::uint64_t events, double pre
 
 namespace {
 
-// A step may take this many events beyond the prediction before it counts
-// as runaway: generous (dense clusters collide far more often than an ideal
-// gas), yet reached within about a second.
-constexpr double runaway_floor = exact_tuning::runaway_floor;
-constexpr double runaway_factor = exact_tuning::runaway_factor;
+// How restore() refuses a saved state, whichever check finds the damage.
+constexpr const char* restore_refusal = "particlesim::ExactSimulation::restore: the saved state is damaged";
 
+// The events a step may take before it counts as runaway (TooManyEvents).
 double event_budget(const ExactOptions& options, double predicted, std::size_t count) {
     if (options.max_events_per_step) return static_cast<double>(*options.max_events_per_step);
-    return runaway_floor + runaway_factor * (predicted + static_cast<double>(count));
+    return exact_tuning::runaway_floor + exact_tuning::runaway_factor * (predicted + static_cast<double>(count));
 }
 
 // Cells at least a diameter wide, so that a contact is always between
@@ -168,8 +166,7 @@ public:
         totals_ = saved.totals;
         const std::uint64_t cells = cells_.grid().cell_count();
         const auto fail = [](const std::string& why) {
-            throw std::invalid_argument("particlesim::ExactSimulation::restore: the saved state is damaged (" + why +
-                                        ")");
+            throw std::invalid_argument(std::string(restore_refusal) + " (" + why + ")");
         };
         for (std::uint32_t i = 0; i < count(); ++i) {
             const SavedPredictions& in = saved.predictions[i];
@@ -295,7 +292,7 @@ private:
           queue_(count(), Event{never, EventKind::cell_crossing, 0, 0}),
           predicted_events_(estimated_events_per_step(world, snapshot_)),
           event_budget_(event_budget(options, predicted_events_, count())),
-          look_ahead_(options.look_ahead.value_or(count() >= look_ahead_from) && !by_lines()) {}
+          look_ahead_(options.look_ahead.value_or(count() >= exact_tuning::look_ahead_from) && !by_lines()) {}
 
     std::uint32_t count() const { return static_cast<std::uint32_t>(bodies_.size()); }
 
@@ -694,9 +691,6 @@ private:
     std::uint64_t events_processed_ = 0;  // by this object, not saved: a measure of work
     double predicted_events_;             // per step
     double event_budget_;                 // per step
-    // Below this, the engine's state mostly fits in the caches, and the look
-    // ahead's own work costs more than it saves (docs/benchmarks.md).
-    static constexpr std::uint32_t look_ahead_from = exact_tuning::look_ahead_from;
     // The prefetching's four stages, each a few buckets nearer than the last
     // (prefetch_coming_events()).
     bool look_ahead_;
@@ -730,7 +724,7 @@ ExactSimulation::ExactSimulation(std::unique_ptr<Implementation> engine) : engin
 
 ExactSimulation ExactSimulation::restore(const World& world, std::istream& saved, const ExactOptions& options) {
     check_options(options);
-    SavedStateReader reader(saved, "particlesim::ExactSimulation::restore: the saved state is damaged");
+    SavedStateReader reader(saved, restore_refusal);
     reader.expect("exact-engine-state");
     reader.expect("1");
     Implementation::SavedRun run = Implementation::read_saved(reader);

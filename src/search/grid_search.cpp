@@ -28,25 +28,15 @@ struct GridSearch::SliceWorkspace {
     std::vector<std::uint32_t> range_start;     // per range of cells: its first place in by_cell
 };
 
-namespace {
+using namespace stepped_tuning;
 
-// A path whose box exceeds a cell is cut into at most this many equal pieces
-// in time, each binned as a box of its own: fast particles then cost a few
-// more boxes instead of joining the large boxes, which meet each other in a
-// quadratic loop. Longer paths stay large.
-constexpr int max_pieces = stepped_tuning::max_pieces;
+namespace {
 
 // Marks in cell_of, above every cell index: not moving in the slice, large,
 // and cut into k pieces (large_marker - k).
 constexpr std::uint32_t absent_marker = std::numeric_limits<std::uint32_t>::max();
 constexpr std::uint32_t large_marker = absent_marker - 1;
 constexpr std::uint32_t first_piece_marker = large_marker - max_pieces;
-
-constexpr int max_slices = stepped_tuning::max_slices;
-// The cells' places are summed in this many ranges of cells a worker.
-constexpr std::size_t cell_ranges_per_worker = stepped_tuning::cell_ranges_per_worker;
-// Below this many particles, threads take whole slices.
-constexpr std::size_t slice_parallel_below = stepped_tuning::slice_parallel_below;
 
 // Generous against rounding: the contact time and the swept boxes carry
 // errors of a few ulps of the coordinates and velocities; 1e-8 relative is
@@ -56,14 +46,6 @@ constexpr double relative_margin = 1e-8;
 // Boxes whose side is within 2^+-100 are put in float as they are; beyond,
 // scaled into [1, 2) first (float spans only 1e-38 to 3e38).
 constexpr int float_safe_exponent = 100;
-
-// Automatic layouts cut slices so that a typical path in a slice is this many
-// particle spacings long. Fewer, longer slices bin fewer boxes but test more
-// pairs; 4/3 was the fastest from N = 1000 to 32000 (see docs/benchmarks.md).
-constexpr double slice_sweep_in_spacings = stepped_tuning::slice_sweep_in_spacings;
-// Forced grids cut slices so that a typical path covers at most half a cell,
-// so that most boxes fit their cell.
-constexpr double slice_sweep_in_forced_cells = stepped_tuning::slice_sweep_in_forced_cells;
 
 // A box that fits a cell with this slack keeps its neighbours within one cell
 // even after the rounding of the cell index computation.
@@ -243,6 +225,7 @@ int GridSearch::pieces_to_fit(const Particle& particle, double begin, double end
 // places a contiguous block of particles; worker 0 counts in cell_start
 // itself, the others in cell_fill.
 struct GridSearch::Binning {
+    const GridSearch& search;
     const PairSearchInput& in;
     SliceWorkspace& ws;
     SliceSpan span;
@@ -251,7 +234,9 @@ struct GridSearch::Binning {
     int threads;
     std::int64_t count;  // particles
     std::int64_t cells;
-    std::int64_t block;  // particles a worker
+    std::int64_t block;   // particles a worker
+    std::int64_t ranges;  // of cells, for the passes over every cell
+    int range_workers;    // threads for those passes
 
     [[nodiscard]] std::pair<std::int64_t, std::int64_t> block_of(std::int64_t worker) const {
         return std::pair{worker * block, std::min(count, (worker + 1) * block)};
@@ -261,21 +246,37 @@ struct GridSearch::Binning {
     }
     [[nodiscard]] std::uint32_t cell_of_box(const SweptBounds& box) const { return grid.cell_of(box.min_x, box.min_y); }
     [[nodiscard]] double path_end(std::int64_t i) const { return span.path_end(sweep_end(in, i)); }
+    // Particle i's path in the slice, and piece `piece` of `pieces` equal parts of it.
+    [[nodiscard]] SweptBounds path_bounds(std::int64_t i) const {
+        return search.swept_bounds(in.particles[i], span.begin, path_end(i));
+    }
+    [[nodiscard]] SweptBounds piece_bounds(std::int64_t i, int piece, int pieces) const {
+        return search.piece_bounds(in.particles[i], span.begin, path_end(i), piece, pieces);
+    }
+    // body(range, first, last) over ranges of cells, on range_workers threads.
+    template <typename Body>
+    void for_each_range(Body&& body) const {
+        parallel_for_ranges(range_workers, cells, ranges, std::forward<Body>(body));
+    }
 };
 
 // Counting sort of the fitting boxes (and pieces) by cell, the large ones
 // aside. (The order within a cell does not change the pairs tested.)
 void GridSearch::bin_slice(const PairSearchInput& in, int slice, SliceWorkspace& ws, int threads) const {
     const auto count = static_cast<std::int64_t>(in.particles.size());
-    const Binning binning{in,
+    const auto cells = static_cast<std::int64_t>(ws.cell_start.size()) - 1;
+    const Binning binning{*this,
+                          in,
                           ws,
                           slice_span(in, slice, layout_.slices),
                           layout_.grid,
                           layout_.grid.cell_size() * cell_fit_slack,
                           threads,
                           count,
-                          static_cast<std::int64_t>(ws.cell_start.size()) - 1,
-                          (count + threads - 1) / threads};
+                          cells,
+                          (count + threads - 1) / threads,
+                          static_cast<std::int64_t>(ws.range_start.size()) - 1,
+                          worker_count(static_cast<std::size_t>(threads), cells, min_particles_per_thread)};
     // Pieces that would not fit the buffers (many fast particles): the slice
     // is counted again with the long paths large instead.
     if (count_boxes(binning, true) > ws.by_cell.size()) count_boxes(binning, false);
@@ -296,10 +297,8 @@ std::size_t GridSearch::count_boxes(const Binning& binning, bool cut_into_pieces
             if (ws.cell_of[i] != large_marker) continue;
             const int pieces = pieces_to_fit(in.particles[i], span.begin, binning.path_end(i), binning.fit);
             ws.cell_of[i] = large_marker - static_cast<std::uint32_t>(pieces);
-            for (int piece = 0; piece < pieces; ++piece) {
-                ++counts[binning.cell_of_box(
-                    piece_bounds(in.particles[i], span.begin, binning.path_end(i), piece, pieces))];
-            }
+            for (int piece = 0; piece < pieces; ++piece)
+                ++counts[binning.cell_of_box(binning.piece_bounds(i, piece, pieces))];
             counted += static_cast<std::size_t>(pieces);
             large -= pieces > 0 ? 1U : 0U;
         }
@@ -316,7 +315,7 @@ std::size_t GridSearch::count_boxes(const Binning& binning, bool cut_into_pieces
                 ws.cell_of[i] = absent_marker;
                 continue;
             }
-            const SweptBounds box = swept_bounds(in.particles[i], span.begin, binning.path_end(i));
+            const SweptBounds box = binning.path_bounds(i);
             const bool fits = fits_cell(box, binning.fit);
             const std::uint32_t cell = binning.cell_of_box(box);
             ws.cell_of[i] = fits ? cell : large_marker;
@@ -349,26 +348,22 @@ void GridSearch::sum_cell_places(const Binning& binning) const {
     // On a large grid, in ranges of cells on every thread (a serial pass
     // would leave the others waiting): each range sums its boxes, then
     // places them from where the ranges before it end.
-    const auto ranges = static_cast<std::int64_t>(ws.range_start.size()) - 1;
-    const int range_workers = worker_count(static_cast<std::size_t>(threads), cells, min_particles_per_thread);
-    if (range_workers == 1) {
+    if (binning.range_workers == 1) {
         place_cells(0, cells, 0);
     } else {
         std::fill(ws.range_start.begin(), ws.range_start.end(), 0U);  // a range past the end is not visited
-        parallel_for_ranges(range_workers, cells, ranges,
-                            [&](std::int64_t range, std::int64_t first, std::int64_t last) {
-                                std::uint32_t boxes = 0;
-                                for (std::int64_t worker = 0; worker < threads; ++worker) {
-                                    const std::uint32_t* counts = binning.counts_of(worker);
-                                    for (std::int64_t cell = first; cell < last; ++cell) boxes += counts[cell];
-                                }
-                                ws.range_start[range + 1] = boxes;
-                            });
+        binning.for_each_range([&](std::int64_t range, std::int64_t first, std::int64_t last) {
+            std::uint32_t boxes = 0;
+            for (std::int64_t worker = 0; worker < threads; ++worker) {
+                const std::uint32_t* counts = binning.counts_of(worker);
+                for (std::int64_t cell = first; cell < last; ++cell) boxes += counts[cell];
+            }
+            ws.range_start[range + 1] = boxes;
+        });
         std::partial_sum(ws.range_start.begin(), ws.range_start.end(), ws.range_start.begin());
-        parallel_for_ranges(range_workers, cells, ranges,
-                            [&](std::int64_t range, std::int64_t first, std::int64_t last) {
-                                place_cells(first, last, ws.range_start[range]);
-                            });
+        binning.for_each_range([&](std::int64_t range, std::int64_t first, std::int64_t last) {
+            place_cells(first, last, ws.range_start[range]);
+        });
     }
     ws.large_start[0] = 0;
     std::partial_sum(ws.large_start.begin(), ws.large_start.end(), ws.large_start.begin());
@@ -381,7 +376,6 @@ void GridSearch::sum_cell_places(const Binning& binning) const {
 void GridSearch::place_boxes(const Binning& binning) const {
     const PairSearchInput& in = binning.in;
     SliceWorkspace& ws = binning.ws;
-    const SliceSpan span = binning.span;
     parallel_for(binning.threads, binning.threads, [&](std::int64_t worker, std::size_t) {
         std::uint32_t* next = binning.counts_of(worker);
         const auto [first, last] = binning.block_of(worker);
@@ -395,8 +389,7 @@ void GridSearch::place_boxes(const Binning& binning) const {
         // for the processor to overlap the cache misses of many particles.
         for (std::int64_t i = first; i < last; ++i) {
             const std::uint32_t mark = ws.cell_of[i];
-            if (mark < first_piece_marker)
-                place(i, mark, swept_bounds(in.particles[i], span.begin, binning.path_end(i)));
+            if (mark < first_piece_marker) place(i, mark, binning.path_bounds(i));
         }
         std::uint32_t next_large = ws.large_start[worker];
         for (std::int64_t i = first; i < last; ++i) {
@@ -404,13 +397,13 @@ void GridSearch::place_boxes(const Binning& binning) const {
             if (mark < first_piece_marker || mark == absent_marker) continue;
             if (mark == large_marker) {
                 ws.large[next_large] = static_cast<std::uint32_t>(i);
-                ws.large_boxes[next_large] = swept_bounds(in.particles[i], span.begin, binning.path_end(i));
+                ws.large_boxes[next_large] = binning.path_bounds(i);
                 ++next_large;
                 continue;
             }
             const int pieces = static_cast<int>(large_marker - mark);
             for (int piece = 0; piece < pieces; ++piece) {
-                const SweptBounds box = piece_bounds(in.particles[i], span.begin, binning.path_end(i), piece, pieces);
+                const SweptBounds box = binning.piece_bounds(i, piece, pieces);
                 place(i, binning.cell_of_box(box), box);
             }
         }
@@ -427,10 +420,7 @@ void GridSearch::close_cell_starts(const Binning& binning) const {
     if (binning.threads == 1) {
         for (std::int64_t cell = cells - 1; cell >= 0; --cell) ws.cell_start[cell + 1] = ends[cell];
     } else {
-        const auto ranges = static_cast<std::int64_t>(ws.range_start.size()) - 1;
-        const int range_workers =
-            worker_count(static_cast<std::size_t>(binning.threads), cells, min_particles_per_thread);
-        parallel_for_ranges(range_workers, cells, ranges, [&](std::int64_t, std::int64_t first, std::int64_t last) {
+        binning.for_each_range([&](std::int64_t, std::int64_t first, std::int64_t last) {
             std::copy(ends + first, ends + last, ws.cell_start.begin() + first + 1);
         });
     }
@@ -461,7 +451,6 @@ template <std::uint32_t block_groups, std::uint32_t group_lanes = FloatBoundsArr
 // The row above is first read here, and only at hits, a pattern the
 // processor's prefetchers miss: its motion states are fetched this many
 // cells ahead (docs/benchmarks.md).
-constexpr int prefetch_cells_ahead = stepped_tuning::scan_fetch_cells_ahead;
 
 // The half stencil of every cell in row `cy`: the rest of the cell and the
 // cell to the east (adjacent in the cell order, so one range), then the
@@ -480,7 +469,7 @@ template <std::uint32_t block_groups, std::uint32_t group_lanes = FloatBoundsArr
         const std::uint32_t first = start[cell];
         const std::uint32_t last = start[cell + 1];
         if (cy + 1 < side) {
-            const std::uint32_t ahead = start[row + side + std::min(cx + prefetch_cells_ahead, side)];
+            const std::uint32_t ahead = start[row + side + std::min(cx + scan_fetch_cells_ahead, side)];
             prefetch(states + ahead);
             prefetch(states + std::min(ahead + 1, boxes_binned));
         }

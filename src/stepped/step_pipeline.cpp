@@ -13,6 +13,8 @@
 
 namespace particlesim {
 
+using namespace stepped_tuning;
+
 void measure_step_start(std::span<const Particle> particles, const Box& box, double duration,
                         std::span<double> wall_time, StepStart& start, int threads) {
     const auto count = static_cast<std::int64_t>(particles.size());
@@ -51,13 +53,6 @@ void gather_wall_candidates(std::span<const double> wall_time, double duration, 
         }
     });
 }
-
-namespace {
-
-// Candidates a parallel pass of the selection hands out at a time.
-constexpr std::int64_t selection_block = stepped_tuning::selection_block;
-
-}  // namespace
 
 namespace {
 
@@ -306,8 +301,6 @@ void resolve_four_pairs(std::span<PairAtContact, 4> pairs, const Box& box, doubl
 
 void resolve_collisions(std::span<Particle> particles, std::span<const std::uint32_t> partner,
                         std::span<const double> collision_time, const Box& box, double duration, int threads) {
-    constexpr std::int64_t block = stepped_tuning::resolution_block;
-    constexpr std::size_t pair_lookahead = stepped_tuning::resolution_fetch_ahead;
     const auto count = static_cast<std::int64_t>(particles.size());
     const int workers = worker_count(static_cast<std::size_t>(threads), count, min_particles_per_thread);
     // In storage order, block by block, reading only per-particle arrays: a
@@ -316,12 +309,12 @@ void resolve_collisions(std::span<Particle> particles, std::span<const std::uint
     // index; accepted collisions share no particle, so they resolve
     // independently (and the exchange is symmetric, bit for bit, in its two
     // particles).
-    parallel_for_blocks(workers, count, block, [&](std::int64_t, std::int64_t first, std::int64_t last) {
+    parallel_for_blocks(workers, count, resolution_block, [&](std::int64_t, std::int64_t first, std::int64_t last) {
         // The block's collisions are listed first, without a branch on each
         // particle: which ones collide follows no pattern, and a branch on
         // it was mispredicted for most that do.
-        std::array<std::uint32_t, block> pair_at;
-        std::array<std::uint32_t, block> wall_at;
+        std::array<std::uint32_t, resolution_block> pair_at;
+        std::array<std::uint32_t, resolution_block> wall_at;
         std::size_t pairs_listed = 0;
         std::size_t walls_listed = 0;
         for (std::int64_t i = first; i < last; ++i) {
@@ -341,7 +334,8 @@ void resolve_collisions(std::span<Particle> particles, std::span<const std::uint
         std::array<PairAtContact, 4> pairs;
         std::size_t waiting = 0;
         for (std::size_t k = 0; k < pairs_listed; ++k) {
-            if (k + pair_lookahead < pairs_listed) prefetch_lines_of(particles[partner[pair_at[k + pair_lookahead]]]);
+            if (k + resolution_fetch_ahead < pairs_listed)
+                prefetch_lines_of(particles[partner[pair_at[k + resolution_fetch_ahead]]]);
             const std::uint32_t i = pair_at[k];
             pairs[waiting++] = at_contact(particles[i], particles[partner[i]], collision_time[i]);
             if (waiting == pairs.size()) {

@@ -35,10 +35,14 @@ inline constexpr std::size_t sort_by_position_from = 65536;
 // Steps between sorts: faster particles scramble the order sooner, and each
 // sort costs a pass over the particles (16 and 32 measured no different).
 inline constexpr int sort_every_steps = 8;
-// Cells of the sort's grid hold about this many particles.
+// Cells of the sort's grid hold about this many particles: fine enough that
+// a grid cell's particles sit together in memory, coarse enough that the
+// cell counts stay small.
 inline constexpr double sort_particles_per_cell = 2.0;
 // Places a displaced particle may wait for its turn when a scene sorted a
-// few steps ago is sorted again (particles: 48 bytes each).
+// few steps ago is sorted again (particles: 48 bytes each). Its particles
+// then move at most a few rows of cells in the order (a row holds about
+// sqrt(2 N) particles), so this holds every particle displaced ahead of it.
 inline constexpr std::size_t sort_window = 16384;
 // Hops along a permutation cycle fetched ahead when moving particles.
 inline constexpr int sort_fetch_ahead = 8;
@@ -69,13 +73,18 @@ inline constexpr std::size_t resolution_fetch_ahead = 16;
 // --- The grid search (search/grid_search.cpp)
 
 // A slice's typical path, in mean particle spacings: fewer, longer slices bin
-// fewer boxes but test more pairs (1.5 to 3 measured the same on 2 threads).
+// fewer boxes but test more pairs (4/3 was the fastest from N = 1000 to
+// 32000; 1.5 to 3 measured the same on 2 threads).
 inline constexpr double slice_sweep_in_spacings = 4.0 / 3.0;
-// With a forced grid, a slice's typical path in cells.
+// With a forced grid, a slice's typical path in cells: at most half a cell,
+// so that most boxes fit their cell.
 inline constexpr double slice_sweep_in_forced_cells = 0.5;
 // The most slices a step is cut into.
 inline constexpr int max_slices = 64;
-// The most pieces a long path is cut into before it is a large box.
+// The most equal pieces in time a path whose box exceeds a cell is cut
+// into, each binned as a box of its own: fast particles then cost a few more
+// boxes instead of joining the large boxes, which meet each other in a
+// quadratic loop. Longer paths stay large.
 inline constexpr int max_pieces = 8;
 // Particles below which threads take whole slices each; from here on a
 // step has one slice, which the threads share.

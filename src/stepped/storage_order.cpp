@@ -12,19 +12,12 @@
 
 namespace particlesim {
 
+using namespace stepped_tuning;
+
 namespace {
 
-// About two particles a cell: fine enough that a grid cell's particles sit
-// together in memory, coarse enough that the cell counts stay small.
-constexpr double particles_per_cell = stepped_tuning::sort_particles_per_cell;
-
-// Sorted again after a few steps, a large scene's particles move at most a
-// few rows of cells in the order (a row holds about sqrt(2 N) particles), so
-// a window this long holds every particle displaced ahead of its turn.
-constexpr std::size_t max_window = stepped_tuning::sort_window;
-
 UniformGrid sorting_grid(double box_size, std::size_t count) {
-    const double wanted = std::sqrt(static_cast<double>(count) / particles_per_cell);
+    const double wanted = std::sqrt(static_cast<double>(count) / sort_particles_per_cell);
     return UniformGrid(box_size, UniformGrid::cells_per_side(box_size, 0.0, wanted));
 }
 
@@ -34,7 +27,7 @@ void StorageOrder::reserve(std::size_t count) {
     user_index_.reserve(count);
     stored_index_.reserve(count);
     cell_start_.reserve(sorting_grid(1.0, count).cell_count() + 1);
-    const std::size_t window = std::bit_ceil(std::min(count, max_window));
+    const std::size_t window = std::bit_ceil(std::min(count, sort_window));
     window_.resize(window);
     window_place_.resize(window);
 }
@@ -107,14 +100,13 @@ void StorageOrder::move_along_cycles(std::span<Particle> particles) {
     // destination, which is carried on. The places ahead on the cycle are
     // fetched early: every place is a cache miss, and the chain of
     // destinations is the only dependent load.
-    constexpr int lookahead = stepped_tuning::sort_fetch_ahead;
     std::vector<std::uint32_t>& destination = stored_index_;
     for (std::size_t start = 0; start < particles.size(); ++start) {
         if (destination[start] == start) continue;
         Particle carried = particles[start];
         std::uint32_t carried_user = user_index_[start];
         std::uint32_t ahead = destination[start];
-        for (int hop = 0; hop < lookahead; ++hop) ahead = destination[ahead];
+        for (int hop = 0; hop < sort_fetch_ahead; ++hop) ahead = destination[ahead];
         std::uint32_t at = destination[start];
         while (at != start) {
             prefetch_for_write(&particles[ahead]);

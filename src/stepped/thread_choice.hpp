@@ -14,17 +14,12 @@
 
 namespace particlesim {
 
+// A trial alternates blocks of trial_block_steps on one thread and on all of
+// them, the first step of each block not counted (it pays for the switch: a
+// thread woken, caches filled on the other core); then trial_run_steps run
+// with the faster before the next trial (stepped_tuning.hpp).
 class ThreadChoice {
 public:
-    // A trial alternates blocks of steps on one thread and on all of them,
-    // the first step of each block not counted (it pays for the switch:
-    // a worker woken, caches filled on the other core); then steps run
-    // with the faster before the next trial.
-    static constexpr int block_steps = stepped_tuning::trial_block_steps;
-    static constexpr int trial_blocks = stepped_tuning::trial_blocks;
-    static constexpr int run_steps = stepped_tuning::trial_run_steps;
-    static constexpr int warming_steps = stepped_tuning::trial_warm_up_steps;
-
     // `threads`: the most a step may use. Without `measured`, every step uses them all.
     ThreadChoice(int threads, bool measured) : most_(threads), measured_(measured && threads > 1) {}
 
@@ -42,18 +37,19 @@ public:
         ++step_;
         switch (stage_) {
         case Stage::warming:  // the first steps fill caches and pages: not a fair trial
-            if (step_ == warming_steps) start(Stage::trying);
+            if (step_ == stepped_tuning::trial_warm_up_steps) start(Stage::trying);
             break;
         case Stage::trying:
-            if ((step_ - 1) % block_steps != 0) (on_one_thread(step_ - 1) ? one_seconds_ : most_seconds_) += seconds;
-            if (step_ == trial_blocks * block_steps) {
+            if ((step_ - 1) % stepped_tuning::trial_block_steps != 0)
+                (on_one_thread(step_ - 1) ? one_seconds_ : most_seconds_) += seconds;
+            if (step_ == stepped_tuning::trial_blocks * stepped_tuning::trial_block_steps) {
                 // Ties keep all the threads (the choice when nothing is measured).
                 running_ = one_seconds_ < most_seconds_ ? 1 : most_;
                 start(Stage::running);
             }
             break;
         case Stage::running:
-            if (step_ == run_steps) start(Stage::trying);
+            if (step_ == stepped_tuning::trial_run_steps) start(Stage::trying);
             break;
         }
     }
@@ -65,7 +61,7 @@ private:
     enum class Stage : std::uint8_t { warming, trying, running };
 
     // Within a trial: which steps run on one thread.
-    static bool on_one_thread(int step) { return (step / block_steps) % 2 == 0; }
+    static bool on_one_thread(int step) { return (step / stepped_tuning::trial_block_steps) % 2 == 0; }
 
     void start(Stage stage) {
         stage_ = stage;
