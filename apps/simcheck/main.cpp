@@ -1,11 +1,12 @@
 // simcheck: checks any program's output against the rules (io.md "simcheck",
-// docs/checking.md). Thin by design: arguments -> scene -> output reader ->
-// the library's step checker -> report.
+// docs/checking.md), or grades a program on a suite (`simcheck grade`,
+// grade.hpp). Thin by design: arguments -> scene -> judge -> report.
 //   exit 0: conforms; 1: breaks the rules (first line "step N: ...");
-//   2: bad usage or an unreadable scene or output; 3: no verdict possible.
+//   2: bad usage or an unreadable scene or output; 3: no verdict possible;
+//   4: the physics conforms, the output's shape deviates (named).
 
-#include "output_check.hpp"
-#include "particlesim/output_reader.hpp"
+#include "grade.hpp"
+#include "judge.hpp"
 #include "report.hpp"
 
 #include "particlesim/scene.hpp"
@@ -31,8 +32,10 @@ constexpr int exit_conforms = 0;
 constexpr int exit_breaks_rules = 1;
 constexpr int exit_bad_input = 2;
 constexpr int exit_no_verdict = 3;
+constexpr int exit_shape = 4;
 
 constexpr const char* usage = R"(usage: simcheck SCENE OUTPUT [--substeps K | --engine exact] [--json]
+       simcheck grade SUITE_DIR [OPTIONS] -- PROGRAM [ARGS...]   (simcheck grade --help)
 
 Checks OUTPUT, written by any program for SCENE in the format of io.md,
 against the rules: each printed step from the program's own previous printed
@@ -47,7 +50,10 @@ step, within the uncertainty of 8-decimal printing (docs/checking.md).
 
 exit status: 0 conforms; 1 breaks the rules (the report's first line is
 "step N: ..."); 2 bad usage or an unreadable scene or output; 3 no verdict
-(a perf-mode output whose run may go several ways within rounding, ...).
+(a perf-mode output whose run may go several ways within rounding, ...);
+4 the physics conforms but the output's shape deviates from io.md's (a
+block printed twice, no counters on the final block, no step-0 block,
+numbers not in %.8f, trailing spaces or blank lines: named in the report).
 )";
 
 class BadUsage : public std::runtime_error {
@@ -134,36 +140,46 @@ std::string rules_name(const StepCheckOptions& options) {
     return "the step rules with " + std::to_string(options.substeps) + " substeps";
 }
 
+// The output as a file that can be read twice: stdin is copied first.
+std::FILE* open_output(const std::string& path, const std::string& name) {
+    if (path != "-") {
+        std::FILE* file = std::fopen(path.c_str(), "rb");
+        if (!file) throw BadUsage(name + ": cannot open: " + std::strerror(errno));
+        return file;
+    }
+    std::FILE* copy = std::tmpfile();
+    if (!copy) throw BadUsage(name + ": cannot keep a copy: " + std::strerror(errno));
+    char buffer[1 << 16];
+    for (std::size_t got; (got = std::fread(buffer, 1, sizeof buffer, stdin)) > 0;) {
+        if (std::fwrite(buffer, 1, got, copy) != got) {
+            std::fclose(copy);
+            throw BadUsage(name + ": cannot keep a copy: " + std::strerror(errno));
+        }
+    }
+    std::rewind(copy);
+    return copy;
+}
+
 int run(const Arguments& args) {
     const Scene scene = read_scene_file(args.scene_path);
     const std::string output_name = display_name(args.output_path);
-    std::FILE* file = args.output_path == "-" ? stdin : std::fopen(args.output_path.c_str(), "rb");
-    if (!file) throw BadUsage(output_name + ": cannot open: " + std::strerror(errno));
-    particlesim::OutputReader reader(file, output_name);
-    Report report;
-    try {
-        report = check_output(scene, reader, args.options);
-    } catch (const InputError& e) {
-        if (file != stdin) std::fclose(file);
-        throw BadUsage(output_name + ":" + std::to_string(e.line()) + ": " + e.what());
-    } catch (const std::exception& e) {
-        // The rules cannot be applied here (the exact engine refuses the
-        // printed state, a step needs millions of events, ...).
-        report.verdict = Verdict::no_verdict;
-        report.reason = e.what();
-    }
-    if (file != stdin) std::fclose(file);
+    std::FILE* file = open_output(args.output_path, output_name);
+    const Judgement judgement = judge_output(scene, file, output_name, args.options);
+    std::fclose(file);
+    if (judgement.outcome == Outcome::malformed) throw BadUsage(judgement.message);
     const ReportContext context{output_name, rules_name(args.options)};
     if (args.json) {
-        write_json_report(stdout, report, context);
+        write_json_report(stdout, judgement, context);
     } else {
-        write_text_report(stdout, report, context);
+        write_text_report(stdout, judgement, context);
     }
     if (std::fflush(stdout) != 0) return exit_bad_input;
-    switch (report.verdict) {
-    case Verdict::conforms: return exit_conforms;
-    case Verdict::breaks_rules: return exit_breaks_rules;
-    case Verdict::no_verdict: return exit_no_verdict;
+    switch (judgement.outcome) {
+    case Outcome::conforms: return exit_conforms;
+    case Outcome::shape: return exit_shape;
+    case Outcome::wrong: return exit_breaks_rules;
+    case Outcome::no_verdict: return exit_no_verdict;
+    case Outcome::malformed: return exit_bad_input;
     }
     return exit_no_verdict;
 }
@@ -171,6 +187,7 @@ int run(const Arguments& args) {
 }  // namespace
 
 int main(int argc, char** argv) {
+    if (argc > 1 && std::strcmp(argv[1], "grade") == 0) return simcheck::grade_main(argc - 1, argv + 1);
     bool json = false;
     for (int k = 1; k < argc; ++k) json = json || std::strcmp(argv[k], "--json") == 0;
     try {

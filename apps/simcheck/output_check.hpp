@@ -21,6 +21,36 @@ namespace simcheck {
 
 enum class Verdict { conforms, breaks_rules, no_verdict };
 
+// The lines of an output, one at a time: read from a file as they come
+// (FileLines), or from an output whose shape was repaired (output_shape.hpp).
+class LineSource {
+public:
+    virtual ~LineSource() = default;
+    // The next line, or false at the end; throws particlesim::InputError.
+    virtual bool next(particlesim::OutputLine& out) = 0;
+    [[nodiscard]] virtual long lines_read() const = 0;
+    // Within how much each printed number is known, once a line has been read.
+    [[nodiscard]] virtual double uncertainty() const = 0;
+};
+
+class FileLines : public LineSource {
+public:
+    explicit FileLines(particlesim::OutputReader& reader) : reader_(reader) {}
+    bool next(particlesim::OutputLine& out) override { return reader_.next(out); }
+    [[nodiscard]] long lines_read() const override { return reader_.lines_read(); }
+    [[nodiscard]] double uncertainty() const override {
+        return reader_.format() == particlesim::NumberFormat::fixed8 ? particlesim::fixed8_uncertainty : 0.0;
+    }
+
+private:
+    particlesim::OutputReader& reader_;
+};
+
+// What the check lets pass, for an output whose shape deviates in a known way.
+struct ShapeAllowance {
+    bool final_block_without_counters = false;  // the counters are then not judged
+};
+
 struct Finding {
     std::int64_t step = 0;
     long line = 0;  // of the output, 0 when none applies
@@ -42,7 +72,7 @@ struct Report {
     std::vector<std::int64_t> steps_within_rounding;  // every step with such a decision, ascending
 };
 
-Report check_output(const particlesim::Scene& scene, particlesim::OutputReader& output,
-                    const particlesim::StepCheckOptions& options);
+Report check_output(const particlesim::Scene& scene, LineSource& output, const particlesim::StepCheckOptions& options,
+                    const ShapeAllowance& allowance = {});
 
 }  // namespace simcheck

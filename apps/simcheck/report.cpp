@@ -22,6 +22,8 @@ std::string state_text(const Particle& p) {
            "  vy " + number(p.velocity.y());
 }
 
+}  // namespace
+
 std::string json_string(const std::string& text) {
     std::string out = "\"";
     for (const char c : text) {
@@ -39,6 +41,8 @@ std::string json_string(const std::string& text) {
     return out + "\"";
 }
 
+namespace {
+
 std::string json_number(double value) {
     char text[40];
     std::snprintf(text, sizeof text, "%.17g", value);
@@ -54,8 +58,9 @@ std::string json_state(const Particle& p) {
     return out + "]";
 }
 
-const char* verdict_name(Verdict verdict) {
-    switch (verdict) {
+const char* verdict_name(const Judgement& judgement) {
+    if (judgement.outcome == Outcome::shape) return "shape";
+    switch (judgement.report.verdict) {
     case Verdict::conforms: return "conforms";
     case Verdict::breaks_rules: return "breaks_rules";
     case Verdict::no_verdict: return "no_verdict";
@@ -63,9 +68,14 @@ const char* verdict_name(Verdict verdict) {
     return "";
 }
 
+void write_deviations(std::FILE* out, const std::vector<std::string>& deviations) {
+    for (const std::string& deviation : deviations) std::fprintf(out, "  - %s\n", deviation.c_str());
+}
+
 }  // namespace
 
-void write_text_report(std::FILE* out, const Report& report, const ReportContext& context) {
+void write_text_report(std::FILE* out, const Judgement& judgement, const ReportContext& context) {
+    const Report& report = judgement.report;
     if (report.verdict == Verdict::breaks_rules) {
         const Finding& f = *report.finding;
         std::fprintf(out, "step %lld: %s\n", static_cast<long long>(f.step), f.what.c_str());
@@ -78,13 +88,23 @@ void write_text_report(std::FILE* out, const Report& report, const ReportContext
                          "the rules allow)\n",
                          report.uncertainty);
         }
+        if (!judgement.deviations.empty()) {
+            std::fprintf(out, "  (read despite deviations from io.md's shape:)\n");
+            write_deviations(out, judgement.deviations);
+        }
         return;
     }
     if (report.verdict == Verdict::no_verdict) {
         std::fprintf(out, "no verdict: %s\n", report.reason.c_str());
+        write_deviations(out, judgement.deviations);
         return;
     }
-    std::fprintf(out, "conforms: %zu particles, %lld steps, checked against %s", report.particles,
+    if (judgement.outcome == Outcome::shape) {
+        std::fprintf(out, "shape: the physics conforms, but the output's shape deviates from io.md's:\n");
+        write_deviations(out, judgement.deviations);
+    }
+    std::fprintf(out, judgement.outcome == Outcome::shape ? "physics:" : "conforms:");
+    std::fprintf(out, " %zu particles, %lld steps, checked against %s", report.particles,
                  static_cast<long long>(report.steps), context.rules.c_str());
     std::fprintf(out, report.steps_checked > 0 ? " step by step" : " from the initial state");
     std::fprintf(out, "; printed numbers read as known within %g\n", report.uncertainty);
@@ -98,8 +118,9 @@ void write_text_report(std::FILE* out, const Report& report, const ReportContext
     }
 }
 
-void write_json_report(std::FILE* out, const Report& report, const ReportContext& context) {
-    std::string json = "{\"verdict\": \"" + std::string(verdict_name(report.verdict)) + "\"";
+void write_json_report(std::FILE* out, const Judgement& judgement, const ReportContext& context) {
+    const Report& report = judgement.report;
+    std::string json = "{\"verdict\": \"" + std::string(verdict_name(judgement)) + "\"";
     json += ", \"rules\": " + json_string(context.rules);
     json += ", \"particles\": " + std::to_string(report.particles);
     json += ", \"steps\": " + std::to_string(report.steps);
@@ -119,6 +140,10 @@ void write_json_report(std::FILE* out, const Report& report, const ReportContext
         if (k > 0) json += ", ";
         json += "{\"step\": " + std::to_string(report.within_rounding[k].first) +
                 ", \"what\": " + json_string(report.within_rounding[k].second) + "}";
+    }
+    json += "], \"deviations\": [";
+    for (std::size_t k = 0; k < judgement.deviations.size(); ++k) {
+        json += (k > 0 ? ", " : "") + json_string(judgement.deviations[k]);
     }
     json += "], \"steps_within_rounding\": [";
     for (std::size_t k = 0; k < report.steps_within_rounding.size(); ++k) {

@@ -1,0 +1,232 @@
+#include "sandbox.hpp"
+
+#include <dirent.h>
+#include <fcntl.h>
+#include <poll.h>
+#include <signal.h>
+#include <sys/resource.h>
+#include <sys/stat.h>
+#include <sys/syscall.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <algorithm>
+#include <cerrno>
+#include <chrono>
+#include <cstdlib>
+#include <cstring>
+#include <filesystem>
+#include <stdexcept>
+
+namespace simcheck {
+
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+constexpr std::size_t stderr_kept = 4096;
+// After the program exits, how long its output may still take to arrive
+// (from a pipe's buffer, or a child that ignored the group's SIGKILL).
+constexpr double drain_seconds = 1.0;
+
+class Fd {
+public:
+    explicit Fd(int fd = -1) : fd_(fd) {}
+    Fd(const Fd&) = delete;
+    Fd& operator=(const Fd&) = delete;
+    ~Fd() { close(); }
+    void close() {
+        if (fd_ >= 0) ::close(fd_);
+        fd_ = -1;
+    }
+    [[nodiscard]] int get() const { return fd_; }
+
+private:
+    int fd_;
+};
+
+std::string temporary_directory() {
+    const char* base = std::getenv("TMPDIR");
+    std::string path = std::string(base && *base ? base : "/tmp") + "/simcheck-grade-XXXXXX";
+    if (!mkdtemp(path.data()))
+        throw std::runtime_error("cannot make a working directory: " + std::string(std::strerror(errno)));
+    return path;
+}
+
+void set_limit(int resource, rlim_t value) {
+    const rlimit limit{value, value};
+    setrlimit(resource, &limit);
+}
+
+// In the child, between fork and exec: async-signal-safe calls only.
+[[noreturn]] void start_child(char* const* argv, const char* directory, const char* stdin_path, int out, int err,
+                              const SandboxLimits& limits, rlim_t tasks) {
+    setpgid(0, 0);
+    dup2(err, 2);
+    dup2(out, 1);
+    const int in = open(stdin_path, O_RDONLY);
+    if (in < 0 || dup2(in, 0) < 0 || chdir(directory) != 0) {
+        constexpr char message[] = "simcheck grade: cannot set up the program's stdin or working directory\n";
+        [[maybe_unused]] const auto written = write(2, message, sizeof message - 1);
+        _exit(127);
+    }
+    if (close_range(3, ~0U, 0) != 0) {
+        for (int fd = 3; fd < 1024; ++fd) ::close(fd);
+    }
+    signal(SIGPIPE, SIG_DFL);
+    sigset_t none;
+    sigemptyset(&none);
+    sigprocmask(SIG_SETMASK, &none, nullptr);
+    set_limit(RLIMIT_CORE, 0);
+    set_limit(RLIMIT_AS, static_cast<rlim_t>(limits.memory_bytes));
+    set_limit(RLIMIT_FSIZE, static_cast<rlim_t>(limits.output_bytes));
+    set_limit(RLIMIT_NPROC, tasks);
+    set_limit(RLIMIT_CPU, static_cast<rlim_t>(limits.seconds) + 2);
+    execvp(argv[0], argv);
+    constexpr char message[] = "simcheck grade: cannot run the program\n";
+    [[maybe_unused]] const auto written = write(2, message, sizeof message - 1);
+    _exit(127);
+}
+
+double seconds_since(Clock::time_point start) { return std::chrono::duration<double>(Clock::now() - start).count(); }
+
+}  // namespace
+
+int tasks_of_this_user() {
+    const uid_t user = getuid();
+    int tasks = 0;
+    DIR* proc = opendir("/proc");
+    if (!proc) return 0;
+    while (const dirent* entry = readdir(proc)) {
+        if (entry->d_name[0] < '0' || entry->d_name[0] > '9') continue;
+        const std::string task_dir = std::string("/proc/") + entry->d_name + "/task";
+        struct stat info {};
+        if (stat(task_dir.c_str(), &info) != 0 || info.st_uid != user) continue;
+        if (DIR* threads = opendir(task_dir.c_str())) {
+            while (const dirent* thread = readdir(threads)) tasks += thread->d_name[0] != '.' ? 1 : 0;
+            closedir(threads);
+        }
+    }
+    closedir(proc);
+    return tasks;
+}
+
+SandboxRun run_sandboxed(const std::vector<std::string>& arguments, const std::string& stdin_path,
+                         const std::string& stdout_path, const SandboxLimits& limits) {
+    const std::string directory = temporary_directory();
+    struct RemoveDirectory {
+        const std::string& path;
+        ~RemoveDirectory() {
+            std::error_code ignored;
+            std::filesystem::remove_all(path, ignored);
+        }
+    } remove_directory{directory};
+
+    Fd output(open(stdout_path.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0644));
+    if (output.get() < 0) throw std::runtime_error(stdout_path + ": cannot write: " + std::strerror(errno));
+    int out_pipe[2], err_pipe[2];
+    if (pipe2(out_pipe, O_CLOEXEC) != 0) throw std::runtime_error("cannot make a pipe");
+    Fd out_read(out_pipe[0]), out_write(out_pipe[1]);
+    if (pipe2(err_pipe, O_CLOEXEC) != 0) throw std::runtime_error("cannot make a pipe");
+    Fd err_read(err_pipe[0]), err_write(err_pipe[1]);
+
+    std::vector<char*> argv;
+    for (const std::string& a : arguments) argv.push_back(const_cast<char*>(a.c_str()));
+    argv.push_back(nullptr);
+    const rlim_t tasks = static_cast<rlim_t>(tasks_of_this_user() + limits.processes);
+
+    const Clock::time_point start = Clock::now();
+    const pid_t pid = fork();
+    if (pid < 0) throw std::runtime_error("cannot fork: " + std::string(std::strerror(errno)));
+    if (pid == 0) {
+        start_child(argv.data(), directory.c_str(), stdin_path.c_str(), out_write.get(), err_write.get(), limits,
+                    tasks);
+    }
+    setpgid(pid, pid);  // as the child does: whichever runs first
+    out_write.close();
+    err_write.close();
+    // Told at once when the program ends, where the kernel can (pidfd).
+    Fd exited(static_cast<int>(syscall(SYS_pidfd_open, pid, 0)));
+
+    SandboxRun run;
+    bool reaped = false;
+    int status = 0;
+    Clock::time_point drain_until{};
+    const auto reap = [&](bool wait) {
+        if (reaped) return;
+        if (waitpid(pid, &status, wait ? 0 : WNOHANG) == pid) {
+            reaped = true;
+            run.seconds = seconds_since(start);
+            kill(-pid, SIGKILL);  // whatever it left behind, holding stdout open or not
+            drain_until = Clock::now() +
+                          std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double>(drain_seconds));
+        }
+    };
+    const auto stop = [&](SandboxRun::End end) {
+        kill(-pid, SIGKILL);
+        kill(pid, SIGKILL);
+        const bool was_reaped = reaped;
+        reap(true);
+        if (!was_reaped) run.seconds = seconds_since(start);
+        run.end = end;
+    };
+
+    char buffer[1 << 16];
+    bool ended_by_limit = false;
+    while (!ended_by_limit) {
+        reap(false);
+        const bool out_open = out_read.get() >= 0, err_open = err_read.get() >= 0;
+        if (reaped && ((!out_open && !err_open) || Clock::now() >= drain_until)) break;
+        const double left = limits.seconds - seconds_since(start);
+        if (!reaped && left <= 0.0) {
+            stop(SandboxRun::End::timeout);
+            ended_by_limit = true;
+            break;
+        }
+        pollfd fds[3] = {
+            {out_read.get(), POLLIN, 0}, {err_read.get(), POLLIN, 0}, {reaped ? -1 : exited.get(), POLLIN, 0}};
+        const int wait_ms = exited.get() >= 0 && !reaped ? static_cast<int>(std::min(left, 1.0) * 1000.0) + 1 : 10;
+        if (poll(fds, 3, wait_ms) < 0 && errno != EINTR) break;
+        if (fds[0].revents != 0) {
+            const ssize_t got = read(out_read.get(), buffer, sizeof buffer);
+            if (got <= 0) {
+                out_read.close();
+            } else {
+                run.output_bytes += got;
+                if (run.output_bytes > limits.output_bytes) {
+                    stop(SandboxRun::End::output_limit);
+                    ended_by_limit = true;
+                    break;
+                }
+                for (ssize_t done = 0; done < got;) {
+                    const ssize_t wrote = write(output.get(), buffer + done, static_cast<std::size_t>(got - done));
+                    if (wrote <= 0) throw std::runtime_error(stdout_path + ": cannot write: " + std::strerror(errno));
+                    done += wrote;
+                }
+            }
+        }
+        if (fds[1].revents != 0) {
+            const ssize_t got = read(err_read.get(), buffer, sizeof buffer);
+            if (got <= 0) {
+                err_read.close();
+            } else if (run.stderr_head.size() < stderr_kept) {
+                run.stderr_head.append(buffer,
+                                       std::min(static_cast<std::size_t>(got), stderr_kept - run.stderr_head.size()));
+            }
+        }
+    }
+    if (!ended_by_limit) {
+        reap(true);
+        if (WIFSIGNALED(status)) {
+            run.end = SandboxRun::End::signalled;
+            run.signal = WTERMSIG(status);
+        } else {
+            run.end = SandboxRun::End::exited;
+            run.exit_status = WEXITSTATUS(status);
+        }
+    }
+    kill(-pid, SIGKILL);
+    return run;
+}
+
+}  // namespace simcheck
