@@ -106,6 +106,44 @@ void shape_errors_name_their_step() {
     CHECK(order.out.rfind("step 1: line 3 reads \"1 1 5.00000000", 0) == 0);
 }
 
+// Outputs whose physics is right and whose shape is not: exit 4, each deviation named.
+void deviations_of_shape_are_named() {
+    const std::string step2 = pair_output.substr(pair_output.find("2 0 "));
+    const std::string step2_bare =
+        "2 0 3.00000000 10.00000000 -2.00000000 0.00000000\n"
+        "2 1 11.00000000 10.00000000 2.00000000 0.00000000\n";
+    const std::string before_final = pair_output.substr(0, pair_output.find("2 0 "));
+    std::string spaced;
+    for (const char c : pair_output) spaced += c == '\n' ? std::string(" \n") : std::string(1, c);
+    const std::vector<std::pair<std::string, std::string>> cases{
+        {before_final + step2_bare + step2,
+         "step 2 is printed twice (lines 5-6 and lines 7-8); the copy without counters was set aside"},
+        {before_final + step2_bare, "the final block has no counters (pc wc); they are not judged"},
+        {pair_output.substr(pair_output.find("1 0 ")), "no step-0 block (the initial state)"},
+        {spaced, "trailing spaces (first: line 1)"},
+        {pair_output.substr(0, pair_output.find("1 0 ")) + "\n" + pair_output.substr(pair_output.find("1 0 ")),
+         "blank lines (first: line 3)"},
+    };
+    for (const auto& [output, deviation] : cases) {
+        const run_process::Result r = check(pair_scene, output);
+        CHECK_EQ(r.status, 4);
+        CHECK(r.out.rfind("shape: the physics conforms", 0) == 0);
+        const bool named = r.out.find(deviation) != std::string::npos;
+        if (!named) std::fprintf(stderr, "expected \"%s\", got: %s", deviation.c_str(), r.out.c_str());
+        CHECK(named);
+    }
+    // Read despite its shape, wrong physics is still wrong: the block printed
+    // twice, and a wrong final position.
+    std::string wrong = before_final + step2_bare + step2;
+    for (int copy = 0; copy < 2; ++copy) wrong.replace(wrong.find("2 0 3.00000000"), 14, "2 0 3.50000000");
+    const run_process::Result r = check(pair_scene, wrong);
+    CHECK_EQ(r.status, 1);
+    CHECK(r.out.rfind("step 2:", 0) == 0);
+    CHECK(r.out.find("printed twice") != std::string::npos);
+    // A random scene without its step-0 block cannot be judged: its start is unknown.
+    CHECK_EQ(check("2 20 1 2 print\n", pair_output.substr(pair_output.find("1 0 "))).status, 1);
+}
+
 void memory_follows_the_files() {
 #if defined(__SANITIZE_ADDRESS__)
     // AddressSanitizer reserves terabytes of address space: no limit can be set
@@ -154,6 +192,7 @@ int main(int argc, char** argv) {
                        {"unreadable lines name their line", unreadable_lines_name_their_line},
                        {"negative zero is a deviation of shape", negative_zero_is_a_deviation_of_shape},
                        {"shape errors name their step", shape_errors_name_their_step},
+                       {"deviations of shape are named", deviations_of_shape_are_named},
                        {"memory follows the files", memory_follows_the_files},
                        {"bad usage", bad_usage}});
 }

@@ -78,7 +78,7 @@ void set_limit(int resource, rlim_t value) {
     sigemptyset(&none);
     sigprocmask(SIG_SETMASK, &none, nullptr);
     set_limit(RLIMIT_CORE, 0);
-    set_limit(RLIMIT_AS, static_cast<rlim_t>(limits.memory_bytes));
+    if (limits.memory_bytes > 0) set_limit(RLIMIT_AS, static_cast<rlim_t>(limits.memory_bytes));
     set_limit(RLIMIT_FSIZE, static_cast<rlim_t>(limits.output_bytes));
     set_limit(RLIMIT_NPROC, tasks);
     set_limit(RLIMIT_CPU, static_cast<rlim_t>(limits.seconds) + 2);

@@ -15,7 +15,7 @@ namespace simcheck {
 struct SandboxLimits {
     double seconds = 10.0;                              // wall clock
     std::int64_t output_bytes = std::int64_t{1} << 30;  // stdout, and any file it writes
-    std::int64_t memory_bytes = std::int64_t{4} << 30;  // address space (RLIMIT_AS)
+    std::int64_t memory_bytes = std::int64_t{4} << 30;  // address space (RLIMIT_AS); 0: none
     int processes = 256;                                // tasks beyond what its user runs already (RLIMIT_NPROC)
 };
 

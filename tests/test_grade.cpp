@@ -1,0 +1,265 @@
+// simcheck grade: a suite run on simcli (everything conforms), on the
+// textbook implementation with its classic mistakes (each "wrong" at the step
+// plain simcheck names for the same output) and with the last block printed
+// twice ("shape"), and on programs that misbehave: one that sleeps for ever,
+// writes for ever, segfaults, prints garbage, exits 3 after a correct output,
+// leaves a child holding stdout open, or looks at and writes into its working
+// directory. Each gets its verdict, and the grader neither hangs nor leaves
+// anything behind.
+
+#include "check.hpp"
+#include "mini_json.hpp"
+#include "run_process.hpp"
+
+#include <signal.h>
+#include <sys/stat.h>
+#include <unistd.h>
+
+#include <chrono>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <string>
+#include <vector>
+
+namespace {
+
+namespace fs = std::filesystem;
+
+const std::string simcheck = SIMCHECK_PATH;
+const std::string simcli = SIMCLI_PATH;
+const std::string simgen = SIMGEN_PATH;
+const std::string textbook = TEXTBOOK_SIMULATOR_PATH;
+
+const fs::path& work() {
+    static const fs::path dir = [] {
+        std::string path = (fs::temp_directory_path() / "particlesim-grade-XXXXXX").string();
+        if (!mkdtemp(path.data())) std::abort();
+        return fs::path(path);
+    }();
+    return dir;
+}
+
+// Four small cases of simgen's suite (a touching row, the tie rules, a row
+// into a wall, paths across the box), with their manifest; and one of them alone.
+const fs::path& small_suite() {
+    static const fs::path dir = [] {
+        const fs::path full = work() / "full", small = work() / "small", one = work() / "one";
+        run_process::run(simgen, {"suite", full.string()});
+        fs::create_directories(small);
+        fs::create_directories(one);
+        for (const char* name : {"01-cradle", "02-ties", "04-line", "05-fast"}) {
+            for (const char* ext : {".in", ".out"}) {
+                fs::copy_file(full / (std::string(name) + ext), small / (std::string(name) + ext));
+            }
+        }
+        fs::copy_file(full / "manifest.tsv", small / "manifest.tsv");
+        fs::copy_file(full / "01-cradle.in", one / "01-cradle.in");
+        fs::copy_file(full / "01-cradle.out", one / "01-cradle.out");
+        return small;
+    }();
+    return dir;
+}
+
+fs::path one_scene_suite() {
+    small_suite();
+    return work() / "one";
+}
+
+std::string script(const std::string& name, const std::string& body) {
+    const fs::path path = work() / name;
+    std::ofstream(path) << "#!/bin/sh\n" << body;
+    chmod(path.c_str(), 0755);
+    return path.string();
+}
+
+struct Graded {
+    run_process::Result result;
+    mini_json::Value json;
+    double seconds = 0.0;
+};
+
+Graded grade(const fs::path& suite, std::vector<std::string> options, const std::vector<std::string>& program) {
+    const fs::path json = work() / "report.json";
+    fs::remove(json);
+    std::vector<std::string> args{"grade", suite.string(), "--json", json.string()};
+#if defined(__SANITIZE_ADDRESS__)
+    // AddressSanitizer's programs reserve terabytes of address space: no memory limit.
+    args.insert(args.end(), {"--memory", "0"});
+#endif
+    args.insert(args.end(), options.begin(), options.end());
+    args.emplace_back("--");
+    args.insert(args.end(), program.begin(), program.end());
+    const auto start = std::chrono::steady_clock::now();
+    Graded g;
+    g.result = run_process::run(simcheck, args);
+    g.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    try {
+        g.json = mini_json::Parser(run_process::slurp(json.string())).parse();
+    } catch (const std::exception& e) {
+        std::fprintf(stderr, "no JSON report: %s\n%s%s", e.what(), g.result.out.c_str(), g.result.err.c_str());
+    }
+    return g;
+}
+
+const mini_json::Value& scenes(const Graded& g) { return g.json["scenes"]; }
+
+void reference_conforms_everywhere() {
+    const fs::path markdown = work() / "report.md";
+    const Graded g = grade(small_suite(), {"--markdown", markdown.string()}, {simcli, "{}"});
+    CHECK_EQ(g.result.status, 0);
+    CHECK_EQ(scenes(g).items.size(), std::size_t{4});
+    for (const mini_json::Value& s : scenes(g).items) {
+        CHECK_EQ(s["verdict"].text, std::string("conforms"));
+        CHECK(s["step"].kind == mini_json::Value::Kind::null);
+        CHECK_EQ(s["exit_status"].number, 0.0);
+        CHECK(s["reference_seconds"].kind == mini_json::Value::Kind::number);
+        CHECK(s["seconds"].number > 0.0);
+    }
+    CHECK_EQ(scenes(g)[1]["scene"].text, std::string("02-ties"));
+    CHECK(scenes(g)[1]["exercises"].text.rfind("exact ties", 0) == 0);
+    CHECK(g.result.out.find("4 of 4 scenes conform") != std::string::npos);
+    const std::string md = run_process::slurp(markdown.string());
+    CHECK(md.find("| scene | exercises | verdict | first wrong step | seconds | x simcli |") != std::string::npos);
+    CHECK(md.find("| 02-ties | exact ties") != std::string::npos);
+    // Side by side: the same verdicts, and the report says the times are shared.
+    const Graded side = grade(small_suite(), {"--jobs", "2"}, {simcli, "{}"});
+    CHECK_EQ(side.result.status, 0);
+    CHECK(side.result.out.find("2 scenes ran side by side") != std::string::npos);
+}
+
+void textbook_mistakes_are_wrong_at_their_step() {
+    const Graded right = grade(small_suite(), {}, {textbook, "none"});
+    CHECK_EQ(right.result.status, 0);
+    int wrong_rows = 0;
+    for (const char* mistake : {"no-stop-at-the-wall", "ties-broken-by-index-only", "two-collisions-per-step",
+                                "counters-off-by-one", "a-dropped-line"}) {
+        check::Context context(mistake);
+        const Graded g = grade(small_suite(), {}, {textbook, mistake});
+        CHECK_EQ(g.result.status, 1);
+        for (std::size_t k = 0; k < scenes(g).items.size(); ++k) {
+            const mini_json::Value& s = scenes(g)[k];
+            if (s["verdict"].text == "conforms") continue;  // the mistake made no difference here
+            CHECK_EQ(s["verdict"].text, std::string("wrong"));
+            ++wrong_rows;
+            // Plain simcheck names the same first wrong step for the same output.
+            const fs::path scene = small_suite() / (s["scene"].text + ".in");
+            const run_process::Result out = run_process::run(textbook, {mistake}, run_process::slurp(scene.string()));
+            const fs::path output = work() / "mistake.out";
+            std::ofstream(output, std::ios::binary) << out.out;
+            const run_process::Result plain = run_process::run(simcheck, {scene.string(), output.string()});
+            CHECK_EQ(plain.status, 1);
+            CHECK_EQ(plain.out.rfind("step " + std::to_string(static_cast<long long>(s["step"].number)) + ": ", 0),
+                     std::size_t{0});
+            CHECK(s["message"].text.rfind("step ", 0) == 0);
+        }
+    }
+    CHECK(wrong_rows >= 5);
+    // The peer's shape: the last step printed twice, the physics right.
+    const Graded twice = grade(small_suite(), {}, {textbook, "last-block-twice"});
+    CHECK_EQ(twice.result.status, 1);
+    for (const mini_json::Value& s : scenes(twice).items) {
+        CHECK_EQ(s["verdict"].text, std::string("shape"));
+        CHECK(s["message"].text.find("is printed twice") != std::string::npos);
+        CHECK(s["message"].text.find("without counters was set aside") != std::string::npos);
+    }
+}
+
+void misbehaving_programs_get_their_verdicts() {
+    const fs::path suite = one_scene_suite();
+    const std::string expected = (suite / "01-cradle.out").string();
+    struct Case {
+        std::string name, body, verdict;
+        std::vector<std::string> options;
+    };
+    const std::vector<Case> cases{
+        {"sleeps", "exec sleep 1000\n", "timeout", {"--timeout", "1"}},
+        {"writes", "exec yes '0 0 1.00000000 1.00000000 1.00000000 1.00000000'\n", "output-limit", {}},
+        {"segfaults", "kill -SEGV $$\n", "crashed", {}},
+        {"garbage", "echo 'hello world'\n", "malformed", {}},
+        {"silent", "exit 0\n", "malformed", {}},
+        {"exit3", "cat '" + expected + "'\nexit 3\n", "exit-status", {}},
+    };
+    for (const Case& c : cases) {
+        check::Context context(c.name);
+        const Graded g = grade(suite, c.options, {script(c.name + ".sh", c.body)});
+        CHECK_EQ(g.result.status, 1);
+        CHECK_EQ(scenes(g)[0]["verdict"].text, c.verdict);
+        CHECK(g.seconds < 20.0);
+        if (c.verdict == "crashed") CHECK_EQ(scenes(g)[0]["signal"].number, static_cast<double>(SIGSEGV));
+        if (c.verdict == "exit-status") {
+            CHECK_EQ(scenes(g)[0]["exit_status"].number, 3.0);
+            CHECK(scenes(g)[0]["message"].text.find("exit status 3 after an output judged conforms") !=
+                  std::string::npos);
+        }
+        if (c.verdict == "timeout") CHECK(scenes(g)[0]["seconds"].number < 5.0);
+    }
+}
+
+bool process_is_gone(pid_t pid) {
+    if (kill(pid, 0) != 0) return true;
+    // Killed but not yet reaped by whoever adopted it.
+    std::ifstream stat("/proc/" + std::to_string(pid) + "/stat");
+    std::string pid_text, name, state;
+    stat >> pid_text >> name >> state;
+    return state == "Z";
+}
+
+void a_child_holding_stdout_does_not_hang_the_grader() {
+    const fs::path pid_file = work() / "holder.pid";
+    const std::string expected = (one_scene_suite() / "01-cradle.out").string();
+    const std::string body = "cat '" + expected + "'\nsleep 1000 &\necho $! > '" + pid_file.string() + "'\nexit 0\n";
+    const Graded g = grade(one_scene_suite(), {"--timeout", "30"}, {script("holder.sh", body)});
+    CHECK_EQ(g.result.status, 0);
+    CHECK_EQ(scenes(g)[0]["verdict"].text, std::string("conforms"));
+    CHECK(g.seconds < 10.0);
+    std::ifstream in(pid_file);
+    pid_t child = 0;
+    in >> child;
+    CHECK(child > 0);
+    if (child > 0) CHECK(process_is_gone(child));
+}
+
+void each_run_has_a_fresh_empty_directory() {
+    const fs::path seen = work() / "directories.txt";
+    fs::remove(seen);
+    // Fails unless its directory is empty and stdin is empty (the scene comes as {}).
+    const std::string body = "[ -z \"$(ls -A)\" ] || exit 5\n[ -z \"$(cat)\" ] || exit 6\npwd >> '" + seen.string() +
+                             "'\necho junk > junk.txt\nexec '" + simcli + "' \"$1\"\n";
+    const Graded g = grade(small_suite(), {}, {script("files.sh", body), "{}"});
+    CHECK_EQ(g.result.status, 0);
+    std::ifstream in(seen);
+    std::vector<std::string> directories;
+    for (std::string line; std::getline(in, line);) directories.push_back(line);
+    CHECK_EQ(directories.size(), std::size_t{4});
+    for (const std::string& d : directories) {
+        CHECK(!fs::exists(d));
+        for (const std::string& other : directories) CHECK(&d == &other || d != other);
+    }
+}
+
+void bad_usage() {
+    CHECK_EQ(run_process::run(simcheck, {"grade", small_suite().string()}).status, 2);
+    CHECK_EQ(run_process::run(simcheck, {"grade", small_suite().string(), "--", "/no/such/program"}).status, 2);
+    CHECK_EQ(run_process::run(simcheck, {"grade", (work() / "nowhere").string(), "--", simcli}).status, 2);
+    CHECK_EQ(run_process::run(simcheck, {"grade", small_suite().string(), "--timeout", "x", "--", simcli}).status, 2);
+    const run_process::Result help = run_process::run(simcheck, {"grade", "--help"});
+    CHECK_EQ(help.status, 0);
+    CHECK(help.out.find("--output-factor") != std::string::npos);
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+    const int status = check::run(
+        argc, argv, "test_grade",
+        {{"reference conforms everywhere", reference_conforms_everywhere},
+         {"textbook mistakes are wrong at their step", textbook_mistakes_are_wrong_at_their_step},
+         {"misbehaving programs get their verdicts", misbehaving_programs_get_their_verdicts},
+         {"a child holding stdout does not hang the grader", a_child_holding_stdout_does_not_hang_the_grader},
+         {"each run has a fresh empty directory", each_run_has_a_fresh_empty_directory},
+         {"bad usage", bad_usage}});
+    std::error_code ignored;
+    fs::remove_all(work(), ignored);
+    return status;
+}
