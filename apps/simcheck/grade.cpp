@@ -84,6 +84,7 @@ struct Options {
     std::string json_path, markdown_path, outputs_dir;
     std::string reference;
     bool no_reference = false;
+    std::string program_text;  // as given, for the reports
     particlesim::StepCheckOptions check;
 };
 
@@ -419,7 +420,7 @@ std::string program_text(const Options& o) {
 }
 
 std::string header_text(const Options& o, std::size_t scenes, int conforming) {
-    return "simcheck grade: " + program_text(o) + " on " + o.suite.string() + ": " + std::to_string(conforming) +
+    return "simcheck grade: " + o.program_text + " on " + o.suite.string() + ": " + std::to_string(conforming) +
            " of " + std::to_string(scenes) + " scenes conform" +
            (o.jobs > 1 ? " (" + std::to_string(o.jobs) + " scenes ran side by side: times are shared-machine times)"
                        : "");
@@ -496,7 +497,7 @@ void write_json(std::FILE* out, const Options& o, const std::vector<SceneCase>& 
         std::snprintf(text, sizeof text, "%.6f", seconds);
         return std::string(text);
     };
-    std::string json = "{\"program\": " + json_string(program_text(o)) +
+    std::string json = "{\"program\": " + json_string(o.program_text) +
                        ", \"suite\": " + json_string(o.suite.string()) + ", \"jobs\": " + std::to_string(o.jobs) +
                        ", \"scenes\": [";
     for (std::size_t k = 0; k < rows.size(); ++k) {
@@ -533,7 +534,8 @@ int grade_main(int argc, char** argv) {
         const std::optional<std::string> program = find_program(o.program.front());
         if (!program) throw BadUsage(o.program.front() + ": no such program (or not executable)");
         // It runs in a directory of its own: a relative path would not reach it there.
-        o.program.front() = fs::absolute(*program).string();
+        o.program_text = program_text(o);
+        o.program.front() = fs::absolute(*program).lexically_normal().string();
         if (!o.outputs_dir.empty()) fs::create_directories(o.outputs_dir);
         const std::vector<SceneCase> cases = read_suite(o.suite);
         const std::optional<std::string> reference = find_reference(o);
