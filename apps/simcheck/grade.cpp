@@ -1,5 +1,7 @@
 #include "grade.hpp"
 
+#include "command_line.hpp"
+
 #include "judge.hpp"
 #include "report.hpp"
 #include "sandbox.hpp"
@@ -68,11 +70,6 @@ exit-status (a non-zero exit, whatever the output); no-verdict.
 exit status: 0 every scene conforms; 1 otherwise; 2 bad usage.
 )";
 
-class BadUsage : public std::runtime_error {
-public:
-    using std::runtime_error::runtime_error;
-};
-
 struct Options {
     fs::path suite;
     std::vector<std::string> program;
@@ -138,15 +135,7 @@ std::optional<Options> parse(int argc, char** argv) {
             o.reference = value();
         } else if (arg == "--no-reference") {
             o.no_reference = true;
-        } else if (arg == "--substeps") {
-            o.check.substeps = number_option<int>(arg, value(), 1, 1000000);
-        } else if (arg == "--engine") {
-            const std::string engine = value();
-            if (engine == "exact") {
-                o.check.rules = particlesim::CheckedRules::exact;
-            } else if (engine != "step") {
-                throw BadUsage("--engine is step or exact, not \"" + engine + "\"");
-            }
+        } else if (read_rules_option(arg, value, o.check)) {
         } else if (arg.size() > 1 && arg[0] == '-') {
             throw BadUsage("unknown option " + arg + " (simcheck grade --help lists them)");
         } else {

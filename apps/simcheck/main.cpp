@@ -5,6 +5,7 @@
 //   2: bad usage or an unreadable scene or output; 3: no verdict possible;
 //   4: the physics conforms, the output's shape deviates (named).
 
+#include "command_line.hpp"
 #include "grade.hpp"
 #include "judge.hpp"
 #include "report.hpp"
@@ -56,11 +57,6 @@ block printed twice, no counters on the final block, no step-0 block,
 numbers not in %.8f, trailing spaces or blank lines: named in the report).
 )";
 
-class BadUsage : public std::runtime_error {
-public:
-    using std::runtime_error::runtime_error;
-};
-
 struct Arguments {
     std::string scene_path;
     std::string output_path;
@@ -88,22 +84,8 @@ std::optional<Arguments> parse_arguments(int argc, char** argv) {
         }
         if (arg == "--json") {
             args.json = true;
-        } else if (arg == "--substeps") {
-            const std::string text = value();
-            int substeps = 0;
-            const auto [end, error] = std::from_chars(text.data(), text.data() + text.size(), substeps);
-            if (error != std::errc() || end != text.data() + text.size() || substeps < 1 || substeps > 1000000) {
-                throw BadUsage("--substeps needs a whole number from 1 to 1000000, not \"" + text + "\"");
-            }
-            args.options.substeps = substeps;
-            substeps_given = true;
-        } else if (arg == "--engine") {
-            const std::string text = value();
-            if (text == "exact") {
-                args.options.rules = CheckedRules::exact;
-            } else if (text != "step") {
-                throw BadUsage("--engine is step or exact, not \"" + text + "\"");
-            }
+        } else if (read_rules_option(arg, value, args.options)) {
+            substeps_given = substeps_given || arg == "--substeps";
         } else if (arg.size() > 1 && arg[0] == '-') {
             throw BadUsage("unknown option " + arg + " (simcheck --help lists them)");
         } else {

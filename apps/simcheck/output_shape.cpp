@@ -15,17 +15,6 @@ namespace {
 using particlesim::OutputLine;
 using particlesim::Particle;
 
-bool is_fixed8(std::string_view token) {
-    const std::size_t point = token.find('.');
-    if (point == std::string_view::npos || token.size() - point - 1 != 8) return false;
-    const std::size_t first = token.front() == '-' ? 1 : 0;
-    if (point == first) return false;
-    for (std::size_t k = first; k < token.size(); ++k) {
-        if (k != point && (token[k] < '0' || token[k] > '9')) return false;
-    }
-    return true;
-}
-
 // simcli --exact-numbers: the shortest text that reads back to the same double.
 bool is_shortest(std::string_view token, double value) {
     char text[32];
@@ -78,22 +67,14 @@ bool same_states(const std::vector<OutputLine>& lines, const Block& a, const Blo
 // Parses one line loosely; empty optional and `why` set when it is no output line at all.
 std::optional<OutputLine> parse_line(std::string_view text, long number, std::vector<std::string_view>& tokens,
                                      std::string& why) {
-    tokens.clear();
-    for (std::size_t k = 0; k < text.size();) {
-        if (text[k] == ' ' || text[k] == '\t') {
-            ++k;
-            continue;
-        }
-        std::size_t stop = k;
-        while (stop < text.size() && text[stop] != ' ' && text[stop] != '\t') ++stop;
-        tokens.push_back(text.substr(k, stop - k));
-        k = stop;
-    }
-    const std::string where = "line " + std::to_string(number) + " ";
-    if (tokens.size() != 6 && tokens.size() != 8) {
-        why = where + "has " + std::to_string(tokens.size()) + " fields, not \"s i x y vx vy\" (or \"... pc wc\")";
+    tokens.assign(8, {});
+    const std::size_t count = particlesim::split_fields(text, tokens);
+    if (count != 6 && count != 8) {
+        why = "line " + std::to_string(number) + " has " + std::to_string(count) +
+              " fields, not \"s i x y vx vy\" (or \"... pc wc\")";
         return std::nullopt;
     }
+    tokens.resize(count);
     OutputLine line;
     line.line = number;
     line.text.assign(text);
@@ -110,8 +91,8 @@ std::optional<OutputLine> parse_line(std::string_view text, long number, std::ve
         fine = whole(tokens[6], line.particle.particle_collisions) && whole(tokens[7], line.particle.wall_collisions);
     }
     if (!fine) {
-        why = where + "is not \"s i x y vx vy\" with whole s, i (pc, wc) and finite numbers: \"" + std::string(text) +
-              "\"";
+        why = "line " + std::to_string(number) +
+              " is not \"s i x y vx vy\" with whole s, i (pc, wc) and finite numbers: \"" + std::string(text) + "\"";
         return std::nullopt;
     }
     line.particle.position = particlesim::Vec2(values[0], values[1]);
@@ -124,7 +105,7 @@ std::optional<OutputLine> parse_line(std::string_view text, long number, std::ve
 class NumberFormats {
 public:
     void add(std::string_view token, double value, long line) {
-        if (!is_fixed8(token)) {
+        if (!particlesim::is_fixed8(token)) {
             all_fixed8_ = false;
             if (first_other_.empty())
                 first_other_ = "line " + std::to_string(line) + ": \"" + std::string(token) + "\"";

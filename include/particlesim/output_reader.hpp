@@ -11,10 +11,19 @@
 
 #include <cstdint>
 #include <cstdio>
+#include <span>
 #include <string>
+#include <string_view>
 #include <vector>
 
 namespace particlesim {
+
+// Splits a line at spaces and tabs into `fields` (as many as fit); returns
+// how many fields the line has.
+std::size_t split_fields(std::string_view line, std::span<std::string_view> fields);
+
+// Whether a number is written as io.md's %.8f writes it ("-12.50000000").
+bool is_fixed8(std::string_view number);
 
 struct OutputLine {
     long line = 0;  // 1-based

@@ -10,7 +10,21 @@
 
 namespace particlesim {
 
-namespace {
+std::size_t split_fields(std::string_view text, std::span<std::string_view> fields) {
+    std::size_t count = 0;
+    for (std::size_t k = 0; k < text.size();) {
+        if (text[k] == ' ' || text[k] == '\t') {
+            ++k;
+            continue;
+        }
+        std::size_t stop = k;
+        while (stop < text.size() && text[stop] != ' ' && text[stop] != '\t') ++stop;
+        if (count < fields.size()) fields[count] = text.substr(k, stop - k);
+        ++count;
+        k = stop;
+    }
+    return count;
+}
 
 bool is_fixed8(std::string_view token) {
     const std::size_t point = token.find('.');
@@ -22,8 +36,6 @@ bool is_fixed8(std::string_view token) {
     }
     return true;
 }
-
-}  // namespace
 
 OutputReader::OutputReader(std::FILE* in, std::string name) : in_(in), name_(std::move(name)) {}
 
@@ -77,18 +89,7 @@ bool OutputReader::next(OutputLine& out) {
     out.text.assign(text);
 
     std::string_view tokens[9];
-    std::size_t token_count = 0;
-    for (std::size_t k = 0; k < text.size();) {
-        if (text[k] == ' ' || text[k] == '\t') {
-            ++k;
-            continue;
-        }
-        std::size_t stop = k;
-        while (stop < text.size() && text[stop] != ' ' && text[stop] != '\t') ++stop;
-        if (token_count < 9) tokens[token_count] = text.substr(k, stop - k);
-        ++token_count;
-        k = stop;
-    }
+    const std::size_t token_count = split_fields(text, tokens);
     if (token_count != 6 && token_count != 8) {
         throw InputError(line_, "expected \"s i x y vx vy\" (or \"... pc wc\" in the final block), found " +
                                     std::to_string(token_count) + " fields");

@@ -1,0 +1,45 @@
+#pragma once
+// What both of simcheck's forms read from their command lines: the options
+// that say which rules the output was made with, and the error for bad usage
+// (exit 2).
+
+#include "particlesim/step_check.hpp"
+
+#include <charconv>
+#include <stdexcept>
+#include <string>
+
+namespace simcheck {
+
+class BadUsage : public std::runtime_error {
+public:
+    using std::runtime_error::runtime_error;
+};
+
+// Reads `--substeps K` or `--engine step|exact` into `options` (value()
+// takes the option's value); false for any other argument.
+template <typename TakeValue>
+bool read_rules_option(const std::string& arg, TakeValue&& value, particlesim::StepCheckOptions& options) {
+    if (arg == "--substeps") {
+        const std::string text = value();
+        int substeps = 0;
+        const auto [end, error] = std::from_chars(text.data(), text.data() + text.size(), substeps);
+        if (error != std::errc() || end != text.data() + text.size() || substeps < 1 || substeps > 1000000) {
+            throw BadUsage("--substeps needs a whole number from 1 to 1000000, not \"" + text + "\"");
+        }
+        options.substeps = substeps;
+        return true;
+    }
+    if (arg == "--engine") {
+        const std::string text = value();
+        if (text == "exact") {
+            options.rules = particlesim::CheckedRules::exact;
+        } else if (text != "step") {
+            throw BadUsage("--engine is step or exact, not \"" + text + "\"");
+        }
+        return true;
+    }
+    return false;
+}
+
+}  // namespace simcheck
