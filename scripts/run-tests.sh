@@ -12,8 +12,9 @@ cd "$(dirname "$0")/.."
 scripts/ensure-deps.sh clang-format
 # The heavier test tools: the aarch64 cross compiler and qemu (the same bytes
 # on another architecture), clang with libFuzzer, its OpenMP and Archer (fuzzing,
-# ThreadSanitizer over OpenMP), chromium (the animation page).
-scripts/ensure-deps.sh --optional g++-aarch64-linux-gnu qemu-user clang libclang-rt-dev libomp-dev chromium
+# ThreadSanitizer over OpenMP), chromium (the animation page), python3-ase
+# (simcli's trajectory files as ASE reads them).
+scripts/ensure-deps.sh --optional g++-aarch64-linux-gnu qemu-user clang libclang-rt-dev libomp-dev chromium python3-ase
 jobs=$(nproc)
 
 echo "== Release build and tests"

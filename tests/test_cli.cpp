@@ -189,6 +189,12 @@ void bad_usage() {
     expect_rejected({"a.in", "b.in"}, scene, "simcli: expected at most one scene file", "");
     expect_rejected({"/nonexistent/scene.in"}, "", "simcli: /nonexistent/scene.in: cannot open", "No such file");
     expect_rejected({"/tmp"}, "", "simcli: /tmp: is a directory", "");
+    expect_rejected({"--trajectory", "/nonexistent/run.xyz"}, scene, "simcli: /nonexistent/run.xyz: cannot create", "");
+    expect_rejected({"--trajectory", "run.xyz", "--trajectory-every", "0"}, scene, "simcli: --trajectory-every",
+                    "expected an integer in [1, ");
+    expect_rejected({"--trajectory-every", "2"}, scene, "simcli: --trajectory-every K needs --trajectory", "");
+    expect_rejected({"--resume", "state.ckpt", "--trajectory", "run.xyz"}, scene,
+                    "simcli: --animate, --snapshot and --trajectory need the whole run", "");
 }
 
 void bad_input() {

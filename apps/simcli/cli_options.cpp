@@ -50,6 +50,8 @@ Simulates N hard disks bouncing elastically in a square box, in discrete steps.
                                    ... (1/k): frames between whole steps
       --snapshot FILE.svg          also write one state as an SVG picture
       --snapshot-step N              the state after step N (default: the last)
+      --trajectory FILE.xyz        also write the states as extended XYZ frames (OVITO, ASE)
+      --trajectory-every K           every K steps (default 1), and the last step
       --stats                      a summary on stderr after the run: steps per
                                    second, collisions, energy drift, pair tests
   -h, --help                       this text, exit 0
@@ -95,6 +97,8 @@ enum LongOnly {
     opt_animate_every,
     opt_snapshot,
     opt_snapshot_step,
+    opt_trajectory,
+    opt_trajectory_every,
 };
 
 // --animate-every: a whole number of steps, or 1/k of a step (k up to 1000).
@@ -126,6 +130,7 @@ struct Given {
     std::optional<PairSearch> pair_search;
     std::optional<double> animate_every;
     std::optional<std::int64_t> snapshot_step;
+    std::optional<std::int64_t> trajectory_every;
 };
 
 void check_combinations(CliOptions& options, const Given& given) {
@@ -149,8 +154,12 @@ void check_combinations(CliOptions& options, const Given& given) {
     }
     if (given.snapshot_step && !options.snapshot_path) throw BadInput("--snapshot-step N needs --snapshot FILE.svg");
     options.snapshot_step = given.snapshot_step;
-    if (options.resume_path && (options.animation || options.snapshot_path)) {
-        throw BadInput("--animate and --snapshot need the whole run; not with --resume");
+    if (given.trajectory_every && !options.trajectory_path) {
+        throw BadInput("--trajectory-every K needs --trajectory FILE.xyz");
+    }
+    options.trajectory_every = given.trajectory_every.value_or(1);
+    if (options.resume_path && (options.animation || options.snapshot_path || options.trajectory_path)) {
+        throw BadInput("--animate, --snapshot and --trajectory need the whole run; not with --resume");
     }
     if (options.resume_path) {
         if (options.scene_path != "-") throw BadInput("--resume continues a checkpoint; it takes no scene file");
@@ -182,6 +191,8 @@ std::optional<CliOptions> parse_arguments(int argc, char** argv) {
                                           {"animate-every", required_argument, nullptr, opt_animate_every},
                                           {"snapshot", required_argument, nullptr, opt_snapshot},
                                           {"snapshot-step", required_argument, nullptr, opt_snapshot_step},
+                                          {"trajectory", required_argument, nullptr, opt_trajectory},
+                                          {"trajectory-every", required_argument, nullptr, opt_trajectory_every},
                                           {"help", no_argument, nullptr, 'h'},
                                           {"version", no_argument, nullptr, opt_version},
                                           {nullptr, 0, nullptr, 0}};
@@ -242,6 +253,11 @@ std::optional<CliOptions> parse_arguments(int argc, char** argv) {
         case opt_snapshot: options.snapshot_path = std::string(value); break;
         case opt_snapshot_step:
             given.snapshot_step = static_cast<std::int64_t>(parse_unsigned("--snapshot-step", value, 0, INT64_MAX));
+            break;
+        case opt_trajectory: options.trajectory_path = std::string(value); break;
+        case opt_trajectory_every:
+            given.trajectory_every =
+                static_cast<std::int64_t>(parse_unsigned("--trajectory-every", value, 1, INT64_MAX));
             break;
         case 'h': std::fputs(usage_text, stdout); return std::nullopt;
         case opt_version: std::printf("simcli %s\n", particlesim::version); return std::nullopt;

@@ -38,6 +38,8 @@ struct CliOptions {
     std::optional<AnimationRequest> animation;
     std::optional<std::string> snapshot_path;
     std::optional<std::int64_t> snapshot_step;  // empty: the last step
+    std::optional<std::string> trajectory_path;
+    std::int64_t trajectory_every = 1;
 };
 
 // Nothing when --help or --version has been answered. Throws BadInput.

@@ -10,6 +10,7 @@
 #include "output_file.hpp"
 #include "progress_line.hpp"
 #include "snapshot.hpp"
+#include "trajectory.hpp"
 
 #include "particlesim/particlesim.hpp"
 
@@ -52,11 +53,12 @@ struct RunStats {
     double final_energy = 0.0;
 };
 
-// What --animate and --snapshot collect while the run goes on.
+// What --animate, --snapshot and --trajectory collect while the run goes on.
 struct Pictures {
     std::optional<Animation> animation;
     std::optional<std::string> snapshot_path;
     std::int64_t snapshot_step = 0;
+    std::optional<Trajectory> trajectory;
 
     template <Engine E>
     void observe(std::int64_t step, const E& engine, const World& world) {
@@ -64,6 +66,7 @@ struct Pictures {
             animation->add_frame(static_cast<double>(step), engine.particles(), engine.totals());
         }
         if (snapshot_path && step == snapshot_step) write_snapshot(*snapshot_path, world, engine.particles(), step);
+        if (trajectory) trajectory->observe(step, engine.particles());
     }
 };
 
@@ -114,6 +117,7 @@ RunStats write_run(E& engine, const RunSettings& settings, const CliOptions& opt
     writer.write_final(settings.steps, engine.particles());
     writer.flush();
     output.commit();
+    if (pictures.trajectory) pictures.trajectory->commit();
     stats.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     stats.totals = engine.totals();
     stats.final_energy = total_kinetic_energy(engine.particles());
@@ -227,6 +231,13 @@ void run_scene(const CliOptions& options) {
         if (pictures.snapshot_step > scene.steps) {
             throw BadInput(at_line(name, lines.steps) + "--snapshot-step " + std::to_string(pictures.snapshot_step) +
                            " is beyond the scene's S = " + std::to_string(scene.steps) + " steps");
+        }
+    }
+    if (options.trajectory_path) {
+        try {
+            pictures.trajectory.emplace(*options.trajectory_path, scene.world, options.trajectory_every, scene.steps);
+        } catch (const OutputError& e) {
+            throw BadInput(e.what());
         }
     }
     const bool exact = options.engine == EngineChoice::exact;

@@ -1,0 +1,59 @@
+#include "trajectory.hpp"
+
+#include "particlesim/state_writer.hpp"
+
+#include <charconv>
+#include <cstdio>
+
+namespace simcli {
+
+namespace {
+
+// Any species name does for OVITO; ASE needs a chemical symbol.
+constexpr const char* species = "Ar";
+
+void append_number(std::string& text, double value) {
+    char digits[32];
+    text.append(digits, std::to_chars(digits, digits + sizeof digits, value).ptr);
+}
+
+}  // namespace
+
+Trajectory::Trajectory(const std::string& path, const particlesim::World& world, std::int64_t every,
+                       std::int64_t last_step)
+    : file_(path), world_(world), every_(every), last_step_(last_step) {}
+
+void Trajectory::observe(std::int64_t step, std::span<const particlesim::Particle> particles) {
+    if (step % every_ != 0 && step != last_step_) return;
+    const double side = world_.box_size;
+    text_.clear();
+    text_ += std::to_string(particles.size());
+    // The third cell vector spans one diameter: the disks as a slab, for viewers that want a volume.
+    text_ += "\nLattice=\"";
+    for (const double value : {side, 0.0, 0.0, 0.0, side, 0.0, 0.0, 0.0, 2.0 * world_.radius}) {
+        append_number(text_, value);
+        text_ += ' ';
+    }
+    text_.back() = '"';  // in place of the last space
+    text_ += " Properties=species:S:1:pos:R:3:velo:R:3:radius:R:1 pbc=\"F F F\" step=";
+    text_ += std::to_string(step);
+    text_ += " time=";
+    append_number(text_, static_cast<double>(step));
+    text_ += '\n';
+    for (const particlesim::Particle& p : particles) {
+        text_ += species;
+        for (const double value :
+             {p.position.x(), p.position.y(), 0.0, p.velocity.x(), p.velocity.y(), 0.0, world_.radius}) {
+            text_ += ' ';
+            append_number(text_, value);
+        }
+        text_ += '\n';
+    }
+    if (std::fwrite(text_.data(), 1, text_.size(), file_.stream()) != text_.size()) {
+        throw particlesim::OutputError("cannot write the trajectory");
+    }
+}
+
+void Trajectory::commit() { file_.commit(); }
+
+}  // namespace simcli
