@@ -46,9 +46,10 @@ void print_usage() {
         "      --seed K           seed (default 3210)\n"
         "  -r, --radius R         radius (default 1)\n"
         "  -L, --box L            side of the box (random, line, fast, walls)\n"
-        "      --fraction F       area fraction (gas, clusters)\n"
+        "      --fraction F       area fraction (gas, clusters, crystal: up to close packing)\n"
         "      --speed-min V      lowest speed, length per step\n"
         "      --speed-max V      highest speed\n"
+        "      --temperature T    crystal: kT of the Maxwell velocities, mass 1 (default r^2/4)\n"
         "  -h, --help             this text\n"
         "      --version          the version\n");
 }
@@ -113,6 +114,8 @@ int run(int argc, char** argv) {
             speed_min = parse_number<double>(arg, value());
         } else if (arg == "--speed-max") {
             speed_max = parse_number<double>(arg, value());
+        } else if (arg == "--temperature") {
+            options.temperature = parse_number<double>(arg, value());
         } else {
             throw BadUsage("unknown option " + arg + " (simgen --help lists them)");
         }

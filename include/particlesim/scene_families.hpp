@@ -27,6 +27,7 @@ enum class SceneFamily {
     ties,      // simultaneous collisions by construction, in exact numbers: every tie rule
     fast,      // speeds of several box sides per step
     walls,     // disks starting on the walls, and pairs starting in contact
+    crystal,   // a triangular lattice at any area fraction up to close packing, Maxwell velocities
 };
 
 struct SceneFamilyInfo {
@@ -50,10 +51,12 @@ struct SceneFamilyOptions {
     std::optional<double> box_size;       // random, fast, walls
     std::optional<double> area_fraction;  // gas, clusters
     std::optional<SpeedRange> speeds;     // length per step
+    std::optional<double> temperature;    // crystal: kT, mass 1, in (length per step)^2
 };
 
-// Throws std::invalid_argument for options the family cannot honour, and
-// SceneTooFull when the disks do not fit.
+// Throws std::invalid_argument for options the family cannot honour (a
+// crystal denser than its lattice fits: the message names the densest), and
+// SceneTooFull when random disks do not fit.
 Scene make_family_scene(SceneFamily family, const SceneFamilyOptions& options);
 
 // io.md's input format with every particle listed: "N L r S mode" and "i x y vx vy".

@@ -237,6 +237,104 @@ Scene walls(const SceneFamilyOptions& o) {
     return scene_of(o, box, std::move(particles));
 }
 
+// The rows and columns of a triangular lattice for `count` disks, and how
+// wide and tall it is in units of its spacing (every other row shifted by
+// half a spacing; the last row may be short).
+struct LatticeShape {
+    std::size_t columns = 1;
+    std::size_t rows = 1;
+    double width = 0.0;   // spacings
+    double height = 0.0;  // spacings
+    [[nodiscard]] double extent() const { return std::max(width, height); }
+};
+
+LatticeShape lattice_shape(std::size_t count, std::size_t columns) {
+    LatticeShape shape;
+    shape.columns = columns;
+    shape.rows = (count + columns - 1) / columns;
+    shape.width = static_cast<double>(columns) - (shape.rows > 1 ? 0.5 : 1.0);
+    shape.height = static_cast<double>(shape.rows - 1) * std::sqrt(3.0) / 2.0;
+    return shape;
+}
+
+// The shape whose larger side is the fewest spacings: the widest spacing in a square.
+LatticeShape squarest_lattice(std::size_t count) {
+    LatticeShape best = lattice_shape(count, 1);
+    for (std::size_t columns = 2; columns <= count; ++columns) {
+        const LatticeShape shape = lattice_shape(count, columns);
+        if (shape.extent() < best.extent()) best = shape;
+    }
+    return best;
+}
+
+// A standard normal deviate (Marsaglia's polar method).
+double standard_normal(SplitMix64& rng) {
+    for (;;) {
+        const double u = 2.0 * rng.uniform() - 1.0;
+        const double v = 2.0 * rng.uniform() - 1.0;
+        const double s = u * u + v * v;
+        if (s > 0.0 && s < 1.0) return u * std::sqrt(-2.0 * std::log(s) / s);
+    }
+}
+
+// Neighbours on the lattice are kept this much farther apart than 2r, so
+// that rounding the positions never makes two touch.
+constexpr double crystal_clearance = 1e-9;
+
+// A triangular lattice centred in the walled box at the area fraction asked
+// for (N pi r^2 / L^2), up to the densest at which it fits (neighbours 2r
+// apart, and r from the walls); Maxwell velocities at kT with zero total
+// momentum, scaled so that the kinetic energy is exactly (N - 1) kT: the
+// 2 (N - 1) degrees of freedom that the fixed momentum leaves.
+Scene crystal(const SceneFamilyOptions& o) {
+    const std::size_t count = o.particles.value_or(400);
+    const double r = o.radius;
+    const double plane_packing = std::numbers::pi / (2.0 * std::sqrt(3.0));
+    const LatticeShape shape = squarest_lattice(std::max<std::size_t>(count, 1));
+    const double densest_box = 2.0 * r + 2.0 * r * (1.0 + crystal_clearance) * shape.extent();
+    const double densest =
+        std::min(static_cast<double>(count) * std::numbers::pi * r * r / (densest_box * densest_box), plane_packing);
+    // Unasked: 0.7, or a little below the densest for the few disks that cannot reach it.
+    const double fraction = o.area_fraction ? area_fraction_or(o, 0.7, plane_packing) : std::min(0.7, 0.95 * densest);
+    const double kT = o.temperature.value_or(0.25 * r * r);
+    if (!(kT >= 0.0 && std::isfinite(kT))) {
+        throw std::invalid_argument("particlesim::make_family_scene: the temperature must be >= 0, not " +
+                                    format_short(kT));
+    }
+    const double box = side_for(count, r, fraction);
+    const double room = box - 2.0 * r;  // for the centres
+    const double spacing = shape.extent() > 0.0 ? room / shape.extent() : room;
+    if (count > 1 && !(spacing >= 2.0 * r * (1.0 + crystal_clearance))) {
+        throw std::invalid_argument("particlesim::make_family_scene: " + std::to_string(count) +
+                                    " disks do not fit a triangular lattice in a walled box at area fraction " +
+                                    format_short(fraction) + "; the densest that fits is " + format_short(densest));
+    }
+    const double row_height = spacing * std::sqrt(3.0) / 2.0;
+    const double left = (box - spacing * shape.width) / 2.0;
+    const double bottom = (box - row_height * static_cast<double>(shape.rows - 1)) / 2.0;
+    std::vector<Particle> particles;
+    for (std::size_t k = 0; k < count; ++k) {
+        const std::size_t row = k / shape.columns, column = k % shape.columns;
+        const double x = left + spacing * (static_cast<double>(column) + (row % 2 == 1 ? 0.5 : 0.0));
+        const double y = bottom + row_height * static_cast<double>(row);
+        particles.push_back(disk(std::clamp(x, r, box - r), std::clamp(y, r, box - r)));
+    }
+    SplitMix64 rng(o.seed);
+    Vec2 momentum(0.0, 0.0);
+    for (Particle& p : particles) {
+        p.velocity = Vec2(standard_normal(rng), standard_normal(rng));
+        momentum += p.velocity;
+    }
+    double kinetic = 0.0;
+    for (Particle& p : particles) {
+        p.velocity -= momentum / static_cast<double>(count);
+        kinetic += 0.5 * p.velocity.squaredNorm();
+    }
+    const double scale = kinetic > 0.0 ? std::sqrt(static_cast<double>(count - 1) * kT / kinetic) : 0.0;
+    for (Particle& p : particles) p.velocity *= scale;
+    return scene_of(o, box, std::move(particles));
+}
+
 }  // namespace
 
 const std::vector<SceneFamilyInfo>& scene_families() {
@@ -252,6 +350,9 @@ const std::vector<SceneFamilyInfo>& scene_families() {
          "simultaneous collisions in exact numbers: walls before pairs, lowest indices, corners, t = 1"},
         {SceneFamily::fast, "fast", "speeds of 2 to 5 box sides per step"},
         {SceneFamily::walls, "walls", "disks starting on the walls and pairs starting in contact"},
+        {SceneFamily::crystal, "crystal",
+         "a triangular lattice at any area fraction up to close packing (default 0.7), Maxwell velocities, no "
+         "total momentum"},
     };
     return families;
 }
@@ -275,6 +376,7 @@ Scene make_family_scene(SceneFamily family, const SceneFamilyOptions& options) {
     case SceneFamily::ties: return ties(options);
     case SceneFamily::fast: return fast(options);
     case SceneFamily::walls: return walls(options);
+    case SceneFamily::crystal: return crystal(options);
     }
     throw std::invalid_argument("particlesim::make_family_scene: unknown family");
 }
