@@ -9,7 +9,7 @@ set(prefix "${WORK_DIR}/prefix")
 run_step(${CMAKE_COMMAND} --install "${BUILD_DIR}" --prefix "${prefix}")
 
 # The public API, and nothing else.
-set(public_headers accuracy.hpp engine.hpp exact_simulation.hpp output_reader.hpp particle.hpp particlesim.hpp
+set(public_headers accuracy.hpp engine.hpp exact_simulation.hpp observables.hpp output_reader.hpp particle.hpp particlesim.hpp
                    random_scene.hpp saved_state.hpp scene.hpp scene_families.hpp state_writer.hpp step_check.hpp
                    stepped_simulation.hpp version.hpp world.hpp)
 file(GLOB installed RELATIVE "${prefix}/include/particlesim" "${prefix}/include/particlesim/*")

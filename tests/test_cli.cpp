@@ -194,7 +194,7 @@ void bad_usage() {
                     "expected an integer in [1, ");
     expect_rejected({"--trajectory-every", "2"}, scene, "simcli: --trajectory-every K needs --trajectory", "");
     expect_rejected({"--resume", "state.ckpt", "--trajectory", "run.xyz"}, scene,
-                    "simcli: --animate, --snapshot and --trajectory need the whole run", "");
+                    "simcli: --animate, --snapshot, --trajectory and --observables need the whole run", "");
 }
 
 void bad_input() {

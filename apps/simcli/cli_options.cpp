@@ -52,6 +52,9 @@ Simulates N hard disks bouncing elastically in a square box, in discrete steps.
       --snapshot-step N              the state after step N (default: the last)
       --trajectory FILE.xyz        also write the states as extended XYZ frames (OVITO, ASE)
       --trajectory-every K           every K steps (default 1), and the last step
+      --observables FILE.csv       with --engine exact: a CSV row every K steps of the collisions,
+      --observe-every K              kinetic energy, pressure (virial and walls) and |psi6|
+      --measure-from STEP          --stats then gives the pressure over the rows from STEP on
       --stats                      a summary on stderr after the run: steps per
                                    second, collisions, energy drift, pair tests
   -h, --help                       this text, exit 0
@@ -99,6 +102,9 @@ enum LongOnly {
     opt_snapshot_step,
     opt_trajectory,
     opt_trajectory_every,
+    opt_observables,
+    opt_observe_every,
+    opt_measure_from,
 };
 
 // --animate-every: a whole number of steps, or 1/k of a step (k up to 1000).
@@ -131,6 +137,8 @@ struct Given {
     std::optional<double> animate_every;
     std::optional<std::int64_t> snapshot_step;
     std::optional<std::int64_t> trajectory_every;
+    std::optional<std::int64_t> observe_every;
+    std::optional<std::int64_t> measure_from;
 };
 
 void check_combinations(CliOptions& options, const Given& given) {
@@ -158,8 +166,18 @@ void check_combinations(CliOptions& options, const Given& given) {
         throw BadInput("--trajectory-every K needs --trajectory FILE.xyz");
     }
     options.trajectory_every = given.trajectory_every.value_or(1);
-    if (options.resume_path && (options.animation || options.snapshot_path || options.trajectory_path)) {
-        throw BadInput("--animate, --snapshot and --trajectory need the whole run; not with --resume");
+    if ((given.observe_every || given.measure_from) && !options.observables_path) {
+        throw BadInput("--observe-every and --measure-from need --observables FILE.csv");
+    }
+    options.observe_every = given.observe_every.value_or(1);
+    options.measure_from = given.measure_from.value_or(0);
+    if (options.observables_path && options.engine != EngineChoice::exact && !options.resume_path) {
+        throw BadInput(
+            "--observables needs --engine exact: the pressure is that of hard disks, which the step rules are not");
+    }
+    if (options.resume_path &&
+        (options.animation || options.snapshot_path || options.trajectory_path || options.observables_path)) {
+        throw BadInput("--animate, --snapshot, --trajectory and --observables need the whole run; not with --resume");
     }
     if (options.resume_path) {
         if (options.scene_path != "-") throw BadInput("--resume continues a checkpoint; it takes no scene file");
@@ -193,6 +211,9 @@ std::optional<CliOptions> parse_arguments(int argc, char** argv) {
                                           {"snapshot-step", required_argument, nullptr, opt_snapshot_step},
                                           {"trajectory", required_argument, nullptr, opt_trajectory},
                                           {"trajectory-every", required_argument, nullptr, opt_trajectory_every},
+                                          {"observables", required_argument, nullptr, opt_observables},
+                                          {"observe-every", required_argument, nullptr, opt_observe_every},
+                                          {"measure-from", required_argument, nullptr, opt_measure_from},
                                           {"help", no_argument, nullptr, 'h'},
                                           {"version", no_argument, nullptr, opt_version},
                                           {nullptr, 0, nullptr, 0}};
@@ -258,6 +279,13 @@ std::optional<CliOptions> parse_arguments(int argc, char** argv) {
         case opt_trajectory_every:
             given.trajectory_every =
                 static_cast<std::int64_t>(parse_unsigned("--trajectory-every", value, 1, INT64_MAX));
+            break;
+        case opt_observables: options.observables_path = std::string(value); break;
+        case opt_observe_every:
+            given.observe_every = static_cast<std::int64_t>(parse_unsigned("--observe-every", value, 1, INT64_MAX));
+            break;
+        case opt_measure_from:
+            given.measure_from = static_cast<std::int64_t>(parse_unsigned("--measure-from", value, 0, INT64_MAX));
             break;
         case 'h': std::fputs(usage_text, stdout); return std::nullopt;
         case opt_version: std::printf("simcli %s\n", particlesim::version); return std::nullopt;

@@ -40,6 +40,9 @@ struct CliOptions {
     std::optional<std::int64_t> snapshot_step;  // empty: the last step
     std::optional<std::string> trajectory_path;
     std::int64_t trajectory_every = 1;
+    std::optional<std::string> observables_path;
+    std::int64_t observe_every = 1;
+    std::int64_t measure_from = 0;
 };
 
 // Nothing when --help or --version has been answered. Throws BadInput.

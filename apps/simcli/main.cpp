@@ -7,6 +7,7 @@
 #include "checkpoint.hpp"
 #include "cli_options.hpp"
 #include "interrupts.hpp"
+#include "observables_file.hpp"
 #include "output_file.hpp"
 #include "progress_line.hpp"
 #include "snapshot.hpp"
@@ -53,12 +54,13 @@ struct RunStats {
     double final_energy = 0.0;
 };
 
-// What --animate, --snapshot and --trajectory collect while the run goes on.
+// What --animate, --snapshot, --trajectory and --observables collect while the run goes on.
 struct Pictures {
     std::optional<Animation> animation;
     std::optional<std::string> snapshot_path;
     std::int64_t snapshot_step = 0;
     std::optional<Trajectory> trajectory;
+    std::optional<ObservablesFile> observables;  // the exact engine's
 
     template <Engine E>
     void observe(std::int64_t step, const E& engine, const World& world) {
@@ -67,6 +69,14 @@ struct Pictures {
         }
         if (snapshot_path && step == snapshot_step) write_snapshot(*snapshot_path, world, engine.particles(), step);
         if (trajectory) trajectory->observe(step, engine.particles());
+        if constexpr (requires { engine.collision_sums(); }) {
+            if (observables) observables->observe(step, engine.particles(), engine.totals(), engine.collision_sums());
+        }
+    }
+
+    void commit() {
+        if (trajectory) trajectory->commit();
+        if (observables) observables->commit();
     }
 };
 
@@ -117,7 +127,7 @@ RunStats write_run(E& engine, const RunSettings& settings, const CliOptions& opt
     writer.write_final(settings.steps, engine.particles());
     writer.flush();
     output.commit();
-    if (pictures.trajectory) pictures.trajectory->commit();
+    pictures.commit();
     stats.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     stats.totals = engine.totals();
     stats.final_energy = total_kinetic_energy(engine.particles());
@@ -140,11 +150,27 @@ void print_stats(const char* engine, const RunStats& stats, std::int64_t steps) 
                  static_cast<double>(stats.totals.pair_tests) * per_step);
 }
 
+// The pressure with its error bar from block averages of the observables' rows.
+void print_pressure(const ObservablesFile& observables) {
+    const MeanWithError virial = observables.virial_pressure(), walls = observables.wall_pressure();
+    if (virial.blocks == 0) {
+        std::fprintf(stderr, "stats: pressure: fewer than four observables rows from step %lld\n",
+                     static_cast<long long>(observables.measure_from()));
+        return;
+    }
+    std::fprintf(stderr,
+                 "stats: pressure beta P (2r)^2 = %.6g +- %.2g (virial), %.6g +- %.2g (walls); %zu blocks of the "
+                 "observables rows from step %lld\n",
+                 virial.mean, virial.error, walls.mean, walls.error, virial.blocks,
+                 static_cast<long long>(observables.measure_from()));
+}
+
 template <Engine E>
 void run_and_report(E& engine, const RunSettings& settings, const CliOptions& options, Pictures& pictures) {
     const RunStats stats = write_run(engine, settings, options, pictures);
     if (!options.stats) return;
     print_stats(settings.engine == EngineChoice::exact ? "exact" : "step", stats, settings.steps);
+    if (pictures.observables) print_pressure(*pictures.observables);
     if constexpr (std::is_same_v<E, ExactSimulation>) {
         const auto events = static_cast<double>(engine.events_processed());
         std::fprintf(stderr,
@@ -233,12 +259,20 @@ void run_scene(const CliOptions& options) {
                            " is beyond the scene's S = " + std::to_string(scene.steps) + " steps");
         }
     }
-    if (options.trajectory_path) {
-        try {
+    if (options.observables_path && options.measure_from > scene.steps) {
+        throw BadInput(at_line(name, lines.steps) + "--measure-from " + std::to_string(options.measure_from) +
+                       " is beyond the scene's S = " + std::to_string(scene.steps) + " steps");
+    }
+    try {
+        if (options.trajectory_path) {
             pictures.trajectory.emplace(*options.trajectory_path, scene.world, options.trajectory_every, scene.steps);
-        } catch (const OutputError& e) {
-            throw BadInput(e.what());
         }
+        if (options.observables_path) {
+            pictures.observables.emplace(*options.observables_path, scene.world, options.observe_every, scene.steps,
+                                         options.measure_from);
+        }
+    } catch (const OutputError& e) {
+        throw BadInput(e.what());
     }
     const bool exact = options.engine == EngineChoice::exact;
     if (options.animation) {

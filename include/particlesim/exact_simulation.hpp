@@ -6,6 +6,7 @@
 // simultaneous events (time, kind, i, j), and shows the state at whole steps.
 
 #include "particlesim/engine.hpp"
+#include "particlesim/observables.hpp"
 #include "particlesim/particle.hpp"
 #include "particlesim/world.hpp"
 
@@ -96,6 +97,10 @@ public:
     [[nodiscard]] std::int64_t steps_done() const;
     [[nodiscard]] const StepCounts& last_step() const;
     [[nodiscard]] const StepCounts& totals() const;
+    // The pair virial and the walls' impulse summed over every collision
+    // this object processed (not saved: a restored run starts them at 0);
+    // their change over an interval gives its pressure (observables.hpp).
+    [[nodiscard]] const CollisionSums& collision_sums() const;
     // Particles with more than one collision (wall or particle) in the last
     // step: where the one-collision-per-step rule must differ from this engine.
     [[nodiscard]] std::uint64_t last_step_particles_with_several_events() const;

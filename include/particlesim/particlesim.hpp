@@ -5,6 +5,7 @@
 #include "particlesim/accuracy.hpp"
 #include "particlesim/engine.hpp"
 #include "particlesim/exact_simulation.hpp"
+#include "particlesim/observables.hpp"
 #include "particlesim/output_reader.hpp"
 #include "particlesim/particle.hpp"
 #include "particlesim/random_scene.hpp"

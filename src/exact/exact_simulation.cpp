@@ -273,6 +273,7 @@ public:
     std::int64_t steps_done() const { return steps_done_; }
     const StepCounts& last_step() const { return last_step_; }
     const StepCounts& totals() const { return totals_; }
+    const CollisionSums& collision_sums() const { return collision_sums_; }
     std::uint64_t several_events() const { return several_events_; }
     std::uint64_t events_processed() const { return events_processed_; }
     int cells_per_side() const { return cells_.grid().per_side(); }
@@ -580,6 +581,8 @@ private:
         Particle& p = bodies_[i].particle;
         // The same start state as the prediction, so the same hit.
         const WallHit hit = time_to_wall(p.position, p.velocity, box_);
+        collision_sums_.wall_impulse +=
+            2.0 * ((hit.on_x ? std::abs(p.velocity.x()) : 0.0) + (hit.on_y ? std::abs(p.velocity.y()) : 0.0));
         bounce_off_wall(p, hit, box_);
         bodies_[i].stamp = now_;
         renew_line(i);
@@ -600,7 +603,9 @@ private:
         clamp_into_box(b.position, box_);
         bodies_[i].stamp = now_;
         bodies_[j].stamp = now_;
+        const Vec2 velocity_before = a.velocity;
         exchange_normal_velocities(a.position, b.position, a.velocity, b.velocity);
+        collision_sums_.pair_virial += (a.velocity - velocity_before).dot(a.position - b.position);
         renew_line(i);
         renew_line(j);
         ++a.particle_collisions;
@@ -687,6 +692,7 @@ private:
     std::int64_t steps_done_ = 0;
     StepCounts last_step_;
     StepCounts totals_;
+    CollisionSums collision_sums_;  // since this object started: not saved
     std::uint64_t several_events_ = 0;
     std::uint64_t events_processed_ = 0;  // by this object, not saved: a measure of work
     double predicted_events_;             // per step
@@ -747,6 +753,7 @@ const World& ExactSimulation::world() const { return engine_->world(); }
 std::int64_t ExactSimulation::steps_done() const { return engine_->steps_done(); }
 const StepCounts& ExactSimulation::last_step() const { return engine_->last_step(); }
 const StepCounts& ExactSimulation::totals() const { return engine_->totals(); }
+const CollisionSums& ExactSimulation::collision_sums() const { return engine_->collision_sums(); }
 std::uint64_t ExactSimulation::last_step_particles_with_several_events() const { return engine_->several_events(); }
 std::uint64_t ExactSimulation::events_processed() const { return engine_->events_processed(); }
 int ExactSimulation::cells_per_side() const { return engine_->cells_per_side(); }

@@ -1,0 +1,78 @@
+#include "observables_file.hpp"
+
+#include "particlesim/state_writer.hpp"
+
+#include <algorithm>
+#include <charconv>
+#include <cstdio>
+
+namespace simcli {
+
+namespace {
+
+void append_number(std::string& text, double value) {
+    char digits[32];
+    text.append(digits, std::to_chars(digits, digits + sizeof digits, value).ptr);
+}
+
+}  // namespace
+
+ObservablesFile::ObservablesFile(const std::string& path, const particlesim::World& world, std::int64_t every,
+                                 std::int64_t last_step, std::int64_t measure_from)
+    : file_(path), world_(world), every_(every), last_step_(last_step), measure_from_(measure_from) {
+    text_ = "step,time,pair_collisions,wall_collisions,kinetic_energy,betaP_d2,Z,psi6,betaP_d2_walls,Z_walls\n";
+    if (std::fwrite(text_.data(), 1, text_.size(), file_.stream()) != text_.size()) {
+        throw particlesim::OutputError("cannot write the observables");
+    }
+}
+
+void ObservablesFile::observe(std::int64_t step, std::span<const particlesim::Particle> particles,
+                              const particlesim::StepCounts& totals, const particlesim::CollisionSums& sums) {
+    if (step == 0) {
+        previous_totals_ = totals;
+        previous_sums_ = sums;
+        return;
+    }
+    if (step % every_ != 0 && step != last_step_) return;
+    double kinetic = 0.0;
+    for (const particlesim::Particle& p : particles) kinetic += 0.5 * p.velocity.squaredNorm();
+    const particlesim::Pressure pressure = particlesim::walled_box_pressure(
+        world_, particles.size(), kinetic, sums - previous_sums_, static_cast<double>(step - previous_step_));
+    text_.clear();
+    text_ += std::to_string(step) + ',';
+    append_number(text_, static_cast<double>(step));
+    text_ += ',' + std::to_string(totals.particle_collisions - previous_totals_.particle_collisions);
+    text_ += ',' + std::to_string(totals.wall_collisions - previous_totals_.wall_collisions);
+    for (const double value : {kinetic, pressure.betaP_d2, pressure.Z, particlesim::hexatic_order(particles, world_),
+                               pressure.betaP_d2_walls, pressure.Z_walls}) {
+        text_ += ',';
+        append_number(text_, value);
+    }
+    text_ += '\n';
+    if (std::fwrite(text_.data(), 1, text_.size(), file_.stream()) != text_.size()) {
+        throw particlesim::OutputError("cannot write the observables");
+    }
+    if (previous_step_ >= measure_from_) {
+        virial_rows_.push_back(pressure.betaP_d2);
+        wall_rows_.push_back(pressure.betaP_d2_walls);
+    }
+    previous_step_ = step;
+    previous_totals_ = totals;
+    previous_sums_ = sums;
+}
+
+void ObservablesFile::commit() { file_.commit(); }
+
+namespace {
+
+// Sixteen blocks where the rows allow, fewer (at least two rows each) where they do not.
+particlesim::MeanWithError blocked(const std::vector<double>& rows) {
+    return particlesim::block_average(rows, std::min<std::size_t>(16, rows.size() / 2));
+}
+
+}  // namespace
+
+particlesim::MeanWithError ObservablesFile::virial_pressure() const { return blocked(virial_rows_); }
+particlesim::MeanWithError ObservablesFile::wall_pressure() const { return blocked(wall_rows_); }
+
+}  // namespace simcli

@@ -1,0 +1,53 @@
+#pragma once
+// --observables FILE.csv: a header, then a row every --observe-every K steps
+// (and at the last step) of what a researcher plots: the collisions of the
+// interval since the row before, the kinetic energy, the pressure of the
+// interval by the virial and by the walls (as beta P (2r)^2 and
+// Z = beta P A / N), and the hexatic order |psi6| at the row's step
+// (particlesim/observables.hpp). The rows from --measure-from on feed
+// --stats' pressure with its error bar. Written like -o.
+
+#include "output_file.hpp"
+
+#include "particlesim/engine.hpp"
+#include "particlesim/observables.hpp"
+#include "particlesim/particle.hpp"
+#include "particlesim/world.hpp"
+
+#include <cstdint>
+#include <span>
+#include <string>
+#include <vector>
+
+namespace simcli {
+
+class ObservablesFile {
+public:
+    // Throws particlesim::OutputError.
+    ObservablesFile(const std::string& path, const particlesim::World& world, std::int64_t every,
+                    std::int64_t last_step, std::int64_t measure_from);
+
+    void observe(std::int64_t step, std::span<const particlesim::Particle> particles,
+                 const particlesim::StepCounts& totals, const particlesim::CollisionSums& sums);
+    // Puts the file in place. Throws particlesim::OutputError.
+    void commit();
+
+    // Over the rows from measure_from on.
+    [[nodiscard]] particlesim::MeanWithError virial_pressure() const;
+    [[nodiscard]] particlesim::MeanWithError wall_pressure() const;
+    [[nodiscard]] std::int64_t measure_from() const { return measure_from_; }
+
+private:
+    OutputFile file_;
+    particlesim::World world_;
+    std::int64_t every_;
+    std::int64_t last_step_;
+    std::int64_t measure_from_;
+    std::int64_t previous_step_ = 0;
+    particlesim::StepCounts previous_totals_;
+    particlesim::CollisionSums previous_sums_;
+    std::vector<double> virial_rows_, wall_rows_;  // beta P (2r)^2 of the measured rows
+    std::string text_;
+};
+
+}  // namespace simcli

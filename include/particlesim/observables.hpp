@@ -1,0 +1,65 @@
+#pragma once
+// What a researcher measures on hard disks: the pressure from the
+// collisions themselves (two routes in a walled box), the global hexatic
+// order, and a mean with its error bar from block averages.
+//
+// Conventions (docs/physics.md): mass 1; in a walled box the centres move in
+// the square of side L - 2r, whose area A = (L - 2r)^2 enters both routes, and
+// total momentum is not conserved (the walls take it), so all 2N degrees of
+// freedom are thermal: kT = E_kin / N.
+
+#include "particlesim/particle.hpp"
+#include "particlesim/world.hpp"
+
+#include <cstddef>
+#include <span>
+
+namespace particlesim {
+
+// What the collisions carried, summed since the engine started.
+struct CollisionSums {
+    double pair_virial = 0.0;   // over pair collisions, r_ij . dp_i (i's change of momentum, r_ij = r_i - r_j)
+    double wall_impulse = 0.0;  // over wall collisions, |dp| (the momentum the walls took)
+
+    CollisionSums operator-(const CollisionSums& earlier) const {
+        return {pair_virial - earlier.pair_virial, wall_impulse - earlier.wall_impulse};
+    }
+};
+
+// The pressure over an interval of `duration` (steps) in which the
+// collisions carried `sums`, for `count` disks with kinetic energy
+// `kinetic_energy`, as beta P (2r)^2 and Z = beta P A / N:
+//   virial: P A = N kT + sum(r_ij . dp_i) / (2 duration)
+//   walls:  P = sum |dp| / (duration x 4 (L - 2r))
+// Both are the same pressure (the virial theorem with the walls' forces);
+// they differ only by the noise of a finite interval.
+struct Pressure {
+    double kT = 0.0;
+    double betaP_d2 = 0.0;  // virial route
+    double Z = 0.0;
+    double betaP_d2_walls = 0.0;
+    double Z_walls = 0.0;
+};
+Pressure walled_box_pressure(const World& world, std::size_t count, double kinetic_energy, const CollisionSums& sums,
+                             double duration);
+
+// |<psi6>|: the mean over disks of (1/6) sum over its six nearest neighbours
+// of exp(6 i theta), theta the bond's angle. Six nearest rather than Voronoi
+// neighbours: no tessellation to build, the same count at every disk (a
+// Voronoi cell of a dense liquid often has five or seven), and the common
+// choice of the hard-disk papers' quick estimates. 1 on a perfect triangular
+// lattice, about 1 / sqrt(N) for a random gas. 0 for fewer than 7 disks.
+double hexatic_order(std::span<const Particle> particles, const World& world);
+
+// The mean of a series and its standard error from `blocks` block averages
+// (the error of correlated samples: blocks longer than the correlation time
+// are independent). Needs at least 2 samples a block: fewer samples give
+// error 0 and blocks 0.
+struct MeanWithError {
+    double mean = 0.0;
+    double error = 0.0;
+    std::size_t blocks = 0;
+};
+MeanWithError block_average(std::span<const double> samples, std::size_t blocks = 16);
+
+}  // namespace particlesim

@@ -1,0 +1,117 @@
+#include "particlesim/observables.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <complex>
+#include <vector>
+
+namespace particlesim {
+
+Pressure walled_box_pressure(const World& world, std::size_t count, double kinetic_energy, const CollisionSums& sums,
+                             double duration) {
+    Pressure p;
+    if (count == 0 || !(duration > 0.0)) return p;
+    const double n = static_cast<double>(count);
+    const double side = world.box_size - 2.0 * world.radius;
+    const double area = side * side;
+    const double diameter_sq = 4.0 * world.radius * world.radius;
+    p.kT = kinetic_energy / n;
+    if (!(p.kT > 0.0) || !(area > 0.0)) return p;
+    const double virial_pressure = (n * p.kT + sums.pair_virial / (2.0 * duration)) / area;
+    const double wall_pressure = sums.wall_impulse / (duration * 4.0 * side);
+    p.betaP_d2 = virial_pressure / p.kT * diameter_sq;
+    p.Z = virial_pressure * area / (n * p.kT);
+    p.betaP_d2_walls = wall_pressure / p.kT * diameter_sq;
+    p.Z_walls = wall_pressure * area / (n * p.kT);
+    return p;
+}
+
+double hexatic_order(std::span<const Particle> particles, const World& world) {
+    const std::size_t n = particles.size();
+    if (n < 7) return 0.0;
+    // About four disks a cell; rings of cells are searched until the sixth
+    // nearest is closer than anything outside them can be.
+    const int per_side = std::max(1, static_cast<int>(std::sqrt(static_cast<double>(n) / 4.0)));
+    const double cell = world.box_size / per_side;
+    const auto cell_of = [&](double coordinate) {
+        return std::clamp(static_cast<int>(coordinate / cell), 0, per_side - 1);
+    };
+    std::vector<std::size_t> starts(static_cast<std::size_t>(per_side) * per_side + 1, 0);
+    std::vector<std::uint32_t> members(n);
+    const auto index_of = [&](const Particle& p) {
+        return static_cast<std::size_t>(cell_of(p.position.y())) * per_side + cell_of(p.position.x());
+    };
+    for (const Particle& p : particles) ++starts[index_of(p) + 1];
+    for (std::size_t c = 1; c < starts.size(); ++c) starts[c] += starts[c - 1];
+    std::vector<std::size_t> fill(starts.begin(), starts.end() - 1);
+    for (std::uint32_t i = 0; i < n; ++i) members[fill[index_of(particles[i])]++] = i;
+
+    struct Neighbour {
+        double distance_sq;
+        Vec2 bond;
+    };
+    std::vector<Neighbour> found;
+    std::complex<double> total(0.0, 0.0);
+    for (std::uint32_t i = 0; i < n; ++i) {
+        const Vec2 at = particles[i].position;
+        const int cx = cell_of(at.x()), cy = cell_of(at.y());
+        for (int ring = 1;; ++ring) {
+            found.clear();
+            for (int y = std::max(cy - ring, 0); y <= std::min(cy + ring, per_side - 1); ++y) {
+                for (int x = std::max(cx - ring, 0); x <= std::min(cx + ring, per_side - 1); ++x) {
+                    const std::size_t c = static_cast<std::size_t>(y) * per_side + x;
+                    for (std::size_t k = starts[c]; k < starts[c + 1]; ++k) {
+                        if (members[k] == i) continue;
+                        const Vec2 bond = particles[members[k]].position - at;
+                        found.push_back({bond.squaredNorm(), bond});
+                    }
+                }
+            }
+            const bool whole_box = ring >= per_side;
+            if (found.size() < 6 && !whole_box) continue;
+            std::partial_sort(found.begin(), found.begin() + 6, found.end(),
+                              [](const Neighbour& a, const Neighbour& b) { return a.distance_sq < b.distance_sq; });
+            const double reach = ring * cell;  // nothing outside the searched cells is closer
+            if (whole_box || found[5].distance_sq <= reach * reach) break;
+        }
+        std::complex<double> psi(0.0, 0.0);
+        for (int k = 0; k < 6; ++k) {
+            const Vec2 bond = found[static_cast<std::size_t>(k)].bond;
+            const double length = std::sqrt(found[static_cast<std::size_t>(k)].distance_sq);
+            if (!(length > 0.0)) continue;
+            const std::complex<double> u(bond.x() / length, bond.y() / length);
+            const std::complex<double> u2 = u * u;
+            psi += u2 * u2 * u2;  // exp(6 i theta), without trigonometry
+        }
+        total += psi / 6.0;
+    }
+    return std::abs(total / static_cast<double>(n));
+}
+
+MeanWithError block_average(std::span<const double> samples, std::size_t blocks) {
+    MeanWithError result;
+    if (blocks < 2 || samples.size() < 2 * blocks) {
+        if (samples.empty()) return result;
+        double sum = 0.0;
+        for (const double s : samples) sum += s;
+        result.mean = sum / static_cast<double>(samples.size());
+        return result;
+    }
+    const std::size_t per_block = samples.size() / blocks;
+    std::vector<double> means(blocks, 0.0);
+    for (std::size_t b = 0; b < blocks; ++b) {
+        for (std::size_t k = 0; k < per_block; ++k) means[b] += samples[b * per_block + k];
+        means[b] /= static_cast<double>(per_block);
+    }
+    double mean = 0.0;
+    for (const double m : means) mean += m;
+    mean /= static_cast<double>(blocks);
+    double spread = 0.0;
+    for (const double m : means) spread += (m - mean) * (m - mean);
+    result.mean = mean;
+    result.error = std::sqrt(spread / static_cast<double>(blocks - 1) / static_cast<double>(blocks));
+    result.blocks = blocks;
+    return result;
+}
+
+}  // namespace particlesim

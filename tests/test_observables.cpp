@@ -1,0 +1,183 @@
+// Observables: the collision sums on hand-built collisions worked out on
+// paper; the pressure's two routes (virial, walls) agreeing within their
+// error bars in a walled box, and the ideal gas's P A = N kT; |psi6| near 1 on
+// a lattice, near 0 in a gas, unchanged by a rotation; block averages on
+// series whose answer is known; and simcli's --observables file and --stats.
+
+#include "check.hpp"
+#include "run_process.hpp"
+
+#include "particlesim/exact_simulation.hpp"
+#include "particlesim/observables.hpp"
+#include "particlesim/scene_families.hpp"
+
+#include <cmath>
+#include <numbers>
+#include <sstream>
+#include <string>
+#include <vector>
+
+using namespace particlesim;
+
+namespace {
+
+Particle disk(double x, double y, double vx, double vy) {
+    Particle p;
+    p.position = Vec2(x, y);
+    p.velocity = Vec2(vx, vy);
+    return p;
+}
+
+void sums_of_hand_built_collisions() {
+    // Head on along x, r = 1, speeds 1 each way: one collision at t = 1;
+    // r_ab . dp_a = (-2, 0) . (-2, 0) = 4. No wall is reached in the step.
+    ExactSimulation pair(World{20.0, 1.0}, {disk(7, 10, 1, 0), disk(11, 10, -1, 0)});
+    pair.step();
+    CHECK_EQ(pair.totals().particle_collisions, std::uint64_t{1});
+    CHECK_NEAR(pair.collision_sums().pair_virial, 4.0, 1e-12);
+    CHECK_EQ(pair.collision_sums().wall_impulse, 0.0);
+    // One disk into the left wall at speed 3, another into a corner at (2, 1):
+    // impulses 2 x 3, and 2 x (2 + 1) for the corner's two walls.
+    ExactSimulation walls(World{20.0, 1.0}, {disk(2.5, 10, -3, 0), disk(3, 3, -2, -2)});
+    walls.step();
+    CHECK_EQ(walls.totals().wall_collisions, std::uint64_t{2});
+    CHECK_NEAR(walls.collision_sums().wall_impulse, 6.0 + 8.0, 1e-12);
+}
+
+// Runs a scene, taking the pressure of every `every` steps.
+struct Routes {
+    MeanWithError virial, walls;
+};
+
+Routes pressure_routes(const Scene& scene, int steps, int every) {
+    ExactSimulation engine(scene.world, scene.particles);
+    std::vector<double> virial, walls;
+    CollisionSums before = engine.collision_sums();
+    for (int s = 1; s <= steps; ++s) {
+        engine.step();
+        if (s % every != 0) continue;
+        double kinetic = 0.0;
+        for (const Particle& p : engine.particles()) kinetic += 0.5 * p.velocity.squaredNorm();
+        const Pressure p = walled_box_pressure(scene.world, scene.particles.size(), kinetic,
+                                               engine.collision_sums() - before, static_cast<double>(every));
+        virial.push_back(p.Z);
+        walls.push_back(p.Z_walls);
+        before = engine.collision_sums();
+    }
+    return {block_average(virial), block_average(walls)};
+}
+
+void the_two_routes_agree_in_a_walled_box() {
+    SceneFamilyOptions o;
+    o.particles = 400;
+    o.area_fraction = 0.3;
+    o.speeds = SpeedRange{0.5, 0.5};
+    const Routes gas = pressure_routes(make_family_scene(SceneFamily::gas, o), 3200, 10);
+    const double combined = std::hypot(gas.virial.error, gas.walls.error);
+    check::Context context("Z virial ", gas.virial.mean, " +- ", gas.virial.error, ", walls ", gas.walls.mean, " +- ",
+                           gas.walls.error);
+    CHECK(gas.virial.error > 0.0 && gas.walls.error > 0.0);
+    CHECK(std::abs(gas.virial.mean - gas.walls.mean) <= 4.0 * combined);
+    // Hard disks at 0.3 press about twice as hard as an ideal gas.
+    CHECK(gas.virial.mean > 1.8 && gas.virial.mean < 2.4);
+    // Disks so small that they almost never meet: P A = N kT by the walls alone.
+    o.radius = 1e-3;
+    o.area_fraction = 1e-5;
+    const Routes ideal = pressure_routes(make_family_scene(SceneFamily::gas, o), 3200, 10);
+    check::Context ideal_context("ideal: Z walls ", ideal.walls.mean, " +- ", ideal.walls.error);
+    CHECK(std::abs(ideal.walls.mean - 1.0) <= 4.0 * ideal.walls.error);
+    CHECK(std::abs(ideal.virial.mean - 1.0) <= 1e-3);
+}
+
+void hexatic_order_of_lattice_and_gas() {
+    SceneFamilyOptions o;
+    o.particles = 900;
+    o.area_fraction = 0.8;
+    const Scene crystal = make_family_scene(SceneFamily::crystal, o);
+    const double ordered = hexatic_order(crystal.particles, crystal.world);
+    check::Context context("crystal |psi6| ", ordered);
+    CHECK(ordered > 0.85 && ordered <= 1.0 + 1e-12);
+    // Turned by 17 degrees about the box's centre (in a box large enough): the same magnitude.
+    const double turn = 17.0 * std::numbers::pi / 180.0, c = std::cos(turn), s = std::sin(turn);
+    std::vector<Particle> turned = crystal.particles;
+    const World large{3.0 * crystal.world.box_size, crystal.world.radius};
+    for (Particle& p : turned) {
+        const Vec2 d = p.position - Vec2(crystal.world.box_size / 2, crystal.world.box_size / 2);
+        p.position = Vec2(large.box_size / 2, large.box_size / 2) + Vec2(c * d.x() - s * d.y(), s * d.x() + c * d.y());
+    }
+    CHECK_NEAR(hexatic_order(turned, large), ordered, 1e-9);
+    o.particles = 2000;
+    o.area_fraction = 0.3;
+    const Scene gas = make_family_scene(SceneFamily::gas, o);
+    CHECK(hexatic_order(gas.particles, gas.world) < 0.1);
+    CHECK_EQ(hexatic_order(std::vector<Particle>(gas.particles.begin(), gas.particles.begin() + 6), gas.world), 0.0);
+}
+
+void block_averages_of_known_series() {
+    CHECK_EQ(block_average(std::vector<double>(64, 2.5)).error, 0.0);
+    CHECK_EQ(block_average(std::vector<double>(64, 2.5)).mean, 2.5);
+    std::vector<double> alternating;
+    for (int k = 0; k < 64; ++k) alternating.push_back(k % 2 == 0 ? 1.0 : -1.0);
+    const MeanWithError a = block_average(alternating);
+    CHECK_EQ(a.mean, 0.0);
+    CHECK_EQ(a.error, 0.0);  // blocks of four: each averages to 0
+    CHECK_EQ(a.blocks, std::size_t{16});
+    // Independent uniform samples: the error is sigma / sqrt(n) = (1 / sqrt(12)) / 64.
+    std::vector<double> uniform;
+    std::uint64_t state = 12345;
+    for (int k = 0; k < 4096; ++k) {
+        state = state * 6364136223846793005ULL + 1442695040888963407ULL;
+        uniform.push_back(static_cast<double>(state >> 11) * 0x1p-53);
+    }
+    const MeanWithError u = block_average(uniform);
+    CHECK_NEAR(u.mean, 0.5, 4.0 / std::sqrt(12.0) / 64.0);
+    CHECK(u.error > 0.5 / std::sqrt(12.0) / 64.0 && u.error < 2.0 / std::sqrt(12.0) / 64.0);
+    CHECK_EQ(block_average(std::vector<double>{1.0, 2.0}).blocks, std::size_t{0});
+}
+
+void simcli_observables_file() {
+    const std::string simcli = SIMCLI_PATH;
+    char dir_template[] = "/tmp/particlesim-observables-XXXXXX";
+    const std::string dir = mkdtemp(dir_template);
+    const std::string csv = dir + "/run.csv";
+    const std::string scene = run_process::run(SIMGEN_PATH, {"gas", "-n", "200", "-s", "95", "--mode", "perf"}).out;
+    const run_process::Result r = run_process::run(simcli,
+                                                   {"--engine", "exact", "--observables", csv, "--observe-every", "10",
+                                                    "--measure-from", "20", "--stats", "-o", "/dev/null"},
+                                                   scene);
+    CHECK_EQ(r.status, 0);
+    std::istringstream rows(run_process::slurp(csv));
+    std::string line;
+    std::getline(rows, line);
+    CHECK_EQ(line, std::string("step,time,pair_collisions,wall_collisions,kinetic_energy,betaP_d2,Z,psi6,"
+                               "betaP_d2_walls,Z_walls"));
+    std::vector<long> steps;
+    while (std::getline(rows, line)) steps.push_back(std::stol(line));
+    CHECK((steps == std::vector<long>{10, 20, 30, 40, 50, 60, 70, 80, 90, 95}));
+    CHECK(r.err.find("stats: pressure beta P (2r)^2 = ") != std::string::npos);
+    CHECK(r.err.find("blocks of the observables rows from step 20") != std::string::npos);
+    // Refused, exit 2, before anything runs.
+    for (const std::vector<std::string>& args :
+         std::vector<std::vector<std::string>>{{"--observables", csv},
+                                               {"--engine", "exact", "--observe-every", "3"},
+                                               {"--engine", "exact", "--observables", csv, "--observe-every", "0"},
+                                               {"--engine", "exact", "--observables", "/nonexistent/run.csv"},
+                                               {"--engine", "exact", "--observables", csv, "--measure-from", "96"}}) {
+        const run_process::Result refused = run_process::run(simcli, args, scene);
+        CHECK_EQ(refused.status, 2);
+        CHECK(refused.err.rfind("simcli: ", 0) == 0 && refused.err.find('\n') == refused.err.size() - 1);
+    }
+    std::remove(csv.c_str());
+    rmdir(dir.c_str());
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+    return check::run(argc, argv, "test_observables",
+                      {{"sums of hand-built collisions", sums_of_hand_built_collisions},
+                       {"the two routes agree in a walled box", the_two_routes_agree_in_a_walled_box},
+                       {"hexatic order of lattice and gas", hexatic_order_of_lattice_and_gas},
+                       {"block averages of known series", block_averages_of_known_series},
+                       {"simcli observables file", simcli_observables_file}});
+}
