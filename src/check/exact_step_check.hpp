@@ -25,11 +25,12 @@ private:
         std::vector<Particle> lower, upper;
         std::vector<CollisionRange> collisions;
         double widest = 0.0;                  // the largest spread of a position between the runs
+        double amplification = 0.0;           // the largest spread of a particle's state over the shift
         std::vector<std::uint32_t> unjudged;  // particles whose step is too chaotic to judge
     };
-    // Runs the ensemble `steps` steps on, calling `after_step(s)` after each.
+    // Runs an ensemble of `members` `steps` steps on, calling `after_step(s)` after each.
     template <typename AfterStep>
-    void run_ensemble(const PrintedState& start, std::int64_t steps, AfterStep after_step);
+    void run_ensemble(const PrintedState& start, std::int64_t steps, int members, AfterStep after_step);
     void measure_bounds(const PrintedState& start);
 
     World world_;
