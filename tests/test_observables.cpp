@@ -5,6 +5,7 @@
 // series whose answer is known; and simcli's --observables file and --stats.
 
 #include "check.hpp"
+#include "disk.hpp"
 #include "run_process.hpp"
 
 #include "particlesim/exact_simulation.hpp"
@@ -21,12 +22,7 @@ using namespace particlesim;
 
 namespace {
 
-Particle disk(double x, double y, double vx, double vy) {
-    Particle p;
-    p.position = Vec2(x, y);
-    p.velocity = Vec2(vx, vy);
-    return p;
-}
+using test_scenes::disk;
 
 void sums_of_hand_built_collisions() {
     // Head on along x, r = 1, speeds 1 each way: one collision at t = 1;

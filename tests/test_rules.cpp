@@ -2,6 +2,7 @@
 // that the outcome can be worked out by hand. L = 20, r = 1.
 
 #include "check.hpp"
+#include "disk.hpp"
 
 #include "core/random.hpp"
 #include "particlesim/stepped_simulation.hpp"
@@ -16,12 +17,7 @@ namespace {
 
 const World params{20.0, 1.0};
 
-Particle make(double x, double y, double vx, double vy) {
-    Particle p;
-    p.position = Vec2(x, y);
-    p.velocity = Vec2(vx, vy);
-    return p;
-}
+Particle make(double x, double y, double vx, double vy) { return test_scenes::disk(x, y, vx, vy); }
 
 void order_encodes_the_tie_rules() {
     const CandidateOrder order({});

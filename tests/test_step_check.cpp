@@ -3,6 +3,7 @@
 // with the reason in words), and decisions that lie within rounding.
 
 #include "check.hpp"
+#include "disk.hpp"
 
 #include "particlesim/step_check.hpp"
 
@@ -13,12 +14,7 @@ using namespace particlesim;
 
 namespace {
 
-Particle disk(double x, double y, double vx, double vy) {
-    Particle p;
-    p.position = Vec2(x, y);
-    p.velocity = Vec2(vx, vy);
-    return p;
-}
+using test_scenes::disk;
 
 StepCheck check_exact(double box, const std::vector<Particle>& before, const std::vector<Particle>& after,
                       const StepCheckOptions& options = {}) {

@@ -16,6 +16,12 @@ public:
     using std::runtime_error::runtime_error;
 };
 
+// The value of the option at argv[k], moving k onto it; BadUsage when there is none.
+inline std::string option_value(int argc, char** argv, int& k) {
+    if (k + 1 >= argc) throw BadUsage(std::string(argv[k]) + " needs a value");
+    return argv[++k];
+}
+
 // Reads `--substeps K` or `--engine step|exact` into `options` (value()
 // takes the option's value); false for any other argument.
 template <typename TakeValue>

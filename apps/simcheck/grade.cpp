@@ -106,10 +106,7 @@ std::optional<Options> parse(int argc, char** argv) {
             ++k;
             break;
         }
-        const auto value = [&]() -> std::string {
-            if (k + 1 >= argc) throw BadUsage(arg + " needs a value");
-            return argv[++k];
-        };
+        const auto value = [&] { return option_value(argc, argv, k); };
         if (arg == "-h" || arg == "--help") {
             std::fputs(usage, stdout);
             return std::nullopt;

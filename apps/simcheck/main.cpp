@@ -70,10 +70,7 @@ std::optional<Arguments> parse_arguments(int argc, char** argv) {
     bool substeps_given = false;
     for (int k = 1; k < argc; ++k) {
         const std::string arg = argv[k];
-        const auto value = [&]() -> std::string {
-            if (k + 1 >= argc) throw BadUsage(arg + " needs a value");
-            return argv[++k];
-        };
+        const auto value = [&] { return option_value(argc, argv, k); };
         if (arg == "-h" || arg == "--help") {
             std::fputs(usage, stdout);
             return std::nullopt;

@@ -3,6 +3,7 @@
 // in the benchmark tree), and the check every step of them must pass.
 
 #include "core/random.hpp"
+#include "disk.hpp"
 #include "named_scene.hpp"
 #include "particlesim/accuracy.hpp"
 #include "particlesim/random_scene.hpp"
@@ -14,13 +15,7 @@
 namespace stress_scenes {
 
 using namespace particlesim;
-
-inline Particle disk(double x, double y, double vx, double vy) {
-    Particle p;
-    p.position = Vec2(x, y);
-    p.velocity = Vec2(vx, vy);
-    return p;
-}
+using test_scenes::disk;
 
 inline std::vector<NamedScene> all() {
     std::vector<NamedScene> scenes;
