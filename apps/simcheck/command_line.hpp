@@ -22,8 +22,9 @@ inline std::string option_value(int argc, char** argv, int& k) {
     return argv[++k];
 }
 
-// Reads `--substeps K` or `--engine step|exact` into `options` (value()
-// takes the option's value); false for any other argument.
+// Reads `--substeps K`, `--engine step|exact` or `--boundary walls|periodic`
+// into `options` (value() takes the option's value); false for any other
+// argument.
 template <typename TakeValue>
 bool read_rules_option(const std::string& arg, TakeValue&& value, particlesim::StepCheckOptions& options) {
     if (arg == "--substeps") {
@@ -45,7 +46,26 @@ bool read_rules_option(const std::string& arg, TakeValue&& value, particlesim::S
         }
         return true;
     }
+    if (arg == "--boundary") {
+        const std::string text = value();
+        if (text == "periodic") {
+            options.boundary = particlesim::Boundary::periodic;
+        } else if (text != "walls") {
+            throw BadUsage("--boundary is walls or periodic, not \"" + text + "\"");
+        }
+        return true;
+    }
     return false;
+}
+
+// The rules options that contradict each other.
+inline void require_consistent_rules(const particlesim::StepCheckOptions& options, bool substeps_given) {
+    if (substeps_given && options.rules == particlesim::CheckedRules::exact) {
+        throw BadUsage("--substeps belongs to the step rules; the exact engine has none");
+    }
+    if (options.boundary == particlesim::Boundary::periodic && options.rules != particlesim::CheckedRules::exact) {
+        throw BadUsage("--boundary periodic needs --engine exact: the step rules are those of a walled box");
+    }
 }
 
 }  // namespace simcheck

@@ -61,7 +61,7 @@ Other:
       --jobs N           run N scenes side by side (the times then say so)
       --reference PATH   the simcli to time against (default: beside simcheck,
                          else on PATH); --no-reference: no ratios
-      --substeps K, --engine exact   as for simcheck SCENE OUTPUT
+      --substeps K, --engine exact, --boundary periodic   as for simcheck SCENE OUTPUT
 
 Verdicts: conforms; shape (the physics conforms, the output's shape deviates:
 named); wrong (breaks the rules; step = the first wrong step); crashed (a
@@ -98,6 +98,7 @@ Number number_option(const std::string& name, const std::string& text, Number lo
 
 std::optional<Options> parse(int argc, char** argv) {
     Options o;
+    bool substeps_given = false;
     std::vector<std::string> positional;
     int k = 1;
     for (; k < argc; ++k) {
@@ -133,6 +134,7 @@ std::optional<Options> parse(int argc, char** argv) {
         } else if (arg == "--no-reference") {
             o.no_reference = true;
         } else if (read_rules_option(arg, value, o.check)) {
+            substeps_given = substeps_given || arg == "--substeps";
         } else if (arg.size() > 1 && arg[0] == '-') {
             throw BadUsage("unknown option " + arg + " (simcheck grade --help lists them)");
         } else {
@@ -140,6 +142,7 @@ std::optional<Options> parse(int argc, char** argv) {
         }
     }
     for (; k < argc; ++k) o.program.emplace_back(argv[k]);
+    require_consistent_rules(o.check, substeps_given);
     if (positional.size() != 1) throw BadUsage("needs one SUITE_DIR (simcheck grade --help)");
     if (o.program.empty()) throw BadUsage("needs -- PROGRAM [ARGS...] after the options (simcheck grade --help)");
     o.suite = positional[0];

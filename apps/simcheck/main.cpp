@@ -35,7 +35,8 @@ constexpr int exit_bad_input = 2;
 constexpr int exit_no_verdict = 3;
 constexpr int exit_shape = 4;
 
-constexpr const char* usage = R"(usage: simcheck SCENE OUTPUT [--substeps K | --engine exact] [--json]
+constexpr const char* usage =
+    R"(usage: simcheck SCENE OUTPUT [--substeps K | --engine exact [--boundary periodic]] [--json]
        simcheck grade SUITE_DIR [OPTIONS] -- PROGRAM [ARGS...]   (simcheck grade --help)
 
 Checks OUTPUT, written by any program for SCENE in the format of io.md,
@@ -45,6 +46,7 @@ step, within the uncertainty of 8-decimal printing (docs/checking.md).
   SCENE, OUTPUT          files; one of them may be '-' (stdin)
       --substeps K       the output was made with K micro-steps per step
       --engine step|exact  exact: check against continuous-time hard disks
+      --boundary walls|periodic  periodic: the exact rules in a periodic box
       --json             the report as one JSON object
   -h, --help             this text, exit 0
       --version          the version, exit 0
@@ -91,9 +93,7 @@ std::optional<Arguments> parse_arguments(int argc, char** argv) {
     }
     if (files.size() != 2) throw BadUsage("needs a SCENE and an OUTPUT (simcheck --help)");
     if (files[0] == "-" && files[1] == "-") throw BadUsage("SCENE and OUTPUT cannot both be stdin");
-    if (substeps_given && args.options.rules == CheckedRules::exact) {
-        throw BadUsage("--substeps belongs to the step rules; the exact engine has none");
-    }
+    require_consistent_rules(args.options, substeps_given);
     args.scene_path = files[0];
     args.output_path = files[1];
     return args;
@@ -114,7 +114,10 @@ Scene read_scene_file(const std::string& path) {
 }
 
 std::string rules_name(const StepCheckOptions& options) {
-    if (options.rules == CheckedRules::exact) return "continuous-time hard disks";
+    if (options.rules == CheckedRules::exact) {
+        return options.boundary == Boundary::periodic ? "continuous-time hard disks in a periodic box"
+                                                      : "continuous-time hard disks";
+    }
     if (options.substeps == 1) return "the step rules";
     return "the step rules with " + std::to_string(options.substeps) + " substeps";
 }

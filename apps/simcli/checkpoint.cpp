@@ -29,8 +29,12 @@ void write_settings(std::ostream& out, const RunSettings& s) {
     out << "radius ";
     particlesim::save_number(out, s.world.radius);
     out << "steps " << s.steps << " mode " << (s.mode == particlesim::OutputMode::print ? "print" : "perf")
-        << " engine " << (s.engine == EngineChoice::exact ? "exact" : "step") << " substeps " << s.substeps
-        << " numbers " << (s.numbers == particlesim::NumberFormat::shortest ? "shortest" : "fixed8") << '\n';
+        << " engine "
+        << (s.engine == EngineChoice::step                  ? "step"
+            : s.boundary == particlesim::Boundary::periodic ? "exact-periodic"
+                                                            : "exact")
+        << " substeps " << s.substeps << " numbers "
+        << (s.numbers == particlesim::NumberFormat::shortest ? "shortest" : "fixed8") << '\n';
 }
 
 Checkpoint read_checkpoint(const std::string& path) {
@@ -53,8 +57,9 @@ Checkpoint read_checkpoint(const std::string& path) {
     s.mode = mode == "print" ? particlesim::OutputMode::print : particlesim::OutputMode::perf;
     in.expect("engine");
     const std::string engine = in.word();
-    if (engine != "step" && engine != "exact") in.fail("an unknown engine");
-    s.engine = engine == "exact" ? EngineChoice::exact : EngineChoice::step;
+    if (engine != "step" && engine != "exact" && engine != "exact-periodic") in.fail("an unknown engine");
+    s.engine = engine == "step" ? EngineChoice::step : EngineChoice::exact;
+    s.boundary = engine == "exact-periodic" ? particlesim::Boundary::periodic : particlesim::Boundary::walls;
     in.expect("substeps");
     s.substeps = static_cast<int>(in.count(1 << 20));
     if (s.substeps < 1) in.fail("substeps below 1");

@@ -23,6 +23,7 @@ struct RunSettings {
     std::int64_t steps = 0;
     particlesim::OutputMode mode = particlesim::OutputMode::perf;
     EngineChoice engine = EngineChoice::step;
+    particlesim::Boundary boundary = particlesim::Boundary::walls;  // periodic: the exact engine only
     int substeps = 1;
     particlesim::NumberFormat numbers = particlesim::NumberFormat::fixed8;
 };

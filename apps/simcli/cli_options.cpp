@@ -35,6 +35,8 @@ Simulates N hard disks bouncing elastically in a square box, in discrete steps.
       --substeps K                 K micro-steps per step (default 1)
       --engine step|exact          exact = continuous-time event-driven engine
                                    (one thread; needs a start without overlaps)
+      --boundary walls|periodic    the box's edges (default walls); periodic needs --engine
+                                   exact: nearest images meet, printed positions in [0, L)
       --exact-numbers              numbers in the shortest form that reads back to the
                                    same double, instead of 8 decimals
       --checkpoint FILE            write the run's exact state to FILE on SIGINT/SIGTERM
@@ -105,6 +107,7 @@ enum LongOnly {
     opt_observables,
     opt_observe_every,
     opt_measure_from,
+    opt_boundary,
 };
 
 // --animate-every: a whole number of steps, or 1/k of a step (k up to 1000).
@@ -139,6 +142,7 @@ struct Given {
     std::optional<std::int64_t> trajectory_every;
     std::optional<std::int64_t> observe_every;
     std::optional<std::int64_t> measure_from;
+    bool boundary = false;
 };
 
 void check_combinations(CliOptions& options, const Given& given) {
@@ -175,15 +179,21 @@ void check_combinations(CliOptions& options, const Given& given) {
         throw BadInput(
             "--observables needs --engine exact: the pressure is that of hard disks, which the step rules are not");
     }
+    if (options.boundary == particlesim::Boundary::periodic && options.engine != EngineChoice::exact &&
+        !options.resume_path) {
+        throw BadInput("--boundary periodic needs --engine exact: the step rules are those of a walled box");
+    }
     if (options.resume_path &&
         (options.animation || options.snapshot_path || options.trajectory_path || options.observables_path)) {
         throw BadInput("--animate, --snapshot, --trajectory and --observables need the whole run; not with --resume");
     }
     if (options.resume_path) {
         if (options.scene_path != "-") throw BadInput("--resume continues a checkpoint; it takes no scene file");
-        if (given.engine || given.substeps || given.seed || options.numbers != particlesim::NumberFormat::fixed8) {
+        if (given.engine || given.substeps || given.seed || given.boundary ||
+            options.numbers != particlesim::NumberFormat::fixed8) {
             throw BadInput(
-                "--engine, --substeps, --seed and --exact-numbers come from the checkpoint; not with --resume");
+                "--engine, --boundary, --substeps, --seed and --exact-numbers come from the checkpoint; not with "
+                "--resume");
         }
     }
 }
@@ -214,6 +224,7 @@ std::optional<CliOptions> parse_arguments(int argc, char** argv) {
                                           {"observables", required_argument, nullptr, opt_observables},
                                           {"observe-every", required_argument, nullptr, opt_observe_every},
                                           {"measure-from", required_argument, nullptr, opt_measure_from},
+                                          {"boundary", required_argument, nullptr, opt_boundary},
                                           {"help", no_argument, nullptr, 'h'},
                                           {"version", no_argument, nullptr, opt_version},
                                           {nullptr, 0, nullptr, 0}};
@@ -279,6 +290,16 @@ std::optional<CliOptions> parse_arguments(int argc, char** argv) {
         case opt_trajectory_every:
             given.trajectory_every =
                 static_cast<std::int64_t>(parse_unsigned("--trajectory-every", value, 1, INT64_MAX));
+            break;
+        case opt_boundary:
+            given.boundary = true;
+            if (value == "walls") {
+                options.boundary = particlesim::Boundary::walls;
+            } else if (value == "periodic") {
+                options.boundary = particlesim::Boundary::periodic;
+            } else {
+                throw BadInput("--boundary: expected walls or periodic, found \"" + std::string(value) + "\"");
+            }
             break;
         case opt_observables: options.observables_path = std::string(value); break;
         case opt_observe_every:

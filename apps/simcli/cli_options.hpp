@@ -27,6 +27,7 @@ struct CliOptions {
     std::string scene_path = "-";
     std::optional<std::string> output_path;
     EngineChoice engine = EngineChoice::step;
+    particlesim::Boundary boundary = particlesim::Boundary::walls;
     bool stats = false;
     particlesim::SteppedOptions stepped;  // searches and threads; substeps when not resuming
     particlesim::RandomSceneOptions random;

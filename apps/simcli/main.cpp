@@ -158,6 +158,13 @@ void print_pressure(const ObservablesFile& observables) {
                      static_cast<long long>(observables.measure_from()));
         return;
     }
+    if (observables.periodic()) {
+        std::fprintf(stderr,
+                     "stats: pressure beta P (2r)^2 = %.6g +- %.2g (virial, periodic box); %zu blocks of the "
+                     "observables rows from step %lld\n",
+                     virial.mean, virial.error, virial.blocks, static_cast<long long>(observables.measure_from()));
+        return;
+    }
     std::fprintf(stderr,
                  "stats: pressure beta P (2r)^2 = %.6g +- %.2g (virial), %.6g +- %.2g (walls); %zu blocks of the "
                  "observables rows from step %lld\n",
@@ -220,17 +227,21 @@ Scene read_input(const std::string& path, const std::string& name, SceneLines& l
 std::string at_line(const std::string& name, long line) { return name + ":" + std::to_string(line) + ": "; }
 
 ExactSimulation make_exact_engine(const Scene& scene, std::vector<Particle> particles, const std::string& name,
-                                  const SceneLines& lines) {
+                                  const SceneLines& lines, Boundary boundary) {
     try {
         require_feasible_exact_run(scene.world, particles, scene.steps);
     } catch (const std::invalid_argument& e) {
         throw BadInput(at_line(name, lines.steps) + e.what());
     }
     try {
-        return ExactSimulation(scene.world, std::move(particles));
+        ExactOptions exact;
+        exact.boundary = boundary;
+        return ExactSimulation(scene.world, std::move(particles), exact);
     } catch (const OverlappingStart& e) {
         const long line = lines.particles.empty() ? lines.particle_count : lines.particles[e.first()];
         throw BadInput(at_line(name, line) + e.what());
+    } catch (const std::invalid_argument& e) {  // a periodic box too small for its cells
+        throw BadInput(at_line(name, lines.box_size) + e.what());
     }
 }
 
@@ -248,7 +259,8 @@ void run_scene(const CliOptions& options) {
     } catch (const SceneTooFull& e) {
         throw BadInput(at_line(name, lines.particle_count) + e.what());
     }
-    const RunSettings settings{scene.world,    scene.steps, scene.mode, options.engine, options.stepped.substeps,
+    const RunSettings settings{scene.world,    scene.steps,      scene.mode,
+                               options.engine, options.boundary, options.stepped.substeps,
                                options.numbers};
     Pictures pictures;
     if (options.snapshot_path) {
@@ -265,11 +277,12 @@ void run_scene(const CliOptions& options) {
     }
     try {
         if (options.trajectory_path) {
-            pictures.trajectory.emplace(*options.trajectory_path, scene.world, options.trajectory_every, scene.steps);
+            pictures.trajectory.emplace(*options.trajectory_path, scene.world, options.boundary,
+                                        options.trajectory_every, scene.steps);
         }
         if (options.observables_path) {
-            pictures.observables.emplace(*options.observables_path, scene.world, options.observe_every, scene.steps,
-                                         options.measure_from);
+            pictures.observables.emplace(*options.observables_path, scene.world, options.boundary,
+                                         options.observe_every, scene.steps, options.measure_from);
         }
     } catch (const OutputError& e) {
         throw BadInput(e.what());
@@ -282,7 +295,7 @@ void run_scene(const CliOptions& options) {
     const bool between_steps = pictures.animation && pictures.animation->per_step() > 1;
     const std::vector<Particle> start = between_steps ? particles : std::vector<Particle>{};
     if (exact) {
-        ExactSimulation engine = make_exact_engine(scene, std::move(particles), name, lines);
+        ExactSimulation engine = make_exact_engine(scene, std::move(particles), name, lines, options.boundary);
         lines = {};  // the particles' lines were kept for the messages above only
         run_and_report(engine, settings, options, pictures);
     } else {
@@ -306,7 +319,9 @@ void resume_run(const CliOptions& options) {
     Pictures no_pictures;  // --animate and --snapshot need the whole run
     try {
         if (settings.engine == EngineChoice::exact) {
-            ExactSimulation engine = ExactSimulation::restore(settings.world, *checkpoint.engine_state);
+            ExactOptions exact;
+            exact.boundary = settings.boundary;
+            ExactSimulation engine = ExactSimulation::restore(settings.world, *checkpoint.engine_state, exact);
             run_and_report(engine, settings, options, no_pictures);
         } else {
             SteppedOptions stepped = options.stepped;

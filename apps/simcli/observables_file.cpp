@@ -17,10 +17,17 @@ void append_number(std::string& text, double value) {
 
 }  // namespace
 
-ObservablesFile::ObservablesFile(const std::string& path, const particlesim::World& world, std::int64_t every,
-                                 std::int64_t last_step, std::int64_t measure_from)
-    : file_(path), world_(world), every_(every), last_step_(last_step), measure_from_(measure_from) {
-    text_ = "step,time,pair_collisions,wall_collisions,kinetic_energy,betaP_d2,Z,psi6,betaP_d2_walls,Z_walls\n";
+ObservablesFile::ObservablesFile(const std::string& path, const particlesim::World& world,
+                                 particlesim::Boundary boundary, std::int64_t every, std::int64_t last_step,
+                                 std::int64_t measure_from)
+    : file_(path),
+      world_(world),
+      periodic_(boundary == particlesim::Boundary::periodic),
+      every_(every),
+      last_step_(last_step),
+      measure_from_(measure_from) {
+    text_ = "step,time,pair_collisions,wall_collisions,kinetic_energy,betaP_d2,Z,psi6";
+    text_ += periodic_ ? "\n" : ",betaP_d2_walls,Z_walls\n";
     if (std::fwrite(text_.data(), 1, text_.size(), file_.stream()) != text_.size()) {
         throw particlesim::OutputError("cannot write the observables");
     }
@@ -36,17 +43,25 @@ void ObservablesFile::observe(std::int64_t step, std::span<const particlesim::Pa
     if (step % every_ != 0 && step != last_step_) return;
     double kinetic = 0.0;
     for (const particlesim::Particle& p : particles) kinetic += 0.5 * p.velocity.squaredNorm();
-    const particlesim::Pressure pressure = particlesim::walled_box_pressure(
-        world_, particles.size(), kinetic, sums - previous_sums_, static_cast<double>(step - previous_step_));
+    const double duration = static_cast<double>(step - previous_step_);
+    const particlesim::Pressure pressure =
+        periodic_
+            ? particlesim::periodic_box_pressure(world_, particles.size(), kinetic, sums - previous_sums_, duration)
+            : particlesim::walled_box_pressure(world_, particles.size(), kinetic, sums - previous_sums_, duration);
     text_.clear();
     text_ += std::to_string(step) + ',';
     append_number(text_, static_cast<double>(step));
     text_ += ',' + std::to_string(totals.particle_collisions - previous_totals_.particle_collisions);
     text_ += ',' + std::to_string(totals.wall_collisions - previous_totals_.wall_collisions);
-    for (const double value : {kinetic, pressure.betaP_d2, pressure.Z, particlesim::hexatic_order(particles, world_),
-                               pressure.betaP_d2_walls, pressure.Z_walls}) {
+    for (const double value : {kinetic, pressure.betaP_d2, pressure.Z, particlesim::hexatic_order(particles, world_)}) {
         text_ += ',';
         append_number(text_, value);
+    }
+    if (!periodic_) {
+        for (const double value : {pressure.betaP_d2_walls, pressure.Z_walls}) {
+            text_ += ',';
+            append_number(text_, value);
+        }
     }
     text_ += '\n';
     if (std::fwrite(text_.data(), 1, text_.size(), file_.stream()) != text_.size()) {

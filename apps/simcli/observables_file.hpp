@@ -24,22 +24,24 @@ namespace simcli {
 class ObservablesFile {
 public:
     // Throws particlesim::OutputError.
-    ObservablesFile(const std::string& path, const particlesim::World& world, std::int64_t every,
-                    std::int64_t last_step, std::int64_t measure_from);
+    ObservablesFile(const std::string& path, const particlesim::World& world, particlesim::Boundary boundary,
+                    std::int64_t every, std::int64_t last_step, std::int64_t measure_from);
 
     void observe(std::int64_t step, std::span<const particlesim::Particle> particles,
                  const particlesim::StepCounts& totals, const particlesim::CollisionSums& sums);
     // Puts the file in place. Throws particlesim::OutputError.
     void commit();
 
-    // Over the rows from measure_from on.
+    // Over the rows from measure_from on (the walls' route: a walled box only).
     [[nodiscard]] particlesim::MeanWithError virial_pressure() const;
     [[nodiscard]] particlesim::MeanWithError wall_pressure() const;
+    [[nodiscard]] bool periodic() const { return periodic_; }
     [[nodiscard]] std::int64_t measure_from() const { return measure_from_; }
 
 private:
     OutputFile file_;
     particlesim::World world_;
+    bool periodic_;
     std::int64_t every_;
     std::int64_t last_step_;
     std::int64_t measure_from_;

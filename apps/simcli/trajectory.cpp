@@ -19,9 +19,13 @@ void append_number(std::string& text, double value) {
 
 }  // namespace
 
-Trajectory::Trajectory(const std::string& path, const particlesim::World& world, std::int64_t every,
-                       std::int64_t last_step)
-    : file_(path), world_(world), every_(every), last_step_(last_step) {}
+Trajectory::Trajectory(const std::string& path, const particlesim::World& world, particlesim::Boundary boundary,
+                       std::int64_t every, std::int64_t last_step)
+    : file_(path),
+      world_(world),
+      pbc_(boundary == particlesim::Boundary::periodic ? "T T F" : "F F F"),
+      every_(every),
+      last_step_(last_step) {}
 
 void Trajectory::observe(std::int64_t step, std::span<const particlesim::Particle> particles) {
     if (step % every_ != 0 && step != last_step_) return;
@@ -35,7 +39,9 @@ void Trajectory::observe(std::int64_t step, std::span<const particlesim::Particl
         text_ += ' ';
     }
     text_.back() = '"';  // in place of the last space
-    text_ += " Properties=species:S:1:pos:R:3:velo:R:3:radius:R:1 pbc=\"F F F\" step=";
+    text_ += " Properties=species:S:1:pos:R:3:velo:R:3:radius:R:1 pbc=\"";
+    text_ += pbc_;
+    text_ += "\" step=";
     text_ += std::to_string(step);
     text_ += " time=";
     append_number(text_, static_cast<double>(step));

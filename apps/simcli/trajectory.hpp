@@ -21,7 +21,8 @@ namespace simcli {
 class Trajectory {
 public:
     // Frames at steps 0, K, 2K, ... and the last step. Throws particlesim::OutputError.
-    Trajectory(const std::string& path, const particlesim::World& world, std::int64_t every, std::int64_t last_step);
+    Trajectory(const std::string& path, const particlesim::World& world, particlesim::Boundary boundary,
+               std::int64_t every, std::int64_t last_step);
 
     void observe(std::int64_t step, std::span<const particlesim::Particle> particles);
     // Puts the file in place. Throws particlesim::OutputError.
@@ -30,6 +31,7 @@ public:
 private:
     OutputFile file_;
     particlesim::World world_;
+    const char* pbc_;  // "F F F" or "T T F"
     std::int64_t every_;
     std::int64_t last_step_;
     std::string text_;  // one frame

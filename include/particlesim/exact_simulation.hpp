@@ -67,6 +67,10 @@ struct ExactOptions {
     // (docs/benchmarks.md). Empty: on from 32 768 particles. No effect with
     // one cell. Every value gives the same events.
     std::optional<bool> look_ahead = std::nullopt;
+    // Walls, or a periodic box (docs/physics.md): then the particles' centres
+    // lie in [0, L) and the box must be at least 5 cells of a contact
+    // distance wide (L >= 10 r, a little more); cells_per_side >= 5.
+    Boundary boundary = Boundary::walls;
 };
 
 class ExactSimulation {

@@ -6,7 +6,8 @@
 // Conventions (docs/physics.md): mass 1; in a walled box the centres move in
 // the square of side L - 2r, whose area A = (L - 2r)^2 enters both routes, and
 // total momentum is not conserved (the walls take it), so all 2N degrees of
-// freedom are thermal: kT = E_kin / N.
+// freedom are thermal: kT = E_kin / N. In a periodic box A = L^2 and
+// kT = E_kin / (N - 1).
 
 #include "particlesim/particle.hpp"
 #include "particlesim/world.hpp"
@@ -42,6 +43,12 @@ struct Pressure {
 };
 Pressure walled_box_pressure(const World& world, std::size_t count, double kinetic_energy, const CollisionSums& sums,
                              double duration);
+
+// The same in a periodic box (ExactOptions::boundary): the virial route
+// alone (no walls; the walls' fields stay 0), with A = L^2 and, as the total
+// momentum is conserved, kT = E_kin / (N - 1).
+Pressure periodic_box_pressure(const World& world, std::size_t count, double kinetic_energy, const CollisionSums& sums,
+                               double duration);
 
 // |<psi6>|: the mean over disks of (1/6) sum over its six nearest neighbours
 // of exp(6 i theta), theta the bond's angle. Six nearest rather than Voronoi

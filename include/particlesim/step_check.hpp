@@ -39,6 +39,9 @@ enum class CheckedRules {
 struct StepCheckOptions {
     CheckedRules rules = CheckedRules::stepped;
     int substeps = 1;  // micro-steps per step of the stepped rules, >= 1
+    // The exact rules in a periodic box (ExactOptions::boundary); the stepped
+    // rules have walls.
+    Boundary boundary = Boundary::walls;
 };
 
 // The collisions a particle may have had in the step, as far as decided.

@@ -3,6 +3,8 @@
 // and N disks of one radius r. Steps and output mode are not part of it: they
 // belong to a scene file and to the program that runs it (scene.hpp).
 
+#include <cstdint>
+
 namespace particlesim {
 
 // The accepted range: L and r in [min_length, max_magnitude], every position
@@ -13,6 +15,11 @@ namespace particlesim {
 // engines throw std::invalid_argument for, anything outside it.
 inline constexpr double min_length = 1e-60;
 inline constexpr double max_magnitude = 1e60;
+
+// The box's edges: walls (rules.md), or periodic: the square wraps, a disk
+// meets the nearest image of another, and positions lie in [0, L) (the exact
+// engine only).
+enum class Boundary : std::uint8_t { walls, periodic };
 
 struct World {
     double box_size = 0.0;  // L

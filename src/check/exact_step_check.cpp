@@ -38,7 +38,8 @@ constexpr double judged_amplification = 1e3;
 
 }  // namespace
 
-ExactStepCheck::ExactStepCheck(const World& world) : world_(world), box_(Box::of(world)) {}
+ExactStepCheck::ExactStepCheck(const World& world, Boundary boundary)
+    : world_(world), box_(Box::of(world)), boundary_(boundary) {}
 
 template <typename AfterStep>
 void ExactStepCheck::run_ensemble(const PrintedState& start, std::int64_t steps, int members, AfterStep after_step) {
@@ -57,11 +58,19 @@ void ExactStepCheck::run_ensemble(const PrintedState& start, std::int64_t steps,
                     p.position[axis] = moved(p.position[axis]);
                     p.velocity[axis] = moved(p.velocity[axis]);
                 }
-                p.position[axis] = std::clamp(p.position[axis], box_.lower, box_.upper);
+                if (boundary_ == Boundary::periodic) {
+                    double& c = p.position[axis];
+                    c -= world_.box_size * std::floor(c / world_.box_size);  // into [0, L)
+                    if (!(c < world_.box_size)) c = 0.0;
+                } else {
+                    p.position[axis] = std::clamp(p.position[axis], box_.lower, box_.upper);
+                }
             }
         }
         try {
-            runs.emplace_back(world_, std::move(copy));
+            ExactOptions options;
+            options.boundary = boundary_;
+            runs.emplace_back(world_, std::move(copy), options);
         } catch (const std::invalid_argument& e) {
             if (refusal.empty()) refusal = e.what();
         }
@@ -175,8 +184,14 @@ StepCheck ExactStepCheck::check(const PrintedState& before, const PrintedState& 
         };
         bool fine = true;
         for (int axis = 0; axis < 2; ++axis) {
-            fine =
-                fine && fits(printed.position[axis], bounds_.lower[p].position[axis], bounds_.upper[p].position[axis]);
+            const double lower = bounds_.lower[p].position[axis], upper = bounds_.upper[p].position[axis];
+            double position = printed.position[axis];
+            if (boundary_ == Boundary::periodic) {  // the image nearest where the runs went
+                const double middle = 0.5 * (lower + upper);
+                if (position - middle > 0.5 * world_.box_size) position -= world_.box_size;
+                if (position - middle < -0.5 * world_.box_size) position += world_.box_size;
+            }
+            fine = fine && fits(position, lower, upper);
             fine =
                 fine && fits(printed.velocity[axis], bounds_.lower[p].velocity[axis], bounds_.upper[p].velocity[axis]);
         }

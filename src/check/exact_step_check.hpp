@@ -15,7 +15,7 @@ namespace particlesim {
 
 class ExactStepCheck {
 public:
-    explicit ExactStepCheck(const World& world);
+    ExactStepCheck(const World& world, Boundary boundary);
 
     [[nodiscard]] StepCheck check(const PrintedState& before, const PrintedState& after);
     [[nodiscard]] StepChecker::Run run(const PrintedState& start, std::int64_t steps);
@@ -35,6 +35,7 @@ private:
 
     World world_;
     Box box_;
+    Boundary boundary_;
     std::vector<std::vector<Particle>> states_;  // of each run that could start
     std::vector<Vec2> positions_;
     Bounds bounds_;

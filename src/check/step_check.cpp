@@ -61,7 +61,14 @@ std::string event_name(const PossibleCollision& c) {
 class StepChecker::Impl {
 public:
     Impl(const World& world, const StepCheckOptions& options)
-        : world_(world), box_(Box::of(world)), options_(options), step_(box_), exact_(world) {}
+        : world_(world),
+          box_(Box::of(world)),
+          options_(options),
+          // Where centres may be: [r, L - r] between walls, [0, L) in a periodic box.
+          lowest_(options.boundary == Boundary::periodic ? 0.0 : box_.lower),
+          highest_(options.boundary == Boundary::periodic ? world.box_size : box_.upper),
+          step_(box_),
+          exact_(world, options.boundary) {}
 
     StepCheck check(const PrintedState& before, const PrintedState& after) {
         require_printed_state(before);
@@ -112,7 +119,7 @@ private:
                 const double value = q.position[axis];
                 const double velocity = q.velocity[axis];
                 const double allowed = tolerance(value, state.uncertainty);
-                if (!(value >= box_.lower - allowed && value <= box_.upper + allowed) ||
+                if (!(value >= lowest_ - allowed && value <= highest_ + allowed) ||
                     !(std::fabs(velocity) <= max_magnitude)) {
                     throw std::invalid_argument("StepChecker: particle " + std::to_string(p) +
                                                 " of the state before the step is outside the box or beyond the "
@@ -131,16 +138,18 @@ private:
                 const double slack = tolerance(value, after.uncertainty);
                 const char* name = axis == 0 ? "x" : "y";
                 std::string what;
-                if (!(value >= box_.lower - slack)) {
+                const bool periodic = options_.boundary == Boundary::periodic;
+                if (!(value >= lowest_ - slack)) {
                     what = "particle " + std::to_string(p) + " is outside the box: " + name + " = " +
-                           format_short(value) + " is below r = " + format_short(box_.lower);
-                } else if (!(value <= box_.upper + slack)) {
+                           format_short(value) + (periodic ? " is below 0" : " is below r = " + format_short(lowest_));
+                } else if (!(value <= highest_ + slack)) {
                     what = "particle " + std::to_string(p) + " is outside the box: " + name + " = " +
-                           format_short(value) + " is beyond L - r = " + format_short(box_.upper);
+                           format_short(value) + (periodic ? " is beyond L = " : " is beyond L - r = ") +
+                           format_short(highest_);
                 }
                 if (!what.empty()) {
                     Particle expected = printed;
-                    expected.position[axis] = std::clamp(value, box_.lower, box_.upper);
+                    expected.position[axis] = std::clamp(value, lowest_, highest_);
                     return RuleViolation{p, what, expected, printed};
                 }
             }
@@ -399,6 +408,8 @@ private:
     World world_;
     Box box_;
     StepCheckOptions options_;
+    double lowest_;   // the least a centre may be
+    double highest_;  // the most
     UncertainStep step_;
     ExactStepCheck exact_;
     std::vector<UncertainParticle> state_, next_;
@@ -410,6 +421,8 @@ StepChecker::StepChecker(const World& world, const StepCheckOptions& options) {
     require_valid_scene("StepChecker", world, {});
     OptionsCheck check("StepCheckOptions");
     check.at_least("substeps", options.substeps, 1);
+    if (options.boundary == Boundary::periodic && options.rules != CheckedRules::exact)
+        check.fail("a periodic box has the exact rules only (rules = exact)");
     impl_ = std::make_unique<Impl>(world, options);
 }
 

@@ -50,6 +50,15 @@ public:
         members_.for_each_in(grid_.cell_at(column, row), visit);
     }
 
+    // The same in a periodic grid: indices one beyond an edge wrap around.
+    template <typename Visit>
+    void for_each_in_wrapped(int column, int row, Visit&& visit) const {
+        const int side = grid_.per_side();
+        column += column < 0 ? side : column >= side ? -side : 0;
+        row += row < 0 ? side : row >= side ? -side : 0;
+        members_.for_each_in(grid_.cell_at(column, row), visit);
+    }
+
     // visit(j) for every particle, cell by cell: neighbours come close
     // together, so their data is still in the caches when it is read again.
     template <typename Visit>

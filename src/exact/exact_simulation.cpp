@@ -15,6 +15,7 @@
 #include "search/path_lines.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <optional>
 #include <string>
@@ -82,7 +83,27 @@ bool lines_are_cheaper(const World& world, std::size_t particle_count, int cells
     return with_lines < lines_chosen_below * with_cells;
 }
 
-UniformGrid neighbour_grid(const World& world, std::size_t particle_count, std::optional<int> cells_per_side) {
+// A periodic box needs five cells a side or more: the 3 x 3 cells around a
+// disk are then nine different cells, and two disks in neighbouring cells are
+// less than half the box apart, so the nearest image is the one that meets.
+constexpr int periodic_cells_at_least = 5;
+
+UniformGrid periodic_neighbour_grid(const World& world, std::size_t particle_count, std::optional<int> cells_per_side) {
+    const double reach = contact_reach(Box::of(world));
+    const int side =
+        cells_per_side.value_or(std::max(cells_per_side_for(world, particle_count), periodic_cells_at_least));
+    if (side < periodic_cells_at_least || world.box_size / side < reach) {
+        throw std::invalid_argument(
+            "particlesim::ExactSimulation: a periodic box needs at least " + std::to_string(periodic_cells_at_least) +
+            " cells a side, each wider than a contact distance: L > " + std::to_string(periodic_cells_at_least) +
+            " x 2r (a little more), and cells_per_side >= " + std::to_string(periodic_cells_at_least));
+    }
+    return UniformGrid(world.box_size, side);
+}
+
+UniformGrid neighbour_grid(const World& world, std::size_t particle_count, const ExactOptions& options) {
+    const std::optional<int> cells_per_side = options.cells_per_side;
+    if (options.boundary == Boundary::periodic) return periodic_neighbour_grid(world, particle_count, cells_per_side);
     if (cells_per_side) return UniformGrid(world.box_size, *cells_per_side);
     const int side = cells_per_side_for(world, particle_count);
     if (lines_are_cheaper(world, particle_count, side)) return UniformGrid(world.box_size, 1);
@@ -179,6 +200,21 @@ public:
             bodies_[i].wall_time = in.wall_time;
             plans_[i].crossing = in.crossing;
             plans_[i].pair = in.pair;
+        }
+        if (periodic_) {
+            // The whole boxes crossed since each stored position: as many as
+            // put its path now in the cell it was saved in.
+            const UniformGrid& grid = cells_.grid();
+            for (std::uint32_t i = 0; i < count(); ++i) {
+                const Vec2 now_at = position_at(i, now_);
+                const std::uint32_t cell = cells_.cell_of_particle(i);
+                const double centres[2] = {(grid.column(cell) + 0.5) * grid.cell_size(),
+                                           (grid.row(cell) + 0.5) * grid.cell_size()};
+                for (int axis = 0; axis < 2; ++axis) {
+                    images_[i][axis] =
+                        static_cast<std::int32_t>(std::round((now_at[axis] - centres[axis]) / world_.box_size));
+                }
+            }
         }
         for (std::uint32_t i = 0; i < count(); ++i) reschedule(i);
         make_lines();
@@ -285,9 +321,11 @@ private:
     Implementation(const World& world, std::vector<Particle> particles, const ExactOptions& options, Unpredicted)
         : world_(world),
           box_(Box::of(world)),
+          periodic_(options.boundary == Boundary::periodic),
           bodies_(particles.begin(), particles.end()),
-          cells_(neighbour_grid(world, particles.size(), options.cells_per_side), particles.size()),
+          cells_(neighbour_grid(world, particles.size(), options), particles.size()),
           plans_(particles.size()),
+          images_(options.boundary == Boundary::periodic ? particles.size() : 0, {0, 0}),
           snapshot_(std::move(particles)),
           reach_(contact_reach(box_)),
           queue_(count(), Event{never, EventKind::cell_crossing, 0, 0}),
@@ -314,22 +352,38 @@ private:
     }
 
     template <typename Visit>
-    static void for_each_neighbour(const CellList& cells, std::uint32_t i, Visit&& visit) {
+    static void for_each_neighbour(const CellList& cells, std::uint32_t i, bool periodic, Visit&& visit) {
         const std::uint32_t cell = cells.cell_of_particle(i);
         const int column = cells.grid().column(cell);
         const int row = cells.grid().row(cell);
         for (int dy = -1; dy <= 1; ++dy) {
             for (int dx = -1; dx <= 1; ++dx) {
-                cells.for_each_in(column + dx, row + dy, [&](std::uint32_t j) {
+                const auto others = [&](std::uint32_t j) {
                     if (j != i) visit(j);
-                });
+                };
+                if (periodic) {
+                    cells.for_each_in_wrapped(column + dx, row + dy, others);
+                } else {
+                    cells.for_each_in(column + dx, row + dy, others);
+                }
             }
         }
     }
 
     template <typename Visit>
     void for_each_neighbour(std::uint32_t i, Visit&& visit) const {
-        for_each_neighbour(cells_, i, visit);
+        for_each_neighbour(cells_, i, periodic_, visit);
+    }
+
+    // In a periodic box, a separation made the nearest image's. A particle's
+    // stored position lies in [0, L) (wrapped at its collisions), but where it
+    // is now may be boxes away from it: its path since.
+    double nearest_image(double separation) const {
+        if (std::abs(separation) <= 0.5 * world_.box_size) return separation;  // nearly every pair tested
+        return separation - world_.box_size * std::round(separation / world_.box_size);
+    }
+    Vec2 nearest_image(const Vec2& separation) const {
+        return Vec2(nearest_image(separation.x()), nearest_image(separation.y()));
     }
 
     // Names the overlapping pair (i, j) with the lowest i, then the first j
@@ -348,16 +402,18 @@ private:
 
     void reject_overlaps(const CellList& cells) const {
         const auto overlaps = [&](std::uint32_t i, std::uint32_t j) {
-            return j > i &&
-                   disks_overlap(bodies_[j].particle.position - bodies_[i].particle.position, box_.contact_dist_sq);
+            Vec2 separation = bodies_[j].particle.position - bodies_[i].particle.position;
+            if (periodic_) separation = nearest_image(separation);
+            return j > i && disks_overlap(separation, box_.contact_dist_sq);
         };
         bool found = false;
         cells.for_each_by_cell([&](std::uint32_t i) {
-            if (!found) for_each_neighbour(cells, i, [&](std::uint32_t j) { found = found || overlaps(i, j); });
+            if (!found)
+                for_each_neighbour(cells, i, periodic_, [&](std::uint32_t j) { found = found || overlaps(i, j); });
         });
         if (!found) return;
         for (std::uint32_t i = 0; i < count(); ++i) {
-            for_each_neighbour(cells, i, [&](std::uint32_t j) {
+            for_each_neighbour(cells, i, periodic_, [&](std::uint32_t j) {
                 if (overlaps(i, j)) throw OverlappingStart(i, j);
             });
         }
@@ -418,6 +474,10 @@ private:
     }
 
     void predict_wall(std::uint32_t i) {
+        if (periodic_) {
+            bodies_[i].wall_time = never;
+            return;
+        }
         const WallHit hit = time_to_wall(bodies_[i].particle.position, bodies_[i].particle.velocity, box_);
         bodies_[i].wall_time = hit.time == never ? never : not_before_now(bodies_[i].stamp + hit.time);
     }
@@ -437,12 +497,17 @@ private:
         // selects instead of branches on the velocity's signs, which are
         // random (as in time_to_wall()); the same IEEE operations as one
         // axis at a time.
-        const TwoDoubles where{p.position.x(), p.position.y()};
+        // In a periodic box the cell's frame is the stored position's moved
+        // by the whole boxes crossed since (images_).
+        const TwoDoubles where = periodic_ ? TwoDoubles{p.position.x() - images_[i][0] * world_.box_size,
+                                                        p.position.y() - images_[i][1] * world_.box_size}
+                                           : TwoDoubles{p.position.x(), p.position.y()};
         const TwoDoubles speed{p.velocity.x(), p.velocity.y()};
         const TwoDoubles index{static_cast<double>(column), static_cast<double>(row)};
         const double last = static_cast<double>(grid.per_side() - 1);
         const TwoDoubles edge = (speed > 0.0 ? index + 1.0 : index) * grid.cell_size();
-        const TwoMasks exits = ((speed > 0.0) & (index < last)) | ((speed < 0.0) & (index > 0.0));
+        const TwoMasks exits = periodic_ ? (speed > 0.0) | (speed < 0.0)
+                                         : ((speed > 0.0) & (index < last)) | ((speed < 0.0) & (index > 0.0));
         const TwoDoubles to_edge = exits ? (edge - where) / speed : TwoDoubles{never, never};
         const double along_x = to_edge[0];
         const double along_y = to_edge[1];
@@ -454,6 +519,11 @@ private:
         const int x_first = static_cast<int>(along_x <= along_y);
         column += x_first * (2 * static_cast<int>(p.velocity.x() > 0.0) - 1);
         row += (1 - x_first) * (2 * static_cast<int>(p.velocity.y() > 0.0) - 1);
+        if (periodic_) {  // one step past an edge wraps to the other
+            const int side = grid.per_side();
+            column += column < 0 ? side : column >= side ? -side : 0;
+            row += row < 0 ? side : row >= side ? -side : 0;
+        }
         plans_[i].crossing = {not_before_now(bodies_[i].stamp + delay), grid.cell_at(column, row)};
     }
 
@@ -464,9 +534,10 @@ private:
     void consider_pair(std::uint32_t i, std::uint32_t j) {
         ++last_step_.pair_tests;
         const double reference = std::max(bodies_[i].stamp, bodies_[j].stamp);
+        Vec2 separation = position_at(j, reference) - position_at(i, reference);
+        if (periodic_) separation = nearest_image(separation);
         const double delay =
-            contact_time(position_at(j, reference) - position_at(i, reference),
-                         bodies_[j].particle.velocity - bodies_[i].particle.velocity, box_.contact_dist_sq);
+            contact_time(separation, bodies_[j].particle.velocity - bodies_[i].particle.velocity, box_.contact_dist_sq);
         if (delay != never) keep_contact(i, j, reference + delay);
     }
 
@@ -488,8 +559,21 @@ private:
         const TwoDoubles other_vy{first.velocity.y(), second.velocity.y()};
         const TwoDoubles other_x = TwoDoubles{first.position.x(), second.position.x()} + other_vx * other_since;
         const TwoDoubles other_y = TwoDoubles{first.position.y(), second.position.y()} + other_vy * other_since;
-        const TwoDoubles delay = contact_times(other_x - own_x, other_y - own_y, other_vx - own.velocity.x(),
-                                               other_vy - own.velocity.y(), box_.contact_dist_sq);
+        TwoDoubles dx = other_x - own_x;
+        TwoDoubles dy = other_y - own_y;
+        if (periodic_) {
+            // Nearly every pair is nearer than half a box on both axes: one test of all four.
+            const double half = 0.5 * world_.box_size;
+            const TwoMasks far = (dx > half) | (dx < -half) | (dy > half) | (dy < -half);
+            if (far[0] != 0 || far[1] != 0) {
+                for (int lane = 0; lane < 2; ++lane) {
+                    dx[lane] = nearest_image(dx[lane]);
+                    dy[lane] = nearest_image(dy[lane]);
+                }
+            }
+        }
+        const TwoDoubles delay =
+            contact_times(dx, dy, other_vx - own.velocity.x(), other_vy - own.velocity.y(), box_.contact_dist_sq);
         if (delay[0] != never) keep_contact(i, j, reference[0] + delay[0]);
         if (delay[1] != never) keep_contact(i, k, reference[1] + delay[1]);
     }
@@ -599,13 +683,33 @@ private:
         Particle& b = bodies_[j].particle;
         a.position = position_at(i, now_);
         b.position = position_at(j, now_);
-        clamp_into_box(a.position, box_);
-        clamp_into_box(b.position, box_);
+        // In a periodic box, b's image next to a (each keeps its own position).
+        Vec2 b_image = b.position;
+        if (periodic_) {
+            b_image = a.position + nearest_image(b.position - a.position);
+        } else {
+            clamp_into_box(a.position, box_);
+            clamp_into_box(b.position, box_);
+            b_image = b.position;
+        }
         bodies_[i].stamp = now_;
         bodies_[j].stamp = now_;
         const Vec2 velocity_before = a.velocity;
-        exchange_normal_velocities(a.position, b.position, a.velocity, b.velocity);
-        collision_sums_.pair_virial += (a.velocity - velocity_before).dot(a.position - b.position);
+        exchange_normal_velocities(a.position, b_image, a.velocity, b.velocity);
+        collision_sums_.pair_virial += (a.velocity - velocity_before).dot(a.position - b_image);
+        if (periodic_) {
+            // Stored again in [0, L), measured from the box: the whole boxes
+            // crossed since move into images_.
+            for (const std::uint32_t k : {i, j}) {
+                Vec2& at = bodies_[k].particle.position;
+                for (int axis = 0; axis < 2; ++axis) {
+                    if (at[axis] >= 0.0 && at[axis] < world_.box_size) continue;  // nearly always
+                    const double boxes = std::floor(at[axis] / world_.box_size);
+                    at[axis] = wrap_into_box(at[axis]);
+                    images_[k][axis] -= static_cast<std::int32_t>(boxes);
+                }
+            }
+        }
         renew_line(i);
         renew_line(j);
         ++a.particle_collisions;
@@ -625,6 +729,10 @@ private:
 
     // Only the cells that have just become neighbours need new predictions.
     void cross_cell(std::uint32_t i, std::uint32_t cell) {
+        if (periodic_) {
+            cross_cell_periodic(i, cell);
+            return;
+        }
         const std::uint32_t old_cell = cells_.cell_of_particle(i);
         cells_.move(i, cell);
         const UniformGrid& grid = cells_.grid();
@@ -648,17 +756,63 @@ private:
         reschedule(i);
     }
 
+    // The same in a periodic box, where a crossing may wrap around the box's
+    // edge: the particle's path has then crossed one more box (images_). Its
+    // stored position stays: the physics never depends on when crossings
+    // happen, so every cell count gives the same events.
+    void cross_cell_periodic(std::uint32_t i, std::uint32_t cell) {
+        const UniformGrid& grid = cells_.grid();
+        const std::uint32_t old_cell = cells_.cell_of_particle(i);
+        const int old_column = grid.column(old_cell);
+        const int old_row = grid.row(old_cell);
+        cells_.move(i, cell);
+        const int column = grid.column(cell);
+        const int row = grid.row(cell);
+        const auto step_of = [](int from, int to) {
+            const int step = to - from;
+            return step > 1 ? -1 : step < -1 ? 1 : step;  // a jump across the grid is one step the other way
+        };
+        const int step_x = step_of(old_column, column);
+        const int step_y = step_of(old_row, row);
+        if (column - old_column > 1) --images_[i][0];
+        if (column - old_column < -1) ++images_[i][0];
+        if (row - old_row > 1) --images_[i][1];
+        if (row - old_row < -1) ++images_[i][1];
+        const int across_x = step_x == 0 ? 1 : 0;
+        const int across_y = 1 - across_x;
+        consider_pairs(i, [&](auto&& visit) {
+            for (int k = -1; k <= 1; ++k) {
+                cells_.for_each_in_wrapped(column + step_x + across_x * k, row + step_y + across_y * k, visit);
+            }
+        });
+        predict_crossing(i, column, row);
+        reschedule(i);
+    }
+
+    // A coordinate of a periodic box into [0, L).
+    double wrap_into_box(double coordinate) const {
+        const double side = world_.box_size;
+        double wrapped = coordinate - side * std::floor(coordinate / side);
+        if (!(wrapped < side)) wrapped = 0.0;  // a hair below 0 rounds up to L
+        return std::max(wrapped, 0.0);
+    }
+
     void take_snapshot() {
         for (std::uint32_t i = 0; i < count(); ++i) {
             Particle& out = snapshot_[i];
             out = bodies_[i].particle;
             out.position = position_at(i, now_);
-            clamp_into_box(out.position, box_);
+            if (periodic_) {
+                out.position = Vec2(wrap_into_box(out.position.x()), wrap_into_box(out.position.y()));
+            } else {
+                clamp_into_box(out.position, box_);
+            }
         }
     }
 
     World world_;
     Box box_;
+    bool periodic_;  // the box wraps: no walls, the nearest image meets
     // What an event reads of a particle first, in one 64-byte line: its
     // state at its own time stamp (the time of its last collision, or 0),
     // the stamp, and the absolute time of its next wall event.
@@ -680,6 +834,9 @@ private:
         std::int64_t last_repeat_step = -1;
     };
     std::vector<Plans> plans_;
+    // Periodic box: by particle, the whole boxes its path has crossed since
+    // its stored position, along x and y (what the cell it is in shows).
+    std::vector<std::array<std::int32_t, 2>> images_;
     std::vector<Particle> snapshot_;  // the state at the last whole step
     // With a single cell: every particle's line at lines_epoch_, and the
     // distance the pair test needs (contact_reach()).
@@ -717,7 +874,8 @@ void check_options(const ExactOptions& options) {
 
 std::vector<Particle> checked(const World& world, std::vector<Particle> particles, const ExactOptions& options) {
     check_options(options);
-    require_valid_scene("particlesim::ExactSimulation", world, particles);
+    require_valid_scene("particlesim::ExactSimulation", world, particles,
+                        options.boundary == Boundary::periodic ? CentresIn::periodic_box : CentresIn::walled_box);
     return particles;
 }
 
@@ -734,7 +892,8 @@ ExactSimulation ExactSimulation::restore(const World& world, std::istream& saved
     reader.expect("exact-engine-state");
     reader.expect("1");
     Implementation::SavedRun run = Implementation::read_saved(reader);
-    require_valid_scene("particlesim::ExactSimulation::restore", world, run.particles);
+    require_valid_scene("particlesim::ExactSimulation::restore", world, run.particles,
+                        options.boundary == Boundary::periodic ? CentresIn::periodic_saved : CentresIn::walled_box);
     return ExactSimulation(std::make_unique<Implementation>(world, std::move(run), options));
 }
 

@@ -6,7 +6,8 @@
 
 namespace particlesim {
 
-void require_valid_scene(const char* engine, const World& world, std::span<const Particle> particles) {
+void require_valid_scene(const char* engine, const World& world, std::span<const Particle> particles,
+                         CentresIn centres) {
     const auto fail = [engine](const std::string& what) {
         throw std::invalid_argument(std::string(engine) + ": " + what);
     };
@@ -17,9 +18,16 @@ void require_valid_scene(const char* engine, const World& world, std::span<const
     if (particles.size() >= std::size_t{0xffffffffU}) fail("too many particles");
     for (std::size_t i = 0; i < particles.size(); ++i) {
         const Particle& p = particles[i];
-        const bool inside = p.position.x() >= world.lower() && p.position.x() <= world.upper() &&
-                            p.position.y() >= world.lower() && p.position.y() <= world.upper();
-        if (!inside) fail("particle " + std::to_string(i) + " is outside [r, L - r]");
+        if (centres == CentresIn::walled_box) {
+            const bool inside = p.position.x() >= world.lower() && p.position.x() <= world.upper() &&
+                                p.position.y() >= world.lower() && p.position.y() <= world.upper();
+            if (!inside) fail("particle " + std::to_string(i) + " is outside [r, L - r]");
+        } else {
+            const double slack = centres == CentresIn::periodic_saved ? world.box_size : 0.0;
+            const auto in_box = [&](double c) { return c >= -slack && c < world.box_size + slack; };
+            if (!(in_box(p.position.x()) && in_box(p.position.y())))
+                fail("particle " + std::to_string(i) + " is outside [0, L) (a periodic box)");
+        }
         if (!(std::fabs(p.velocity.x()) <= max_magnitude && std::fabs(p.velocity.y()) <= max_magnitude))
             fail("particle " + std::to_string(i) + " has a velocity component beyond 1e60 (the accepted range)");
     }

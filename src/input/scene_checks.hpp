@@ -4,6 +4,7 @@
 #include "particlesim/particle.hpp"
 #include "particlesim/world.hpp"
 
+#include <cstdint>
 #include <span>
 
 namespace particlesim {
@@ -12,6 +13,10 @@ namespace particlesim {
 // scene that breaks the rules or leaves the accepted range (world.hpp): L or r
 // outside [1e-60, 1e60] or 2r > L, a centre outside [r, L - r], a velocity
 // component beyond 1e60 (or NaN), more particles than 32-bit indices can name.
-void require_valid_scene(const char* engine, const World& world, std::span<const Particle> particles);
+// In a periodic box the centres lie in [0, L) instead, or, for a saved state
+// (each particle where it was at its own time stamp), within a side of it.
+enum class CentresIn : std::uint8_t { walled_box, periodic_box, periodic_saved };
+void require_valid_scene(const char* engine, const World& world, std::span<const Particle> particles,
+                         CentresIn centres = CentresIn::walled_box);
 
 }  // namespace particlesim

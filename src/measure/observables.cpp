@@ -26,6 +26,20 @@ Pressure walled_box_pressure(const World& world, std::size_t count, double kinet
     return p;
 }
 
+Pressure periodic_box_pressure(const World& world, std::size_t count, double kinetic_energy, const CollisionSums& sums,
+                               double duration) {
+    Pressure p;
+    if (count < 2 || !(duration > 0.0)) return p;
+    const double n = static_cast<double>(count);
+    const double area = world.box_size * world.box_size;
+    p.kT = kinetic_energy / (n - 1.0);
+    if (!(p.kT > 0.0)) return p;
+    const double pressure = (n * p.kT + sums.pair_virial / (2.0 * duration)) / area;
+    p.betaP_d2 = pressure / p.kT * 4.0 * world.radius * world.radius;
+    p.Z = pressure * area / (n * p.kT);
+    return p;
+}
+
 double hexatic_order(std::span<const Particle> particles, const World& world) {
     const std::size_t n = particles.size();
     if (n < 7) return 0.0;
