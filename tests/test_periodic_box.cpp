@@ -203,6 +203,21 @@ void simcli_boundary() {
     const std::string last_block = run.out.substr(run.out.find("\n20 0 ") + 1);
     CHECK(resumed.out.size() >= last_block.size() &&
           resumed.out.compare(resumed.out.size() - last_block.size(), last_block.size(), last_block) == 0);
+    // Centres closer than r to an edge: a periodic scene, not a walled one.
+    const std::string near_edges = "2 20 1 3 print\n0 0.25 10 -1 0\n1 17.5 10 1 0.5\n";
+    std::ofstream(dir + "/edges.in") << near_edges;
+    const run_process::Result edges =
+        run_process::run(simcli, {"--engine", "exact", "--boundary", "periodic"}, near_edges);
+    CHECK_EQ(edges.status, 0);
+    CHECK(edges.out.find("0 0 0.25000000 10.00000000") == 0);
+    std::ofstream(dir + "/edges.out") << edges.out;
+    CHECK_EQ(run_process::run(SIMCHECK_PATH,
+                              {"--engine", "exact", "--boundary", "periodic", dir + "/edges.in", dir + "/edges.out"})
+                 .status,
+             0);
+    const run_process::Result walled = run_process::run(simcli, {"--engine", "exact"}, near_edges);
+    CHECK_EQ(walled.status, 2);
+    CHECK(walled.err.find("x = 0.25 is outside [1, 19]") != std::string::npos);
     std::filesystem::remove_all(dir);
 
     const run_process::Result small = run_process::run(simcli, {"--engine", "exact", "--boundary", "periodic"},

@@ -208,7 +208,7 @@ std::map<std::string, std::string> read_manifest(const fs::path& suite) {
     return exercises;
 }
 
-std::vector<SceneCase> read_suite(const fs::path& suite) {
+std::vector<SceneCase> read_suite(const fs::path& suite, particlesim::Boundary boundary) {
     std::error_code error;
     if (!fs::is_directory(suite, error)) throw BadUsage(suite.string() + ": not a directory");
     std::vector<SceneCase> cases;
@@ -224,7 +224,7 @@ std::vector<SceneCase> read_suite(const fs::path& suite) {
         if (const auto it = exercises.find(c.name); it != exercises.end()) c.exercises = it->second;
         std::ifstream in(c.scene_path, std::ios::binary);
         try {
-            c.scene = particlesim::read_scene(in);
+            c.scene = particlesim::read_scene(in, nullptr, boundary);
         } catch (const particlesim::InputError& e) {
             throw BadUsage(c.scene_path.string() + ":" + std::to_string(e.line()) + ": " + e.what());
         }
@@ -526,7 +526,7 @@ int grade_main(int argc, char** argv) {
         o.program_text = program_text(o);
         o.program.front() = fs::absolute(*program).lexically_normal().string();
         if (!o.outputs_dir.empty()) fs::create_directories(o.outputs_dir);
-        const std::vector<SceneCase> cases = read_suite(o.suite);
+        const std::vector<SceneCase> cases = read_suite(o.suite, o.check.boundary);
         const std::optional<std::string> reference = find_reference(o);
 
         std::string work_template = (fs::temp_directory_path() / "simcheck-outputs-XXXXXX").string();

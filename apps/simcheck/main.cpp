@@ -101,13 +101,13 @@ std::optional<Arguments> parse_arguments(int argc, char** argv) {
 
 std::string display_name(const std::string& path) { return path == "-" ? "<stdin>" : path; }
 
-Scene read_scene_file(const std::string& path) {
+Scene read_scene_file(const std::string& path, Boundary boundary) {
     const std::string name = display_name(path);
     try {
-        if (path == "-") return read_scene(std::cin);
+        if (path == "-") return read_scene(std::cin, nullptr, boundary);
         std::ifstream file(path, std::ios::binary);
         if (!file) throw BadUsage(name + ": cannot open: " + std::strerror(errno));
-        return read_scene(file);
+        return read_scene(file, nullptr, boundary);
     } catch (const InputError& e) {
         throw BadUsage(name + ":" + std::to_string(e.line()) + ": " + e.what());
     }
@@ -143,7 +143,7 @@ std::FILE* open_output(const std::string& path, const std::string& name) {
 }
 
 int run(const Arguments& args) {
-    const Scene scene = read_scene_file(args.scene_path);
+    const Scene scene = read_scene_file(args.scene_path, args.options.boundary);
     const std::string output_name = display_name(args.output_path);
     std::FILE* file = open_output(args.output_path, output_name);
     const Judgement judgement = judge_output(scene, file, output_name, args.options);

@@ -215,13 +215,13 @@ void record_between_steps(Animation& animation, const World& world, std::vector<
     }
 }
 
-Scene read_input(const std::string& path, const std::string& name, SceneLines& lines) {
-    if (path == "-") return read_scene(std::cin, &lines);
+Scene read_input(const std::string& path, const std::string& name, SceneLines& lines, Boundary boundary) {
+    if (path == "-") return read_scene(std::cin, &lines, boundary);
     std::error_code error;
     if (std::filesystem::is_directory(path, error)) throw BadInput(name + ": is a directory");
     std::ifstream file(path, std::ios::binary);
     if (!file) throw BadInput(name + ": cannot open: " + std::strerror(errno));
-    return read_scene(file, &lines);
+    return read_scene(file, &lines, boundary);
 }
 
 std::string at_line(const std::string& name, long line) { return name + ":" + std::to_string(line) + ": "; }
@@ -251,7 +251,7 @@ void run_scene(const CliOptions& options) {
     SceneLines lines;
     std::vector<Particle> particles;
     try {
-        scene = read_input(options.scene_path, name, lines);
+        scene = read_input(options.scene_path, name, lines, options.boundary);
         particles = scene.is_random() ? make_random_particles(scene.particle_count, scene.world, options.random)
                                       : std::move(scene.particles);
     } catch (const InputError& e) {

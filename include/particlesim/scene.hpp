@@ -55,7 +55,8 @@ private:
 inline constexpr std::size_t max_line_length = 4096;
 
 // Throws InputError naming the first problem found. `lines`, when given,
-// receives where the header values were read.
-Scene read_scene(std::istream& input, SceneLines* lines = nullptr);
+// receives where the header values were read. Listed centres lie in
+// [r, L - r], or in [0, L) for a periodic box.
+Scene read_scene(std::istream& input, SceneLines* lines = nullptr, Boundary boundary = Boundary::walls);
 
 }  // namespace particlesim

@@ -264,7 +264,7 @@ struct ListedParticles {
     std::vector<long> lines;
 };
 
-void read_particle(const std::vector<std::string_view>& fields, long line, const Scene& scene,
+void read_particle(const std::vector<std::string_view>& fields, long line, const Scene& scene, Boundary boundary,
                    ListedParticles& listed) {
     if (fields.size() != 5) {
         throw InputError(line,
@@ -286,7 +286,12 @@ void read_particle(const std::vector<std::string_view>& fields, long line, const
         values[k] = parse_real(
             fields[k + 1], [&] { return label(k); }, line);
     for (int k = 0; k < 2; ++k) {
-        if (values[k] < world.lower() || values[k] > world.upper()) {
+        if (boundary == Boundary::periodic) {
+            if (!(values[k] >= 0.0 && values[k] < world.box_size)) {
+                throw InputError(line, label(k) + " = " + format_short(values[k]) + " is outside [0, " +
+                                           format_short(world.box_size) + ") (a periodic box)");
+            }
+        } else if (values[k] < world.lower() || values[k] > world.upper()) {
             throw InputError(line, label(k) + " = " + format_short(values[k]) + " is outside [" +
                                        format_short(world.lower()) + ", " + format_short(world.upper()) + "]");
         }
@@ -334,7 +339,7 @@ void check_random_speeds(const Scene& scene, const SceneLines& lines) {
 
 }  // namespace
 
-Scene read_scene(std::istream& input, SceneLines* header_lines) {
+Scene read_scene(std::istream& input, SceneLines* header_lines, Boundary boundary) {
     Scene scene;
     TokenLines lines(input);
     HeaderTokens header(lines);
@@ -351,7 +356,7 @@ Scene read_scene(std::istream& input, SceneLines* header_lines) {
                                  ? "N = 0, but a particle line follows"
                                  : "more than N = " + std::to_string(scene.particle_count) + " particle lines");
         }
-        read_particle(lines.tokens(), lines.number(), scene, listed);
+        read_particle(lines.tokens(), lines.number(), scene, boundary, listed);
     }
     if (!listed.particles.empty() && listed.particles.size() != scene.particle_count) {
         throw InputError(std::max(lines.number(), 1L), "expected N = " + std::to_string(scene.particle_count) +
