@@ -127,6 +127,59 @@ void the_exact_engine_runs_it() {
     CHECK_NEAR(after, before, 1e-9 * before);
 }
 
+// The periodic lattice: N in rows of equal length (odd N unshifted), no two disks closer
+// than 2r by the nearest image, centres in [0, L), the rest as in the box.
+void periodic_lattices() {
+    for (const std::size_t n :
+         {std::size_t{2}, std::size_t{7}, std::size_t{100}, std::size_t{870}, std::size_t{1001}}) {
+        for (const double fraction : {0.1, 0.5, 0.7}) {
+            check::Context context("periodic, N = ", n, ", fraction ", fraction);
+            SceneFamilyOptions o;
+            o.particles = n;
+            o.area_fraction = fraction;
+            o.temperature = 0.5;
+            o.boundary = Boundary::periodic;
+            Scene scene;
+            try {
+                scene = make_family_scene(SceneFamily::crystal, o);
+            } catch (const std::invalid_argument& e) {
+                // N with no factors for a near-triangular lattice (7, 1001: square rows
+                // of awkward lengths) may not reach the fraction; the refusal names the densest.
+                CHECK(n != 100 && n != 870);
+                CHECK(std::string(e.what()).find("the densest that fits is") != std::string::npos);
+                continue;
+            }
+            const double side = scene.world.box_size, r = scene.world.radius;
+            CHECK_NEAR(static_cast<double>(n) * std::numbers::pi * r * r / (side * side), fraction, 1e-12);
+            const auto image = [side](double d) { return d - side * std::round(d / side); };
+            double closest_sq = INFINITY, kinetic = 0.0;
+            Vec2 momentum(0.0, 0.0);
+            bool inside = true;
+            for (std::size_t i = 0; i < n; ++i) {
+                const Particle& p = scene.particles[i];
+                for (int axis = 0; axis < 2; ++axis)
+                    inside = inside && p.position[axis] >= 0.0 && p.position[axis] < side;
+                for (std::size_t j = i + 1; j < n; ++j) {
+                    const Vec2 d = scene.particles[j].position - p.position;
+                    closest_sq = std::min(closest_sq, image(d.x()) * image(d.x()) + image(d.y()) * image(d.y()));
+                }
+                momentum += p.velocity;
+                kinetic += 0.5 * p.velocity.squaredNorm();
+            }
+            CHECK(inside);
+            CHECK(closest_sq > 4.0 * r * r);
+            CHECK(momentum.norm() < 1e-9);
+            CHECK_NEAR(kinetic, static_cast<double>(n - 1) * 0.5, 1e-9 * kinetic);
+        }
+    }
+    // 870 disks (29 x 30) reach the densities of the hard-disk transition.
+    SceneFamilyOptions o;
+    o.particles = 870;
+    o.area_fraction = 0.72;
+    o.boundary = Boundary::periodic;
+    CHECK_EQ(make_family_scene(SceneFamily::crystal, o).particles.size(), std::size_t{870});
+}
+
 void bad_options() {
     const auto refused = [](double fraction, double kT) {
         try {
@@ -150,5 +203,6 @@ int main(int argc, char** argv) {
                       {{"any count up to the densest", any_count_up_to_the_densest},
                        {"maxwell velocities", maxwell_velocities},
                        {"the exact engine runs it", the_exact_engine_runs_it},
+                       {"periodic lattices", periodic_lattices},
                        {"bad options", bad_options}});
 }

@@ -50,6 +50,8 @@ void print_usage() {
         "      --speed-min V      lowest speed, length per step\n"
         "      --speed-max V      highest speed\n"
         "      --temperature T    crystal: kT of the Maxwell velocities, mass 1 (default r^2/4)\n"
+        "      --boundary B       crystal: walls (default) or periodic, a lattice that fills a periodic\n"
+        "                         box (run it with simcli --engine exact --boundary periodic)\n"
         "  -h, --help             this text\n"
         "      --version          the version\n");
 }
@@ -116,6 +118,12 @@ int run(int argc, char** argv) {
             speed_max = parse_number<double>(arg, value());
         } else if (arg == "--temperature") {
             options.temperature = parse_number<double>(arg, value());
+        } else if (arg == "--boundary") {
+            const std::string boundary = value();
+            if (boundary != "walls" && boundary != "periodic") {
+                throw BadUsage("--boundary is walls or periodic, not \"" + boundary + "\"");
+            }
+            options.boundary = boundary == "periodic" ? Boundary::periodic : Boundary::walls;
         } else {
             throw BadUsage("unknown option " + arg + " (simgen --help lists them)");
         }

@@ -52,6 +52,7 @@ struct SceneFamilyOptions {
     std::optional<double> area_fraction;  // gas, clusters
     std::optional<SpeedRange> speeds;     // length per step
     std::optional<double> temperature;    // crystal: kT, mass 1, in (length per step)^2
+    Boundary boundary = Boundary::walls;  // crystal: a lattice that fills a periodic box instead
 };
 
 // Throws std::invalid_argument for options the family cannot honour (a

@@ -281,6 +281,95 @@ double standard_normal(SplitMix64& rng) {
 // that rounding the positions never makes two touch.
 constexpr double crystal_clearance = 1e-9;
 
+// The densest packing of disks in the plane: the triangular lattice's.
+const double plane_packing = std::numbers::pi / (2.0 * std::sqrt(3.0));
+
+// Maxwell velocities at kT (mass 1) shifted to zero total momentum and
+// scaled so that the kinetic energy is exactly (N - 1) kT: the 2 (N - 1)
+// degrees of freedom that the fixed momentum leaves.
+void give_maxwell_velocities(std::vector<Particle>& particles, double kT, std::uint64_t seed) {
+    const std::size_t count = particles.size();
+    SplitMix64 rng(seed);
+    Vec2 momentum(0.0, 0.0);
+    for (Particle& p : particles) {
+        p.velocity = Vec2(standard_normal(rng), standard_normal(rng));
+        momentum += p.velocity;
+    }
+    double kinetic = 0.0;
+    for (Particle& p : particles) {
+        p.velocity -= momentum / static_cast<double>(count);
+        kinetic += 0.5 * p.velocity.squaredNorm();
+    }
+    const double scale = kinetic > 0.0 ? std::sqrt(static_cast<double>(count - 1) * kT / kinetic) : 0.0;
+    for (Particle& p : particles) p.velocity *= scale;
+}
+
+double checked_temperature(const SceneFamilyOptions& o) {
+    const double kT = o.temperature.value_or(0.25 * o.radius * o.radius);
+    if (!(kT >= 0.0 && std::isfinite(kT))) {
+        throw std::invalid_argument("particlesim::make_family_scene: the temperature must be >= 0, not " +
+                                    format_short(kT));
+    }
+    return kT;
+}
+
+// A lattice that fills a periodic box: `rows` rows (an even number, so that
+// shifting every other row by half a spacing still wraps) of `columns`
+// disks; with columns / rows near 2 / sqrt(3) it is nearly triangular. Where
+// N has no such factors (N odd), square rows of equal length. Closest
+// neighbours: along a row, L / columns; between rows, the diagonal; and two
+// rows up in the same column.
+Scene periodic_crystal(const SceneFamilyOptions& o, std::size_t count) {
+    const double r = o.radius;
+    const double kT = checked_temperature(o);
+    // The factorisation whose spacing between neighbours is widest for its box.
+    std::size_t columns = count, rows = 1;
+    bool shifted = false;
+    double best = 0.0;  // the closest neighbours' distance, in units of L
+    for (std::size_t c = 1; c <= count; ++c) {
+        if (count % c != 0) continue;
+        const std::size_t n_rows = count / c;
+        const bool shift = n_rows % 2 == 0;
+        const double along = 1.0 / static_cast<double>(c), between = 1.0 / static_cast<double>(n_rows);
+        const double across = shift ? std::hypot(0.5 * along, between) : between;
+        // Two rows up, the same column: 2 rows' height (shifted rows), or one row (unshifted).
+        const double closest = std::min({along, across, shift ? 2.0 * between : between});
+        if (closest > best) {
+            best = closest;
+            columns = c;
+            rows = n_rows;
+            shifted = shift;
+        }
+    }
+    const double densest_box = 2.0 * r * (1.0 + crystal_clearance) / best;
+    const double densest =
+        std::min(static_cast<double>(count) * std::numbers::pi * r * r / (densest_box * densest_box), plane_packing);
+    const double fraction = o.area_fraction ? area_fraction_or(o, 0.7, plane_packing) : std::min(0.7, 0.95 * densest);
+    const double box = side_for(count, r, fraction);
+    if (count > 1 && !(best * box >= 2.0 * r * (1.0 + crystal_clearance))) {
+        throw std::invalid_argument("particlesim::make_family_scene: " + std::to_string(count) +
+                                    " disks do not fit a lattice in a periodic box at area fraction " +
+                                    format_short(fraction) + "; the densest that fits is " + format_short(densest));
+    }
+    const double along = box / static_cast<double>(columns), between = box / static_cast<double>(rows);
+    std::vector<Particle> particles;
+    for (std::size_t k = 0; k < count; ++k) {
+        const std::size_t row = k / columns, column = k % columns;
+        const double x = along * (static_cast<double>(column) + (shifted && row % 2 == 1 ? 0.5 : 0.0) + 0.25);
+        const double y = between * (static_cast<double>(row) + 0.5);
+        particles.push_back(disk(x, y));
+    }
+    give_maxwell_velocities(particles, kT, o.seed);
+    Scene scene;
+    scene.world = World{box, r};
+    scene.steps = o.steps;
+    scene.mode = o.mode;
+    scene.particle_count = particles.size();
+    scene.particles = std::move(particles);
+    require_valid_scene("particlesim::make_family_scene", scene.world, scene.particles, CentresIn::periodic_box);
+    return scene;
+}
+
 // A triangular lattice centred in the walled box at the area fraction asked
 // for (N pi r^2 / L^2), up to the densest at which it fits (neighbours 2r
 // apart, and r from the walls); Maxwell velocities at kT with zero total
@@ -288,19 +377,15 @@ constexpr double crystal_clearance = 1e-9;
 // 2 (N - 1) degrees of freedom that the fixed momentum leaves.
 Scene crystal(const SceneFamilyOptions& o) {
     const std::size_t count = o.particles.value_or(400);
+    if (o.boundary == Boundary::periodic) return periodic_crystal(o, count);
     const double r = o.radius;
-    const double plane_packing = std::numbers::pi / (2.0 * std::sqrt(3.0));
     const LatticeShape shape = squarest_lattice(std::max<std::size_t>(count, 1));
     const double densest_box = 2.0 * r + 2.0 * r * (1.0 + crystal_clearance) * shape.extent();
     const double densest =
         std::min(static_cast<double>(count) * std::numbers::pi * r * r / (densest_box * densest_box), plane_packing);
     // Unasked: 0.7, or a little below the densest for the few disks that cannot reach it.
     const double fraction = o.area_fraction ? area_fraction_or(o, 0.7, plane_packing) : std::min(0.7, 0.95 * densest);
-    const double kT = o.temperature.value_or(0.25 * r * r);
-    if (!(kT >= 0.0 && std::isfinite(kT))) {
-        throw std::invalid_argument("particlesim::make_family_scene: the temperature must be >= 0, not " +
-                                    format_short(kT));
-    }
+    const double kT = checked_temperature(o);
     const double box = side_for(count, r, fraction);
     const double room = box - 2.0 * r;  // for the centres
     const double spacing = shape.extent() > 0.0 ? room / shape.extent() : room;
@@ -319,19 +404,7 @@ Scene crystal(const SceneFamilyOptions& o) {
         const double y = bottom + row_height * static_cast<double>(row);
         particles.push_back(disk(std::clamp(x, r, box - r), std::clamp(y, r, box - r)));
     }
-    SplitMix64 rng(o.seed);
-    Vec2 momentum(0.0, 0.0);
-    for (Particle& p : particles) {
-        p.velocity = Vec2(standard_normal(rng), standard_normal(rng));
-        momentum += p.velocity;
-    }
-    double kinetic = 0.0;
-    for (Particle& p : particles) {
-        p.velocity -= momentum / static_cast<double>(count);
-        kinetic += 0.5 * p.velocity.squaredNorm();
-    }
-    const double scale = kinetic > 0.0 ? std::sqrt(static_cast<double>(count - 1) * kT / kinetic) : 0.0;
-    for (Particle& p : particles) p.velocity *= scale;
+    give_maxwell_velocities(particles, kT, o.seed);
     return scene_of(o, box, std::move(particles));
 }
 
