@@ -1,11 +1,32 @@
 #include "particlesim/observables.hpp"
 
+#include "core/points_by_cell.hpp"
+#include "core/uniform_grid.hpp"
+
 #include <algorithm>
 #include <cmath>
 #include <complex>
 #include <vector>
 
 namespace particlesim {
+
+namespace {
+
+// What both boxes report of a pressure P: beta P (2r)^2 and Z = beta P A / N.
+struct Reported {
+    double betaP_d2;
+    double Z;
+};
+Reported reported(double pressure, double kT, double area, double n, const World& world) {
+    return {pressure / kT * (4.0 * world.radius * world.radius), pressure * area / (n * kT)};
+}
+
+// The virial route: P A = N kT + sum(r_ij . dp_i) / (2 duration).
+double virial_pressure(double n, double kT, double area, const CollisionSums& sums, double duration) {
+    return (n * kT + sums.pair_virial / (2.0 * duration)) / area;
+}
+
+}  // namespace
 
 Pressure walled_box_pressure(const World& world, std::size_t count, double kinetic_energy, const CollisionSums& sums,
                              double duration) {
@@ -14,15 +35,14 @@ Pressure walled_box_pressure(const World& world, std::size_t count, double kinet
     const double n = static_cast<double>(count);
     const double side = world.box_size - 2.0 * world.radius;
     const double area = side * side;
-    const double diameter_sq = 4.0 * world.radius * world.radius;
     p.kT = kinetic_energy / n;
     if (!(p.kT > 0.0) || !(area > 0.0)) return p;
-    const double virial_pressure = (n * p.kT + sums.pair_virial / (2.0 * duration)) / area;
-    const double wall_pressure = sums.wall_impulse / (duration * 4.0 * side);
-    p.betaP_d2 = virial_pressure / p.kT * diameter_sq;
-    p.Z = virial_pressure * area / (n * p.kT);
-    p.betaP_d2_walls = wall_pressure / p.kT * diameter_sq;
-    p.Z_walls = wall_pressure * area / (n * p.kT);
+    const Reported virial = reported(virial_pressure(n, p.kT, area, sums, duration), p.kT, area, n, world);
+    const Reported walls = reported(sums.wall_impulse / (duration * 4.0 * side), p.kT, area, n, world);
+    p.betaP_d2 = virial.betaP_d2;
+    p.Z = virial.Z;
+    p.betaP_d2_walls = walls.betaP_d2;
+    p.Z_walls = walls.Z;
     return p;
 }
 
@@ -34,9 +54,9 @@ Pressure periodic_box_pressure(const World& world, std::size_t count, double kin
     const double area = world.box_size * world.box_size;
     p.kT = kinetic_energy / (n - 1.0);
     if (!(p.kT > 0.0)) return p;
-    const double pressure = (n * p.kT + sums.pair_virial / (2.0 * duration)) / area;
-    p.betaP_d2 = pressure / p.kT * 4.0 * world.radius * world.radius;
-    p.Z = pressure * area / (n * p.kT);
+    const Reported virial = reported(virial_pressure(n, p.kT, area, sums, duration), p.kT, area, n, world);
+    p.betaP_d2 = virial.betaP_d2;
+    p.Z = virial.Z;
     return p;
 }
 
@@ -45,20 +65,12 @@ double hexatic_order(std::span<const Particle> particles, const World& world) {
     if (n < 7) return 0.0;
     // About four disks a cell; rings of cells are searched until the sixth
     // nearest is closer than anything outside them can be.
-    const int per_side = std::max(1, static_cast<int>(std::sqrt(static_cast<double>(n) / 4.0)));
-    const double cell = world.box_size / per_side;
-    const auto cell_of = [&](double coordinate) {
-        return std::clamp(static_cast<int>(coordinate / cell), 0, per_side - 1);
-    };
-    std::vector<std::size_t> starts(static_cast<std::size_t>(per_side) * per_side + 1, 0);
-    std::vector<std::uint32_t> members(n);
-    const auto index_of = [&](const Particle& p) {
-        return static_cast<std::size_t>(cell_of(p.position.y())) * per_side + cell_of(p.position.x());
-    };
-    for (const Particle& p : particles) ++starts[index_of(p) + 1];
-    for (std::size_t c = 1; c < starts.size(); ++c) starts[c] += starts[c - 1];
-    std::vector<std::size_t> fill(starts.begin(), starts.end() - 1);
-    for (std::uint32_t i = 0; i < n; ++i) members[fill[index_of(particles[i])]++] = i;
+    const UniformGrid grid(world.box_size,
+                           UniformGrid::cells_per_side(world.box_size, 0.0, std::sqrt(static_cast<double>(n) / 4.0)));
+    const int per_side = grid.per_side();
+    const double cell = grid.cell_size();
+    const PointsByCell by_cell(grid, static_cast<std::uint32_t>(n),
+                               [&](std::uint32_t k) { return particles[k].position; });
 
     struct Neighbour {
         double distance_sq;
@@ -68,17 +80,16 @@ double hexatic_order(std::span<const Particle> particles, const World& world) {
     std::complex<double> total(0.0, 0.0);
     for (std::uint32_t i = 0; i < n; ++i) {
         const Vec2 at = particles[i].position;
-        const int cx = cell_of(at.x()), cy = cell_of(at.y());
+        const int cx = grid.column_of(at.x()), cy = grid.column_of(at.y());
         for (int ring = 1;; ++ring) {
             found.clear();
             for (int y = std::max(cy - ring, 0); y <= std::min(cy + ring, per_side - 1); ++y) {
                 for (int x = std::max(cx - ring, 0); x <= std::min(cx + ring, per_side - 1); ++x) {
-                    const std::size_t c = static_cast<std::size_t>(y) * per_side + x;
-                    for (std::size_t k = starts[c]; k < starts[c + 1]; ++k) {
-                        if (members[k] == i) continue;
-                        const Vec2 bond = particles[members[k]].position - at;
+                    by_cell.for_each_in(x, y, [&](std::uint32_t j) {
+                        if (j == i) return;
+                        const Vec2 bond = particles[j].position - at;
                         found.push_back({bond.squaredNorm(), bond});
-                    }
+                    });
                 }
             }
             const bool whole_box = ring >= per_side;
