@@ -48,11 +48,9 @@ bool read_rules_option(const std::string& arg, TakeValue&& value, particlesim::S
     }
     if (arg == "--boundary") {
         const std::string text = value();
-        if (text == "periodic") {
-            options.boundary = particlesim::Boundary::periodic;
-        } else if (text != "walls") {
-            throw BadUsage("--boundary is walls or periodic, not \"" + text + "\"");
-        }
+        const std::optional<particlesim::Boundary> boundary = particlesim::boundary_named(text);
+        if (!boundary) throw BadUsage("--boundary is walls or periodic, not \"" + text + "\"");
+        options.boundary = *boundary;
         return true;
     }
     return false;

@@ -291,16 +291,14 @@ std::optional<CliOptions> parse_arguments(int argc, char** argv) {
             given.trajectory_every =
                 static_cast<std::int64_t>(parse_unsigned("--trajectory-every", value, 1, INT64_MAX));
             break;
-        case opt_boundary:
+        case opt_boundary: {
             given.boundary = true;
-            if (value == "walls") {
-                options.boundary = particlesim::Boundary::walls;
-            } else if (value == "periodic") {
-                options.boundary = particlesim::Boundary::periodic;
-            } else {
+            const std::optional<particlesim::Boundary> boundary = particlesim::boundary_named(value);
+            if (!boundary)
                 throw BadInput("--boundary: expected walls or periodic, found \"" + std::string(value) + "\"");
-            }
+            options.boundary = *boundary;
             break;
+        }
         case opt_observables: options.observables_path = std::string(value); break;
         case opt_observe_every:
             given.observe_every = static_cast<std::int64_t>(parse_unsigned("--observe-every", value, 1, INT64_MAX));

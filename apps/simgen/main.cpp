@@ -119,11 +119,10 @@ int run(int argc, char** argv) {
         } else if (arg == "--temperature") {
             options.temperature = parse_number<double>(arg, value());
         } else if (arg == "--boundary") {
-            const std::string boundary = value();
-            if (boundary != "walls" && boundary != "periodic") {
-                throw BadUsage("--boundary is walls or periodic, not \"" + boundary + "\"");
-            }
-            options.boundary = boundary == "periodic" ? Boundary::periodic : Boundary::walls;
+            const std::string name = value();
+            const std::optional<Boundary> boundary = boundary_named(name);
+            if (!boundary) throw BadUsage("--boundary is walls or periodic, not \"" + name + "\"");
+            options.boundary = *boundary;
         } else {
             throw BadUsage("unknown option " + arg + " (simgen --help lists them)");
         }

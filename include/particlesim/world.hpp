@@ -4,6 +4,8 @@
 // belong to a scene file and to the program that runs it (scene.hpp).
 
 #include <cstdint>
+#include <optional>
+#include <string_view>
 
 namespace particlesim {
 
@@ -20,6 +22,13 @@ inline constexpr double max_magnitude = 1e60;
 // meets the nearest image of another, and positions lie in [0, L) (the exact
 // engine only).
 enum class Boundary : std::uint8_t { walls, periodic };
+
+// "walls" or "periodic", as the programs' --boundary names them; empty for any other name.
+inline std::optional<Boundary> boundary_named(std::string_view name) {
+    if (name == "walls") return Boundary::walls;
+    if (name == "periodic") return Boundary::periodic;
+    return std::nullopt;
+}
 
 struct World {
     double box_size = 0.0;  // L
