@@ -57,9 +57,6 @@ void simcli::write_checkpoint(const std::string& path, const RunSettings& settin
     write_settings(text, settings);
     save_engine(text);
     OutputFile file(path);
-    const std::string bytes = text.str();
-    if (std::fwrite(bytes.data(), 1, bytes.size(), file.stream()) != bytes.size()) {
-        throw particlesim::OutputError(path + ": cannot write the checkpoint");
-    }
+    file.write(text.str(), "checkpoint");
     file.commit();
 }

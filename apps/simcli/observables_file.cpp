@@ -1,21 +1,10 @@
 #include "observables_file.hpp"
 
-#include "particlesim/state_writer.hpp"
+#include "shortest_number.hpp"
 
 #include <algorithm>
-#include <charconv>
-#include <cstdio>
 
 namespace simcli {
-
-namespace {
-
-void append_number(std::string& text, double value) {
-    char digits[32];
-    text.append(digits, std::to_chars(digits, digits + sizeof digits, value).ptr);
-}
-
-}  // namespace
 
 ObservablesFile::ObservablesFile(const std::string& path, const particlesim::World& world,
                                  particlesim::Boundary boundary, std::int64_t every, std::int64_t last_step,
@@ -28,9 +17,7 @@ ObservablesFile::ObservablesFile(const std::string& path, const particlesim::Wor
       measure_from_(measure_from) {
     text_ = "step,time,pair_collisions,wall_collisions,kinetic_energy,betaP_d2,Z,psi6";
     text_ += periodic_ ? "\n" : ",betaP_d2_walls,Z_walls\n";
-    if (std::fwrite(text_.data(), 1, text_.size(), file_.stream()) != text_.size()) {
-        throw particlesim::OutputError("cannot write the observables");
-    }
+    file_.write(text_, "observables");
 }
 
 void ObservablesFile::observe(std::int64_t step, std::span<const particlesim::Particle> particles,
@@ -50,23 +37,21 @@ void ObservablesFile::observe(std::int64_t step, std::span<const particlesim::Pa
             : particlesim::walled_box_pressure(world_, particles.size(), kinetic, sums - previous_sums_, duration);
     text_.clear();
     text_ += std::to_string(step) + ',';
-    append_number(text_, static_cast<double>(step));
+    append_shortest(text_, static_cast<double>(step));
     text_ += ',' + std::to_string(totals.particle_collisions - previous_totals_.particle_collisions);
     text_ += ',' + std::to_string(totals.wall_collisions - previous_totals_.wall_collisions);
     for (const double value : {kinetic, pressure.betaP_d2, pressure.Z, particlesim::hexatic_order(particles, world_)}) {
         text_ += ',';
-        append_number(text_, value);
+        append_shortest(text_, value);
     }
     if (!periodic_) {
         for (const double value : {pressure.betaP_d2_walls, pressure.Z_walls}) {
             text_ += ',';
-            append_number(text_, value);
+            append_shortest(text_, value);
         }
     }
     text_ += '\n';
-    if (std::fwrite(text_.data(), 1, text_.size(), file_.stream()) != text_.size()) {
-        throw particlesim::OutputError("cannot write the observables");
-    }
+    file_.write(text_, "observables");
     if (previous_step_ >= measure_from_) {
         virial_rows_.push_back(pressure.betaP_d2);
         wall_rows_.push_back(pressure.betaP_d2_walls);

@@ -60,6 +60,12 @@ OutputFile::~OutputFile() {
     if (!temporary_.empty()) unlink(temporary_.c_str());
 }
 
+void OutputFile::write(std::string_view text, const char* what) {
+    if (std::fwrite(text.data(), 1, text.size(), stream_) != text.size()) {
+        fail(path_.empty() ? "the output" : path_, (std::string("write the ") + what).c_str());
+    }
+}
+
 void OutputFile::commit() {
     if (stream_ == stdout) {
         if (std::fflush(stdout) != 0) fail("the output", "write");

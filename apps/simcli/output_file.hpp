@@ -8,6 +8,7 @@
 #include <cstdio>
 #include <optional>
 #include <string>
+#include <string_view>
 
 namespace simcli {
 
@@ -20,6 +21,8 @@ public:
     OutputFile& operator=(const OutputFile&) = delete;
 
     [[nodiscard]] std::FILE* stream() const { return stream_; }
+    // Writes all of `text`; throws particlesim::OutputError naming the file and `what` it holds.
+    void write(std::string_view text, const char* what);
     // Closes the output and puts it in place. Throws particlesim::OutputError.
     void commit();
 

@@ -1,9 +1,7 @@
 #include "trajectory.hpp"
 
-#include "particlesim/state_writer.hpp"
+#include "shortest_number.hpp"
 
-#include <charconv>
-#include <cstdio>
 
 namespace simcli {
 
@@ -11,11 +9,6 @@ namespace {
 
 // Any species name does for OVITO; ASE needs a chemical symbol.
 constexpr const char* species = "Ar";
-
-void append_number(std::string& text, double value) {
-    char digits[32];
-    text.append(digits, std::to_chars(digits, digits + sizeof digits, value).ptr);
-}
 
 }  // namespace
 
@@ -35,7 +28,7 @@ void Trajectory::observe(std::int64_t step, std::span<const particlesim::Particl
     // The third cell vector spans one diameter: the disks as a slab, for viewers that want a volume.
     text_ += "\nLattice=\"";
     for (const double value : {side, 0.0, 0.0, 0.0, side, 0.0, 0.0, 0.0, 2.0 * world_.radius}) {
-        append_number(text_, value);
+        append_shortest(text_, value);
         text_ += ' ';
     }
     text_.back() = '"';  // in place of the last space
@@ -44,20 +37,18 @@ void Trajectory::observe(std::int64_t step, std::span<const particlesim::Particl
     text_ += "\" step=";
     text_ += std::to_string(step);
     text_ += " time=";
-    append_number(text_, static_cast<double>(step));
+    append_shortest(text_, static_cast<double>(step));
     text_ += '\n';
     for (const particlesim::Particle& p : particles) {
         text_ += species;
         for (const double value :
              {p.position.x(), p.position.y(), 0.0, p.velocity.x(), p.velocity.y(), 0.0, world_.radius}) {
             text_ += ' ';
-            append_number(text_, value);
+            append_shortest(text_, value);
         }
         text_ += '\n';
     }
-    if (std::fwrite(text_.data(), 1, text_.size(), file_.stream()) != text_.size()) {
-        throw particlesim::OutputError("cannot write the trajectory");
-    }
+    file_.write(text_, "trajectory");
 }
 
 void Trajectory::commit() { file_.commit(); }
