@@ -2,7 +2,6 @@
 
 #include "shortest_number.hpp"
 
-
 namespace simcli {
 
 namespace {

@@ -59,9 +59,7 @@ void ExactStepCheck::run_ensemble(const PrintedState& start, std::int64_t steps,
                     p.velocity[axis] = moved(p.velocity[axis]);
                 }
                 if (boundary_ == Boundary::periodic) {
-                    double& c = p.position[axis];
-                    c -= world_.box_size * std::floor(c / world_.box_size);  // into [0, L)
-                    if (!(c < world_.box_size)) c = 0.0;
+                    p.position[axis] = wrap_into_periodic_box(p.position[axis], world_.box_size);
                 } else {
                     p.position[axis] = std::clamp(p.position[axis], box_.lower, box_.upper);
                 }

@@ -114,6 +114,13 @@ inline bool disks_overlap(const Vec2& dp, double contact_dist_sq) {
     return dp.dot(dp) < contact_dist_sq * (1.0 - overlap_tolerance);
 }
 
+// A coordinate of a periodic box of side `side` wrapped into [0, side): a
+// hair below 0 that rounds up to `side` becomes 0.
+inline double wrap_into_periodic_box(double coordinate, double side) {
+    const double wrapped = coordinate - side * std::floor(coordinate / side);
+    return wrapped < side ? std::max(wrapped, 0.0) : 0.0;
+}
+
 inline void clamp_into_box(Vec2& position, const Box& box) {
     position.x() = std::clamp(position.x(), box.lower, box.upper);
     position.y() = std::clamp(position.y(), box.lower, box.upper);

@@ -684,14 +684,11 @@ private:
         a.position = position_at(i, now_);
         b.position = position_at(j, now_);
         // In a periodic box, b's image next to a (each keeps its own position).
-        Vec2 b_image = b.position;
-        if (periodic_) {
-            b_image = a.position + nearest_image(b.position - a.position);
-        } else {
+        if (!periodic_) {
             clamp_into_box(a.position, box_);
             clamp_into_box(b.position, box_);
-            b_image = b.position;
         }
+        const Vec2 b_image = periodic_ ? a.position + nearest_image(b.position - a.position) : b.position;
         bodies_[i].stamp = now_;
         bodies_[j].stamp = now_;
         const Vec2 velocity_before = a.velocity;
@@ -705,7 +702,7 @@ private:
                 for (int axis = 0; axis < 2; ++axis) {
                     if (at[axis] >= 0.0 && at[axis] < world_.box_size) continue;  // nearly always
                     const double boxes = std::floor(at[axis] / world_.box_size);
-                    at[axis] = wrap_into_box(at[axis]);
+                    at[axis] = wrap_into_periodic_box(at[axis], world_.box_size);
                     images_[k][axis] -= static_cast<std::int32_t>(boxes);
                 }
             }
@@ -789,21 +786,14 @@ private:
         reschedule(i);
     }
 
-    // A coordinate of a periodic box into [0, L).
-    double wrap_into_box(double coordinate) const {
-        const double side = world_.box_size;
-        double wrapped = coordinate - side * std::floor(coordinate / side);
-        if (!(wrapped < side)) wrapped = 0.0;  // a hair below 0 rounds up to L
-        return std::max(wrapped, 0.0);
-    }
-
     void take_snapshot() {
         for (std::uint32_t i = 0; i < count(); ++i) {
             Particle& out = snapshot_[i];
             out = bodies_[i].particle;
             out.position = position_at(i, now_);
             if (periodic_) {
-                out.position = Vec2(wrap_into_box(out.position.x()), wrap_into_box(out.position.y()));
+                out.position = Vec2(wrap_into_periodic_box(out.position.x(), world_.box_size),
+                                    wrap_into_periodic_box(out.position.y(), world_.box_size));
             } else {
                 clamp_into_box(out.position, box_);
             }
