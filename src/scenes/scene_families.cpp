@@ -21,14 +21,16 @@ Particle disk(double x, double y, double vx = 0.0, double vy = 0.0) {
     return p;
 }
 
-Scene scene_of(const SceneFamilyOptions& options, double box_size, std::vector<Particle> particles) {
+// The family's scene, checked as its box holds it (a periodic family's centres lie in [0, L)).
+Scene scene_of(const SceneFamilyOptions& options, double box_size, std::vector<Particle> particles,
+               CentresIn centres = CentresIn::walled_box) {
     Scene scene;
     scene.world = World{box_size, options.radius};
     scene.steps = options.steps;
     scene.mode = options.mode;
     scene.particle_count = particles.size();
     scene.particles = std::move(particles);
-    require_valid_scene("particlesim::make_family_scene", scene.world, scene.particles);
+    require_valid_scene("particlesim::make_family_scene", scene.world, scene.particles, centres);
     return scene;
 }
 
@@ -360,14 +362,7 @@ Scene periodic_crystal(const SceneFamilyOptions& o, std::size_t count) {
         particles.push_back(disk(x, y));
     }
     give_maxwell_velocities(particles, kT, o.seed);
-    Scene scene;
-    scene.world = World{box, r};
-    scene.steps = o.steps;
-    scene.mode = o.mode;
-    scene.particle_count = particles.size();
-    scene.particles = std::move(particles);
-    require_valid_scene("particlesim::make_family_scene", scene.world, scene.particles, CentresIn::periodic_box);
-    return scene;
+    return scene_of(o, box, std::move(particles), CentresIn::periodic_box);
 }
 
 // A triangular lattice centred in the walled box at the area fraction asked
