@@ -102,6 +102,24 @@ void hexatic_order_of_lattice_and_gas() {
         p.position = Vec2(large.box_size / 2, large.box_size / 2) + Vec2(c * d.x() - s * d.y(), s * d.x() + c * d.y());
     }
     CHECK_NEAR(hexatic_order(turned, large), ordered, 1e-9);
+    // A lattice filling a periodic box: every disk sees the same neighbours by
+    // the nearest images, so shifting the whole lattice changes nothing; without
+    // the images, the disks at the edges miss theirs.
+    SceneFamilyOptions p;
+    p.particles = 870;
+    p.area_fraction = 0.7;
+    p.boundary = Boundary::periodic;
+    const Scene filled = make_family_scene(SceneFamily::crystal, p);
+    const double periodic_order = hexatic_order(filled.particles, filled.world, Boundary::periodic);
+    std::vector<Particle> shifted = filled.particles;
+    for (Particle& q : shifted) {
+        for (int axis = 0; axis < 2; ++axis) {
+            q.position[axis] =
+                std::fmod(q.position[axis] + filled.world.box_size * (axis == 0 ? 0.37 : 0.61), filled.world.box_size);
+        }
+    }
+    CHECK_NEAR(hexatic_order(shifted, filled.world, Boundary::periodic), periodic_order, 1e-9);
+    CHECK(hexatic_order(filled.particles, filled.world) < periodic_order - 0.01);
     o.particles = 2000;
     o.area_fraction = 0.3;
     const Scene gas = make_family_scene(SceneFamily::gas, o);

@@ -40,7 +40,10 @@ void ObservablesFile::observe(std::int64_t step, std::span<const particlesim::Pa
     append_shortest(text_, static_cast<double>(step));
     text_ += ',' + std::to_string(totals.particle_collisions - previous_totals_.particle_collisions);
     text_ += ',' + std::to_string(totals.wall_collisions - previous_totals_.wall_collisions);
-    for (const double value : {kinetic, pressure.betaP_d2, pressure.Z, particlesim::hexatic_order(particles, world_)}) {
+    for (const double value :
+         {kinetic, pressure.betaP_d2, pressure.Z,
+          particlesim::hexatic_order(particles, world_,
+                                     periodic_ ? particlesim::Boundary::periodic : particlesim::Boundary::walls)}) {
         text_ += ',';
         append_shortest(text_, value);
     }

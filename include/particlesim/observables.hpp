@@ -55,8 +55,9 @@ Pressure periodic_box_pressure(const World& world, std::size_t count, double kin
 // neighbours: no tessellation to build, the same count at every disk (a
 // Voronoi cell of a dense liquid often has five or seven), and the common
 // choice of the hard-disk papers' quick estimates. 1 on a perfect triangular
-// lattice, about 1 / sqrt(N) for a random gas. 0 for fewer than 7 disks.
-double hexatic_order(std::span<const Particle> particles, const World& world);
+// lattice, about 1 / sqrt(N) for a random gas. 0 for fewer than 7 disks. In a
+// periodic box, neighbours are nearest images.
+double hexatic_order(std::span<const Particle> particles, const World& world, Boundary boundary = Boundary::walls);
 
 // The mean of a series and its standard error from `blocks` block averages
 // (the error of correlated samples: blocks longer than the correlation time

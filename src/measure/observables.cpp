@@ -60,7 +60,7 @@ Pressure periodic_box_pressure(const World& world, std::size_t count, double kin
     return p;
 }
 
-double hexatic_order(std::span<const Particle> particles, const World& world) {
+double hexatic_order(std::span<const Particle> particles, const World& world, Boundary boundary) {
     const std::size_t n = particles.size();
     if (n < 7) return 0.0;
     // About four disks a cell; rings of cells are searched until the sixth
@@ -78,21 +78,36 @@ double hexatic_order(std::span<const Particle> particles, const World& world) {
     };
     std::vector<Neighbour> found;
     std::complex<double> total(0.0, 0.0);
+    // In a periodic box the rings wrap around the edges and every bond is the
+    // nearest image's; a ring as wide as the box holds all of it once.
+    const bool periodic = boundary == Boundary::periodic;
+    const double side = world.box_size;
+    const auto nearest = [&](double d) { return periodic ? d - side * std::round(d / side) : d; };
     for (std::uint32_t i = 0; i < n; ++i) {
         const Vec2 at = particles[i].position;
         const int cx = grid.column_of(at.x()), cy = grid.column_of(at.y());
         for (int ring = 1;; ++ring) {
             found.clear();
-            for (int y = std::max(cy - ring, 0); y <= std::min(cy + ring, per_side - 1); ++y) {
-                for (int x = std::max(cx - ring, 0); x <= std::min(cx + ring, per_side - 1); ++x) {
+            const bool whole_box = periodic ? 2 * ring + 1 >= per_side : ring >= per_side;
+            const auto cells_along = [&](int centre, auto&& visit) {
+                if (periodic && whole_box) {
+                    for (int c = 0; c < per_side; ++c) visit(c);
+                } else if (periodic) {
+                    for (int c = centre - ring; c <= centre + ring; ++c) visit((c + per_side) % per_side);
+                } else {
+                    for (int c = std::max(centre - ring, 0); c <= std::min(centre + ring, per_side - 1); ++c) visit(c);
+                }
+            };
+            cells_along(cy, [&](int y) {
+                cells_along(cx, [&](int x) {
                     by_cell.for_each_in(x, y, [&](std::uint32_t j) {
                         if (j == i) return;
-                        const Vec2 bond = particles[j].position - at;
+                        const Vec2 d = particles[j].position - at;
+                        const Vec2 bond(nearest(d.x()), nearest(d.y()));
                         found.push_back({bond.squaredNorm(), bond});
                     });
-                }
-            }
-            const bool whole_box = ring >= per_side;
+                });
+            });
             if (found.size() < 6 && !whole_box) continue;
             std::partial_sort(found.begin(), found.begin() + 6, found.end(),
                               [](const Neighbour& a, const Neighbour& b) { return a.distance_sq < b.distance_sq; });
