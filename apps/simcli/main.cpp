@@ -5,24 +5,22 @@
 
 #include "animation.hpp"
 #include "checkpoint.hpp"
+#include "distributed_run.hpp"
 #include "cli_options.hpp"
 #include "interrupts.hpp"
 #include "observables_file.hpp"
 #include "output_file.hpp"
 #include "progress_line.hpp"
+#include "run_stats.hpp"
+#include "scene_input.hpp"
 #include "snapshot.hpp"
 #include "trajectory.hpp"
 
 #include "particlesim/particlesim.hpp"
 
-#include <cerrno>
 #include <chrono>
 #include <csignal>
 #include <cstdio>
-#include <cstring>
-#include <filesystem>
-#include <fstream>
-#include <iostream>
 #include <optional>
 #include <stdexcept>
 #include <string>
@@ -44,14 +42,6 @@ public:
 
 private:
     int signal_;
-};
-
-struct RunStats {
-    std::int64_t steps_run = 0;  // by this process: a resumed run starts past 0
-    double seconds = 0.0;
-    StepCounts totals;
-    double initial_energy = 0.0;
-    double final_energy = 0.0;
 };
 
 // What --animate, --snapshot, --trajectory and --observables collect while the run goes on.
@@ -134,22 +124,6 @@ RunStats write_run(E& engine, const RunSettings& settings, const CliOptions& opt
     return stats;
 }
 
-// The time and rate are this process's (a resumed run's steps since its
-// checkpoint); the counts are the whole run's, over all its steps.
-void print_stats(const char* engine, const RunStats& stats, std::int64_t steps) {
-    const double per_step = steps > 0 ? 1.0 / static_cast<double>(steps) : 0.0;
-    std::fprintf(stderr, "stats: engine %s, %lld steps in %.6f s (%.6g steps/s)\n", engine,
-                 static_cast<long long>(stats.steps_run), stats.seconds,
-                 stats.seconds > 0.0 ? static_cast<double>(stats.steps_run) / stats.seconds : 0.0);
-    std::fprintf(stderr, "stats: %llu particle collisions, %llu wall collisions\n",
-                 static_cast<unsigned long long>(stats.totals.particle_collisions),
-                 static_cast<unsigned long long>(stats.totals.wall_collisions));
-    std::fprintf(stderr, "stats: relative energy drift %+.16e\n",
-                 relative_energy_drift(stats.initial_energy, stats.final_energy));
-    std::fprintf(stderr, "stats: %.6g candidate pairs tested per step\n",
-                 static_cast<double>(stats.totals.pair_tests) * per_step);
-}
-
 // The pressure with its error bar from block averages of the observables' rows.
 void print_pressure(const ObservablesFile& observables) {
     const MeanWithError virial = observables.virial_pressure(), walls = observables.wall_pressure();
@@ -215,17 +189,6 @@ void record_between_steps(Animation& animation, const World& world, std::vector<
     }
 }
 
-Scene read_input(const std::string& path, const std::string& name, SceneLines& lines, Boundary boundary) {
-    if (path == "-") return read_scene(std::cin, &lines, boundary);
-    std::error_code error;
-    if (std::filesystem::is_directory(path, error)) throw BadInput(name + ": is a directory");
-    std::ifstream file(path, std::ios::binary);
-    if (!file) throw BadInput(name + ": cannot open: " + std::strerror(errno));
-    return read_scene(file, &lines, boundary);
-}
-
-std::string at_line(const std::string& name, long line) { return name + ":" + std::to_string(line) + ": "; }
-
 ExactSimulation make_exact_engine(const Scene& scene, std::vector<Particle> particles, const std::string& name,
                                   const SceneLines& lines, Boundary boundary) {
     try {
@@ -246,19 +209,11 @@ ExactSimulation make_exact_engine(const Scene& scene, std::vector<Particle> part
 }
 
 void run_scene(const CliOptions& options) {
-    const std::string name = options.scene_path == "-" ? "<stdin>" : options.scene_path;
-    Scene scene;
-    SceneLines lines;
-    std::vector<Particle> particles;
-    try {
-        scene = read_input(options.scene_path, name, lines, options.boundary);
-        particles = scene.is_random() ? make_random_particles(scene.particle_count, scene.world, options.random)
-                                      : std::move(scene.particles);
-    } catch (const InputError& e) {
-        throw BadInput(at_line(name, e.line()) + e.what());
-    } catch (const SceneTooFull& e) {
-        throw BadInput(at_line(name, lines.particle_count) + e.what());
-    }
+    LoadedScene loaded = load_scene(options);
+    const std::string& name = loaded.name;
+    const Scene& scene = loaded.scene;
+    SceneLines& lines = loaded.lines;
+    std::vector<Particle>& particles = loaded.particles;
     const RunSettings settings{scene.world,    scene.steps,      scene.mode,
                                options.engine, options.boundary, options.stepped.substeps,
                                options.numbers};
@@ -345,10 +300,8 @@ int run_cli(int argc, char** argv) {
     return 0;
 }
 
-}  // namespace
-
-int main(int argc, char** argv) {
-    std::signal(SIGPIPE, SIG_IGN);  // a closed pipe is a write error (exit 1), not a signal
+// simcli in one process: the exit status of io.md.
+int run_one_process(int argc, char** argv) {
     try {
         return run_cli(argc, argv);
     } catch (const BadInput& e) {
@@ -361,4 +314,14 @@ int main(int argc, char** argv) {
         std::fprintf(stderr, "simcli: %s\n", e.what());
         return exit_failure;
     }
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+    std::signal(SIGPIPE, SIG_IGN);  // a closed pipe is a write error (exit 1), not a signal
+#ifdef SIMCLI_WITH_MPI
+    if (started_by_mpi_launcher()) return run_under_mpi(argc, argv, run_one_process);
+#endif
+    return run_one_process(argc, argv);
 }

@@ -20,6 +20,17 @@ namespace particlesim {
 
 // Total kinetic energy (masses 1) at full precision (a compensated sum).
 double total_kinetic_energy(std::span<const Particle> particles);
+// The same sum taken over consecutive parts of the particles (as a
+// distributed run hands them over): the same bits as over all at once.
+class KineticEnergySum {
+public:
+    void add(std::span<const Particle> particles);
+    [[nodiscard]] double total() const { return sum_ + compensation_; }
+
+private:
+    double sum_ = 0.0;
+    double compensation_ = 0.0;
+};
 // (E - E0) / E0, or 0 when there was no energy to begin with.
 double relative_energy_drift(double initial, double current);
 

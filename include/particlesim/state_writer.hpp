@@ -26,15 +26,17 @@ class StateWriter {
 public:
     explicit StateWriter(std::FILE* out, NumberFormat format = NumberFormat::fixed8);  // `out`: not owned; not closed
 
-    // "s i x y vx vy" for every particle.
-    void write_state(std::int64_t step, std::span<const Particle> particles);
-    // "s i x y vx vy pc wc" for every particle: the final block.
-    void write_final(std::int64_t step, std::span<const Particle> particles);
+    // "s i x y vx vy" for every particle. A block may be written in parts:
+    // `first_index` is the index i of the part's first particle.
+    void write_state(std::int64_t step, std::span<const Particle> particles, std::size_t first_index = 0);
+    // "s i x y vx vy pc wc" for every particle: the final block (in parts, likewise).
+    void write_final(std::int64_t step, std::span<const Particle> particles, std::size_t first_index = 0);
     // Hands everything buffered to the FILE and flushes it; throws OutputError.
     void flush();
 
 private:
-    void write_block(std::int64_t step, std::span<const Particle> particles, bool with_counters);
+    void write_block(std::int64_t step, std::span<const Particle> particles, std::size_t first_index,
+                     bool with_counters);
     void drain();
 
     std::FILE* out_;

@@ -19,15 +19,16 @@ constexpr std::size_t max_line_length = 4 * 21 + 4 * (max_fixed8_length + 1) + 1
 
 StateWriter::StateWriter(std::FILE* out, NumberFormat format) : out_(out), format_(format), buffer_(buffer_size) {}
 
-void StateWriter::write_state(std::int64_t step, std::span<const Particle> particles) {
-    write_block(step, particles, false);
+void StateWriter::write_state(std::int64_t step, std::span<const Particle> particles, std::size_t first_index) {
+    write_block(step, particles, first_index, false);
 }
 
-void StateWriter::write_final(std::int64_t step, std::span<const Particle> particles) {
-    write_block(step, particles, true);
+void StateWriter::write_final(std::int64_t step, std::span<const Particle> particles, std::size_t first_index) {
+    write_block(step, particles, first_index, true);
 }
 
-void StateWriter::write_block(std::int64_t step, std::span<const Particle> particles, bool with_counters) {
+void StateWriter::write_block(std::int64_t step, std::span<const Particle> particles, std::size_t first_index,
+                              bool with_counters) {
     char step_text[24];
     const std::size_t step_length =
         static_cast<std::size_t>(std::to_chars(step_text, step_text + 24, step).ptr - step_text);
@@ -37,7 +38,7 @@ void StateWriter::write_block(std::int64_t step, std::span<const Particle> parti
         std::memcpy(out, step_text, step_length);
         out += step_length;
         *out++ = ' ';
-        out = std::to_chars(out, out + 21, i).ptr;
+        out = std::to_chars(out, out + 21, first_index + i).ptr;
         const Particle& p = particles[i];
         for (const double value : {p.position.x(), p.position.y(), p.velocity.x(), p.velocity.y()}) {
             *out++ = ' ';

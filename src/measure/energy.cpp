@@ -7,16 +7,19 @@ namespace particlesim {
 
 // A compensated (Neumaier) sum, so that the drift it shows is a property of
 // the dynamics, not of the summation.
-double total_kinetic_energy(std::span<const Particle> particles) {
-    double sum = 0.0;
-    double compensation = 0.0;
+void KineticEnergySum::add(std::span<const Particle> particles) {
     for (const Particle& p : particles) {
         const double term = kinetic_energy(p);
-        const double next = sum + term;
-        compensation += std::abs(sum) >= std::abs(term) ? (sum - next) + term : (term - next) + sum;
-        sum = next;
+        const double next = sum_ + term;
+        compensation_ += std::abs(sum_) >= std::abs(term) ? (sum_ - next) + term : (term - next) + sum_;
+        sum_ = next;
     }
-    return sum + compensation;
+}
+
+double total_kinetic_energy(std::span<const Particle> particles) {
+    KineticEnergySum sum;
+    sum.add(particles);
+    return sum.total();
 }
 
 double relative_energy_drift(double initial, double current) {

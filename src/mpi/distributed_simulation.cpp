@@ -1,0 +1,561 @@
+#include "particlesim/distributed_simulation.hpp"
+#include "particlesim/saved_state.hpp"
+
+#include "core/box.hpp"
+#include "core/collision.hpp"
+#include "core/uniform_grid.hpp"
+#include "input/scene_checks.hpp"
+#include "mpi/domain_strips.hpp"
+#include "mpi/neighbour_exchange.hpp"
+#include "mpi/rank_selection.hpp"
+#include "parallel/parallel.hpp"
+#include "search/brute_force_search.hpp"
+#include "search/grid_search.hpp"
+#include "stepped/step_pipeline.hpp"
+#include "stepped/stepped_tuning.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <numeric>
+#include <sstream>
+#include <stdexcept>
+#include <string>
+
+namespace particlesim {
+
+namespace {
+
+// A particle on its way to another rank (a ghost or a migrant), with its
+// index in the scene; plain numbers, sent as bytes.
+struct Travelling {
+    double x, y, vx, vy;
+    std::uint64_t particle_collisions, wall_collisions;
+    std::uint64_t user_index;
+
+    Travelling() = default;
+    Travelling(const Particle& p, std::uint64_t user)
+        : x(p.position.x()),
+          y(p.position.y()),
+          vx(p.velocity.x()),
+          vy(p.velocity.y()),
+          particle_collisions(p.particle_collisions),
+          wall_collisions(p.wall_collisions),
+          user_index(user) {}
+
+    [[nodiscard]] Particle particle() const { return {Vec2(x, y), Vec2(vx, vy), particle_collisions, wall_collisions}; }
+};
+
+// Message tags: each exchange uses its tag and the next.
+constexpr int tag_ghosts = 10;
+constexpr int tag_claims = 20;
+constexpr int tag_taken = 30;
+constexpr int tag_migrants = 40;
+
+constexpr int root = 0;
+// Bins of the histogram of x the cuts are placed by.
+constexpr std::size_t cut_bins = 16384;
+// Steps between checks of the balance, and the excess over the mean count
+// that moves the cuts.
+constexpr std::int64_t balance_every = 16;
+constexpr double allowed_imbalance = 1.1;
+
+// How far apart two centres can be and still meet within `duration`: both
+// move at most `max_speed` * duration. Widened so that no rounding of this
+// or of a centre's distance to a cut can leave a partner out; a wider
+// halo only adds ghosts.
+double halo_reach(const World& world, double max_speed, double duration) {
+    return (2.0 * world.radius + 2.0 * max_speed * duration) * (1.0 + 1e-9) + 1e-300;
+}
+
+// An MPI datatype of sizeof(T) bytes, freed with the object.
+template <typename T>
+class BytesType {
+public:
+    BytesType() {
+        require_mpi(MPI_Type_contiguous(static_cast<int>(sizeof(T)), MPI_BYTE, &type_), "making a type");
+        require_mpi(MPI_Type_commit(&type_), "committing a type");
+    }
+    ~BytesType() { MPI_Type_free(&type_); }
+    BytesType(const BytesType&) = delete;
+    BytesType& operator=(const BytesType&) = delete;
+    [[nodiscard]] MPI_Datatype get() const { return type_; }
+
+private:
+    MPI_Datatype type_ = MPI_DATATYPE_NULL;
+};
+
+}  // namespace
+
+class DistributedSimulation::Implementation {
+public:
+    Implementation(MPI_Comm comm, const World& world, const SteppedOptions& options)
+        : world_(world), box_(Box::of(world)), options_(options) {
+        require_mpi(MPI_Comm_dup(comm, &comm_), "duplicating the communicator");
+        MPI_Comm_rank(comm_, &rank_);
+        MPI_Comm_size(comm_, &ranks_);
+        exchange_ = NeighbourExchange(comm_);
+        threads_ = options_.threads.value_or(default_thread_count());
+        search_ = options_.pair_search == PairSearch::brute_force ? PairSearch::brute_force : PairSearch::grid;
+        strips_ = DomainStrips(std::vector<double>(static_cast<std::size_t>(ranks_ - 1), 0.0));
+    }
+    ~Implementation() {
+        if (comm_ != MPI_COMM_NULL) MPI_Comm_free(&comm_);
+    }
+    Implementation(const Implementation&) = delete;
+    Implementation& operator=(const Implementation&) = delete;
+
+    // Rank 0's particles, checked there and handed out in parts by strip.
+    void distribute(std::vector<Particle> particles, std::int64_t steps_done, const StepCounts& totals) {
+        std::string refusal;
+        if (rank_ == root) {
+            try {
+                require_valid_scene("particlesim::DistributedSimulation", world_, particles);
+            } catch (const std::invalid_argument& e) {
+                refusal = e.what();
+            }
+        }
+        broadcast_refusal(refusal);
+        std::uint64_t header[4] = {particles.size(), static_cast<std::uint64_t>(steps_done), 0, 0};
+        MPI_Bcast(header, 2, MPI_UINT64_T, root, comm_);
+        count_ = header[0];
+        steps_done_ = static_cast<std::int64_t>(header[1]);
+        std::uint64_t sums[3] = {totals.particle_collisions, totals.wall_collisions, totals.pair_tests};
+        MPI_Bcast(sums, 3, MPI_UINT64_T, root, comm_);
+        totals_ = {sums[0], sums[1], sums[2]};
+        if (options_.pair_search == PairSearch::automatic) {
+            search_ = count_ < stepped_tuning::brute_force_below ? PairSearch::brute_force : PairSearch::grid;
+        }
+        // The cuts from rank 0's histogram, then each part's particles to their owners.
+        std::vector<std::uint64_t> histogram(cut_bins, 0);
+        if (rank_ == root) add_to_histogram(particles, histogram);
+        strips_ = DomainStrips(balanced_cuts(histogram, world_.box_size, ranks_));
+        broadcast_cuts();
+        const std::size_t part = std::size_t{1} << 16;
+        const BytesType<Travelling> travelling;
+        std::vector<int> counts(static_cast<std::size_t>(ranks_)), displacements(counts.size());
+        std::vector<Travelling> sorted;
+        for (std::uint64_t first = 0; first < count_; first += part) {
+            const std::uint64_t last = std::min<std::uint64_t>(count_, first + part);
+            if (rank_ == root) {
+                std::fill(counts.begin(), counts.end(), 0);
+                for (std::uint64_t u = first; u < last; ++u) ++counts[owner(particles[u])];
+                std::exclusive_scan(counts.begin(), counts.end(), displacements.begin(), 0);
+                sorted.resize(last - first);
+                std::vector<int> place = displacements;
+                for (std::uint64_t u = first; u < last; ++u) {
+                    sorted[static_cast<std::size_t>(place[owner(particles[u])]++)] = Travelling(particles[u], u);
+                }
+            }
+            int mine = 0;
+            MPI_Scatter(counts.data(), 1, MPI_INT, &mine, 1, MPI_INT, root, comm_);
+            incoming_.resize(static_cast<std::size_t>(mine));
+            require_mpi(MPI_Scatterv(sorted.data(), counts.data(), displacements.data(), travelling.get(),
+                                     incoming_.data(), mine, travelling.get(), root, comm_),
+                        "handing out the particles");
+            for (const Travelling& t : incoming_) adopt(t);
+        }
+        particles = {};
+        sort_by_position();
+    }
+
+    void step() {
+        last_step_ = {};
+        if (steps_done_ > 0 && steps_done_ % balance_every == 0) balance();
+        const int sort_every = options_.sort_by_position_every.value_or(
+            count_ >= stepped_tuning::sort_by_position_from ? stepped_tuning::sort_every_steps : 0);
+        if (sort_every > 0 && steps_done_ % sort_every == 0) sort_by_position();
+        const double duration = 1.0 / options_.substeps;
+        for (int micro = 0; micro < options_.substeps; ++micro) micro_step(duration);
+        std::uint64_t sums[3] = {last_step_.particle_collisions, last_step_.wall_collisions, last_step_.pair_tests};
+        MPI_Allreduce(MPI_IN_PLACE, sums, 3, MPI_UINT64_T, MPI_SUM, comm_);
+        last_step_ = {sums[0], sums[1], sums[2]};
+        totals_ += last_step_;
+        ++steps_done_;
+    }
+
+    void gather(const PartSink& sink, std::size_t part_size) const {
+        part_size = std::max<std::size_t>(part_size, 1);
+        std::vector<std::uint32_t> by_user(owned_);
+        std::iota(by_user.begin(), by_user.end(), 0U);
+        std::sort(by_user.begin(), by_user.end(),
+                  [&](std::uint32_t a, std::uint32_t b) { return user_[a] < user_[b]; });
+        const BytesType<Travelling> travelling;
+        std::vector<Travelling> mine;
+        std::vector<Travelling> received;
+        std::vector<Particle> part;
+        std::vector<int> counts(static_cast<std::size_t>(ranks_)), displacements(counts.size());
+        std::size_t next = 0;
+        for (std::uint64_t first = 0; first < count_; first += part_size) {
+            const std::uint64_t last = std::min<std::uint64_t>(count_, first + part_size);
+            mine.clear();
+            while (next < by_user.size() && user_[by_user[next]] < last) {
+                mine.emplace_back(local_[by_user[next]], user_[by_user[next]]);
+                ++next;
+            }
+            int size = static_cast<int>(mine.size());
+            MPI_Gather(&size, 1, MPI_INT, counts.data(), 1, MPI_INT, root, comm_);
+            if (rank_ == root) {
+                std::exclusive_scan(counts.begin(), counts.end(), displacements.begin(), 0);
+                received.resize(last - first);
+            }
+            require_mpi(MPI_Gatherv(mine.data(), size, travelling.get(), received.data(), counts.data(),
+                                    displacements.data(), travelling.get(), root, comm_),
+                        "gathering the particles");
+            if (rank_ != root) continue;
+            part.resize(last - first);
+            for (const Travelling& t : received) part[t.user_index - first] = t.particle();
+            sink(first, part);
+        }
+    }
+
+    const World& world() const { return world_; }
+    std::uint64_t particle_count() const { return count_; }
+    std::int64_t steps_done() const { return steps_done_; }
+    const StepCounts& last_step() const { return last_step_; }
+    const StepCounts& totals() const { return totals_; }
+    PairSearch pair_search() const { return search_; }
+    int threads() const { return threads_; }
+    int rank() const { return rank_; }
+    int ranks() const { return ranks_; }
+    MPI_Comm comm() const { return comm_; }
+    std::size_t owned_count() const { return owned_; }
+    std::size_t peak_local_count() const { return peak_local_; }
+
+private:
+    int owner(const Particle& p) const { return strips_.owner_of(p.position.x()); }
+
+    void add_to_histogram(std::span<const Particle> particles, std::vector<std::uint64_t>& histogram) const {
+        const UniformGrid bins(world_.box_size, static_cast<int>(histogram.size()));
+        for (const Particle& p : particles) ++histogram[static_cast<std::size_t>(bins.column_of(p.position.x()))];
+    }
+
+    void broadcast_refusal(std::string& refusal) {
+        std::uint64_t length = refusal.size();
+        MPI_Bcast(&length, 1, MPI_UINT64_T, root, comm_);
+        if (length == 0) return;
+        refusal.resize(length);
+        MPI_Bcast(refusal.data(), static_cast<int>(length), MPI_CHAR, root, comm_);
+        throw std::invalid_argument(refusal);
+    }
+
+    void broadcast_cuts() {
+        std::vector<double> cuts(strips_.inner_cuts().begin(), strips_.inner_cuts().end());
+        MPI_Bcast(cuts.data(), static_cast<int>(cuts.size()), MPI_DOUBLE, root, comm_);
+        strips_ = DomainStrips(std::move(cuts));
+    }
+
+    // An owned particle arrives (from rank 0's hand-out or a neighbour).
+    void adopt(const Travelling& t) {
+        local_.resize(owned_);
+        user_.resize(owned_);
+        local_.push_back(t.particle());
+        user_.push_back(static_cast<std::uint32_t>(t.user_index));
+        ++owned_;
+    }
+
+    // Owned particles in row-major cell order, for locality (as the one-process
+    // engine's storage order): a counting sort by cell.
+    void sort_by_position() {
+        if (owned_ < 2) return;
+        local_.resize(owned_);
+        user_.resize(owned_);
+        const UniformGrid grid(world_.box_size,
+                               UniformGrid::cells_per_side(world_.box_size, 4.0 * world_.radius,
+                                                           std::sqrt(static_cast<double>(count_)) + 1.0));
+        std::vector<std::uint32_t> start(grid.cell_count() + 1, 0);
+        for (const Particle& p : local_) ++start[grid.cell_of(p.position) + 1];
+        std::partial_sum(start.begin(), start.end(), start.begin());
+        std::vector<Particle> particles(owned_);
+        std::vector<std::uint32_t> users(owned_);
+        for (std::size_t k = 0; k < owned_; ++k) {
+            const std::uint32_t at = start[grid.cell_of(local_[k].position)]++;
+            particles[at] = local_[k];
+            users[at] = user_[k];
+        }
+        local_.swap(particles);
+        user_.swap(users);
+    }
+
+    // Moves the cuts when one strip holds too many more than the mean.
+    void balance() {
+        std::uint64_t most = owned_;
+        MPI_Allreduce(MPI_IN_PLACE, &most, 1, MPI_UINT64_T, MPI_MAX, comm_);
+        if (static_cast<double>(most) <= allowed_imbalance * static_cast<double>(count_) / ranks_ + 64.0) return;
+        std::vector<std::uint64_t> histogram(cut_bins, 0);
+        add_to_histogram(std::span(local_).first(owned_), histogram);
+        MPI_Allreduce(MPI_IN_PLACE, histogram.data(), static_cast<int>(histogram.size()), MPI_UINT64_T, MPI_SUM,
+                      comm_);
+        strips_ = DomainStrips(balanced_cuts(histogram, world_.box_size, ranks_));
+        // Any rank may now own any particle: every rank sends to every rank.
+        std::vector<std::vector<Travelling>> leaving(static_cast<std::size_t>(ranks_));
+        keep_owned_or_send([&](int to, const Travelling& t) { leaving[static_cast<std::size_t>(to)].push_back(t); });
+        std::vector<int> to_all(static_cast<std::size_t>(ranks_)), from_all(to_all.size());
+        for (int r = 0; r < ranks_; ++r) to_all[r] = static_cast<int>(leaving[r].size());
+        MPI_Alltoall(to_all.data(), 1, MPI_INT, from_all.data(), 1, MPI_INT, comm_);
+        std::vector<int> to_at(to_all.size()), from_at(to_all.size());
+        std::exclusive_scan(to_all.begin(), to_all.end(), to_at.begin(), 0);
+        std::exclusive_scan(from_all.begin(), from_all.end(), from_at.begin(), 0);
+        std::vector<Travelling> out;
+        for (const std::vector<Travelling>& list : leaving) out.insert(out.end(), list.begin(), list.end());
+        incoming_.resize(static_cast<std::size_t>(from_at.back() + from_all.back()));
+        const BytesType<Travelling> travelling;
+        require_mpi(MPI_Alltoallv(out.data(), to_all.data(), to_at.data(), travelling.get(), incoming_.data(),
+                                  from_all.data(), from_at.data(), travelling.get(), comm_),
+                    "moving particles to the new strips");
+        for (const Travelling& t : incoming_) adopt(t);
+        sort_by_position();
+    }
+
+    // Keeps the owned particles still in this rank's strip, in order, and
+    // hands every other one to `send` with its new owner.
+    template <typename Send>
+    void keep_owned_or_send(Send&& send) {
+        std::size_t kept = 0;
+        for (std::size_t k = 0; k < owned_; ++k) {
+            const int to = owner(local_[k]);
+            if (to == rank_) {
+                local_[kept] = local_[k];
+                user_[kept] = user_[k];
+                ++kept;
+            } else {
+                send(to, Travelling{local_[k], user_[k]});
+            }
+        }
+        owned_ = kept;
+        local_.resize(owned_);
+        user_.resize(owned_);
+    }
+
+    void micro_step(double duration) {
+        // The halo: as wide as this micro-step's fastest particle makes it.
+        double max_speed = 0.0;
+        for (std::size_t k = 0; k < owned_; ++k) max_speed = std::max(max_speed, local_[k].velocity.norm());
+        MPI_Allreduce(MPI_IN_PLACE, &max_speed, 1, MPI_DOUBLE, MPI_MAX, comm_);
+        const double reach = halo_reach(world_, max_speed, duration);
+        neighbours_ = strips_.neighbours_of(rank_, reach);
+        const std::size_t near = neighbours_.size();
+
+        exchange_ghosts(reach);
+        const std::size_t local = local_.size();
+        peak_local_ = std::max(peak_local_, local);
+
+        // Detect: the owned particles' walls, the pairs with an owned particle.
+        wall_time_.resize(local);
+        start_.with_motion = search_ == PairSearch::grid;
+        measure_step_start(local_, box_, duration, wall_time_, start_, threads_);
+        candidates_.clear();
+        for (std::uint32_t k = 0; k < owned_; ++k) {
+            if (wall_time_[k] <= duration) candidates_.push_back(Collision::wall(wall_time_[k], k));
+        }
+        thread_candidates_.resize(static_cast<std::size_t>(threads_));
+        for (ThreadCandidates& thread : thread_candidates_) {
+            thread.found.clear();
+            thread.pair_tests = 0;
+        }
+        const PairSearchInput input{local_, wall_time_, box_, duration,
+                                    start_.with_motion ? std::span<const BlockStart>(start_.blocks)
+                                                       : std::span<const BlockStart>()};
+        if (search_ == PairSearch::brute_force) {
+            find_pairs_brute_force(input, thread_candidates_);
+        } else {
+            grid_.find_pairs(input, options_.grid_cells, thread_candidates_);
+        }
+        for (const ThreadCandidates& thread : thread_candidates_) {
+            last_step_.pair_tests += thread.pair_tests;
+            for (const Collision& c : thread.found) {
+                if (c.i < owned_ || c.j < owned_) candidates_.push_back(c);
+            }
+        }
+
+        // Select, in rounds with the neighbours.
+        selection_.begin(candidates_, static_cast<std::uint32_t>(owned_), user_, ghost_neighbour_, near);
+        outgoing_bytes_.resize(near);
+        incoming_bytes_.resize(near);
+        for (;;) {
+            selection_.claim();
+            for (std::size_t n = 0; n < near; ++n) {
+                selection_.write_claims(n, outgoing_bytes_[n]);
+                incoming_bytes_[n].resize(selection_.shared_with(n));
+            }
+            exchange_.exchange(std::span<const int>(neighbours_), outgoing_bytes_, incoming_bytes_, tag_claims, true);
+            selection_.accept(incoming_bytes_);
+            for (std::size_t n = 0; n < near; ++n) selection_.write_taken(n, outgoing_bytes_[n]);
+            exchange_.exchange(std::span<const int>(neighbours_), outgoing_bytes_, incoming_bytes_, tag_taken, true);
+            std::uint64_t undecided = selection_.end_round(incoming_bytes_);
+            MPI_Allreduce(MPI_IN_PLACE, &undecided, 1, MPI_UINT64_T, MPI_SUM, comm_);
+            if (undecided == 0) break;
+        }
+        last_step_.particle_collisions += selection_.accepted().particle_collisions;
+        last_step_.wall_collisions += selection_.accepted().wall_collisions;
+
+        // Resolve (a shared pair on both its ranks, each keeping its own
+        // particle) and advance; the ghosts are then dropped.
+        partner_.assign(selection_.partner().begin(), selection_.partner().end());
+        resolve_collisions(local_, partner_, selection_.collision_time(), box_, duration, threads_);
+        advance_free_particles(std::span(local_).first(owned_), std::span(partner_).first(owned_), box_, duration,
+                               std::span(wall_time_).first(owned_), next_start_, threads_);
+        local_.resize(owned_);
+        user_.resize(owned_);
+        migrate();
+    }
+
+    // Copies of the owned particles near each neighbour's strip become its ghosts.
+    void exchange_ghosts(double reach) {
+        const std::size_t near = neighbours_.size();
+        outgoing_.resize(near);
+        for (std::vector<Travelling>& list : outgoing_) list.clear();
+        for (std::size_t k = 0; k < owned_; ++k) {
+            const double x = local_[k].position.x();
+            for (std::size_t n = 0; n < near; ++n) {
+                if (strips_.near(x, neighbours_[n], reach)) outgoing_[n].emplace_back(local_[k], user_[k]);
+            }
+        }
+        exchange_.exchange(std::span<const int>(neighbours_), outgoing_, incoming_lists_, tag_ghosts);
+        ghost_neighbour_.clear();
+        for (std::size_t n = 0; n < near; ++n) {
+            for (const Travelling& t : incoming_lists_[n]) {
+                local_.push_back(t.particle());
+                user_.push_back(static_cast<std::uint32_t>(t.user_index));
+                ghost_neighbour_.push_back(static_cast<std::uint32_t>(n));
+            }
+        }
+    }
+
+    // Particles that left the strip go to their new owner, a neighbour (no
+    // particle moves farther than the halo's reach in a step).
+    void migrate() {
+        const std::size_t near = neighbours_.size();
+        for (std::vector<Travelling>& list : outgoing_) list.clear();
+        keep_owned_or_send([&](int to, const Travelling& t) {
+            const auto at = std::find(neighbours_.begin(), neighbours_.end(), to);
+            if (at == neighbours_.end()) throw std::logic_error("a particle moved beyond the neighbouring strips");
+            outgoing_[static_cast<std::size_t>(at - neighbours_.begin())].push_back(t);
+        });
+        outgoing_.resize(near);
+        exchange_.exchange(std::span<const int>(neighbours_), outgoing_, incoming_lists_, tag_migrants);
+        for (const std::vector<Travelling>& list : incoming_lists_) {
+            for (const Travelling& t : list) adopt(t);
+        }
+    }
+
+    World world_;
+    Box box_;
+    SteppedOptions options_;
+    MPI_Comm comm_ = MPI_COMM_NULL;
+    int rank_ = 0;
+    int ranks_ = 1;
+    int threads_ = 1;
+    PairSearch search_ = PairSearch::grid;
+    DomainStrips strips_;
+    NeighbourExchange exchange_;
+    std::uint64_t count_ = 0;
+
+    // Local particles: the owned ones first, then (during a step) the ghosts.
+    std::vector<Particle> local_;
+    std::vector<std::uint32_t> user_;  // by local particle: its index in the scene
+    std::size_t owned_ = 0;
+    std::vector<std::uint32_t> ghost_neighbour_;  // by ghost: its owner's place in neighbours_
+    std::vector<int> neighbours_;
+    std::size_t peak_local_ = 0;
+
+    std::vector<double> wall_time_;
+    StepStart start_;
+    StepStart next_start_;  // measured by the advance and not used: ghosts change every step
+    std::vector<Collision> candidates_;
+    std::vector<ThreadCandidates> thread_candidates_;
+    GridSearch grid_;
+    RankSelection selection_;
+    std::vector<std::uint32_t> partner_;
+    std::vector<std::vector<Travelling>> outgoing_;
+    std::vector<std::vector<Travelling>> incoming_lists_;
+    std::vector<Travelling> incoming_;
+    std::vector<std::vector<std::uint8_t>> outgoing_bytes_;
+    std::vector<std::vector<std::uint8_t>> incoming_bytes_;
+
+    std::int64_t steps_done_ = 0;
+    StepCounts last_step_;
+    StepCounts totals_;
+};
+
+DistributedSimulation::DistributedSimulation(MPI_Comm comm, const World& world, std::vector<Particle> particles_on_root,
+                                             const SteppedOptions& options)
+    : engine_(std::make_unique<Implementation>(comm, world, options)) {
+    engine_->distribute(std::move(particles_on_root), 0, {});
+}
+
+DistributedSimulation::DistributedSimulation(std::unique_ptr<Implementation> engine) : engine_(std::move(engine)) {}
+
+DistributedSimulation DistributedSimulation::restore(MPI_Comm comm, const World& world, std::istream* saved_on_root,
+                                                     const SteppedOptions& options) {
+    auto engine = std::make_unique<Implementation>(comm, world, options);
+    std::vector<Particle> particles;
+    std::int64_t steps_done = 0;
+    StepCounts totals;
+    std::string refusal;
+    int rank = 0;
+    MPI_Comm_rank(comm, &rank);
+    if (rank == root) {
+        try {
+            SavedStateReader in(*saved_on_root, "particlesim::DistributedSimulation::restore: the saved state is damaged");
+            in.expect("stepped-engine-state");
+            in.expect("1");
+            const std::uint64_t count = in.count(0xfffffffeU);
+            steps_done = static_cast<std::int64_t>(in.count(INT64_MAX));
+            totals = read_counts(in);
+            for (std::uint64_t i = 0; i < count; ++i) particles.push_back(read_particle(in));
+        } catch (const std::invalid_argument& e) {
+            refusal = e.what();
+        }
+    }
+    std::uint64_t length = refusal.size();
+    MPI_Bcast(&length, 1, MPI_UINT64_T, root, comm);
+    if (length > 0) {
+        refusal.resize(length);
+        MPI_Bcast(refusal.data(), static_cast<int>(length), MPI_CHAR, root, comm);
+        throw std::invalid_argument(refusal);
+    }
+    engine->distribute(std::move(particles), steps_done, totals);
+    return DistributedSimulation(std::move(engine));
+}
+
+void DistributedSimulation::save(const TextSink& write) const {
+    std::ostringstream text;
+    if (engine_->rank() == root) {
+        text << "stepped-engine-state 1\n";
+        save_number(text, particle_count());
+        save_number(text, static_cast<std::uint64_t>(steps_done()));
+        save_counts(text, totals());
+        text << '\n';
+        write(text.view());
+    }
+    gather([&](std::size_t, std::span<const Particle> part) {
+        text.str({});
+        for (const Particle& p : part) {
+            save_particle(text, p);
+            text << '\n';
+        }
+        write(text.view());
+    });
+}
+
+DistributedSimulation::~DistributedSimulation() = default;
+DistributedSimulation::DistributedSimulation(DistributedSimulation&&) noexcept = default;
+DistributedSimulation& DistributedSimulation::operator=(DistributedSimulation&&) noexcept = default;
+
+void DistributedSimulation::step() { engine_->step(); }
+void DistributedSimulation::gather(const PartSink& part, std::size_t part_size) const {
+    engine_->gather(part, part_size);
+}
+const World& DistributedSimulation::world() const { return engine_->world(); }
+std::uint64_t DistributedSimulation::particle_count() const { return engine_->particle_count(); }
+std::int64_t DistributedSimulation::steps_done() const { return engine_->steps_done(); }
+const StepCounts& DistributedSimulation::last_step() const { return engine_->last_step(); }
+const StepCounts& DistributedSimulation::totals() const { return engine_->totals(); }
+PairSearch DistributedSimulation::pair_search() const { return engine_->pair_search(); }
+int DistributedSimulation::threads() const { return engine_->threads(); }
+int DistributedSimulation::rank() const { return engine_->rank(); }
+int DistributedSimulation::ranks() const { return engine_->ranks(); }
+std::size_t DistributedSimulation::owned_count() const { return engine_->owned_count(); }
+std::size_t DistributedSimulation::peak_local_count() const { return engine_->peak_local_count(); }
+
+}  // namespace particlesim

@@ -1,0 +1,93 @@
+#pragma once
+// Point-to-point exchanges with a list of neighbouring ranks: each sends a
+// vector to each neighbour and receives one from it. Neighbours are mutual
+// (DomainStrips::strips_near), so every send has its receive. Elements are
+// trivially copyable and sent as bytes of one contiguous type, so counts
+// stay elements (int) whatever the element's size.
+
+#include <mpi.h>
+
+#include <cstdint>
+#include <span>
+#include <stdexcept>
+#include <string>
+#include <type_traits>
+#include <vector>
+
+namespace particlesim {
+
+// An MPI call that did not succeed: the run cannot go on on this rank.
+inline void require_mpi(int result, const char* what) {
+    if (result != MPI_SUCCESS) throw std::runtime_error(std::string("MPI: ") + what + " failed");
+}
+
+class NeighbourExchange {
+public:
+    NeighbourExchange() = default;
+    explicit NeighbourExchange(MPI_Comm comm) : comm_(comm) {}
+
+    // Sends out[n] to neighbours[n], receives in[n] from it. With
+    // `sizes_known`, in[n] already has the size the neighbour sends (both
+    // sides derived it from the same data) and no sizes are exchanged;
+    // neighbours with nothing to exchange then send no message at all.
+    template <typename T>
+    void exchange(std::span<const int> neighbours, const std::vector<std::vector<T>>& out,
+                  std::vector<std::vector<T>>& in, int tag, bool sizes_known = false) {
+        static_assert(std::is_trivially_copyable_v<T>);
+        const std::size_t count = neighbours.size();
+        in.resize(count);
+        if (!sizes_known) {
+            sizes_out_.resize(count);
+            sizes_in_.resize(count);
+            requests_.clear();
+            for (std::size_t n = 0; n < count; ++n) {
+                sizes_out_[n] = out[n].size();
+                requests_.emplace_back();
+                require_mpi(MPI_Irecv(&sizes_in_[n], 1, MPI_UINT64_T, neighbours[n], tag, comm_, &requests_.back()),
+                            "receiving a message size");
+                requests_.emplace_back();
+                require_mpi(MPI_Isend(&sizes_out_[n], 1, MPI_UINT64_T, neighbours[n], tag, comm_, &requests_.back()),
+                            "sending a message size");
+            }
+            wait_all();
+            for (std::size_t n = 0; n < count; ++n) {
+                if (sizes_in_[n] > static_cast<std::uint64_t>(INT32_MAX))
+                    throw std::runtime_error("MPI: a message of over 2^31 elements");
+                in[n].resize(sizes_in_[n]);
+            }
+        }
+        MPI_Datatype element = MPI_DATATYPE_NULL;
+        require_mpi(MPI_Type_contiguous(static_cast<int>(sizeof(T)), MPI_BYTE, &element), "making a type");
+        require_mpi(MPI_Type_commit(&element), "committing a type");
+        requests_.clear();
+        for (std::size_t n = 0; n < count; ++n) {
+            if (!in[n].empty()) {
+                requests_.emplace_back();
+                require_mpi(MPI_Irecv(in[n].data(), static_cast<int>(in[n].size()), element, neighbours[n], tag + 1,
+                                      comm_, &requests_.back()),
+                            "receiving");
+            }
+            if (!out[n].empty()) {
+                requests_.emplace_back();
+                require_mpi(MPI_Isend(out[n].data(), static_cast<int>(out[n].size()), element, neighbours[n], tag + 1,
+                                      comm_, &requests_.back()),
+                            "sending");
+            }
+        }
+        wait_all();
+        MPI_Type_free(&element);
+    }
+
+private:
+    void wait_all() {
+        require_mpi(MPI_Waitall(static_cast<int>(requests_.size()), requests_.data(), MPI_STATUSES_IGNORE),
+                    "waiting for neighbours");
+    }
+
+    MPI_Comm comm_ = MPI_COMM_NULL;
+    std::vector<std::uint64_t> sizes_out_;
+    std::vector<std::uint64_t> sizes_in_;
+    std::vector<MPI_Request> requests_;
+};
+
+}  // namespace particlesim

@@ -1,0 +1,127 @@
+#include "mpi/rank_selection.hpp"
+
+#include "core/assert.hpp"
+
+#include <algorithm>
+#include <tuple>
+
+namespace particlesim {
+
+void RankSelection::begin(std::span<const Collision> candidates, std::uint32_t owned_count,
+                          std::span<const std::uint32_t> user_index, std::span<const std::uint32_t> ghost_neighbour,
+                          std::size_t neighbours) {
+    candidates_ = candidates;
+    user_index_ = user_index;
+    owned_ = owned_count;
+    const std::size_t local = user_index.size();
+    undecided_.resize(candidates.size());
+    for (std::uint32_t k = 0; k < candidates.size(); ++k) undecided_[k] = k;
+    earliest_.assign(owned_count, no_collision);
+    other_side_claimed_.assign(candidates.size(), 0);
+    taken_.assign(local, 0);
+    partner_.assign(local, no_collision);
+    collision_time_.assign(local, 0.0);
+    accepted_ = {};
+    shared_.resize(neighbours);
+    for (std::vector<Shared>& list : shared_) list.clear();
+    for (std::uint32_t k = 0; k < candidates.size(); ++k) {
+        const Collision& c = candidates[k];
+        PARTICLESIM_ASSERT(owned(c.i) || (c.kind == CollisionKind::pair && owned(c.j)),
+                           "a rank's candidate has a particle it owns");
+        if (c.kind == CollisionKind::wall || (owned(c.i) && owned(c.j))) continue;
+        const std::uint32_t mine = owned(c.i) ? c.i : c.j;
+        const std::uint32_t ghost = owned(c.i) ? c.j : c.i;
+        const auto [low, high] = std::minmax(user_index[c.i], user_index[c.j]);
+        shared_[ghost_neighbour[ghost - owned_count]].push_back({k, mine, ghost, low, high});
+    }
+    // Both ranks of a shared candidate list it at the same place: by its
+    // particles' user indices. A candidate found twice is listed once, by its
+    // first copy, the one claim() prefers among equals.
+    for (std::vector<Shared>& list : shared_) {
+        std::sort(list.begin(), list.end(), [](const Shared& a, const Shared& b) {
+            return std::tie(a.user_low, a.user_high, a.candidate) < std::tie(b.user_low, b.user_high, b.candidate);
+        });
+        list.erase(std::unique(list.begin(), list.end(),
+                               [](const Shared& a, const Shared& b) {
+                                   return a.user_low == b.user_low && a.user_high == b.user_high;
+                               }),
+                   list.end());
+    }
+}
+
+void RankSelection::claim() {
+    const CandidateOrder order(user_index_);
+    for (const std::uint32_t k : undecided_) {
+        const Collision& c = candidates_[k];
+        for (const std::uint32_t p : {c.i, c.j}) {
+            if (!owned(p)) continue;
+            std::uint32_t& first = earliest_[p];
+            // Strictly before: of two equal copies, the first keeps the claim.
+            if (first == no_collision || order.before(c, candidates_[first])) first = k;
+            if (c.kind == CollisionKind::wall) break;
+        }
+    }
+}
+
+void RankSelection::write_claims(std::size_t n, std::vector<std::uint8_t>& out) const {
+    out.resize(shared_[n].size());
+    for (std::size_t e = 0; e < shared_[n].size(); ++e) {
+        const Shared& s = shared_[n][e];
+        out[e] = static_cast<std::uint8_t>(!taken_[s.owned] && !taken_[s.ghost] && earliest_[s.owned] == s.candidate);
+    }
+}
+
+void RankSelection::take(std::uint32_t local, std::uint32_t partner, double time) {
+    PARTICLESIM_ASSERT(!taken_[local], "no particle has two collisions selected");
+    taken_[local] = 1;
+    partner_[local] = partner;
+    collision_time_[local] = time;
+}
+
+void RankSelection::accept(std::span<const std::vector<std::uint8_t>> claims) {
+    for (std::size_t n = 0; n < shared_.size(); ++n) {
+        PARTICLESIM_ASSERT(claims[n].size() == shared_[n].size(), "both sides list the same shared candidates");
+        for (std::size_t e = 0; e < shared_[n].size(); ++e) other_side_claimed_[shared_[n][e].candidate] = claims[n][e];
+    }
+    for (const std::uint32_t k : undecided_) {
+        const Collision& c = candidates_[k];
+        if (c.kind == CollisionKind::wall) {
+            if (earliest_[c.i] != k) continue;
+            take(c.i, wall_collision, c.time);
+            ++accepted_.wall_collisions;
+            continue;
+        }
+        const bool i_claims = owned(c.i) ? earliest_[c.i] == k : other_side_claimed_[k] != 0;
+        const bool j_claims = owned(c.j) ? earliest_[c.j] == k : other_side_claimed_[k] != 0;
+        if (!i_claims || !j_claims) continue;
+        take(c.i, c.j, c.time);
+        take(c.j, c.i, c.time);
+        const bool counted_here = (owned(c.i) && owned(c.j)) ||
+                                  user_index_[owned(c.i) ? c.i : c.j] < user_index_[owned(c.i) ? c.j : c.i];
+        if (counted_here) ++accepted_.particle_collisions;
+    }
+}
+
+void RankSelection::write_taken(std::size_t n, std::vector<std::uint8_t>& out) const {
+    out.resize(shared_[n].size());
+    for (std::size_t e = 0; e < shared_[n].size(); ++e) out[e] = taken_[shared_[n][e].owned];
+}
+
+std::size_t RankSelection::end_round(std::span<const std::vector<std::uint8_t>> taken) {
+    for (std::size_t n = 0; n < shared_.size(); ++n) {
+        PARTICLESIM_ASSERT(taken[n].size() == shared_[n].size(), "both sides list the same shared candidates");
+        for (std::size_t e = 0; e < shared_[n].size(); ++e) {
+            // Taken by a collision on its own rank, or decided here already.
+            if (taken[n][e] != 0) taken_[shared_[n][e].ghost] = 1;
+        }
+    }
+    std::size_t kept = 0;
+    for (const std::uint32_t k : undecided_) {
+        if (free(candidates_[k])) undecided_[kept++] = k;
+    }
+    undecided_.resize(kept);
+    std::fill(earliest_.begin(), earliest_.end(), no_collision);
+    return kept;
+}
+
+}  // namespace particlesim
