@@ -2,7 +2,9 @@
 # headers are installed, then configures, builds and runs a consumer project
 # (tests/consumer/CMakeLists.txt with examples/library_usage.cpp as its
 # main.cpp) that finds the package with find_package(particlesim).
-# Inputs: BUILD_DIR, WORK_DIR, CONSUMER_DIR, LIBRARY_USAGE_SOURCE, APPS_BUILT.
+# With the distributed engine built (MPI_BUILT), a second consumer
+# (tests/consumer_mpi) finds its component and runs under mpirun.
+# Inputs: BUILD_DIR, WORK_DIR, CONSUMER_DIR, LIBRARY_USAGE_SOURCE, APPS_BUILT, MPI_BUILT, MPIEXEC.
 file(REMOVE_RECURSE "${WORK_DIR}")
 include("${CMAKE_CURRENT_LIST_DIR}/run_step.cmake")
 set(prefix "${WORK_DIR}/prefix")
@@ -12,6 +14,10 @@ run_step(${CMAKE_COMMAND} --install "${BUILD_DIR}" --prefix "${prefix}")
 set(public_headers accuracy.hpp engine.hpp exact_simulation.hpp observables.hpp output_reader.hpp particle.hpp particlesim.hpp
                    random_scene.hpp saved_state.hpp scene.hpp scene_families.hpp state_writer.hpp step_check.hpp
                    stepped_simulation.hpp version.hpp world.hpp)
+if(MPI_BUILT)
+  list(APPEND public_headers distributed_simulation.hpp)
+  list(SORT public_headers)
+endif()
 file(GLOB installed RELATIVE "${prefix}/include/particlesim" "${prefix}/include/particlesim/*")
 list(SORT installed)
 if(NOT installed STREQUAL public_headers)
@@ -20,6 +26,9 @@ endif()
 set(required lib/libparticlesim.a lib/libparticlesim_check.a lib/cmake/particlesim/particlesimConfig.cmake)
 if(APPS_BUILT)
   list(APPEND required bin/simcli bin/simgen bin/simcheck)
+endif()
+if(MPI_BUILT)
+  list(APPEND required lib/libparticlesim_mpi.a)
 endif()
 foreach(file IN LISTS required)
   if(NOT EXISTS "${prefix}/${file}")
@@ -51,3 +60,15 @@ endif()
 ]=])
 run_step(${CMAKE_COMMAND} -S "${WORK_DIR}/twice" -B "${WORK_DIR}/twice-build" "-DCMAKE_PREFIX_PATH=${prefix}")
 message(STATUS "found twice, with the check component")
+
+if(MPI_BUILT)
+  file(COPY "${CONSUMER_DIR}_mpi/CMakeLists.txt" "${CONSUMER_DIR}_mpi/main.cpp" DESTINATION "${WORK_DIR}/consumer_mpi")
+  run_step(${CMAKE_COMMAND} -S "${WORK_DIR}/consumer_mpi" -B "${WORK_DIR}/build_mpi" -DCMAKE_BUILD_TYPE=Release
+           "-DCMAKE_PREFIX_PATH=${prefix}")
+  run_step(${CMAKE_COMMAND} --build "${WORK_DIR}/build_mpi")
+  run_step(${MPIEXEC} -np 2 "${WORK_DIR}/build_mpi/consumer_mpi")
+  if(NOT last_output MATCHES "2 ranks: [0-9]+ particle collisions in 20 steps")
+    message(FATAL_ERROR "unexpected output of the MPI consumer:\n${last_output}")
+  endif()
+  message(STATUS "MPI consumer ran:\n${last_output}")
+endif()

@@ -30,3 +30,17 @@ foreach(mask RANGE 15)
   message(STATUS "configured: ${args}")
   file(REMOVE_RECURSE "${build_dir}")
 endforeach()
+
+# The distributed engine: with MPI it configures; without, it stops with a
+# message that names the packages.
+execute_process(COMMAND ${CMAKE_COMMAND} -S "${SOURCE_DIR}" -B "${WORK_DIR}/mpi" -DPARTICLESIM_MPI=ON
+                        -DPARTICLESIM_BUILD_TESTS=OFF -DPARTICLESIM_BUILD_BENCH=OFF -DCMAKE_BUILD_TYPE=Debug
+                RESULT_VARIABLE status OUTPUT_QUIET ERROR_VARIABLE err)
+if(status EQUAL 0)
+  message(STATUS "configured: -DPARTICLESIM_MPI=ON")
+elseif(err MATCHES "libopenmpi-dev openmpi-bin")
+  message(STATUS "without MPI, -DPARTICLESIM_MPI=ON says what to install")
+else()
+  message(FATAL_ERROR "configure failed with -DPARTICLESIM_MPI=ON, without naming the packages:\n${err}")
+endif()
+file(REMOVE_RECURSE "${WORK_DIR}/mpi")

@@ -72,8 +72,8 @@ struct Stop {
 
 // What only one process can do in a run of several ranks.
 void refuse_on_ranks(const CliOptions& options, int ranks) {
-    const std::string under = " runs on one process; under mpirun use -np 1 (this run has " + std::to_string(ranks) +
-                              " ranks)";
+    const std::string under =
+        " runs on one process; under mpirun use -np 1 (this run has " + std::to_string(ranks) + " ranks)";
     if (options.engine == EngineChoice::exact) throw BadInput("--engine exact" + under);
     if (options.animation) throw BadInput("--animate" + under);
     if (options.snapshot_path) throw BadInput("--snapshot" + under);
@@ -166,7 +166,7 @@ private:
         if (on_root()) {
             try {
                 loaded = load_scene(options_);
-                settings = {loaded.scene.world, loaded.scene.steps, loaded.scene.mode,     options_.engine,
+                settings = {loaded.scene.world, loaded.scene.steps,        loaded.scene.mode, options_.engine,
                             options_.boundary,  options_.stepped.substeps, options_.numbers};
             } catch (const BadInput& e) {
                 status = exit_bad_input;
@@ -208,8 +208,8 @@ private:
         SteppedOptions stepped = options_.stepped;
         stepped.substeps = settings.substeps;
         return engine_or_stop([&] {
-            return DistributedSimulation::restore(comm_, settings.world, on_root() ? checkpoint.engine_state.get() : nullptr,
-                                                  stepped);
+            return DistributedSimulation::restore(comm_, settings.world,
+                                                  on_root() ? checkpoint.engine_state.get() : nullptr, stepped);
         });
     }
 

@@ -5,8 +5,8 @@
 
 #include "animation.hpp"
 #include "checkpoint.hpp"
-#include "distributed_run.hpp"
 #include "cli_options.hpp"
+#include "distributed_run.hpp"
 #include "interrupts.hpp"
 #include "observables_file.hpp"
 #include "output_file.hpp"

@@ -31,10 +31,10 @@ LoadedScene load_scene(const CliOptions& options) {
     loaded.name = options.scene_path == "-" ? "<stdin>" : options.scene_path;
     try {
         loaded.scene = read_input(options.scene_path, loaded.name, loaded.lines, options.boundary);
-        loaded.particles = loaded.scene.is_random()
-                               ? particlesim::make_random_particles(loaded.scene.particle_count, loaded.scene.world,
-                                                                    options.random)
-                               : std::move(loaded.scene.particles);
+        loaded.particles =
+            loaded.scene.is_random()
+                ? particlesim::make_random_particles(loaded.scene.particle_count, loaded.scene.world, options.random)
+                : std::move(loaded.scene.particles);
     } catch (const particlesim::InputError& e) {
         throw BadInput(at_line(loaded.name, e.line()) + e.what());
     } catch (const particlesim::SceneTooFull& e) {

@@ -283,8 +283,7 @@ private:
         if (static_cast<double>(most) <= allowed_imbalance * static_cast<double>(count_) / ranks_ + 64.0) return;
         std::vector<std::uint64_t> histogram(cut_bins, 0);
         add_to_histogram(std::span(local_).first(owned_), histogram);
-        MPI_Allreduce(MPI_IN_PLACE, histogram.data(), static_cast<int>(histogram.size()), MPI_UINT64_T, MPI_SUM,
-                      comm_);
+        MPI_Allreduce(MPI_IN_PLACE, histogram.data(), static_cast<int>(histogram.size()), MPI_UINT64_T, MPI_SUM, comm_);
         strips_ = DomainStrips(balanced_cuts(histogram, world_.box_size, ranks_));
         // Any rank may now own any particle: every rank sends to every rank.
         std::vector<std::vector<Travelling>> leaving(static_cast<std::size_t>(ranks_));
@@ -352,9 +351,9 @@ private:
             thread.found.clear();
             thread.pair_tests = 0;
         }
-        const PairSearchInput input{local_, wall_time_, box_, duration,
-                                    start_.with_motion ? std::span<const BlockStart>(start_.blocks)
-                                                       : std::span<const BlockStart>()};
+        const PairSearchInput input{
+            local_, wall_time_, box_, duration,
+            start_.with_motion ? std::span<const BlockStart>(start_.blocks) : std::span<const BlockStart>()};
         if (search_ == PairSearch::brute_force) {
             find_pairs_brute_force(input, thread_candidates_);
         } else {
@@ -496,7 +495,8 @@ DistributedSimulation DistributedSimulation::restore(MPI_Comm comm, const World&
     MPI_Comm_rank(comm, &rank);
     if (rank == root) {
         try {
-            SavedStateReader in(*saved_on_root, "particlesim::DistributedSimulation::restore: the saved state is damaged");
+            SavedStateReader in(*saved_on_root,
+                                "particlesim::DistributedSimulation::restore: the saved state is damaged");
             in.expect("stepped-engine-state");
             in.expect("1");
             const std::uint64_t count = in.count(0xfffffffeU);

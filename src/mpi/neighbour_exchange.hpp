@@ -28,8 +28,9 @@ public:
 
     // Sends out[n] to neighbours[n], receives in[n] from it. With
     // `sizes_known`, in[n] already has the size the neighbour sends (both
-    // sides derived it from the same data) and no sizes are exchanged;
-    // neighbours with nothing to exchange then send no message at all.
+    // sides derived it from the same data) and no sizes are exchanged; a
+    // message of another size then throws std::logic_error (never a wait for
+    // a message that does not come: even empty messages are sent).
     template <typename T>
     void exchange(std::span<const int> neighbours, const std::vector<std::vector<T>>& out,
                   std::vector<std::vector<T>>& in, int tag, bool sizes_known = false) {
@@ -61,20 +62,26 @@ public:
         require_mpi(MPI_Type_commit(&element), "committing a type");
         requests_.clear();
         for (std::size_t n = 0; n < count; ++n) {
-            if (!in[n].empty()) {
-                requests_.emplace_back();
-                require_mpi(MPI_Irecv(in[n].data(), static_cast<int>(in[n].size()), element, neighbours[n], tag + 1,
-                                      comm_, &requests_.back()),
-                            "receiving");
-            }
-            if (!out[n].empty()) {
-                requests_.emplace_back();
-                require_mpi(MPI_Isend(out[n].data(), static_cast<int>(out[n].size()), element, neighbours[n], tag + 1,
-                                      comm_, &requests_.back()),
-                            "sending");
-            }
+            requests_.emplace_back();
+            require_mpi(MPI_Irecv(in[n].data(), static_cast<int>(in[n].size()), element, neighbours[n], tag + 1, comm_,
+                                  &requests_.back()),
+                        "receiving");
         }
-        wait_all();
+        for (std::size_t n = 0; n < count; ++n) {
+            requests_.emplace_back();
+            require_mpi(MPI_Isend(out[n].data(), static_cast<int>(out[n].size()), element, neighbours[n], tag + 1,
+                                  comm_, &requests_.back()),
+                        "sending");
+        }
+        statuses_.resize(requests_.size());
+        require_mpi(MPI_Waitall(static_cast<int>(requests_.size()), requests_.data(), statuses_.data()),
+                    "waiting for neighbours");
+        for (std::size_t n = 0; n < count; ++n) {
+            int received = 0;
+            MPI_Get_count(&statuses_[n], element, &received);
+            if (static_cast<std::size_t>(received) != in[n].size())
+                throw std::logic_error("a neighbouring rank sent a message of an unexpected size");
+        }
         MPI_Type_free(&element);
     }
 
@@ -88,6 +95,7 @@ private:
     std::vector<std::uint64_t> sizes_out_;
     std::vector<std::uint64_t> sizes_in_;
     std::vector<MPI_Request> requests_;
+    std::vector<MPI_Status> statuses_;
 };
 
 }  // namespace particlesim

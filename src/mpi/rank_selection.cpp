@@ -96,8 +96,8 @@ void RankSelection::accept(std::span<const std::vector<std::uint8_t>> claims) {
         if (!i_claims || !j_claims) continue;
         take(c.i, c.j, c.time);
         take(c.j, c.i, c.time);
-        const bool counted_here = (owned(c.i) && owned(c.j)) ||
-                                  user_index_[owned(c.i) ? c.i : c.j] < user_index_[owned(c.i) ? c.j : c.i];
+        const bool counted_here =
+            (owned(c.i) && owned(c.j)) || user_index_[owned(c.i) ? c.i : c.j] < user_index_[owned(c.i) ? c.j : c.i];
         if (counted_here) ++accepted_.particle_collisions;
     }
 }

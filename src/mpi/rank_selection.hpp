@@ -47,8 +47,9 @@ public:
     // candidate with at least one owned particle (walls only of owned
     // particles), in any order, duplicates allowed. Kept by reference until
     // the selection ends.
-    void begin(std::span<const Collision> candidates, std::uint32_t owned_count, std::span<const std::uint32_t> user_index,
-               std::span<const std::uint32_t> ghost_neighbour, std::size_t neighbours);
+    void begin(std::span<const Collision> candidates, std::uint32_t owned_count,
+               std::span<const std::uint32_t> user_index, std::span<const std::uint32_t> ghost_neighbour,
+               std::size_t neighbours);
 
     // Phase 1: each owned particle's first free candidate.
     void claim();
@@ -94,8 +95,8 @@ private:
     std::span<const Collision> candidates_;
     std::span<const std::uint32_t> user_index_;
     std::uint32_t owned_ = 0;
-    std::vector<std::uint32_t> undecided_;  // candidates still undecided, ascending
-    std::vector<std::uint32_t> earliest_;   // by owned particle: its claimed candidate
+    std::vector<std::uint32_t> undecided_;          // candidates still undecided, ascending
+    std::vector<std::uint32_t> earliest_;           // by owned particle: its claimed candidate
     std::vector<std::uint8_t> other_side_claimed_;  // by candidate
     std::vector<std::uint8_t> taken_;               // by local particle
     std::vector<std::uint32_t> partner_;

@@ -1,0 +1,198 @@
+// simcli under mpirun against simcli in one process: the same bytes on
+// stdout and in -o files, the same --stats counts, the same refusals (one
+// line, exit 2), a checkpoint written at 3 ranks continued at 5 and in one
+// process, an interrupted run that keeps whole blocks and continues, and an
+// unwritable output that stops every rank with one message.
+
+#include "check.hpp"
+#include "run_process.hpp"
+
+#include <algorithm>
+#include <csignal>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <string>
+#include <vector>
+
+namespace {
+
+const std::string simcli = SIMCLI_PATH;
+const std::string mpirun = MPIEXEC_PATH;
+const std::string examples = PARTICLESIM_EXAMPLES_DIR;
+
+std::filesystem::path work_dir() {
+    const std::filesystem::path dir = std::filesystem::temp_directory_path() / "particlesim-simcli-mpirun";
+    std::filesystem::create_directories(dir);
+    return dir;
+}
+
+std::string write_file(const std::string& name, const std::string& text) {
+    const std::string path = (work_dir() / name).string();
+    std::ofstream(path, std::ios::binary) << text;
+    return path;
+}
+
+// `simcli ARGS` on `ranks` ranks (-q: mpirun's own notices of a non-zero exit left out).
+run_process::Result on_ranks(int ranks, const std::vector<std::string>& args, run_process::Signal signal = {}) {
+    std::vector<std::string> all{"-q", "-np", std::to_string(ranks), simcli};
+    all.insert(all.end(), args.begin(), args.end());
+    return run_process::run(mpirun, all, "", "", false, signal);
+}
+
+run_process::Result one_process(const std::vector<std::string>& args) { return run_process::run(simcli, args); }
+
+long lines_starting(const std::string& text, const std::string& start) {
+    long count = 0;
+    std::istringstream in(text);
+    for (std::string line; std::getline(in, line);) count += line.rfind(start, 0) == 0 ? 1 : 0;
+    return count;
+}
+
+// The lines of `output` whose step is above `step`.
+std::string after_step(const std::string& output, long step) {
+    std::istringstream in(output);
+    std::string kept;
+    for (std::string line; std::getline(in, line);) {
+        if (std::stol(line.substr(0, line.find(' '))) > step) kept += line + "\n";
+    }
+    return kept;
+}
+
+void the_same_bytes_as_one_process() {
+    const std::vector<std::string> scenes{examples + "/newtons_cradle.in", examples + "/head_on.in",
+                                          examples + "/default.in",
+                                          write_file("random_print.in", "400\n300\n1\n40\nprint\n"),
+                                          write_file("random_perf.in", "3000\n900\n1\n60\nperf\n")};
+    for (const std::string& scene : scenes) {
+        const run_process::Result expected = one_process({scene});
+        CHECK_EQ(expected.status, 0);
+        // More ranks than this machine's two cores wait on each other at
+        // every exchange: the thousand-step scene on two only.
+        const bool long_run = scene.find("default.in") != std::string::npos;
+        for (const int ranks : long_run ? std::vector<int>{2} : std::vector<int>{2, 3}) {
+            const check::Context context(scene + " on " + std::to_string(ranks) + " ranks");
+            const run_process::Result got = on_ranks(ranks, {scene});
+            CHECK_EQ(got.status, 0);
+            CHECK(got.out == expected.out);
+            CHECK_EQ(got.err, std::string());
+        }
+    }
+    // Two threads a rank, substeps, a seed, exact numbers.
+    const std::string scene = write_file("options.in", "800\n200\n1\n25\nprint\n");
+    const std::vector<std::string> options{"-t", "2", "--substeps", "2", "--seed", "99", "--exact-numbers", scene};
+    const run_process::Result expected = one_process(options);
+    const run_process::Result got = on_ranks(2, options);
+    CHECK_EQ(got.status, 0);
+    CHECK(got.out == expected.out);
+}
+
+void output_file_and_stats() {
+    const std::string scene = write_file("stats.in", "1500\n500\n1\n30\nperf\n");
+    const std::string file = (work_dir() / "ranks.out").string();
+    std::filesystem::remove(file);
+    const run_process::Result expected = one_process({"--stats", scene});
+    const run_process::Result got = on_ranks(3, {"--stats", "-o", file, scene});
+    CHECK_EQ(got.status, 0);
+    CHECK(run_process::slurp(file) == expected.out);
+    // Nothing left beside the file (its temporary was renamed over it).
+    long beside = 0;
+    for (const auto& entry : std::filesystem::directory_iterator(work_dir())) {
+        beside += entry.path().filename().string().rfind("ranks.out", 0) == 0 ? 1 : 0;
+    }
+    CHECK_EQ(beside, 1L);
+    // The counts and the energy drift are the whole run's, as one process prints them.
+    std::istringstream lines(expected.err);
+    for (std::string line; std::getline(lines, line);) {
+        if (line.find("collisions") != std::string::npos || line.find("energy drift") != std::string::npos) {
+            CHECK(got.err.find(line) != std::string::npos);
+        }
+    }
+    CHECK(got.err.find("ranks 3") != std::string::npos);
+}
+
+void refusals_are_one_line_and_exit_two() {
+    const std::string bad = write_file("bad.in", "3\n10\n1\n5\nprint\n0 2 3 4\n");
+    const run_process::Result expected = one_process({bad});
+    CHECK_EQ(expected.status, 2);
+    for (const int ranks : {2, 3}) {
+        const run_process::Result got = on_ranks(ranks, {bad});
+        CHECK_EQ(got.status, 2);
+        CHECK_EQ(got.err, expected.err);
+        CHECK_EQ(got.out, std::string());
+    }
+    const run_process::Result option = on_ranks(3, {"--substeps", "0", bad});
+    CHECK_EQ(option.status, 2);
+    CHECK_EQ(lines_starting(option.err, "simcli: "), 1L);
+    const run_process::Result exact = on_ranks(2, {"--engine", "exact", examples + "/head_on.in"});
+    CHECK_EQ(exact.status, 2);
+    CHECK_EQ(lines_starting(exact.err, "simcli: --engine exact runs on one process"), 1L);
+    CHECK_EQ(lines_starting(exact.err, "simcli: "), 1L);
+    // One rank is simcli as without MPI: the exact engine runs.
+    const run_process::Result one_rank = on_ranks(1, {"--engine", "exact", examples + "/head_on.in"});
+    CHECK_EQ(one_rank.status, 0);
+    CHECK(one_rank.out == one_process({"--engine", "exact", examples + "/head_on.in"}).out);
+}
+
+void checkpoint_at_three_ranks_resumed_at_five() {
+    const std::string scene = write_file("resume.in", "600\n250\n1\n25\nprint\n");
+    const std::string checkpoint = (work_dir() / "resume.checkpoint").string();
+    const std::string first = (work_dir() / "first.out").string();
+    const run_process::Result expected = one_process({scene});
+    const run_process::Result run =
+        on_ranks(3, {"--checkpoint", checkpoint, "--checkpoint-every", "10", "-o", first, scene});
+    CHECK_EQ(run.status, 0);
+    CHECK(run_process::slurp(first) == expected.out);
+    // The last checkpoint is at step 20: the rest of the run from there.
+    const run_process::Result resumed = on_ranks(5, {"--resume", checkpoint});
+    CHECK_EQ(resumed.status, 0);
+    CHECK(resumed.out == after_step(expected.out, 20));
+    const run_process::Result in_one_process = one_process({"--resume", checkpoint});
+    CHECK(in_one_process.out == after_step(expected.out, 20));
+}
+
+void an_interrupted_run_keeps_whole_blocks_and_goes_on() {
+    const long particles = 1000;
+    const std::string scene = write_file("long.in", "1000\n400\n1\n1000\nprint\n");
+    const std::string checkpoint = (work_dir() / "long.checkpoint").string();
+    const std::string output = (work_dir() / "long.out").string();
+    std::filesystem::remove(checkpoint);
+    const run_process::Result got =
+        on_ranks(3, {"--checkpoint", checkpoint, "-o", output, scene}, run_process::Signal{SIGINT, 1500});
+    // mpirun answers the signal with a status of its own; the ranks stop as one process does.
+    CHECK(got.status != 0);
+    CHECK_EQ(lines_starting(got.err, "simcli: interrupted after step "), 1L);
+    CHECK_EQ(lines_starting(got.err, "simcli: "), 1L);
+    // The output ends at a whole step, and the checkpoint goes on from it.
+    const std::string first = run_process::slurp(output);
+    CHECK(!first.empty() && first.back() == '\n');
+    const std::size_t last_line = first.rfind('\n', first.size() - 2) + 1;
+    const long last_step = std::stol(first.substr(last_line, first.find(' ', last_line) - last_line));
+    CHECK(last_step > 0 && last_step < 1000);
+    CHECK_EQ(static_cast<long>(std::count(first.begin(), first.end(), '\n')), (last_step + 1) * particles);
+    // Continued at two ranks: the two parts are one process's run.
+    const run_process::Result rest = on_ranks(2, {"--resume", checkpoint});
+    CHECK_EQ(rest.status, 0);
+    CHECK(first + rest.out == one_process({scene}).out);
+}
+
+void an_unwritable_output_stops_every_rank() {
+    const std::string scene = write_file("full.in", "500\n200\n1\n20\nprint\n");
+    const run_process::Result expected = one_process({"-o", "/dev/full", scene});
+    const run_process::Result got = on_ranks(3, {"-o", "/dev/full", scene});
+    CHECK_EQ(expected.status, 1);
+    CHECK_EQ(got.status, 1);
+    CHECK_EQ(got.err, expected.err);
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+    return check::run(argc, argv, "test_simcli_mpirun",
+                      {{"the same bytes as one process", the_same_bytes_as_one_process},
+                       {"an output file and the stats", output_file_and_stats},
+                       {"refusals are one line and exit 2", refusals_are_one_line_and_exit_two},
+                       {"a checkpoint at 3 ranks resumed at 5", checkpoint_at_three_ranks_resumed_at_five},
+                       {"an interrupted run keeps whole blocks", an_interrupted_run_keeps_whole_blocks_and_goes_on},
+                       {"an unwritable output stops every rank", an_unwritable_output_stops_every_rank}});
+}
