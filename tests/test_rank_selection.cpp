@@ -29,6 +29,7 @@ struct RankView {
     std::vector<std::uint32_t> ghost_neighbour;
     std::vector<Collision> candidates;  // local indices
     RankSelection selection;
+    std::vector<double> collision_time;
 };
 
 struct Outcome {
@@ -162,7 +163,9 @@ bool distributed_matches_greedy(SplitMix64& rng, std::uint32_t particles, int ca
     // Neighbours are mutual only where both sides share a candidate; a rank
     // whose ghosts come from q is q's neighbour too (q holds that candidate).
     for (RankView& view : ranks) {
-        view.selection.begin(view.candidates, view.owned, view.user, view.ghost_neighbour, view.neighbours.size());
+        view.collision_time.assign(view.user.size(), 0.0);
+        view.selection.begin(view.candidates, view.owned, view.user, view.ghost_neighbour, view.neighbours.size(),
+                             view.collision_time);
     }
     if (!run_rounds(ranks, rounds)) return false;
 
@@ -234,7 +237,9 @@ void a_chain_across_every_rank() {
             }
         }
         for (RankView& view : ranks) {
-            view.selection.begin(view.candidates, view.owned, view.user, view.ghost_neighbour, view.neighbours.size());
+            view.collision_time.assign(view.user.size(), 0.0);
+        view.selection.begin(view.candidates, view.owned, view.user, view.ghost_neighbour, view.neighbours.size(),
+                             view.collision_time);
         }
         int rounds = 0;
         CHECK(run_rounds(ranks, rounds));

@@ -13,6 +13,9 @@
 #include "particlesim/state_writer.hpp"
 
 #include <mpi.h>
+#ifdef __GLIBC__
+#include <malloc.h>
+#endif
 
 #include <chrono>
 #include <cstdio>
@@ -396,6 +399,13 @@ bool started_by_mpi_launcher() {
 }
 
 int run_under_mpi(int argc, char** argv, int (*one_process)(int, char**)) {
+#ifdef __GLIBC__
+    // Buffers of a megabyte or more are mapped on their own and returned
+    // whole when freed: without this, glibc's threshold rises after rank 0
+    // frees the scene it read, and the run's buffers then come from a heap
+    // that keeps every page it ever touched (docs/distributed.md, "Memory").
+    mallopt(M_MMAP_THRESHOLD, 1 << 20);
+#endif
     int provided = 0;
     if (MPI_Init_thread(&argc, &argv, MPI_THREAD_FUNNELED, &provided) != MPI_SUCCESS) {
         std::fprintf(stderr, "simcli: MPI could not start\n");

@@ -26,6 +26,19 @@
 
 namespace particlesim {
 
+// What one rank's exchanges have cost since the engine was made: the
+// inputs of the scaling model in docs/distributed.md.
+struct ExchangeCounts {
+    std::uint64_t micro_steps = 0;
+    std::uint64_t selection_rounds = 0;   // summed over the micro-steps
+    std::uint64_t ghosts_received = 0;    // copies of neighbours' particles
+    std::uint64_t migrants_received = 0;  // particles that changed strips
+    std::uint64_t messages_sent = 0;      // point to point, sizes included
+    std::uint64_t bytes_sent = 0;
+    std::uint64_t collectives = 0;     // all-reductions, of a few numbers each
+    double seconds_exchanging = 0.0;   // in those messages and collectives, waiting included
+};
+
 class DistributedSimulation {
 public:
     // The scene's particles come on rank 0 (the others pass none) and are
@@ -73,6 +86,7 @@ public:
     [[nodiscard]] std::size_t owned_count() const;
     // The most particles (owned and ghosts) this rank has held in a step.
     [[nodiscard]] std::size_t peak_local_count() const;
+    [[nodiscard]] const ExchangeCounts& exchange_counts() const;
 
 private:
     class Implementation;

@@ -15,6 +15,10 @@
 #include "stepped/stepped_tuning.hpp"
 
 #include <algorithm>
+#ifdef __GLIBC__
+#include <malloc.h>
+#endif
+#include <chrono>
 #include <cmath>
 #include <numeric>
 #include <sstream>
@@ -57,6 +61,10 @@ constexpr std::size_t cut_bins = 16384;
 // Steps between checks of the balance, and the excess over the mean count
 // that moves the cuts.
 constexpr std::int64_t balance_every = 16;
+// Steps between sorts of a rank's particles by position. Sparser than the
+// one-process engine's 8: a rank sorts in place along the permutation's
+// cycles (no second copy of its particles), which costs more per sort.
+constexpr int sort_every_steps = 32;
 constexpr double allowed_imbalance = 1.1;
 
 // How far apart two centres can be and still meet within `duration`: both
@@ -93,7 +101,7 @@ public:
         require_mpi(MPI_Comm_dup(comm, &comm_), "duplicating the communicator");
         MPI_Comm_rank(comm_, &rank_);
         MPI_Comm_size(comm_, &ranks_);
-        exchange_ = NeighbourExchange(comm_);
+        exchange_ = NeighbourExchange(comm_, &counts_);
         threads_ = options_.threads.value_or(default_thread_count());
         search_ = options_.pair_search == PairSearch::brute_force ? PairSearch::brute_force : PairSearch::grid;
         strips_ = DomainStrips(std::vector<double>(static_cast<std::size_t>(ranks_ - 1), 0.0));
@@ -133,6 +141,14 @@ public:
         const std::size_t part = std::size_t{1} << 16;
         const BytesType<Travelling> travelling;
         std::vector<int> counts(static_cast<std::size_t>(ranks_)), displacements(counts.size());
+        // Each rank's share first, so that it takes its room once.
+        std::vector<std::uint64_t> shares(counts.size(), 0);
+        if (rank_ == root) {
+            for (const Particle& p : particles) ++shares[static_cast<std::size_t>(owner(p))];
+        }
+        std::uint64_t share = 0;
+        MPI_Scatter(shares.data(), 1, MPI_UINT64_T, &share, 1, MPI_UINT64_T, root, comm_);
+        make_room(share);
         std::vector<Travelling> sorted;
         for (std::uint64_t first = 0; first < count_; first += part) {
             const std::uint64_t last = std::min<std::uint64_t>(count_, first + part);
@@ -154,7 +170,12 @@ public:
                         "handing out the particles");
             for (const Travelling& t : incoming_) adopt(t);
         }
+        incoming_ = {};
+        sorted = {};
         particles = {};
+#ifdef __GLIBC__
+        malloc_trim(0);  // rank 0's copy of the scene is gone: its pages go back before the run
+#endif
         sort_by_position();
     }
 
@@ -162,12 +183,15 @@ public:
         last_step_ = {};
         if (steps_done_ > 0 && steps_done_ % balance_every == 0) balance();
         const int sort_every = options_.sort_by_position_every.value_or(
-            count_ >= stepped_tuning::sort_by_position_from ? stepped_tuning::sort_every_steps : 0);
-        if (sort_every > 0 && steps_done_ % sort_every == 0) sort_by_position();
+            count_ >= stepped_tuning::sort_by_position_from ? sort_every_steps : 0);
+        if (sort_every > 0 && ++steps_since_sort_ >= sort_every) {
+            sort_by_position();
+            steps_since_sort_ = 0;
+        }
         const double duration = 1.0 / options_.substeps;
         for (int micro = 0; micro < options_.substeps; ++micro) micro_step(duration);
         std::uint64_t sums[3] = {last_step_.particle_collisions, last_step_.wall_collisions, last_step_.pair_tests};
-        MPI_Allreduce(MPI_IN_PLACE, sums, 3, MPI_UINT64_T, MPI_SUM, comm_);
+        all_reduce(sums, 3, MPI_UINT64_T, MPI_SUM);
         last_step_ = {sums[0], sums[1], sums[2]};
         totals_ += last_step_;
         ++steps_done_;
@@ -220,9 +244,18 @@ public:
     MPI_Comm comm() const { return comm_; }
     std::size_t owned_count() const { return owned_; }
     std::size_t peak_local_count() const { return peak_local_; }
+    const ExchangeCounts& exchange_counts() const { return counts_; }
 
 private:
     int owner(const Particle& p) const { return strips_.owner_of(p.position.x()); }
+
+    // An all-reduction of the step (counted and timed for the scaling model).
+    void all_reduce(void* values, int count, MPI_Datatype type, MPI_Op op) {
+        const auto start = std::chrono::steady_clock::now();
+        require_mpi(MPI_Allreduce(MPI_IN_PLACE, values, count, type, op, comm_), "an all-reduction");
+        ++counts_.collectives;
+        counts_.seconds_exchanging += std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    }
 
     void add_to_histogram(std::span<const Particle> particles, std::vector<std::uint64_t>& histogram) const {
         const UniformGrid bins(world_.box_size, static_cast<int>(histogram.size()));
@@ -253,27 +286,50 @@ private:
         ++owned_;
     }
 
-    // Owned particles in row-major cell order, for locality (as the one-process
-    // engine's storage order): a counting sort by cell.
+    // Room for `needed` particles, with a little more for the ghosts and
+    // migrants to come: taken rarely, rather than doubled on the way (a
+    // doubling holds two copies of every particle for a moment).
+    void make_room(std::size_t needed) {
+        if (local_.capacity() >= needed && user_.capacity() >= needed) return;
+        const std::size_t wanted = needed + needed / 64 + 1024;
+        local_.reserve(wanted);
+        user_.reserve(wanted);
+    }
+
+    // Owned particles in row-major cell order over the extent they cover,
+    // for locality (as the one-process engine's storage order): a counting
+    // sort by cell, applied in place along the permutation's cycles.
     void sort_by_position() {
         if (owned_ < 2) return;
         local_.resize(owned_);
         user_.resize(owned_);
-        const UniformGrid grid(world_.box_size,
-                               UniformGrid::cells_per_side(world_.box_size, 4.0 * world_.radius,
-                                                           std::sqrt(static_cast<double>(count_)) + 1.0));
-        std::vector<std::uint32_t> start(grid.cell_count() + 1, 0);
-        for (const Particle& p : local_) ++start[grid.cell_of(p.position) + 1];
-        std::partial_sum(start.begin(), start.end(), start.begin());
-        std::vector<Particle> particles(owned_);
-        std::vector<std::uint32_t> users(owned_);
-        for (std::size_t k = 0; k < owned_; ++k) {
-            const std::uint32_t at = start[grid.cell_of(local_[k].position)]++;
-            particles[at] = local_[k];
-            users[at] = user_[k];
+        double low = local_[0].position.x(), high = low;
+        for (const Particle& p : local_) {
+            low = std::min(low, p.position.x());
+            high = std::max(high, p.position.x());
         }
-        local_.swap(particles);
-        user_.swap(users);
+        const double width = high - low, height = world_.box_size;
+        const double cell = std::max(4.0 * world_.radius, std::sqrt(width * height / static_cast<double>(owned_)));
+        const auto columns = static_cast<std::uint32_t>(std::min(width / cell + 1.0, 65536.0));
+        const auto rows = static_cast<std::uint32_t>(std::min(height / cell + 1.0, 65536.0));
+        const auto cell_of = [&](const Particle& p) {
+            const auto column = std::min(columns - 1, static_cast<std::uint32_t>((p.position.x() - low) / cell));
+            const auto row = std::min(rows - 1, static_cast<std::uint32_t>(std::max(0.0, p.position.y()) / cell));
+            return static_cast<std::size_t>(row) * columns + column;
+        };
+        cell_start_.assign(static_cast<std::size_t>(columns) * rows + 1, 0);
+        for (const Particle& p : local_) ++cell_start_[cell_of(p) + 1];
+        std::partial_sum(cell_start_.begin(), cell_start_.end(), cell_start_.begin());
+        destination_.resize(owned_);
+        for (std::size_t k = 0; k < owned_; ++k) destination_[k] = cell_start_[cell_of(local_[k])]++;
+        for (std::uint32_t k = 0; k < owned_; ++k) {
+            while (destination_[k] != k) {
+                const std::uint32_t to = destination_[k];
+                std::swap(local_[k], local_[to]);
+                std::swap(user_[k], user_[to]);
+                std::swap(destination_[k], destination_[to]);
+            }
+        }
     }
 
     // Moves the cuts when one strip holds too many more than the mean.
@@ -303,6 +359,7 @@ private:
                     "moving particles to the new strips");
         for (const Travelling& t : incoming_) adopt(t);
         sort_by_position();
+        steps_since_sort_ = 0;
     }
 
     // Keeps the owned particles still in this rank's strip, in order, and
@@ -310,7 +367,9 @@ private:
     template <typename Send>
     void keep_owned_or_send(Send&& send) {
         std::size_t kept = 0;
-        for (std::size_t k = 0; k < owned_; ++k) {
+        // Most particles stay: nothing moves up to the first that leaves.
+        while (kept < owned_ && owner(local_[kept]) == rank_) ++kept;
+        for (std::size_t k = kept; k < owned_; ++k) {
             const int to = owner(local_[k]);
             if (to == rank_) {
                 local_[kept] = local_[k];
@@ -327,9 +386,13 @@ private:
 
     void micro_step(double duration) {
         // The halo: as wide as this micro-step's fastest particle makes it.
-        double max_speed = 0.0;
-        for (std::size_t k = 0; k < owned_; ++k) max_speed = std::max(max_speed, local_[k].velocity.norm());
-        MPI_Allreduce(MPI_IN_PLACE, &max_speed, 1, MPI_DOUBLE, MPI_MAX, comm_);
+        double max_speed_squared = 0.0;
+        for (std::size_t k = 0; k < owned_; ++k) {
+            max_speed_squared = std::max(max_speed_squared, local_[k].velocity.squaredNorm());
+        }
+        all_reduce(&max_speed_squared, 1, MPI_DOUBLE, MPI_MAX);
+        const double max_speed = std::sqrt(max_speed_squared);
+        ++counts_.micro_steps;
         const double reach = halo_reach(world_, max_speed, duration);
         neighbours_ = strips_.neighbours_of(rank_, reach);
         const std::size_t near = neighbours_.size();
@@ -367,7 +430,9 @@ private:
         }
 
         // Select, in rounds with the neighbours.
-        selection_.begin(candidates_, static_cast<std::uint32_t>(owned_), user_, ghost_neighbour_, near);
+        // wall_time_ holds each particle's first wall time up to here, then
+        // the time of its accepted collision (as in the one-process engine).
+        selection_.begin(candidates_, static_cast<std::uint32_t>(owned_), user_, ghost_neighbour_, near, wall_time_);
         outgoing_bytes_.resize(near);
         incoming_bytes_.resize(near);
         for (;;) {
@@ -381,7 +446,8 @@ private:
             for (std::size_t n = 0; n < near; ++n) selection_.write_taken(n, outgoing_bytes_[n]);
             exchange_.exchange(std::span<const int>(neighbours_), outgoing_bytes_, incoming_bytes_, tag_taken, true);
             std::uint64_t undecided = selection_.end_round(incoming_bytes_);
-            MPI_Allreduce(MPI_IN_PLACE, &undecided, 1, MPI_UINT64_T, MPI_SUM, comm_);
+            all_reduce(&undecided, 1, MPI_UINT64_T, MPI_SUM);
+            ++counts_.selection_rounds;
             if (undecided == 0) break;
         }
         last_step_.particle_collisions += selection_.accepted().particle_collisions;
@@ -389,9 +455,9 @@ private:
 
         // Resolve (a shared pair on both its ranks, each keeping its own
         // particle) and advance; the ghosts are then dropped.
-        partner_.assign(selection_.partner().begin(), selection_.partner().end());
-        resolve_collisions(local_, partner_, selection_.collision_time(), box_, duration, threads_);
-        advance_free_particles(std::span(local_).first(owned_), std::span(partner_).first(owned_), box_, duration,
+        const std::span<std::uint32_t> partner = selection_.partner();
+        resolve_collisions(local_, partner, wall_time_, box_, duration, threads_);
+        advance_free_particles(std::span(local_).first(owned_), partner.first(owned_), box_, duration,
                                std::span(wall_time_).first(owned_), next_start_, threads_);
         local_.resize(owned_);
         user_.resize(owned_);
@@ -403,14 +469,23 @@ private:
         const std::size_t near = neighbours_.size();
         outgoing_.resize(near);
         for (std::vector<Travelling>& list : outgoing_) list.clear();
+        // Only particles within the reach of the strip's edges can be near
+        // another strip (the test below, from this rank's strip, is implied
+        // by the one against each neighbour).
+        const double lower = strips_.lower(rank_), upper = strips_.upper(rank_);
         for (std::size_t k = 0; k < owned_; ++k) {
             const double x = local_[k].position.x();
+            if (x - lower > reach && upper - x > reach) continue;
             for (std::size_t n = 0; n < near; ++n) {
                 if (strips_.near(x, neighbours_[n], reach)) outgoing_[n].emplace_back(local_[k], user_[k]);
             }
         }
         exchange_.exchange(std::span<const int>(neighbours_), outgoing_, incoming_lists_, tag_ghosts);
+        std::size_t ghosts = 0;
+        for (const std::vector<Travelling>& list : incoming_lists_) ghosts += list.size();
+        make_room(owned_ + ghosts);
         ghost_neighbour_.clear();
+        for (const std::vector<Travelling>& list : incoming_lists_) counts_.ghosts_received += list.size();
         for (std::size_t n = 0; n < near; ++n) {
             for (const Travelling& t : incoming_lists_[n]) {
                 local_.push_back(t.particle());
@@ -432,7 +507,11 @@ private:
         });
         outgoing_.resize(near);
         exchange_.exchange(std::span<const int>(neighbours_), outgoing_, incoming_lists_, tag_migrants);
+        std::size_t arriving = 0;
+        for (const std::vector<Travelling>& list : incoming_lists_) arriving += list.size();
+        make_room(owned_ + arriving);
         for (const std::vector<Travelling>& list : incoming_lists_) {
+            counts_.migrants_received += list.size();
             for (const Travelling& t : list) adopt(t);
         }
     }
@@ -456,6 +535,7 @@ private:
     std::vector<std::uint32_t> ghost_neighbour_;  // by ghost: its owner's place in neighbours_
     std::vector<int> neighbours_;
     std::size_t peak_local_ = 0;
+    int steps_since_sort_ = 0;  // sorted when handed out or balanced, then every sort_every steps
 
     std::vector<double> wall_time_;
     StepStart start_;
@@ -464,7 +544,8 @@ private:
     std::vector<ThreadCandidates> thread_candidates_;
     GridSearch grid_;
     RankSelection selection_;
-    std::vector<std::uint32_t> partner_;
+    std::vector<std::uint32_t> cell_start_;   // the sort by position's, reused
+    std::vector<std::uint32_t> destination_;  // likewise
     std::vector<std::vector<Travelling>> outgoing_;
     std::vector<std::vector<Travelling>> incoming_lists_;
     std::vector<Travelling> incoming_;
@@ -474,6 +555,7 @@ private:
     std::int64_t steps_done_ = 0;
     StepCounts last_step_;
     StepCounts totals_;
+    ExchangeCounts counts_;
 };
 
 DistributedSimulation::DistributedSimulation(MPI_Comm comm, const World& world, std::vector<Particle> particles_on_root,
@@ -557,5 +639,6 @@ int DistributedSimulation::rank() const { return engine_->rank(); }
 int DistributedSimulation::ranks() const { return engine_->ranks(); }
 std::size_t DistributedSimulation::owned_count() const { return engine_->owned_count(); }
 std::size_t DistributedSimulation::peak_local_count() const { return engine_->peak_local_count(); }
+const ExchangeCounts& DistributedSimulation::exchange_counts() const { return engine_->exchange_counts(); }
 
 }  // namespace particlesim

@@ -5,8 +5,11 @@
 // trivially copyable and sent as bytes of one contiguous type, so counts
 // stay elements (int) whatever the element's size.
 
+#include "particlesim/distributed_simulation.hpp"
+
 #include <mpi.h>
 
+#include <chrono>
 #include <cstdint>
 #include <span>
 #include <stdexcept>
@@ -24,7 +27,8 @@ inline void require_mpi(int result, const char* what) {
 class NeighbourExchange {
 public:
     NeighbourExchange() = default;
-    explicit NeighbourExchange(MPI_Comm comm) : comm_(comm) {}
+    // Counts every message sent, and the time spent, in `counts`.
+    NeighbourExchange(MPI_Comm comm, ExchangeCounts* counts) : comm_(comm), counts_(counts) {}
 
     // Sends out[n] to neighbours[n], receives in[n] from it. With
     // `sizes_known`, in[n] already has the size the neighbour sends (both
@@ -35,6 +39,7 @@ public:
     void exchange(std::span<const int> neighbours, const std::vector<std::vector<T>>& out,
                   std::vector<std::vector<T>>& in, int tag, bool sizes_known = false) {
         static_assert(std::is_trivially_copyable_v<T>);
+        const auto start = std::chrono::steady_clock::now();
         const std::size_t count = neighbours.size();
         in.resize(count);
         if (!sizes_known) {
@@ -51,6 +56,8 @@ public:
                             "sending a message size");
             }
             wait_all();
+            counts_->messages_sent += count;
+            counts_->bytes_sent += count * sizeof(std::uint64_t);
             for (std::size_t n = 0; n < count; ++n) {
                 if (sizes_in_[n] > static_cast<std::uint64_t>(INT32_MAX))
                     throw std::runtime_error("MPI: a message of over 2^31 elements");
@@ -81,8 +88,11 @@ public:
             MPI_Get_count(&statuses_[n], element, &received);
             if (static_cast<std::size_t>(received) != in[n].size())
                 throw std::logic_error("a neighbouring rank sent a message of an unexpected size");
+            counts_->bytes_sent += out[n].size() * sizeof(T);
         }
+        counts_->messages_sent += count;
         MPI_Type_free(&element);
+        counts_->seconds_exchanging += std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     }
 
 private:
@@ -92,6 +102,7 @@ private:
     }
 
     MPI_Comm comm_ = MPI_COMM_NULL;
+    ExchangeCounts* counts_ = nullptr;
     std::vector<std::uint64_t> sizes_out_;
     std::vector<std::uint64_t> sizes_in_;
     std::vector<MPI_Request> requests_;

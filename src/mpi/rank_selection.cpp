@@ -9,18 +9,24 @@ namespace particlesim {
 
 void RankSelection::begin(std::span<const Collision> candidates, std::uint32_t owned_count,
                           std::span<const std::uint32_t> user_index, std::span<const std::uint32_t> ghost_neighbour,
-                          std::size_t neighbours) {
+                          std::size_t neighbours, std::span<double> collision_time) {
     candidates_ = candidates;
     user_index_ = user_index;
     owned_ = owned_count;
     const std::size_t local = user_index.size();
+    // Counts grow a little from step to step: room for more at once, rather
+    // than a move at every step.
+    if (taken_.capacity() < local) {
+        for (auto* by_particle : {&earliest_, &partner_}) by_particle->reserve(local + local / 64);
+        taken_.reserve(local + local / 64);
+    }
     undecided_.resize(candidates.size());
     for (std::uint32_t k = 0; k < candidates.size(); ++k) undecided_[k] = k;
     earliest_.assign(owned_count, no_collision);
     other_side_claimed_.assign(candidates.size(), 0);
     taken_.assign(local, 0);
     partner_.assign(local, no_collision);
-    collision_time_.assign(local, 0.0);
+    collision_time_ = collision_time;
     accepted_ = {};
     shared_.resize(neighbours);
     for (std::vector<Shared>& list : shared_) list.clear();

@@ -47,9 +47,11 @@ public:
     // candidate with at least one owned particle (walls only of owned
     // particles), in any order, duplicates allowed. Kept by reference until
     // the selection ends.
+    // The accepted collisions' times go to `collision_time` (by local
+    // particle, written only where one is accepted).
     void begin(std::span<const Collision> candidates, std::uint32_t owned_count,
                std::span<const std::uint32_t> user_index, std::span<const std::uint32_t> ghost_neighbour,
-               std::size_t neighbours);
+               std::size_t neighbours, std::span<double> collision_time);
 
     // Phase 1: each owned particle's first free candidate.
     void claim();
@@ -68,9 +70,11 @@ public:
 
     // After the rounds, by local particle: its partner's local index,
     // no_collision or wall_collision (a ghost's partner is set only when it
-    // collides with an owned particle), and the accepted collision's time.
+    // collides with an owned particle).
+    // The caller may change the partners (the free flight sets them back).
+    [[nodiscard]] std::span<std::uint32_t> partner() { return partner_; }
     [[nodiscard]] std::span<const std::uint32_t> partner() const { return partner_; }
-    [[nodiscard]] std::span<const double> collision_time() const { return collision_time_; }
+
     // The collisions accepted on this rank: walls of its particles, and each
     // pair once over all ranks (a shared pair on the rank of its lower user index).
     [[nodiscard]] const StepCounts& accepted() const { return accepted_; }
@@ -100,7 +104,7 @@ private:
     std::vector<std::uint8_t> other_side_claimed_;  // by candidate
     std::vector<std::uint8_t> taken_;               // by local particle
     std::vector<std::uint32_t> partner_;
-    std::vector<double> collision_time_;
+    std::span<double> collision_time_;
     std::vector<std::vector<Shared>> shared_;  // by neighbour
     StepCounts accepted_;
 };

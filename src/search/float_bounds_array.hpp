@@ -60,6 +60,9 @@ public:
     void resize(std::size_t count) {
         for (std::vector<float>& bound : bounds_) bound.resize(count + max_block_groups * wide_lanes, 0.0f);
     }
+    void reserve(std::size_t count) {
+        for (std::vector<float>& bound : bounds_) bound.reserve(count + max_block_groups * wide_lanes);
+    }
 
     void set(std::uint32_t at, const FloatBounds& box) {
         bounds_[min_x][at] = box.min_x;

@@ -148,10 +148,12 @@ GridLayout GridSearch::choose_layout(const PairSearchInput& in, std::optional<in
         // Cells at least a particle spacing wide and twice a typical slice
         // path, so that most swept boxes fit their cell; at most ~4 cells per
         // particle, so that memory stays O(N).
-        const double spacing = box_size / std::sqrt(static_cast<double>(std::max<std::int64_t>(present, 1)));
+        const double area = in.area > 0.0 ? in.area : box_size * box_size;
+        const double spacing = std::sqrt(area / static_cast<double>(std::max<std::int64_t>(present, 1)));
         layout.slices = slices_for(slice_sweep_in_spacings * spacing);
         const double wanted = std::max(spacing, diameter + 2.0 * mean_sweep / layout.slices);
-        const double max_side = std::floor(std::sqrt(4.0 * static_cast<double>(present))) + 1.0;
+        const double max_side =
+            std::floor(std::sqrt(4.0 * static_cast<double>(present) * (box_size * box_size / area))) + 1.0;
         layout.grid = UniformGrid(box_size, UniformGrid::cells_per_side(box_size, wanted, max_side));
     }
     return layout;
@@ -189,6 +191,15 @@ void GridSearch::prepare(SliceWorkspace& ws, std::size_t count, int workers) con
     const std::size_t cells = layout_.grid.cell_count();
     // Room for every particle's box, plus pieces of a few fast paths.
     const std::size_t boxes = count + count / 4 + 64;
+    // A count that grows a little from step to step (a rank's particles and
+    // ghosts) takes a little more at once: a vector grown by resize alone
+    // would double, or move at every step.
+    if (ws.cell_of.capacity() < count) {
+        ws.cell_of.reserve(count + count / 64);
+        ws.by_cell.reserve(boxes + boxes / 64);
+        ws.boxes_by_cell.reserve(boxes + boxes / 64);
+        ws.states_by_cell.reserve(boxes + boxes / 64);
+    }
     ws.cell_of.resize(count);
     ws.by_cell.resize(boxes);
     ws.boxes_by_cell.resize(boxes);

@@ -26,6 +26,10 @@ struct PairSearchInput {
     // The blocks' motion, when measured already (step_start.hpp); empty:
     // a search that needs it measures it.
     std::span<const BlockStart> blocks = {};
+    // The area the particles spread over, when it is a part of the box (a
+    // rank's strip); 0: the whole box. The grid sizes its cells by the
+    // particles' spacing in it.
+    double area = 0.0;
 };
 
 // Candidates found by one thread, on a cache line of its own.
