@@ -71,7 +71,10 @@ int gas(std::size_t count, int steps, bool distributed) {
     if (ranks == 1 && !distributed) {
         if (std::getenv("BENCH_MEMORY")) std::fprintf(stderr, "after placing: %.1f MB\n", peak_megabytes());
         SteppedSimulation engine(world, std::move(particles), options);
-        if (std::getenv("BENCH_MEMORY")) { engine.step(); std::fprintf(stderr, "after a step: %.1f MB\n", peak_megabytes()); }
+        if (std::getenv("BENCH_MEMORY")) {
+            engine.step();
+            std::fprintf(stderr, "after a step: %.1f MB\n", peak_megabytes());
+        }
         const double start = now();
         for (int step = 0; step < steps; ++step) engine.step();
         const double seconds = now() - start;

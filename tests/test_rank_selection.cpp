@@ -238,8 +238,8 @@ void a_chain_across_every_rank() {
         }
         for (RankView& view : ranks) {
             view.collision_time.assign(view.user.size(), 0.0);
-        view.selection.begin(view.candidates, view.owned, view.user, view.ghost_neighbour, view.neighbours.size(),
-                             view.collision_time);
+            view.selection.begin(view.candidates, view.owned, view.user, view.ghost_neighbour, view.neighbours.size(),
+                                 view.collision_time);
         }
         int rounds = 0;
         CHECK(run_rounds(ranks, rounds));

@@ -1,6 +1,7 @@
 #include "particlesim/distributed_simulation.hpp"
 #include "particlesim/saved_state.hpp"
 
+#include "core/assert.hpp"
 #include "core/box.hpp"
 #include "core/collision.hpp"
 #include "core/uniform_grid.hpp"
@@ -284,6 +285,21 @@ private:
         local_.push_back(t.particle());
         user_.push_back(static_cast<std::uint32_t>(t.user_index));
         ++owned_;
+        if (carried_.current) carry(local_.back());
+    }
+
+    // What the free flight measured of the owned particles for the next
+    // micro-step, kept through migration: their first wall times (in
+    // wall_time_) and their largest speed, so that neither costs another
+    // pass. Anything that changes the owned particles otherwise clears it.
+    void carry(const Particle& p) {
+        wall_time_.resize(owned_ - 1);
+        wall_time_.push_back(first_wall_time(p));
+        carried_.max_speed_squared = std::max(carried_.max_speed_squared, p.velocity.squaredNorm());
+    }
+    [[nodiscard]] double first_wall_time(const Particle& p) const {
+        BlockStart unused;
+        return unused.measure<false>(p, box_, 1.0 / options_.substeps);
     }
 
     // Room for `needed` particles, with a little more for the ghosts and
@@ -300,6 +316,7 @@ private:
     // for locality (as the one-process engine's storage order): a counting
     // sort by cell, applied in place along the permutation's cycles.
     void sort_by_position() {
+        carried_.current = false;
         if (owned_ < 2) return;
         local_.resize(owned_);
         user_.resize(owned_);
@@ -337,6 +354,7 @@ private:
         std::uint64_t most = owned_;
         MPI_Allreduce(MPI_IN_PLACE, &most, 1, MPI_UINT64_T, MPI_MAX, comm_);
         if (static_cast<double>(most) <= allowed_imbalance * static_cast<double>(count_) / ranks_ + 64.0) return;
+        carried_.current = false;
         std::vector<std::uint64_t> histogram(cut_bins, 0);
         add_to_histogram(std::span(local_).first(owned_), histogram);
         MPI_Allreduce(MPI_IN_PLACE, histogram.data(), static_cast<int>(histogram.size()), MPI_UINT64_T, MPI_SUM, comm_);
@@ -367,13 +385,20 @@ private:
     template <typename Send>
     void keep_owned_or_send(Send&& send) {
         std::size_t kept = 0;
+        const bool carry_times = carried_.current;
+        double max_speed_squared = 0.0;
         // Most particles stay: nothing moves up to the first that leaves.
-        while (kept < owned_ && owner(local_[kept]) == rank_) ++kept;
+        while (kept < owned_ && owner(local_[kept]) == rank_) {
+            max_speed_squared = std::max(max_speed_squared, local_[kept].velocity.squaredNorm());
+            ++kept;
+        }
         for (std::size_t k = kept; k < owned_; ++k) {
             const int to = owner(local_[k]);
             if (to == rank_) {
+                max_speed_squared = std::max(max_speed_squared, local_[k].velocity.squaredNorm());
                 local_[kept] = local_[k];
                 user_[kept] = user_[k];
+                if (carry_times) wall_time_[kept] = wall_time_[k];
                 ++kept;
             } else {
                 send(to, Travelling{local_[k], user_[k]});
@@ -382,13 +407,18 @@ private:
         owned_ = kept;
         local_.resize(owned_);
         user_.resize(owned_);
+        if (carry_times) wall_time_.resize(owned_);
+        carried_.max_speed_squared = max_speed_squared;
     }
 
     void micro_step(double duration) {
         // The halo: as wide as this micro-step's fastest particle makes it.
-        double max_speed_squared = 0.0;
-        for (std::size_t k = 0; k < owned_; ++k) {
-            max_speed_squared = std::max(max_speed_squared, local_[k].velocity.squaredNorm());
+        double max_speed_squared = carried_.max_speed_squared;
+        if (!carried_.current) {
+            max_speed_squared = 0.0;
+            for (std::size_t k = 0; k < owned_; ++k) {
+                max_speed_squared = std::max(max_speed_squared, local_[k].velocity.squaredNorm());
+            }
         }
         all_reduce(&max_speed_squared, 1, MPI_DOUBLE, MPI_MAX);
         const double max_speed = std::sqrt(max_speed_squared);
@@ -402,9 +432,21 @@ private:
         peak_local_ = std::max(peak_local_, local);
 
         // Detect: the owned particles' walls, the pairs with an owned particle.
-        wall_time_.resize(local);
-        start_.with_motion = search_ == PairSearch::grid;
-        measure_step_start(local_, box_, duration, wall_time_, start_, threads_);
+        // The wall times: carried from the last free flight (the ghosts'
+        // measured as they came), or measured afresh.
+        const bool carried = carried_.current;
+        if (!carried) {
+            wall_time_.resize(local);
+            start_.with_motion = search_ == PairSearch::grid;
+            measure_step_start(local_, box_, duration, wall_time_, start_, threads_);
+        }
+        PARTICLESIM_ASSERT(wall_time_.size() == local, "every local particle has its first wall time");
+        if constexpr (validating) {
+            for (std::size_t k = 0; k < local; ++k) {
+                PARTICLESIM_ASSERT(wall_time_[k] == first_wall_time(local_[k]),
+                                   "the carried wall times are those of the particles as they are");
+            }
+        }
         candidates_.clear();
         for (std::uint32_t k = 0; k < owned_; ++k) {
             if (wall_time_[k] <= duration) candidates_.push_back(Collision::wall(wall_time_[k], k));
@@ -414,9 +456,9 @@ private:
             thread.found.clear();
             thread.pair_tests = 0;
         }
-        const PairSearchInput input{
-            local_, wall_time_, box_, duration,
-            start_.with_motion ? std::span<const BlockStart>(start_.blocks) : std::span<const BlockStart>()};
+        const PairSearchInput input{local_, wall_time_, box_, duration,
+                                    !carried && start_.with_motion ? std::span<const BlockStart>(start_.blocks)
+                                                                   : std::span<const BlockStart>()};
         if (search_ == PairSearch::brute_force) {
             find_pairs_brute_force(input, thread_candidates_);
         } else {
@@ -461,6 +503,8 @@ private:
                                std::span(wall_time_).first(owned_), next_start_, threads_);
         local_.resize(owned_);
         user_.resize(owned_);
+        wall_time_.resize(owned_);
+        carried_.current = true;  // the free flight measured the owned particles' next wall times
         migrate();
     }
 
@@ -491,6 +535,7 @@ private:
                 local_.push_back(t.particle());
                 user_.push_back(static_cast<std::uint32_t>(t.user_index));
                 ghost_neighbour_.push_back(static_cast<std::uint32_t>(n));
+                if (carried_.current) wall_time_.push_back(first_wall_time(local_.back()));
             }
         }
     }
@@ -538,6 +583,10 @@ private:
     int steps_since_sort_ = 0;  // sorted when handed out or balanced, then every sort_every steps
 
     std::vector<double> wall_time_;
+    struct {
+        bool current = false;
+        double max_speed_squared = 0.0;
+    } carried_;
     StepStart start_;
     StepStart next_start_;  // measured by the advance and not used: ghosts change every step
     std::vector<Collision> candidates_;
