@@ -174,6 +174,9 @@ private:
             } catch (const BadInput& e) {
                 status = exit_bad_input;
                 message = e.what();
+            } catch (const std::exception& e) {  // cannot allocate the scene, ...
+                status = exit_failure;
+                message = e.what();
             }
         }
         agree(status, message);
@@ -386,6 +389,8 @@ int run_ranks(int argc, char** argv, MPI_Comm comm) {
         return RankRun(comm, *options).run();
     } catch (const Stop& stop) {
         return stop.status;
+    } catch (const std::exception& e) {  // this rank alone: it cannot allocate, ...
+        abort_run(comm, rank, e.what());
     }
 }
 

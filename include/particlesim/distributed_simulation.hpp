@@ -35,8 +35,8 @@ struct ExchangeCounts {
     std::uint64_t migrants_received = 0;  // particles that changed strips
     std::uint64_t messages_sent = 0;      // point to point, sizes included
     std::uint64_t bytes_sent = 0;
-    std::uint64_t collectives = 0;     // all-reductions, of a few numbers each
-    double seconds_exchanging = 0.0;   // in those messages and collectives, waiting included
+    std::uint64_t collectives = 0;    // all-reductions, of a few numbers each
+    double seconds_exchanging = 0.0;  // in those messages and collectives, waiting included
 };
 
 class DistributedSimulation {
