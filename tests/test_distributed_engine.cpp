@@ -110,7 +110,7 @@ void check_same(const std::string& name, const World& world, const std::vector<P
 void random_scenes_of_every_regime() {
     // More ranks than this machine's cores wait on each other at every
     // exchange: fewer scenes there (still every regime: k mod 5).
-    const std::uint64_t scenes = ranks_here() <= 2 ? 40 : 8;
+    const std::uint64_t scenes = ranks_here() <= 2 ? 40 : 5;
     for (std::uint64_t k = 0; k < scenes; ++k) {
         const NamedScene scene = random_scenes::make(k);
         check_same("random scene " + std::to_string(k), scene.world, scene.particles, scene.steps);
