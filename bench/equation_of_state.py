@@ -12,7 +12,9 @@ block average from a tenth of the run on), Z = beta P A / N = beta P (2r)^2
 with Clisby & McCoy's coefficients (J. Stat. Phys. 122, 15 (2006), table 1,
 D = 2); the series' tail beyond B10 is estimated as geometric with the
 ratio B10 B_2 / B9 and given as its uncertainty. Writes
-equation_of_state.csv in OUT_DIR.
+equation_of_state.csv in OUT_DIR; and equation_of_state_sizes.csv: eta 0.3
+at 100, 400, 1600 and 6400 disks (the same collisions a disk), the finite
+box's 1/N correction measured.
 """
 
 import csv
@@ -36,13 +38,13 @@ def virial_series(eta):
     return z, tail
 
 
-def measure(build, work, eta, steps):
-    scene = work / f"eos-{eta:.2f}.in"
+def measure(build, work, eta, steps, particles=PARTICLES):
+    scene = work / f"eos-{eta:.2f}-{particles}.in"
     with open(scene, "w") as f:
-        subprocess.run([str(build / "apps/simgen"), "crystal", "-n", str(PARTICLES), "--fraction", f"{eta}",
+        subprocess.run([str(build / "apps/simgen"), "crystal", "-n", str(particles), "--fraction", f"{eta}",
                         "--boundary", "periodic", "-s", str(steps), "--mode", "perf"], stdout=f, check=True)
     run = subprocess.run([str(build / "apps/simcli"), "--engine", "exact", "--boundary", "periodic", str(scene),
-                          "-o", "/dev/null", "--observables", str(work / f"eos-{eta:.2f}.csv"), "--observe-every",
+                          "-o", "/dev/null", "--observables", str(work / f"eos-{eta:.2f}-{particles}.csv"), "--observe-every",
                           "10", "--measure-from", str(steps // 10), "--stats"],
                          capture_output=True, text=True, check=True)
     pressure = re.search(r"beta P \(2r\)\^2 = ([0-9.e+-]+) \+- ([0-9.e+-]+)", run.stderr)
@@ -71,6 +73,17 @@ def main(build, out, steps):
                         f"{(z - series) / sigma:+.2f}"])
             print(f"eta {eta:.2f}: Z = {z:.5f} +- {z_error:.2g}, series {series:.5f} (+{tail:.1g}), "
                   f"{collisions / PARTICLES:.0f} collisions a disk, {seconds:.1f} s", flush=True)
+    with open(out / "equation_of_state_sizes.csv", "w", newline="") as f:
+        w = csv.writer(f)
+        w.writerow(["eta", "particles", "steps", "collisions_per_disk", "Z", "Z_error", "Z_virial_B10"])
+        eta = 0.3
+        for particles in [100, 400, 1600, 6400]:
+            sized_steps = steps * PARTICLES // particles
+            betap, error, collisions, _ = measure(build, work, eta, sized_steps, particles)
+            scale = math.pi / (4.0 * eta)
+            w.writerow([f"{eta:.2f}", particles, sized_steps, f"{collisions / particles:.0f}", f"{betap * scale:.5f}",
+                        f"{error * scale:.2g}", f"{virial_series(eta)[0]:.5f}"])
+            print(f"N {particles}: Z = {betap * scale:.5f} +- {error * scale:.2g}", flush=True)
 
 
 if __name__ == "__main__":

@@ -3,7 +3,7 @@
 # error bar over the series to B10, and the difference in standard deviations.
 #   gnuplot -e "dir='docs/pictures'" bench/plot_equation_of_state.gp
 if (!exists("dir")) dir = "docs/pictures"
-set terminal pngcairo size 1200,520 font ",11"
+set terminal pngcairo size 1200,520 font ",11" noenhanced
 set output dir."/equation_of_state.png"
 set datafile separator ","
 set key autotitle columnhead
