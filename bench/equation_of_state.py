@@ -39,12 +39,12 @@ def virial_series(eta):
 
 
 def measure(build, work, eta, steps, particles=PARTICLES):
-    scene = work / f"eos-{eta:.2f}-{particles}.in"
+    scene = work / f"eos-{eta:.3f}-{particles}.in"
     with open(scene, "w") as f:
         subprocess.run([str(build / "apps/simgen"), "crystal", "-n", str(particles), "--fraction", f"{eta}",
                         "--boundary", "periodic", "-s", str(steps), "--mode", "perf"], stdout=f, check=True)
     run = subprocess.run([str(build / "apps/simcli"), "--engine", "exact", "--boundary", "periodic", str(scene),
-                          "-o", "/dev/null", "--observables", str(work / f"eos-{eta:.2f}-{particles}.csv"), "--observe-every",
+                          "-o", "/dev/null", "--observables", str(work / f"eos-{eta:.3f}-{particles}.csv"), "--observe-every",
                           "10", "--measure-from", str(steps // 10), "--stats"],
                          capture_output=True, text=True, check=True)
     pressure = re.search(r"beta P \(2r\)\^2 = ([0-9.e+-]+) \+- ([0-9.e+-]+)", run.stderr)
