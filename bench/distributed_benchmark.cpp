@@ -40,15 +40,6 @@ double peak_megabytes() {
     return static_cast<double>(usage.ru_maxrss) / 1024.0;  // KiB on Linux
 }
 
-double current_megabytes() {
-    long pages = 0, resident = 0;
-    if (std::FILE* statm = std::fopen("/proc/self/statm", "r")) {
-        if (std::fscanf(statm, "%ld %ld", &pages, &resident) != 2) resident = 0;
-        std::fclose(statm);
-    }
-    return static_cast<double>(resident) * 4096.0 / (1024.0 * 1024.0);
-}
-
 double max_over_ranks(double value) {
     MPI_Allreduce(MPI_IN_PLACE, &value, 1, MPI_DOUBLE, MPI_MAX, MPI_COMM_WORLD);
     return value;
@@ -69,12 +60,7 @@ int gas(std::size_t count, int steps, bool distributed) {
     SteppedOptions options;
     options.threads = 1;
     if (ranks == 1 && !distributed) {
-        if (std::getenv("BENCH_MEMORY")) std::fprintf(stderr, "after placing: %.1f MB\n", peak_megabytes());
         SteppedSimulation engine(world, std::move(particles), options);
-        if (std::getenv("BENCH_MEMORY")) {
-            engine.step();
-            std::fprintf(stderr, "after a step: %.1f MB\n", peak_megabytes());
-        }
         const double start = now();
         for (int step = 0; step < steps; ++step) engine.step();
         const double seconds = now() - start;
@@ -82,20 +68,8 @@ int gas(std::size_t count, int steps, bool distributed) {
                     peak_megabytes(), peak_megabytes(), seconds / steps);
         return 0;
     }
-    if (std::getenv("BENCH_MEMORY")) std::fprintf(stderr, "rank %d after placing: %.1f MB\n", rank, peak_megabytes());
     DistributedSimulation engine(MPI_COMM_WORLD, world, std::move(particles), options);
     MPI_Barrier(MPI_COMM_WORLD);
-    if (std::getenv("BENCH_MEMORY")) {
-        std::fprintf(stderr, "rank %d after handing out: %.1f MB (now %.1f)\n", rank, peak_megabytes(),
-                     current_megabytes());
-    }
-    if (std::getenv("BENCH_MEMORY")) {
-        for (int k = 0; k < 10; ++k) {
-            engine.step();
-            std::fprintf(stderr, "rank %d after step %d: %.1f MB (now %.1f)\n", rank, k + 1, peak_megabytes(),
-                         current_megabytes());
-        }
-    }
     const ExchangeCounts before = engine.exchange_counts();
     const double start = now();
     for (int step = 0; step < steps; ++step) engine.step();
@@ -109,14 +83,12 @@ int gas(std::size_t count, int steps, bool distributed) {
     const double exchanging = max_over_ranks(after.seconds_exchanging - before.seconds_exchanging);
     const double computing = max_over_ranks((now() - start) - (after.seconds_exchanging - before.seconds_exchanging));
     const double peak = max_over_ranks(peak_megabytes());
-    const double peak_after_start = max_over_ranks(static_cast<double>(engine.peak_local_count()));
     if (rank == 0) {
         // ranks,particles,steps,engine,seconds_per_step,peak_mb_largest_rank,peak_mb_rank0,ghosts_per_rank_step,
         // bytes_per_rank_step,messages_per_rank_step,rounds_per_step,exchange_seconds_per_step,compute_seconds_per_step
         std::printf("%d,%zu,%d,distributed,%.6f,%.1f,%.1f,%.1f,%.0f,%.1f,%.2f,%.6f,%.6f\n", ranks, count, steps,
                     seconds / steps, peak, peak_megabytes(), ghosts * per_rank_step, bytes * per_rank_step,
                     messages * per_rank_step, rounds / steps, exchanging / steps, computing / steps);
-        (void)peak_after_start;
     }
     return 0;
 }

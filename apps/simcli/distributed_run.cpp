@@ -181,7 +181,6 @@ private:
         }
         agree(status, message);
         broadcast_settings(settings);
-        loaded.lines = {};
         return engine_or_stop([&] {
             return DistributedSimulation(comm_, settings.world, std::move(loaded.particles), options_.stepped);
         });
@@ -334,17 +333,14 @@ private:
                 }
                 if (signal != 0) {
                     if (output) output->flush();
-                    std::string message =
-                        "interrupted after step " + std::to_string(step) + " of " + std::to_string(settings.steps);
-                    if (options_.checkpoint_path) {
-                        if (output) output->commit();
-                        message += "; the output holds steps up to " + std::to_string(step) +
-                                   "; continue with: simcli --resume " + *options_.checkpoint_path;
-                    } else {
-                        message += options_.output_path ? "; " + *options_.output_path + " left as it was" : "";
-                    }
+                    if (options_.checkpoint_path && output) output->commit();
                     agree(failure_status(), failure_message());
-                    if (on_root()) std::fprintf(stderr, "simcli: %s\n", message.c_str());
+                    if (on_root()) {
+                        std::fprintf(
+                            stderr, "simcli: %s\n",
+                            interruption_message(step, settings.steps, options_.checkpoint_path, options_.output_path)
+                                .c_str());
+                    }
                     throw Stop{128 + signal};
                 }
             }

@@ -19,4 +19,15 @@ void catch_interrupts() {
 
 int pending_interrupt() { return received; }
 
+std::string interruption_message(std::int64_t step, std::int64_t steps,
+                                 const std::optional<std::string>& checkpoint_path,
+                                 const std::optional<std::string>& output_path) {
+    std::string message = "interrupted after step " + std::to_string(step) + " of " + std::to_string(steps);
+    if (checkpoint_path) {
+        return message + "; the output holds steps up to " + std::to_string(step) +
+               "; continue with: simcli --resume " + *checkpoint_path;
+    }
+    return message + (output_path ? "; " + *output_path + " left as it was" : "");
+}
+
 }  // namespace simcli

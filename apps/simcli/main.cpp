@@ -101,16 +101,10 @@ RunStats write_run(E& engine, const RunSettings& settings, const CliOptions& opt
             }
             if (signal != 0) {
                 writer.flush();  // whole blocks only: what stdout shows ends at a step
-                std::string message =
-                    "interrupted after step " + std::to_string(step) + " of " + std::to_string(settings.steps);
-                if (options.checkpoint_path) {
-                    output.commit();  // the first part of the run; --resume writes the rest
-                    message += "; the output holds steps up to " + std::to_string(step) +
-                               "; continue with: simcli --resume " + *options.checkpoint_path;
-                } else {
-                    message += options.output_path ? "; " + *options.output_path + " left as it was" : "";
-                }
-                throw Interrupted(signal, message);
+                // With a checkpoint, the output is the first part of the run; --resume writes the rest.
+                if (options.checkpoint_path) output.commit();
+                throw Interrupted(
+                    signal, interruption_message(step, settings.steps, options.checkpoint_path, options.output_path));
             }
         }
     }

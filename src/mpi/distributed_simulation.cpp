@@ -1,5 +1,4 @@
 #include "particlesim/distributed_simulation.hpp"
-#include "particlesim/saved_state.hpp"
 
 #include "core/assert.hpp"
 #include "core/box.hpp"
@@ -13,6 +12,7 @@
 #include "search/brute_force_search.hpp"
 #include "search/grid_search.hpp"
 #include "stepped/step_pipeline.hpp"
+#include "stepped/stepped_state.hpp"
 #include "stepped/stepped_tuning.hpp"
 
 #include <algorithm>
@@ -76,22 +76,16 @@ double halo_reach(const World& world, double max_speed, double duration) {
     return (2.0 * world.radius + 2.0 * max_speed * duration) * (1.0 + 1e-9) + 1e-300;
 }
 
-// An MPI datatype of sizeof(T) bytes, freed with the object.
-template <typename T>
-class BytesType {
-public:
-    BytesType() {
-        require_mpi(MPI_Type_contiguous(static_cast<int>(sizeof(T)), MPI_BYTE, &type_), "making a type");
-        require_mpi(MPI_Type_commit(&type_), "committing a type");
-    }
-    ~BytesType() { MPI_Type_free(&type_); }
-    BytesType(const BytesType&) = delete;
-    BytesType& operator=(const BytesType&) = delete;
-    [[nodiscard]] MPI_Datatype get() const { return type_; }
-
-private:
-    MPI_Datatype type_ = MPI_DATATYPE_NULL;
-};
+// Every rank throws the refusal rank 0 found (empty: none), so that all
+// leave a collective construction together.
+void agree_on_refusal(MPI_Comm comm, std::string refusal) {
+    std::uint64_t length = refusal.size();
+    MPI_Bcast(&length, 1, MPI_UINT64_T, root, comm);
+    if (length == 0) return;
+    refusal.resize(length);
+    MPI_Bcast(refusal.data(), static_cast<int>(length), MPI_CHAR, root, comm);
+    throw std::invalid_argument(refusal);
+}
 
 }  // namespace
 
@@ -123,8 +117,8 @@ public:
                 refusal = e.what();
             }
         }
-        broadcast_refusal(refusal);
-        std::uint64_t header[4] = {particles.size(), static_cast<std::uint64_t>(steps_done), 0, 0};
+        agree_on_refusal(comm_, refusal);
+        std::uint64_t header[2] = {particles.size(), static_cast<std::uint64_t>(steps_done)};
         MPI_Bcast(header, 2, MPI_UINT64_T, root, comm_);
         count_ = header[0];
         steps_done_ = static_cast<std::int64_t>(header[1]);
@@ -242,7 +236,6 @@ public:
     int threads() const { return threads_; }
     int rank() const { return rank_; }
     int ranks() const { return ranks_; }
-    MPI_Comm comm() const { return comm_; }
     std::size_t owned_count() const { return owned_; }
     std::size_t peak_local_count() const { return peak_local_; }
     const ExchangeCounts& exchange_counts() const { return counts_; }
@@ -261,15 +254,6 @@ private:
     void add_to_histogram(std::span<const Particle> particles, std::vector<std::uint64_t>& histogram) const {
         const UniformGrid bins(world_.box_size, static_cast<int>(histogram.size()));
         for (const Particle& p : particles) ++histogram[static_cast<std::size_t>(bins.column_of(p.position.x()))];
-    }
-
-    void broadcast_refusal(std::string& refusal) {
-        std::uint64_t length = refusal.size();
-        MPI_Bcast(&length, 1, MPI_UINT64_T, root, comm_);
-        if (length == 0) return;
-        refusal.resize(length);
-        MPI_Bcast(refusal.data(), static_cast<int>(length), MPI_CHAR, root, comm_);
-        throw std::invalid_argument(refusal);
     }
 
     void broadcast_cuts() {
@@ -527,9 +511,9 @@ private:
         exchange_.exchange(std::span<const int>(neighbours_), outgoing_, incoming_lists_, tag_ghosts);
         std::size_t ghosts = 0;
         for (const std::vector<Travelling>& list : incoming_lists_) ghosts += list.size();
+        counts_.ghosts_received += ghosts;
         make_room(owned_ + ghosts);
         ghost_neighbour_.clear();
-        for (const std::vector<Travelling>& list : incoming_lists_) counts_.ghosts_received += list.size();
         for (std::size_t n = 0; n < near; ++n) {
             for (const Travelling& t : incoming_lists_[n]) {
                 local_.push_back(t.particle());
@@ -543,20 +527,19 @@ private:
     // Particles that left the strip go to their new owner, a neighbour (no
     // particle moves farther than the halo's reach in a step).
     void migrate() {
-        const std::size_t near = neighbours_.size();
+        outgoing_.resize(neighbours_.size());
         for (std::vector<Travelling>& list : outgoing_) list.clear();
         keep_owned_or_send([&](int to, const Travelling& t) {
             const auto at = std::find(neighbours_.begin(), neighbours_.end(), to);
             if (at == neighbours_.end()) throw std::logic_error("a particle moved beyond the neighbouring strips");
             outgoing_[static_cast<std::size_t>(at - neighbours_.begin())].push_back(t);
         });
-        outgoing_.resize(near);
         exchange_.exchange(std::span<const int>(neighbours_), outgoing_, incoming_lists_, tag_migrants);
         std::size_t arriving = 0;
         for (const std::vector<Travelling>& list : incoming_lists_) arriving += list.size();
+        counts_.migrants_received += arriving;
         make_room(owned_ + arriving);
         for (const std::vector<Travelling>& list : incoming_lists_) {
-            counts_.migrants_received += list.size();
             for (const Travelling& t : list) adopt(t);
         }
     }
@@ -618,53 +601,32 @@ DistributedSimulation::DistributedSimulation(std::unique_ptr<Implementation> eng
 DistributedSimulation DistributedSimulation::restore(MPI_Comm comm, const World& world, std::istream* saved_on_root,
                                                      const SteppedOptions& options) {
     auto engine = std::make_unique<Implementation>(comm, world, options);
-    std::vector<Particle> particles;
-    std::int64_t steps_done = 0;
-    StepCounts totals;
+    SteppedState state;
     std::string refusal;
     int rank = 0;
     MPI_Comm_rank(comm, &rank);
     if (rank == root) {
         try {
-            SavedStateReader in(*saved_on_root,
-                                "particlesim::DistributedSimulation::restore: the saved state is damaged");
-            in.expect("stepped-engine-state");
-            in.expect("1");
-            const std::uint64_t count = in.count(0xfffffffeU);
-            steps_done = static_cast<std::int64_t>(in.count(INT64_MAX));
-            totals = read_counts(in);
-            for (std::uint64_t i = 0; i < count; ++i) particles.push_back(read_particle(in));
+            state = read_stepped_state(*saved_on_root,
+                                       "particlesim::DistributedSimulation::restore: the saved state is damaged");
         } catch (const std::invalid_argument& e) {
             refusal = e.what();
         }
     }
-    std::uint64_t length = refusal.size();
-    MPI_Bcast(&length, 1, MPI_UINT64_T, root, comm);
-    if (length > 0) {
-        refusal.resize(length);
-        MPI_Bcast(refusal.data(), static_cast<int>(length), MPI_CHAR, root, comm);
-        throw std::invalid_argument(refusal);
-    }
-    engine->distribute(std::move(particles), steps_done, totals);
+    agree_on_refusal(comm, refusal);
+    engine->distribute(std::move(state.particles), state.steps_done, state.totals);
     return DistributedSimulation(std::move(engine));
 }
 
 void DistributedSimulation::save(const TextSink& write) const {
     std::ostringstream text;
     if (engine_->rank() == root) {
-        text << "stepped-engine-state 1\n";
-        save_number(text, particle_count());
-        save_number(text, static_cast<std::uint64_t>(steps_done()));
-        save_counts(text, totals());
-        text << '\n';
+        write_stepped_state_head(text, particle_count(), steps_done(), totals());
         write(text.view());
     }
     gather([&](std::size_t, std::span<const Particle> part) {
         text.str({});
-        for (const Particle& p : part) {
-            save_particle(text, p);
-            text << '\n';
-        }
+        for (const Particle& p : part) write_stepped_state_particle(text, p);
         write(text.view());
     });
 }

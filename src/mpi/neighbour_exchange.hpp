@@ -24,6 +24,25 @@ inline void require_mpi(int result, const char* what) {
     if (result != MPI_SUCCESS) throw std::runtime_error(std::string("MPI: ") + what + " failed");
 }
 
+// An MPI datatype of sizeof(T) bytes, freed with the object: elements of
+// any trivially copyable type travel as one unit each.
+template <typename T>
+class BytesType {
+public:
+    BytesType() {
+        static_assert(std::is_trivially_copyable_v<T>);
+        require_mpi(MPI_Type_contiguous(static_cast<int>(sizeof(T)), MPI_BYTE, &type_), "making a type");
+        require_mpi(MPI_Type_commit(&type_), "committing a type");
+    }
+    ~BytesType() { MPI_Type_free(&type_); }
+    BytesType(const BytesType&) = delete;
+    BytesType& operator=(const BytesType&) = delete;
+    [[nodiscard]] MPI_Datatype get() const { return type_; }
+
+private:
+    MPI_Datatype type_ = MPI_DATATYPE_NULL;
+};
+
 class NeighbourExchange {
 public:
     NeighbourExchange() = default;
@@ -64,9 +83,8 @@ public:
                 in[n].resize(sizes_in_[n]);
             }
         }
-        MPI_Datatype element = MPI_DATATYPE_NULL;
-        require_mpi(MPI_Type_contiguous(static_cast<int>(sizeof(T)), MPI_BYTE, &element), "making a type");
-        require_mpi(MPI_Type_commit(&element), "committing a type");
+        const BytesType<T> type;
+        const MPI_Datatype element = type.get();
         requests_.clear();
         for (std::size_t n = 0; n < count; ++n) {
             requests_.emplace_back();
@@ -91,7 +109,6 @@ public:
             counts_->bytes_sent += out[n].size() * sizeof(T);
         }
         counts_->messages_sent += count;
-        MPI_Type_free(&element);
         counts_->seconds_exchanging += std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     }
 

@@ -13,6 +13,7 @@
 #include "search/pair_search.hpp"
 #include "search/path_search.hpp"
 #include "stepped/step_pipeline.hpp"
+#include "stepped/stepped_state.hpp"
 #include "stepped/stepped_tuning.hpp"
 #include "stepped/storage_order.hpp"
 #include "stepped/thread_choice.hpp"
@@ -228,30 +229,17 @@ SteppedSimulation::SteppedSimulation(const World& world, std::vector<Particle> p
     : engine_(std::make_unique<Implementation>(world, std::move(particles), options)) {}
 
 SteppedSimulation SteppedSimulation::restore(const World& world, std::istream& saved, const SteppedOptions& options) {
-    SavedStateReader in(saved, "particlesim::SteppedSimulation::restore: the saved state is damaged");
-    in.expect("stepped-engine-state");
-    in.expect("1");
-    const std::uint64_t count = in.count(0xfffffffeU);
-    const auto steps_done = static_cast<std::int64_t>(in.count(INT64_MAX));
-    const StepCounts totals = read_counts(in);
-    std::vector<Particle> particles;  // grows with the input, whatever its header says
-    for (std::uint64_t i = 0; i < count; ++i) particles.push_back(read_particle(in));
-    SteppedSimulation simulation(world, std::move(particles), options);
-    simulation.engine_->continue_from(steps_done, totals);
+    SteppedState state =
+        read_stepped_state(saved, "particlesim::SteppedSimulation::restore: the saved state is damaged");
+    SteppedSimulation simulation(world, std::move(state.particles), options);
+    simulation.engine_->continue_from(state.steps_done, state.totals);
     return simulation;
 }
 
 void SteppedSimulation::save(std::ostream& out) const {
     const std::span<const Particle> particles = this->particles();
-    out << "stepped-engine-state 1\n";
-    save_number(out, std::uint64_t{particles.size()});
-    save_number(out, static_cast<std::uint64_t>(steps_done()));
-    save_counts(out, totals());
-    out << '\n';
-    for (const Particle& p : particles) {
-        save_particle(out, p);
-        out << '\n';
-    }
+    write_stepped_state_head(out, particles.size(), steps_done(), totals());
+    for (const Particle& p : particles) write_stepped_state_particle(out, p);
 }
 
 SteppedSimulation::~SteppedSimulation() = default;
