@@ -6,6 +6,7 @@
 // accepts the start and conserves its energy.
 
 #include "check.hpp"
+#include "dense_start_checks.hpp"
 
 #include "particlesim/exact_simulation.hpp"
 #include "particlesim/scene_families.hpp"
@@ -43,28 +44,7 @@ double densest_fraction(std::size_t count) {
     return 0.0;
 }
 
-void checked_start(const Scene& scene, double fraction, double kT) {
-    const double r = scene.world.radius, side = scene.world.box_size;
-    const std::size_t n = scene.particles.size();
-    CHECK_NEAR(static_cast<double>(n) * std::numbers::pi * r * r / (side * side), fraction, 1e-12 * fraction);
-    double closest_sq = INFINITY;
-    Vec2 momentum(0.0, 0.0);
-    double kinetic = 0.0;
-    bool inside = true;
-    for (std::size_t i = 0; i < n; ++i) {
-        const Particle& p = scene.particles[i];
-        for (int axis = 0; axis < 2; ++axis) inside = inside && p.position[axis] >= r && p.position[axis] <= side - r;
-        for (std::size_t j = i + 1; j < n; ++j) {
-            closest_sq = std::min(closest_sq, (p.position - scene.particles[j].position).squaredNorm());
-        }
-        momentum += p.velocity;
-        kinetic += 0.5 * p.velocity.squaredNorm();
-    }
-    CHECK(inside);
-    CHECK(n < 2 || closest_sq > 4.0 * r * r);
-    CHECK(momentum.norm() <= 1e-12 * std::sqrt(static_cast<double>(n) * kT + 1.0) * static_cast<double>(n));
-    CHECK_NEAR(kinetic, static_cast<double>(n > 0 ? n - 1 : 0) * kT, 1e-12 * (kinetic + 1.0));
-}
+using dense_start::check_start;
 
 void any_count_up_to_the_densest() {
     for (const std::size_t n : {std::size_t{1}, std::size_t{2}, std::size_t{3}, std::size_t{7}, std::size_t{50},
@@ -76,7 +56,7 @@ void any_count_up_to_the_densest() {
         for (const double fraction : {0.05, 0.3, 0.6, densest * (1.0 - 1e-12)}) {
             if (!(fraction > 0.0) || (n > 1 && fraction > densest)) continue;
             check::Context at("fraction ", fraction);
-            checked_start(crystal(n, fraction, 0.25), fraction, 0.25);
+            check_start(crystal(n, fraction, 0.25), fraction, 0.25);
         }
         if (n > 1) {
             bool refused = false;
@@ -149,27 +129,7 @@ void periodic_lattices() {
                 CHECK(std::string(e.what()).find("the densest that fits is") != std::string::npos);
                 continue;
             }
-            const double side = scene.world.box_size, r = scene.world.radius;
-            CHECK_NEAR(static_cast<double>(n) * std::numbers::pi * r * r / (side * side), fraction, 1e-12);
-            const auto image = [side](double d) { return d - side * std::round(d / side); };
-            double closest_sq = INFINITY, kinetic = 0.0;
-            Vec2 momentum(0.0, 0.0);
-            bool inside = true;
-            for (std::size_t i = 0; i < n; ++i) {
-                const Particle& p = scene.particles[i];
-                for (int axis = 0; axis < 2; ++axis)
-                    inside = inside && p.position[axis] >= 0.0 && p.position[axis] < side;
-                for (std::size_t j = i + 1; j < n; ++j) {
-                    const Vec2 d = scene.particles[j].position - p.position;
-                    closest_sq = std::min(closest_sq, image(d.x()) * image(d.x()) + image(d.y()) * image(d.y()));
-                }
-                momentum += p.velocity;
-                kinetic += 0.5 * p.velocity.squaredNorm();
-            }
-            CHECK(inside);
-            CHECK(closest_sq > 4.0 * r * r);
-            CHECK(momentum.norm() < 1e-9);
-            CHECK_NEAR(kinetic, static_cast<double>(n - 1) * 0.5, 1e-9 * kinetic);
+            check_start(scene, fraction, 0.5, Boundary::periodic);
         }
     }
     // 870 disks (29 x 30) reach the densities of the hard-disk transition.

@@ -334,6 +334,22 @@ void every_family_checks_cleanly() {
         run_process::run(simgen, {"random", "-n", "300", "-L", "900", "-s", "20", "--seed", "42"});
     const std::string drawn = run_simcli("300 900 1 20 print\n", {"--seed", "42"});
     CHECK_EQ(run_simcli(gen.out, {}), drawn);
+    // What a family cannot make: one line naming why, exit 2, no scene.
+    const std::vector<std::pair<std::vector<std::string>, std::string>> refused{
+        {{"compressed", "--fraction", "0.95"}, "below close packing"},
+        {{"compressed", "-n", "300", "--fraction", "0.89", "--growth-rate", "0.3"}, "jammed at area fraction"},
+        {{"compressed", "-n", "10", "--boundary", "periodic"}, "at least 5 diameters wide"},
+        {{"compressed", "--growth-rate", "0"}, "growth rate"},
+        {{"crystal", "--fraction", "0.95"}, "area fraction"},
+    };
+    for (const auto& [arguments, why] : refused) {
+        const run_process::Result no = run_process::run(simgen, arguments);
+        check::Context context(arguments[0], " ", arguments[1], ": ", no.err);
+        CHECK_EQ(no.status, 2);
+        CHECK(no.out.empty());
+        CHECK(no.err.find(why) != std::string::npos);
+        CHECK_EQ(std::count(no.err.begin(), no.err.end(), '\n'), 1);
+    }
 }
 
 void suite_checks_cleanly() {

@@ -46,12 +46,14 @@ void print_usage() {
         "      --seed K           seed (default 3210)\n"
         "  -r, --radius R         radius (default 1)\n"
         "  -L, --box L            side of the box (random, line, fast, walls)\n"
-        "      --fraction F       area fraction (gas, clusters, crystal: up to close packing)\n"
+        "      --fraction F       area fraction (gas, clusters; crystal, compressed: below close packing)\n"
         "      --speed-min V      lowest speed, length per step\n"
         "      --speed-max V      highest speed\n"
-        "      --temperature T    crystal: kT of the Maxwell velocities, mass 1 (default r^2/4)\n"
-        "      --boundary B       crystal: walls (default) or periodic, a lattice that fills a periodic\n"
-        "                         box (run it with simcli --engine exact --boundary periodic)\n"
+        "      --temperature T    crystal, compressed: kT of the Maxwell velocities, mass 1 (default r^2/4)\n"
+        "      --boundary B       crystal, compressed: walls (default) or periodic, a start that fills a\n"
+        "                         periodic box (run it with simcli --engine exact --boundary periodic)\n"
+        "      --growth-rate G    compressed: the diameter's growth per unit time in thermal speeds\n"
+        "                         (default 0.01; faster jams sooner into a random packing)\n"
         "  -h, --help             this text\n"
         "      --version          the version\n");
 }
@@ -118,6 +120,8 @@ int run(int argc, char** argv) {
             speed_max = parse_number<double>(arg, value());
         } else if (arg == "--temperature") {
             options.temperature = parse_number<double>(arg, value());
+        } else if (arg == "--growth-rate") {
+            options.growth_rate = parse_number<double>(arg, value());
         } else if (arg == "--boundary") {
             const std::string name = value();
             const std::optional<Boundary> boundary = boundary_named(name);

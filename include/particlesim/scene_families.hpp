@@ -18,16 +18,17 @@
 namespace particlesim {
 
 enum class SceneFamily {
-    random,    // the rules' random scene: what simcli draws for the same N, L, r and seed
-    gas,       // random disks at a given area fraction and speed range
-    lattice,   // a perturbed triangular lattice: denser than random placement reaches
-    line,      // the original design's worst case: N disks in a row moving together
-    cradle,    // Newton's cradle: a row of touching disks at rest, one moving into it
-    clusters,  // dense clusters in an empty box, drifting into each other
-    ties,      // simultaneous collisions by construction, in exact numbers: every tie rule
-    fast,      // speeds of several box sides per step
-    walls,     // disks starting on the walls, and pairs starting in contact
-    crystal,   // a triangular lattice at any area fraction up to close packing, Maxwell velocities
+    random,      // the rules' random scene: what simcli draws for the same N, L, r and seed
+    gas,         // random disks at a given area fraction and speed range
+    lattice,     // a perturbed triangular lattice: denser than random placement reaches
+    line,        // the original design's worst case: N disks in a row moving together
+    cradle,      // Newton's cradle: a row of touching disks at rest, one moving into it
+    clusters,    // dense clusters in an empty box, drifting into each other
+    ties,        // simultaneous collisions by construction, in exact numbers: every tie rule
+    fast,        // speeds of several box sides per step
+    walls,       // disks starting on the walls, and pairs starting in contact
+    crystal,     // a triangular lattice at any area fraction up to close packing, Maxwell velocities
+    compressed,  // a random packing grown to an area fraction (Lubachevsky-Stillinger), Maxwell velocities
 };
 
 struct SceneFamilyInfo {
@@ -52,11 +53,15 @@ struct SceneFamilyOptions {
     std::optional<double> area_fraction;  // gas, clusters
     std::optional<SpeedRange> speeds;     // length per step
     std::optional<double> temperature;    // crystal: kT, mass 1, in (length per step)^2
-    Boundary boundary = Boundary::walls;  // crystal: a lattice that fills a periodic box instead
+    Boundary boundary = Boundary::walls;  // crystal, compressed: a periodic box instead
+    // compressed: the diameter's growth per unit time, in units of the thermal speed sqrt(kT / m).
+    std::optional<double> growth_rate;
 };
 
 // Throws std::invalid_argument for options the family cannot honour (a
-// crystal denser than its lattice fits: the message names the densest), and
+// crystal denser than its lattice fits: the message names the densest; a
+// compression above close packing, or one that jams first: the message
+// names the fraction reached), and
 // SceneTooFull when random disks do not fit.
 Scene make_family_scene(SceneFamily family, const SceneFamilyOptions& options);
 
