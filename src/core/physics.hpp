@@ -117,6 +117,8 @@ inline bool disks_overlap(const Vec2& dp, double contact_dist_sq) {
 // A coordinate of a periodic box of side `side` wrapped into [0, side): a
 // hair below 0 that rounds up to `side` becomes 0.
 inline double wrap_into_periodic_box(double coordinate, double side) {
+    if (coordinate > 0.0 && coordinate < side)
+        return coordinate;  // nearly always; the same value (0 and -0 go on: to +0)
     const double wrapped = coordinate - side * std::floor(coordinate / side);
     return wrapped < side ? std::max(wrapped, 0.0) : 0.0;
 }

@@ -211,7 +211,7 @@ public:
                 const double centres[2] = {(grid.column(cell) + 0.5) * grid.cell_size(),
                                            (grid.row(cell) + 0.5) * grid.cell_size()};
                 for (int axis = 0; axis < 2; ++axis) {
-                    images_[i][axis] =
+                    plans_[i].images[axis] =
                         static_cast<std::int32_t>(std::round((now_at[axis] - centres[axis]) / world_.box_size));
                 }
             }
@@ -325,7 +325,6 @@ private:
           bodies_(particles.begin(), particles.end()),
           cells_(neighbour_grid(world, particles.size(), options), particles.size()),
           plans_(particles.size()),
-          images_(options.boundary == Boundary::periodic ? particles.size() : 0, {0, 0}),
           snapshot_(std::move(particles)),
           reach_(contact_reach(box_)),
           queue_(count(), Event{never, EventKind::cell_crossing, 0, 0}),
@@ -498,9 +497,9 @@ private:
         // random (as in time_to_wall()); the same IEEE operations as one
         // axis at a time.
         // In a periodic box the cell's frame is the stored position's moved
-        // by the whole boxes crossed since (images_).
-        const TwoDoubles where = periodic_ ? TwoDoubles{p.position.x() - images_[i][0] * world_.box_size,
-                                                        p.position.y() - images_[i][1] * world_.box_size}
+        // by the whole boxes crossed since (Plans::images).
+        const TwoDoubles where = periodic_ ? TwoDoubles{p.position.x() - plans_[i].images[0] * world_.box_size,
+                                                        p.position.y() - plans_[i].images[1] * world_.box_size}
                                            : TwoDoubles{p.position.x(), p.position.y()};
         const TwoDoubles speed{p.velocity.x(), p.velocity.y()};
         const TwoDoubles index{static_cast<double>(column), static_cast<double>(row)};
@@ -653,10 +652,11 @@ private:
 
     void note_event(std::uint32_t i) {
         const std::int64_t step = steps_done_;
-        if (plans_[i].last_event_step != step) {
-            plans_[i].last_event_step = step;
-        } else if (plans_[i].last_repeat_step != step) {
-            plans_[i].last_repeat_step = step;
+        std::int64_t& mark = plans_[i].last_event_mark;
+        if (mark >> 1 != step) {
+            mark = 2 * step;
+        } else if ((mark & 1) == 0) {
+            mark |= 1;
             ++several_events_;
         }
     }
@@ -696,14 +696,14 @@ private:
         collision_sums_.pair_virial += (a.velocity - velocity_before).dot(a.position - b_image);
         if (periodic_) {
             // Stored again in [0, L), measured from the box: the whole boxes
-            // crossed since move into images_.
+            // crossed since move into Plans::images.
             for (const std::uint32_t k : {i, j}) {
                 Vec2& at = bodies_[k].particle.position;
                 for (int axis = 0; axis < 2; ++axis) {
                     if (at[axis] >= 0.0 && at[axis] < world_.box_size) continue;  // nearly always
                     const double boxes = std::floor(at[axis] / world_.box_size);
                     at[axis] = wrap_into_periodic_box(at[axis], world_.box_size);
-                    images_[k][axis] -= static_cast<std::int32_t>(boxes);
+                    plans_[k].images[axis] -= static_cast<std::int32_t>(boxes);
                 }
             }
         }
@@ -754,7 +754,7 @@ private:
     }
 
     // The same in a periodic box, where a crossing may wrap around the box's
-    // edge: the particle's path has then crossed one more box (images_). Its
+    // edge: the particle's path has then crossed one more box (Plans::images). Its
     // stored position stays: the physics never depends on when crossings
     // happen, so every cell count gives the same events.
     void cross_cell_periodic(std::uint32_t i, std::uint32_t cell) {
@@ -771,10 +771,10 @@ private:
         };
         const int step_x = step_of(old_column, column);
         const int step_y = step_of(old_row, row);
-        if (column - old_column > 1) --images_[i][0];
-        if (column - old_column < -1) ++images_[i][0];
-        if (row - old_row > 1) --images_[i][1];
-        if (row - old_row < -1) ++images_[i][1];
+        if (column - old_column > 1) --plans_[i].images[0];
+        if (column - old_column < -1) ++plans_[i].images[0];
+        if (row - old_row > 1) --plans_[i].images[1];
+        if (row - old_row < -1) ++plans_[i].images[1];
         const int across_x = step_x == 0 ? 1 : 0;
         const int across_y = 1 - across_x;
         consider_pairs(i, [&](auto&& visit) {
@@ -815,18 +815,19 @@ private:
     std::vector<Body> bodies_;
     CellList cells_;
     // The rest of what an event reads and writes of its particles, in one
-    // 64-byte line: the crossing and pair predictions, and the steps of the
-    // particle's last two events (counted by note_event()).
+    // 64-byte line: the crossing and pair predictions, the step of the
+    // particle's last event (twice it, plus 1 once a second event in that
+    // step was counted by note_event()), and, in a periodic box, the whole
+    // boxes its path has crossed since its stored position, along x and y
+    // (what the cell it is in shows).
     struct alignas(64) Plans {
         Crossing crossing;
         PairPrediction pair;
-        std::int64_t last_event_step = -1;
-        std::int64_t last_repeat_step = -1;
+        std::int64_t last_event_mark = -2;
+        std::array<std::int32_t, 2> images{0, 0};
     };
+    static_assert(sizeof(Plans) == 64);
     std::vector<Plans> plans_;
-    // Periodic box: by particle, the whole boxes its path has crossed since
-    // its stored position, along x and y (what the cell it is in shows).
-    std::vector<std::array<std::int32_t, 2>> images_;
     std::vector<Particle> snapshot_;  // the state at the last whole step
     // With a single cell: every particle's line at lines_epoch_, and the
     // distance the pair test needs (contact_reach()).
