@@ -9,6 +9,8 @@ namespace bench {
 std::string simcli_path(const char* mode);
 
 void steps_benchmark(bool quick);       // time per step against N, the dense gas
+void sizes_benchmark(bool quick);       // time per particle-step, 4 to 1e7 particles, two densities
+void choice_benchmark(bool quick);      // the paths search and the grid forced, and which auto takes
 void simcli_benchmark(bool quick);      // whole simcli runs of the target scenes
 void accuracy_benchmark(bool quick);    // run time against error, K = 1 ... 64 and the exact engine
 void exact_benchmark(bool quick);       // the exact engine's collisions per second

@@ -3,6 +3,9 @@
 // memory is its own, and prints CSV (one row per case) on stdout.
 //
 //   particlesim_bench steps    [--quick]   time per step against N, dense gas
+//   particlesim_bench sizes    [--quick]   time per particle-step from 4 to 1e7 particles at the
+//                                          default scene's density and speeds, and at area fraction 0.3
+//   particlesim_bench choice   [--quick]   the paths search and the grid forced, and which `auto` takes
 //   particlesim_bench simcli   [--quick]   whole simcli runs of the target scenes
 //   particlesim_bench accuracy [--quick]   run time against error (accuracy_benchmark.cpp)
 //   particlesim_bench exact    [--quick]   the exact engine's speed (accuracy_benchmark.cpp)
@@ -153,6 +156,91 @@ void steps_benchmark(bool quick) {
     }
 }
 
+// Cost against size in two families that keep their character as N grows:
+// the default scene's density and speeds (1000 disks in L = 20000, speeds
+// 2500 to 5000 a step: the box grows as sqrt(N), while the mean free path,
+// the collisions a particle-step and the path a step in particle spacings
+// stay) and the gas at area fraction 0.3 (speeds 0.1 r to r). The search is
+// the automatic choice, as simcli makes it.
+void sizes_benchmark(bool quick) {
+    std::printf(
+        "case,n,box_size,radius,steps,search,threads,repeats,median_s_per_step,min_s_per_step,max_s_per_step,"
+        "particle_steps_per_s,pair_tests_per_step,particle_collisions_per_step,peak_rss_bytes,peak_bytes_per_"
+        "particle\n");
+    const std::size_t largest = quick ? 65536 : 10000000;
+    const double target = quick ? 0.1 : 1.0;
+    std::vector<std::size_t> sizes;
+    for (std::size_t n = 4; n <= 4194304; n *= 4) sizes.push_back(n);
+    sizes.push_back(10000000);
+    for (const std::size_t n : sizes) {
+        if (n > largest) break;
+        const double nd = static_cast<double>(n);
+        const double default_box = 20000.0 * std::sqrt(nd / 1000.0);
+        const double gas_box = std::sqrt(nd * std::numbers::pi / 0.3);
+        for (const int threads : {1, 2}) {
+            // Guesses of the time a step, for about `target` seconds a run.
+            const double guess = 2e-7 * nd + 2e-6;
+            const int repeats = n >= 1000000 ? 1 : 3;
+            run_step_case({"default density", n, default_box, 1.0, steps_for(guess, target, 100000),
+                           SpeedRange{2500.0, 5000.0}, PairSearch::automatic, threads, repeats});
+            run_step_case({"area fraction 0.3", n, gas_box, 1.0, steps_for(guess, target, 100000), SpeedRange{0.1, 1.0},
+                           PairSearch::automatic, threads, repeats});
+        }
+    }
+}
+
+// Which search `auto` takes, against both forced, one thread, rounds
+// alternating: the rules' random scene at the default density (speeds L/8 to
+// L/4, as the rules draw them), the gas at area fraction 0.3, and the rules'
+// random scene in the default box (L = 20000).
+void choice_benchmark(bool quick) {
+    std::printf(
+        "scene,n,box_size,steps,rounds,auto,paths_median_s_per_step,grid_median_s_per_step,slower_over_faster\n");
+    struct ChoiceCase {
+        std::string name;
+        std::size_t count;
+        double box_size;
+        std::optional<SpeedRange> speeds;
+    };
+    std::vector<ChoiceCase> cases;
+    for (const std::size_t n : {256, 1024, 4096, 16384}) {
+        const double nd = static_cast<double>(n);
+        cases.push_back({"default density", n, 20000.0 * std::sqrt(nd / 1000.0), std::nullopt});
+        cases.push_back({"area fraction 0.3", n, std::sqrt(nd * std::numbers::pi / 0.3), SpeedRange{0.1, 1.0}});
+    }
+    for (const std::size_t n : {64, 200, 1000, 2000, 4000, 8000, 16000}) {
+        cases.push_back({"L = 20000", n, 20000.0, std::nullopt});
+    }
+    const int rounds = quick ? 1 : 3;
+    for (const ChoiceCase& c : cases) {
+        const World world{c.box_size, 1.0};
+        RandomSceneOptions options;
+        options.speeds = c.speeds;
+        const std::vector<Particle> particles = make_random_particles(c.count, world, options);
+        const double nd = static_cast<double>(c.count);
+        const std::int64_t steps = steps_for(2e-9 * nd * nd / 16.0 + 1e-6, quick ? 0.05 : 0.3, 2000);
+        std::vector<double> paths, grid;
+        PairSearch chosen = PairSearch::automatic;
+        for (int round = 0; round < rounds; ++round) {
+            for (int k = 0; k < 2; ++k) {
+                const bool run_paths = (k == 0) == (round % 2 == 0);
+                SteppedSimulation sim(world, particles,
+                                      {.pair_search = run_paths ? PairSearch::paths : PairSearch::grid, .threads = 1});
+                const auto start = std::chrono::steady_clock::now();
+                particlesim::run(sim, steps);
+                const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+                (run_paths ? paths : grid).push_back(seconds / static_cast<double>(steps));
+            }
+        }
+        chosen = SteppedSimulation(world, particles, {.threads = 1}).pair_search();
+        const double p = median(paths), g = median(grid);
+        std::printf("%s,%zu,%g,%lld,%d,%s,%.6g,%.6g,%.3f\n", c.name.c_str(), c.count, c.box_size,
+                    static_cast<long long>(steps), rounds, pair_search_name(chosen), p, g,
+                    std::max(p, g) / std::min(p, g));
+        std::fflush(stdout);
+    }
+}
+
 std::string simcli_path(const char* mode) {
 #ifdef SIMCLI_PATH
     (void)mode;
@@ -215,6 +303,10 @@ int main(int argc, char** argv) {
     const bool quick = argc > 2 && std::strcmp(argv[2], "--quick") == 0;
     if (mode == "steps") {
         bench::steps_benchmark(quick);
+    } else if (mode == "sizes") {
+        bench::sizes_benchmark(quick);
+    } else if (mode == "choice") {
+        bench::choice_benchmark(quick);
     } else if (mode == "simcli") {
         bench::simcli_benchmark(quick);
     } else if (mode == "accuracy") {
@@ -230,9 +322,10 @@ int main(int argc, char** argv) {
     } else if (mode == "programs") {
         bench::programs_benchmark(quick);
     } else {
-        std::fprintf(stderr,
-                     "usage: particlesim_bench steps|simcli|accuracy|exact|stress|divergence|loaded|programs "
-                     "[--quick]\n");
+        std::fprintf(
+            stderr,
+            "usage: particlesim_bench steps|sizes|choice|simcli|accuracy|exact|stress|divergence|loaded|programs "
+            "[--quick]\n");
         return 2;
     }
     return 0;

@@ -12,6 +12,7 @@
 #include "search/grid_search.hpp"
 #include "search/pair_search.hpp"
 #include "search/path_search.hpp"
+#include "stepped/search_choice.hpp"
 #include "stepped/step_pipeline.hpp"
 #include "stepped/stepped_state.hpp"
 #include "stepped/stepped_tuning.hpp"
@@ -25,16 +26,6 @@ namespace particlesim {
 namespace {
 
 using namespace stepped_tuning;
-
-PairSearch automatic_search(const World& world, std::span<const Particle> particles, int substeps) {
-    const std::size_t count = particles.size();
-    if (count < brute_force_below) return PairSearch::brute_force;
-    if (count <= paths_up_to &&
-        estimated_events_per_step(world, particles) / substeps < paths_below_collisions_per_micro_step) {
-        return PairSearch::paths;
-    }
-    return PairSearch::grid;
-}
 
 const SteppedOptions& checked(const SteppedOptions& options) {
     const OptionsCheck check("particlesim::SteppedOptions");

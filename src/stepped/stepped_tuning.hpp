@@ -14,10 +14,20 @@ namespace particlesim::stepped_tuning {
 // Particles below which the brute force beats the grid (both cost 0.2 to
 // 2 us a step at N = 4 and 16; the grid wins from N = 64).
 inline constexpr std::size_t brute_force_below = 48;
-// Expected collisions a micro-step below which the paths search beats the
-// grid: it tests each particle that collided against all the others. Machine
-// dependent: the crossing point measured about 800 to 2000 here.
-inline constexpr double paths_below_collisions_per_micro_step = 800.0;
+// Otherwise the paths search or the grid, whichever a cost model of a
+// micro-step finds cheaper (search_choice.cpp). Fitted to one thread's runs
+// of both searches on the rules' random scene at the default scene's density
+// and the gas at area fraction 0.3, 256 to 16384 particles, within 20 % of
+// every run; nanoseconds of the benchmark machine (AVX2: eight float lanes),
+// so only their ratios matter. The paths search: each new line ...
+inline constexpr double paths_new_line_ns = 350.0;
+// ... plus this for each line it is tested against ...
+inline constexpr double paths_line_test_ns = 0.24;
+// ... plus this times the fraction that pass (about 4r / L): their intervals.
+inline constexpr double paths_near_line_ns = 45.0;
+// The grid: each particle, plus this for each time slice it is binned in.
+inline constexpr double grid_particle_ns = 60.0;
+inline constexpr double grid_particle_slice_ns = 55.0;
 // Particles up to which the paths search may be chosen: its first
 // micro-step tests all N^2 / 2 pairs.
 inline constexpr std::size_t paths_up_to = 20000;

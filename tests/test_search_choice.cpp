@@ -1,0 +1,99 @@
+// The automatic pair search: brute force for a handful of particles; then
+// the cheaper of the paths search and the grid by the cost model. Each scene
+// below was timed with both searches forced (one thread, docs/benchmarks.md
+// "Which search"); the choice must be the faster, and by the model's own
+// numbers the faster by the margin measured where the margin was wide.
+
+#include "check.hpp"
+
+#include "particlesim/random_scene.hpp"
+#include "stepped/search_choice.hpp"
+#include "stepped/stepped_tuning.hpp"
+
+#include <cmath>
+#include <numbers>
+#include <string>
+
+using namespace particlesim;
+
+namespace {
+
+struct SceneShape {
+    std::size_t count;
+    World world;
+    std::optional<SpeedRange> speeds;  // the rules' default when empty
+};
+
+// The rules' random scene at the default scene's density (1000 disks in L = 20000).
+SceneShape default_density(std::size_t count) {
+    return {count, World{20000.0 * std::sqrt(static_cast<double>(count) / 1000.0), 1.0}, std::nullopt};
+}
+// The gas at area fraction 0.3, speeds 0.1 r to r a step.
+SceneShape gas(std::size_t count) {
+    return {count, World{std::sqrt(static_cast<double>(count) * std::numbers::pi / 0.3), 1.0}, SpeedRange{0.1, 1.0}};
+}
+SceneShape in_default_box(std::size_t count) { return {count, World{20000.0, 1.0}, std::nullopt}; }
+
+PairSearch chosen(const SceneShape& s, int substeps = 1) {
+    RandomSceneOptions options;
+    options.speeds = s.speeds;
+    return automatic_search(s.world, make_random_particles(s.count, s.world, options), substeps);
+}
+
+const char* name(PairSearch search) { return pair_search_name(search); }
+
+void the_measured_faster() {
+    // (scene, the faster when forced; the slower's time over the faster's)
+    const struct {
+        const char* what;
+        SceneShape scene;
+        PairSearch faster;
+    } measured[] = {
+        {"default density, 256 (3.0x)", default_density(256), PairSearch::paths},
+        {"default density, 1024 (2.4x)", default_density(1024), PairSearch::paths},
+        {"default density, 4096 (1.4x)", default_density(4096), PairSearch::paths},
+        {"default density, 16384 (1.5x)", default_density(16384), PairSearch::grid},
+        {"area fraction 0.3, 256 (3.6x)", gas(256), PairSearch::grid},
+        {"area fraction 0.3, 1024 (8.2x)", gas(1024), PairSearch::grid},
+        {"area fraction 0.3, 4096 (22x)", gas(4096), PairSearch::grid},
+        {"L = 20000, 64 (3.7x)", in_default_box(64), PairSearch::paths},
+        {"L = 20000, 200 (2.4x)", in_default_box(200), PairSearch::paths},
+        {"L = 20000, 1000: the default scene", in_default_box(1000), PairSearch::paths},
+        {"L = 20000, 2000 (2.0x)", in_default_box(2000), PairSearch::paths},
+        {"L = 20000, 4000 (1.3x)", in_default_box(4000), PairSearch::paths},
+        {"L = 20000, 8000 (1.3x)", in_default_box(8000), PairSearch::grid},
+        {"L = 20000, 16000 (1.9x)", in_default_box(16000), PairSearch::grid},
+    };
+    for (const auto& m : measured) {
+        check::Context context(m.what, ": chose ", name(chosen(m.scene)));
+        CHECK(chosen(m.scene) == m.faster);
+    }
+}
+
+void the_edges() {
+    // A handful: brute force; beyond paths_up_to, the grid (the paths
+    // search's first micro-step tests all N^2 / 2 pairs).
+    CHECK(chosen(in_default_box(stepped_tuning::brute_force_below - 1)) == PairSearch::brute_force);
+    CHECK(chosen(default_density(stepped_tuning::paths_up_to + 1)) == PairSearch::grid);
+    // At rest nothing changes lines: the paths search costs nothing a step.
+    SceneShape still = gas(1000);
+    still.speeds = SpeedRange{0.0, 0.0};
+    CHECK(chosen(still) == PairSearch::paths);
+    // Substeps shorten each micro-step: fewer new lines and slices each,
+    // the same ratio of costs for the paths search and the grid's slices.
+    RandomSceneOptions options;
+    const SceneShape s = default_density(1000);
+    const auto particles = make_random_particles(s.count, s.world, options);
+    const SearchCosts one = estimate_search_costs(s.world, particles, 1);
+    const SearchCosts four = estimate_search_costs(s.world, particles, 4);
+    CHECK_NEAR(four.new_lines, one.new_lines / 4.0, 1e-9 * one.new_lines);
+    CHECK(four.slices <= one.slices && four.slices >= 1);
+    CHECK(four.paths_ns < one.paths_ns);
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+    return check::run(argc, argv, "test_search_choice",
+                      {{"the measured faster", the_measured_faster}, {"the edges", the_edges}});
+}
