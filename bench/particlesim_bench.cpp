@@ -120,6 +120,14 @@ void run_step_case(const Case& c) {
     std::fflush(stdout);
 }
 
+// The columns run_step_case() prints.
+void print_step_case_header() {
+    std::printf(
+        "case,n,box_size,radius,steps,search,threads,repeats,median_s_per_step,min_s_per_step,max_s_per_step,"
+        "particle_steps_per_s,pair_tests_per_step,particle_collisions_per_step,peak_rss_bytes,peak_bytes_per_"
+        "particle\n");
+}
+
 // Steps so that one run lasts roughly `target` seconds at `per_step` seconds.
 std::int64_t steps_for(double per_step_guess, double target, std::int64_t most) {
     return std::clamp<std::int64_t>(static_cast<std::int64_t>(target / per_step_guess), 3, most);
@@ -128,10 +136,7 @@ std::int64_t steps_for(double per_step_guess, double target, std::int64_t most) 
 }  // namespace
 
 void steps_benchmark(bool quick) {
-    std::printf(
-        "case,n,box_size,radius,steps,search,threads,repeats,median_s_per_step,min_s_per_step,max_s_per_step,"
-        "particle_steps_per_s,pair_tests_per_step,particle_collisions_per_step,peak_rss_bytes,peak_bytes_per_"
-        "particle\n");
+    print_step_case_header();
     const int repeats = quick ? 3 : 5;
     const double target = quick ? 0.1 : 0.5;
     for (const std::size_t n : {4, 16, 64, 256, 1024, 4096, 16384, 32000}) {
@@ -163,10 +168,7 @@ void steps_benchmark(bool quick) {
 // stay) and the gas at area fraction 0.3 (speeds 0.1 r to r). The search is
 // the automatic choice, as simcli makes it.
 void sizes_benchmark(bool quick) {
-    std::printf(
-        "case,n,box_size,radius,steps,search,threads,repeats,median_s_per_step,min_s_per_step,max_s_per_step,"
-        "particle_steps_per_s,pair_tests_per_step,particle_collisions_per_step,peak_rss_bytes,peak_bytes_per_"
-        "particle\n");
+    print_step_case_header();
     const std::size_t largest = quick ? 65536 : 10000000;
     const double target = quick ? 0.1 : 1.0;
     std::vector<std::size_t> sizes;

@@ -98,13 +98,7 @@ void maxwell_velocities() {
 
 void the_exact_engine_runs_it() {
     const Scene scene = crystal(400, densest_fraction(400) * 0.99, 0.25);
-    ExactSimulation engine(scene.world, scene.particles);
-    double before = 0.0, after = 0.0;
-    for (const Particle& p : engine.particles()) before += p.velocity.squaredNorm();
-    for (int s = 0; s < 5; ++s) engine.step();
-    for (const Particle& p : engine.particles()) after += p.velocity.squaredNorm();
-    CHECK(engine.totals().particle_collisions > 400);
-    CHECK_NEAR(after, before, 1e-9 * before);
+    dense_start::check_exact_run(scene, Boundary::walls, 5, 400);
 }
 
 // The periodic lattice: N in rows of equal length (odd N unshifted), no two disks closer

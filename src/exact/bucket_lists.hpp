@@ -5,6 +5,7 @@
 // (particles by cell) and its calendar queue (particles by time bucket) are
 // both this.
 
+#include "core/huge_page_allocator.hpp"
 #include "core/prefetch.hpp"
 
 #include <algorithm>
@@ -78,8 +79,8 @@ private:
     };
 
     std::size_t items_;
-    std::vector<std::uint32_t> head_;
-    std::vector<Links> links_;  // one more than the items: the spare slot
+    HugePageVector<std::uint32_t> head_;
+    HugePageVector<Links> links_;  // one more than the items: the spare slot
 };
 
 }  // namespace particlesim

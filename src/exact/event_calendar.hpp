@@ -10,6 +10,7 @@
 // events fill about N / 2 buckets.
 
 #include "core/event_order.hpp"
+#include "core/huge_page_allocator.hpp"
 #include "core/prefetch.hpp"
 #include "exact/bucket_lists.hpp"
 
@@ -155,7 +156,7 @@ private:
     std::uint32_t filled_by_half_;  // buckets holding the earliest half of the entries after a rebuild
     std::uint32_t buckets_;
     BucketLists lists_;              // owners by bucket; the last bucket is the overflow
-    std::vector<Event> events_;      // by owner
+    HugePageVector<Event> events_;   // by owner
     std::vector<double> times_;      // scratch of rebuild_window()
     double base_ = 0.0;              // start time of bucket 0
     double buckets_per_time_ = 1.0;  // the inverse of a bucket's width

@@ -3,6 +3,7 @@
 
 #include "core/assert.hpp"
 #include "core/box.hpp"
+#include "core/huge_page_allocator.hpp"
 #include "core/physics.hpp"
 #include "core/prefetch.hpp"
 #include "core/uniform_grid.hpp"
@@ -812,7 +813,7 @@ private:
         double stamp = 0.0;
         double wall_time = never;
     };
-    std::vector<Body> bodies_;
+    HugePageVector<Body> bodies_;
     CellList cells_;
     // The rest of what an event reads and writes of its particles, in one
     // 64-byte line: the crossing and pair predictions, the step of the
@@ -827,7 +828,7 @@ private:
         std::array<std::int32_t, 2> images{0, 0};
     };
     static_assert(sizeof(Plans) == 64);
-    std::vector<Plans> plans_;
+    HugePageVector<Plans> plans_;
     std::vector<Particle> snapshot_;  // the state at the last whole step
     // With a single cell: every particle's line at lines_epoch_, and the
     // distance the pair test needs (contact_reach()).
