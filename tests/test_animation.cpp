@@ -12,6 +12,7 @@
 
 #include "particlesim/particlesim.hpp"
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <cstdlib>
@@ -304,6 +305,69 @@ void snapshot_is_the_state() {
     CHECK_EQ(run_process::run(simcli, {scene, "--snapshot-step", "3"}).status, 2);
 }
 
+// --colour-by psi6: in a lattice that fills a periodic box every disk sees
+// the same neighbourhood, so one psi6 and one colour everywhere, in the
+// picture and on the page; a gas many colours; the page plots |psi6| and the
+// pressure.
+void order_is_seen() {
+    SceneFamilyOptions o;
+    o.particles = 100;
+    o.area_fraction = 0.7;
+    o.boundary = Boundary::periodic;
+    o.steps = 4;
+    std::ostringstream lattice_text;
+    write_scene(lattice_text, make_family_scene(SceneFamily::crystal, o));
+    const std::string lattice = write_file("lattice.in", lattice_text.str());
+    const std::string svg = work_dir() + "/order.svg", page = work_dir() + "/order.html";
+    const run_process::Result out =
+        run_process::run(simcli, {lattice, "--engine", "exact", "--boundary", "periodic", "--colour-by", "psi6",
+                                  "--snapshot", svg, "--snapshot-step", "0", "--animate", page});
+    CHECK_EQ(out.status, 0);
+    const std::string text = run_process::slurp(svg);
+    const std::regex fill("fill=\"(rgb\\([0-9,]+\\))\"");
+    std::vector<std::string> lattice_colours;
+    for (auto it = std::sregex_iterator(text.begin(), text.end(), fill); it != std::sregex_iterator(); ++it) {
+        lattice_colours.push_back((*it)[1]);
+    }
+    CHECK_EQ(lattice_colours.size(), std::size_t{100});
+    CHECK(std::all_of(lattice_colours.begin(), lattice_colours.end(),
+                      [&](const std::string& c) { return c == lattice_colours[0]; }));
+    const std::size_t caption = text.find("|psi6| = ");
+    CHECK(caption != std::string::npos && std::stod(text.substr(caption + 9)) > 0.9);
+
+    const std::string gas = write_file("order-gas.in", "100 60 1 2 print\n");
+    CHECK_EQ(run_process::run(simcli, {gas, "--colour-by", "psi6", "--snapshot", svg}).status, 0);
+    const std::string gas_text = run_process::slurp(svg);
+    std::vector<std::string> colours;
+    for (auto it = std::sregex_iterator(gas_text.begin(), gas_text.end(), fill); it != std::sregex_iterator(); ++it) {
+        if (std::find(colours.begin(), colours.end(), (*it)[1].str()) == colours.end()) colours.push_back((*it)[1]);
+    }
+    CHECK(colours.size() > 20);
+
+    std::vector<Vec2> centres;
+    const auto states = read_states(out.out);
+    for (const Particle& p : states[0]) centres.push_back(p.position);
+    centres.resize(10);
+    const mini_json::Value r =
+        open_page(page, "{\"frame\":0,\"on\":" + points(centres) + ",\"off\":[],\"scrubTo\":1}").report;
+    if (r.kind != mini_json::Value::Kind::object) return;
+    const auto& first = r["psi6Colours"][0];
+    int alike = 0;
+    for (const auto& pixel : r["psi6Colours"].items) {
+        alike += colour_is(pixel, static_cast<int>(first[0].number), static_cast<int>(first[1].number),
+                           static_cast<int>(first[2].number));
+    }
+    CHECK_EQ(alike, 10);
+    CHECK(!colour_is(first, 255, 255, 255));  // a disk's colour, not the background
+    CHECK_EQ(r["psi6Shown"].number, 1.0);
+    CHECK_EQ(r["pressureShown"].number, 1.0);
+    CHECK(r["psi6"].number > 0.0 && r["psi6"].number <= 1.0);
+    CHECK(r["pressure"].number > 0.0);
+    CHECK(r["errors"].items.empty());
+    CHECK_EQ(run_process::run(simcli, {gas, "--colour-by", "psi6"}).status, 2);
+    CHECK_EQ(run_process::run(simcli, {gas, "--colour-by", "phase", "--snapshot", svg}).status, 2);
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -315,7 +379,8 @@ int main(int argc, char** argv) {
                                   {{"the page shows the run", the_page_shows_the_run},
                                    {"exact engine between steps", exact_engine_between_steps},
                                    {"large runs stay in budget", large_runs_stay_in_budget},
-                                   {"snapshot is the state", snapshot_is_the_state}});
+                                   {"snapshot is the state", snapshot_is_the_state},
+                                   {"order is seen", order_is_seen}});
     std::filesystem::remove_all(work_dir());
     return status;
 }

@@ -13,6 +13,7 @@
 #include "particlesim/scene_families.hpp"
 
 #include <cmath>
+#include <complex>
 #include <numbers>
 #include <sstream>
 #include <string>
@@ -102,6 +103,16 @@ void hexatic_order_of_lattice_and_gas() {
         p.position = Vec2(large.box_size / 2, large.box_size / 2) + Vec2(c * d.x() - s * d.y(), s * d.x() + c * d.y());
     }
     CHECK_NEAR(hexatic_order(turned, large), ordered, 1e-9);
+    // Each disk's own psi6 turns by 6 x 17 degrees.
+    const std::vector<std::complex<double>> before = local_hexatic_order(crystal.particles, crystal.world);
+    const std::vector<std::complex<double>> after = local_hexatic_order(turned, large);
+    const std::complex<double> rotation = std::polar(1.0, 6.0 * turn);
+    double worst = 0.0;
+    for (std::size_t i = 0; i < before.size(); ++i) worst = std::max(worst, std::abs(after[i] - before[i] * rotation));
+    CHECK(worst < 1e-9);
+    std::complex<double> mean(0.0, 0.0);
+    for (const std::complex<double>& psi : before) mean += psi;
+    CHECK_NEAR(std::abs(mean / static_cast<double>(before.size())), ordered, 1e-12);
     // A lattice filling a periodic box: every disk sees the same neighbours by
     // the nearest images, so shifting the whole lattice changes nothing; without
     // the images, the disks at the edges miss theirs.
@@ -119,6 +130,13 @@ void hexatic_order_of_lattice_and_gas() {
         }
     }
     CHECK_NEAR(hexatic_order(shifted, filled.world, Boundary::periodic), periodic_order, 1e-9);
+    // Every disk of it sees the same neighbourhood: one psi6 for all.
+    const std::vector<std::complex<double>> alike =
+        local_hexatic_order(filled.particles, filled.world, Boundary::periodic);
+    double farthest = 0.0;
+    for (const std::complex<double>& psi : alike) farthest = std::max(farthest, std::abs(psi - alike[0]));
+    CHECK(farthest < 1e-9);
+    CHECK_NEAR(std::abs(alike[0]), periodic_order, 1e-9);
     CHECK(hexatic_order(filled.particles, filled.world) < periodic_order - 0.01);
     o.particles = 2000;
     o.area_fraction = 0.3;

@@ -7,9 +7,11 @@
 #include <algorithm>
 #include <bit>
 #include <cmath>
+#include <complex>
 #include <cstdio>
 #include <cstring>
 #include <limits>
+#include <numbers>
 
 namespace simcli {
 
@@ -75,13 +77,16 @@ std::string number(double value) {
 }  // namespace
 
 Animation::Animation(const AnimationRequest& request, const particlesim::World& world, std::size_t particles,
-                     std::int64_t steps, std::string engine, int substeps)
+                     std::int64_t steps, std::string engine, int substeps, ColourBy colour_by,
+                     particlesim::Boundary boundary)
     : file_(std::make_unique<OutputFile>(request.path)),
       world_(world),
       count_(particles),
       steps_(steps),
       engine_(std::move(engine)),
-      substeps_(substeps) {
+      substeps_(substeps),
+      colour_by_(colour_by),
+      boundary_(boundary) {
     if (request.every && *request.every < 1.0) {
         per_step_ = static_cast<int>(std::lround(1.0 / *request.every));
         every_ = 1.0 / per_step_;
@@ -106,7 +111,7 @@ Animation::Animation(const AnimationRequest& request, const particlesim::World& 
 }
 
 void Animation::add_frame(double time, std::span<const Particle> particles, const particlesim::StepCounts& totals,
-                          double velocity_scale) {
+                          double velocity_scale, const particlesim::CollisionSums* sums) {
     double energy_sum = 0.0;
     for (std::size_t i = 0; i < particles.size(); ++i) {
         const Particle& p = particles[i];
@@ -140,9 +145,35 @@ void Animation::add_frame(double time, std::span<const Particle> particles, cons
     series_.push_back(first ? 0.0 : static_cast<double>(totals.wall_collisions - last_totals_.wall_collisions));
     series_.push_back(first ? 0.0 : time - last_time_);
     series_.push_back(energy_sum);
+    if (colour_by_ == ColourBy::psi6) add_order(time, particles, energy_sum, sums);
     last_totals_ = totals;
     last_time_ = time;
     times_.push_back(time);
+}
+
+void Animation::add_order(double time, std::span<const Particle> particles, double kinetic_energy,
+                          const particlesim::CollisionSums* sums) {
+    const std::vector<std::complex<double>> local = particlesim::local_hexatic_order(particles, world_, boundary_);
+    std::complex<double> total(0.0, 0.0);
+    for (const std::complex<double>& psi : local) {
+        total += psi;
+        const double phase = (std::arg(psi) + std::numbers::pi) / (2.0 * std::numbers::pi);
+        order_.push_back(static_cast<unsigned char>(std::lround(std::clamp(phase, 0.0, 1.0) * 255.0)));
+        order_.push_back(static_cast<unsigned char>(std::lround(std::clamp(std::abs(psi), 0.0, 1.0) * 255.0)));
+    }
+    psi6_.push_back(particles.size() >= 7 ? std::abs(total / static_cast<double>(particles.size())) : 0.0);
+    double pressure = std::numeric_limits<double>::quiet_NaN();
+    if (sums && last_sums_ && time > last_time_) {
+        const particlesim::CollisionSums interval = *sums - *last_sums_;
+        pressure = (boundary_ == particlesim::Boundary::periodic
+                        ? particlesim::periodic_box_pressure(world_, particles.size(), kinetic_energy, interval,
+                                                             time - last_time_)
+                        : particlesim::walled_box_pressure(world_, particles.size(), kinetic_energy, interval,
+                                                           time - last_time_))
+                       .betaP_d2;
+    }
+    pressure_.push_back(pressure);
+    if (sums) last_sums_ = *sums;
 }
 
 void Animation::write() {
@@ -159,7 +190,18 @@ void Animation::write() {
                        ", \"speedMin\": " + number(speed_min_) + ", \"speedMax\": " + number(speed_max_) +
                        ", \"countMax\": " + std::to_string(count_max) + ", \"times\": [";
     for (std::size_t f = 0; f < times_.size(); ++f) meta += (f > 0 ? ", " : "") + number(times_[f]);
-    meta += "]}";
+    meta += "]";
+    if (colour_by_ == ColourBy::psi6) {
+        // JSON has no NaN: an unknown pressure is null.
+        const auto list = [](const std::vector<double>& values) {
+            std::string text = "[";
+            for (std::size_t f = 0; f < values.size(); ++f)
+                text += (f > 0 ? ", " : "") + (std::isfinite(values[f]) ? number(values[f]) : std::string("null"));
+            return text + "]";
+        };
+        meta += ", \"colourBy\": \"psi6\", \"psi6\": " + list(psi6_) + ", \"pressure\": " + list(pressure_);
+    }
+    meta += "}";
     page.text("<script id=\"run-meta\" type=\"application/json\">" + meta + "</script>\n");
 
     std::vector<unsigned char> bytes;
@@ -176,6 +218,11 @@ void Animation::write() {
     for (const std::uint32_t value : hits_) append_little_endian(bytes, value);
     page.base64(bytes);
     page.text("</script>\n");
+    if (colour_by_ == ColourBy::psi6) {
+        page.text("<script id=\"run-order\" type=\"application/octet-stream\">\n");
+        page.base64(order_);
+        page.text("</script>\n");
+    }
     page.text(page::after_data);
     file_->commit();
 }

@@ -52,6 +52,9 @@ Simulates N hard disks bouncing elastically in a square box, in discrete steps.
                                    ... (1/k): frames between whole steps
       --snapshot FILE.svg          also write one state as an SVG picture
       --snapshot-step N              the state after step N (default: the last)
+      --colour-by speed|psi6       what --animate and --snapshot colour the disks by (default
+                                   speed); psi6: the local hexatic order's phase as a hue, and
+                                   the page plots |psi6| and the pressure beside the box
       --trajectory FILE.xyz        also write the states as extended XYZ frames (OVITO, ASE)
       --trajectory-every K           every K steps (default 1), and the last step
       --observables FILE.csv       with --engine exact: a CSV row every K steps of the collisions,
@@ -102,6 +105,7 @@ enum LongOnly {
     opt_animate_every,
     opt_snapshot,
     opt_snapshot_step,
+    opt_colour_by,
     opt_trajectory,
     opt_trajectory_every,
     opt_observables,
@@ -139,6 +143,7 @@ struct Given {
     std::optional<PairSearch> pair_search;
     std::optional<double> animate_every;
     std::optional<std::int64_t> snapshot_step;
+    bool colour_by = false;
     std::optional<std::int64_t> trajectory_every;
     std::optional<std::int64_t> observe_every;
     std::optional<std::int64_t> measure_from;
@@ -165,6 +170,9 @@ void check_combinations(CliOptions& options, const Given& given) {
         throw BadInput("--animate-every below 1 needs --engine exact: the step rules have no state between steps");
     }
     if (given.snapshot_step && !options.snapshot_path) throw BadInput("--snapshot-step N needs --snapshot FILE.svg");
+    if (given.colour_by && !options.animation && !options.snapshot_path) {
+        throw BadInput("--colour-by needs --animate FILE.html or --snapshot FILE.svg");
+    }
     options.snapshot_step = given.snapshot_step;
     if (given.trajectory_every && !options.trajectory_path) {
         throw BadInput("--trajectory-every K needs --trajectory FILE.xyz");
@@ -219,6 +227,7 @@ std::optional<CliOptions> parse_arguments(int argc, char** argv) {
                                           {"animate-every", required_argument, nullptr, opt_animate_every},
                                           {"snapshot", required_argument, nullptr, opt_snapshot},
                                           {"snapshot-step", required_argument, nullptr, opt_snapshot_step},
+                                          {"colour-by", required_argument, nullptr, opt_colour_by},
                                           {"trajectory", required_argument, nullptr, opt_trajectory},
                                           {"trajectory-every", required_argument, nullptr, opt_trajectory_every},
                                           {"observables", required_argument, nullptr, opt_observables},
@@ -286,6 +295,14 @@ std::optional<CliOptions> parse_arguments(int argc, char** argv) {
         case opt_snapshot_step:
             given.snapshot_step = static_cast<std::int64_t>(parse_unsigned("--snapshot-step", value, 0, INT64_MAX));
             break;
+        case opt_colour_by: {
+            given.colour_by = true;
+            const std::string_view name = value;
+            if (name != "speed" && name != "psi6")
+                throw BadInput("--colour-by: expected speed or psi6, found \"" + std::string(value) + "\"");
+            options.colour_by = name == "psi6" ? ColourBy::psi6 : ColourBy::speed;
+            break;
+        }
         case opt_trajectory: options.trajectory_path = std::string(value); break;
         case opt_trajectory_every:
             given.trajectory_every =

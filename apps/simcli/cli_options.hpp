@@ -4,6 +4,7 @@
 
 #include "animation.hpp"
 #include "checkpoint.hpp"
+#include "colour_by.hpp"
 #include "progress_line.hpp"
 
 #include "particlesim/random_scene.hpp"
@@ -39,6 +40,7 @@ struct CliOptions {
     std::optional<AnimationRequest> animation;
     std::optional<std::string> snapshot_path;
     std::optional<std::int64_t> snapshot_step;  // empty: the last step
+    ColourBy colour_by = ColourBy::speed;       // --animate and --snapshot
     std::optional<std::string> trajectory_path;
     std::int64_t trajectory_every = 1;
     std::optional<std::string> observables_path;

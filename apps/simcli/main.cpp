@@ -51,13 +51,22 @@ struct Pictures {
     std::int64_t snapshot_step = 0;
     std::optional<Trajectory> trajectory;
     std::optional<ObservablesFile> observables;  // the exact engine's
+    ColourBy colour_by = ColourBy::speed;        // the snapshot's (the page keeps its own)
+    Boundary boundary = Boundary::walls;
 
     template <Engine E>
     void observe(std::int64_t step, const E& engine, const World& world) {
         if (animation && animation->per_step() == 1 && animation->wants(step)) {
-            animation->add_frame(static_cast<double>(step), engine.particles(), engine.totals());
+            if constexpr (requires { engine.collision_sums(); }) {
+                animation->add_frame(static_cast<double>(step), engine.particles(), engine.totals(), 1.0,
+                                     &engine.collision_sums());
+            } else {
+                animation->add_frame(static_cast<double>(step), engine.particles(), engine.totals());
+            }
         }
-        if (snapshot_path && step == snapshot_step) write_snapshot(*snapshot_path, world, engine.particles(), step);
+        if (snapshot_path && step == snapshot_step) {
+            write_snapshot(*snapshot_path, world, engine.particles(), step, colour_by, boundary);
+        }
         if (trajectory) trajectory->observe(step, engine.particles());
         if constexpr (requires { engine.collision_sums(); }) {
             if (observables) observables->observe(step, engine.particles(), engine.totals(), engine.collision_sums());
@@ -212,6 +221,8 @@ void run_scene(const CliOptions& options) {
                                options.engine, options.boundary, options.stepped.substeps,
                                options.numbers};
     Pictures pictures;
+    pictures.colour_by = options.colour_by;
+    pictures.boundary = options.boundary;
     if (options.snapshot_path) {
         pictures.snapshot_path = options.snapshot_path;
         pictures.snapshot_step = options.snapshot_step.value_or(scene.steps);
@@ -239,7 +250,8 @@ void run_scene(const CliOptions& options) {
     const bool exact = options.engine == EngineChoice::exact;
     if (options.animation) {
         pictures.animation.emplace(*options.animation, scene.world, particles.size(), scene.steps,
-                                   exact ? "exact" : "step", options.stepped.substeps);
+                                   exact ? "exact" : "step", options.stepped.substeps, options.colour_by,
+                                   options.boundary);
     }
     const bool between_steps = pictures.animation && pictures.animation->per_step() > 1;
     const std::vector<Particle> start = between_steps ? particles : std::vector<Particle>{};

@@ -10,6 +10,7 @@
 #include <cmath>
 #include <cstdio>
 #include <cstring>
+#include <vector>
 
 namespace simcli {
 
@@ -32,7 +33,8 @@ std::array<int, 3> ramp(double t) {
 }  // namespace
 
 void write_snapshot(const std::string& path, const particlesim::World& world,
-                    std::span<const particlesim::Particle> particles, std::int64_t step) {
+                    std::span<const particlesim::Particle> particles, std::int64_t step, ColourBy colour_by,
+                    particlesim::Boundary boundary) {
     OutputFile file(path);
     std::FILE* out = file.stream();
     const double L = world.box_size;
@@ -58,18 +60,29 @@ void write_snapshot(const std::string& path, const particlesim::World& world,
                  L, L, pixel);
     // y upwards, as in the box.
     std::fprintf(out, "<g transform=\"matrix(1 0 0 -1 0 %.7g)\">\n", L);
-    for (const particlesim::Particle& p : particles) {
+    const bool by_order = colour_by == ColourBy::psi6;
+    const std::vector<std::complex<double>> order =
+        by_order ? particlesim::local_hexatic_order(particles, world, boundary) : std::vector<std::complex<double>>{};
+    for (std::size_t i = 0; i < particles.size(); ++i) {
+        const particlesim::Particle& p = particles[i];
         const double t = high > low ? (p.velocity.norm() - low) / (high - low) : 0.5;
-        const auto [red, green, blue] = ramp(t);
+        const auto [red, green, blue] = by_order ? psi6_colour(order[i]) : ramp(t);
         std::fprintf(out, "<circle cx=\"%.7g\" cy=\"%.7g\" r=\"%.7g\" fill=\"rgb(%d,%d,%d)\"/>\n", p.position.x(),
                      p.position.y(), radius, red, green, blue);
     }
     std::fprintf(out, "</g>\n");
+    char colour[160];
+    if (by_order) {
+        std::snprintf(colour, sizeof colour, "colour: local psi6, hue its phase, darker where small; |psi6| = %.3f",
+                      particlesim::hexatic_order(particles, world, boundary));
+    } else {
+        std::snprintf(colour, sizeof colour, "colour: speed from %.4g (purple) to %.4g (yellow)", low, high);
+    }
     std::fprintf(out,
                  "<text x=\"0\" y=\"%.7g\" font-family=\"sans-serif\" font-size=\"%.7g\" fill=\"#1f2328\">step %lld, "
-                 "%zu particles, L = %.6g, r = %.6g; colour: speed from %.4g (purple) to %.4g (yellow)</text>\n",
+                 "%zu particles, L = %.6g, r = %.6g; %s</text>\n",
                  L + margin + 18.0 * pixel, 13.0 * pixel, static_cast<long long>(step), particles.size(), L,
-                 world.radius, low, high);
+                 world.radius, colour);
     std::fprintf(out, "</svg>\n");
     if (std::ferror(out)) throw particlesim::OutputError(path + ": cannot write: " + std::strerror(errno));
     file.commit();

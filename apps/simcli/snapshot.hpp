@@ -1,8 +1,11 @@
 #pragma once
 // simcli --snapshot FILE.svg [--snapshot-step N]: one state as an SVG picture
 // for documents: the box, the disks to scale (at least a visible size),
-// coloured by speed, with a caption.
+// coloured by speed or by the local psi6 (colour_by.hpp), with a caption.
 
+#include "colour_by.hpp"
+
+#include "particlesim/observables.hpp"
 #include "particlesim/particle.hpp"
 #include "particlesim/world.hpp"
 
@@ -14,6 +17,8 @@ namespace simcli {
 
 // Writes atomically, like -o. Throws particlesim::OutputError.
 void write_snapshot(const std::string& path, const particlesim::World& world,
-                    std::span<const particlesim::Particle> particles, std::int64_t step);
+                    std::span<const particlesim::Particle> particles, std::int64_t step,
+                    ColourBy colour_by = ColourBy::speed,
+                    particlesim::Boundary boundary = particlesim::Boundary::walls);
 
 }  // namespace simcli

@@ -12,8 +12,10 @@
 #include "particlesim/particle.hpp"
 #include "particlesim/world.hpp"
 
+#include <complex>
 #include <cstddef>
 #include <span>
+#include <vector>
 
 namespace particlesim {
 
@@ -58,6 +60,14 @@ Pressure periodic_box_pressure(const World& world, std::size_t count, double kin
 // lattice, about 1 / sqrt(N) for a random gas. 0 for fewer than 7 disks. In a
 // periodic box, neighbours are nearest images.
 double hexatic_order(std::span<const Particle> particles, const World& world, Boundary boundary = Boundary::walls);
+
+// Each disk's own psi6, (1/6) sum over its six nearest neighbours of
+// exp(6 i theta), by index: its phase arg(psi6) / 6 is the local lattice's
+// orientation (the picture of hexatic domains), its modulus how ordered the
+// neighbourhood is. hexatic_order() is |the mean of these|. All 0 for fewer
+// than 7 disks.
+std::vector<std::complex<double>> local_hexatic_order(std::span<const Particle> particles, const World& world,
+                                                      Boundary boundary = Boundary::walls);
 
 // The mean of a series and its standard error from `blocks` block averages
 // (the error of correlated samples: blocks longer than the correlation time

@@ -44,7 +44,7 @@ public:
         if (huge(bytes)) {
             std::free(memory);
         } else {
-            ::operator delete (memory, bytes, std::align_val_t{alignof(T)});
+            ::operator delete (memory, std::align_val_t{alignof(T)});  // unsized: clang needs no -fsized-deallocation
         }
     }
 

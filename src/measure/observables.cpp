@@ -60,9 +60,11 @@ Pressure periodic_box_pressure(const World& world, std::size_t count, double kin
     return p;
 }
 
-double hexatic_order(std::span<const Particle> particles, const World& world, Boundary boundary) {
+std::vector<std::complex<double>> local_hexatic_order(std::span<const Particle> particles, const World& world,
+                                                      Boundary boundary) {
     const std::size_t n = particles.size();
-    if (n < 7) return 0.0;
+    std::vector<std::complex<double>> local(n, std::complex<double>(0.0, 0.0));
+    if (n < 7) return local;
     // About four disks a cell; rings of cells are searched until the sixth
     // nearest is closer than anything outside them can be.
     const UniformGrid grid(world.box_size,
@@ -77,7 +79,6 @@ double hexatic_order(std::span<const Particle> particles, const World& world, Bo
         Vec2 bond;
     };
     std::vector<Neighbour> found;
-    std::complex<double> total(0.0, 0.0);
     // In a periodic box the rings wrap around the edges and every bond is the
     // nearest image's; a ring as wide as the box holds all of it once.
     const bool periodic = boundary == Boundary::periodic;
@@ -123,9 +124,16 @@ double hexatic_order(std::span<const Particle> particles, const World& world, Bo
             const std::complex<double> u2 = u * u;
             psi += u2 * u2 * u2;  // exp(6 i theta), without trigonometry
         }
-        total += psi / 6.0;
+        local[i] = psi / 6.0;
     }
-    return std::abs(total / static_cast<double>(n));
+    return local;
+}
+
+double hexatic_order(std::span<const Particle> particles, const World& world, Boundary boundary) {
+    if (particles.size() < 7) return 0.0;
+    std::complex<double> total(0.0, 0.0);
+    for (const std::complex<double>& psi : local_hexatic_order(particles, world, boundary)) total += psi;
+    return std::abs(total / static_cast<double>(particles.size()));
 }
 
 MeanWithError block_average(std::span<const double> samples, std::size_t blocks) {

@@ -1,7 +1,8 @@
 // The player of a simcli run (simcli --animate). Plain JavaScript, no
 // library: the page must open offline, forever, from one file. simcli embeds
 // this file at build time and writes the run's data beside it (run-meta,
-// run-frames, run-series, run-hits; formats in apps/simcli/animation.hpp).
+// run-frames, run-series, run-hits, and run-order with --colour-by psi6;
+// formats in apps/simcli/animation.hpp).
 "use strict";
 
 (() => {
@@ -30,6 +31,8 @@
     hits.push(hitWords.subarray(at, at + 3 * n));
     at += 3 * n;
   }
+  // --colour-by psi6: per frame and particle, the local psi6's phase and modulus (bytes).
+  const order = meta.colourBy === "psi6" ? new Uint8Array(bytesOf("run-order")) : null;
   const L = meta.box;
   const r = meta.radius;
 
@@ -43,7 +46,16 @@
     `${count} particles, L = ${L}, r = ${r}, ${meta.steps} steps, ` +
     (meta.engine === "exact" ? "exact engine" : `step rules${meta.substeps > 1 ? `, ${meta.substeps} substeps` : ""}`) +
     (meta.every !== 1 ? `, one frame every ${meta.every} step${meta.every === 1 ? "" : "s"}` : "");
-  const settings = { colour: "speed", trails: "none", showHits: true, showOverlaps: true, chosen: -1, fps: 20 };
+  const settings = { colour: order ? "psi6" : "speed", trails: "none", showHits: true, showOverlaps: true, chosen: -1, fps: 20 };
+  if (order) {
+    const option = document.createElement("option");
+    option.value = "psi6";
+    option.textContent = "by psi6 phase";
+    $("colour").prepend(option);
+    $("colour").value = "psi6";
+    $("psi6-figure").hidden = false;
+    $("pressure-figure").hidden = !meta.pressure.some((p) => p !== null);
+  }
   let current = 0;
   let playing = null;
 
@@ -69,6 +81,22 @@
   const buckets = 32;
   const bucketColours = Array.from({ length: buckets }, (_, k) => ramp(k / (buckets - 1)));
   const fixedColour = "rgb(232,89,12)";
+  // psi6: a hue round the wheel for the phase (the local lattice's
+  // orientation), four brightnesses for the modulus, as simcli's --snapshot.
+  const hueColour = (t, value) => {
+    const h = (((t % 1) + 1) % 1) * 6, sector = Math.min(Math.floor(h), 5), w = h - sector;
+    const up = value * w, down = value * (1 - w);
+    const rgb = [[value, up, 0], [down, value, 0], [0, value, up], [0, down, value], [up, 0, value], [value, 0, down]][sector];
+    return `rgb(${rgb.map((c) => Math.round(255 * c)).join(",")})`;
+  };
+  const levels = 4;
+  const psiColours = Array.from({ length: buckets * levels }, (_, k) =>
+    hueColour(Math.floor(k / levels) / buckets, 0.25 + (0.75 * ((k % levels) + 0.5)) / levels));
+  const psiGroupOf = (f, i) => {
+    const at = (f * count + i) * 2;
+    const hue = Math.round((order[at] / 255) * buckets) % buckets; // the phase is cyclic: bytes 0 and 255 meet
+    return hue * levels + Math.min(levels - 1, Math.floor((order[at + 1] / 256) * levels));
+  };
 
   // Collisions so far of each particle at the current frame (kept incrementally).
   const collisionsSoFar = new Float64Array(count);
@@ -139,11 +167,13 @@
     ctx.lineWidth = 1;
     ctx.strokeRect(px(0) - 0.5, py(L) - 0.5, L * scale + 1, L * scale + 1);
     drawTrails(f);
-    const groups = Array.from({ length: buckets }, () => []);
-    for (let i = 0; i < count; ++i) groups[settings.colour === "fixed" ? 0 : bucketOf(f, i)].push(i);
+    const byOrder = settings.colour === "psi6";
+    const palette = byOrder ? psiColours : bucketColours;
+    const groups = Array.from({ length: palette.length }, () => []);
+    for (let i = 0; i < count; ++i) groups[settings.colour === "fixed" ? 0 : byOrder ? psiGroupOf(f, i) : bucketOf(f, i)].push(i);
     groups.forEach((members, b) => {
       if (members.length === 0) return;
-      ctx.fillStyle = settings.colour === "fixed" ? fixedColour : bucketColours[b];
+      ctx.fillStyle = settings.colour === "fixed" ? fixedColour : palette[b];
       ctx.beginPath();
       for (const i of members) {
         const x = px(frames[(f * count + i) * 4]), y = py(frames[(f * count + i) * 4 + 1]);
@@ -214,7 +244,13 @@
     const w = canvas.width, h = canvas.height, left = 58, bottom = 16;
     c.clearRect(0, 0, w, h);
     let low = Infinity, high = -Infinity;
-    for (const line of lines) for (let g = 1; g < frameCount; ++g) { low = Math.min(low, line.value(g)); high = Math.max(high, line.value(g)); }
+    for (const line of lines) {
+      for (let g = 1; g < frameCount; ++g) {
+        const v = line.value(g);
+        if (Number.isFinite(v)) { low = Math.min(low, v); high = Math.max(high, v); }
+      }
+    }
+    if (!Number.isFinite(low)) { low = 0; high = 1; }
     if (!(high > low)) { low -= 1; high += 1; }
     const x = (g) => left + ((w - left - 4) * (frameCount > 1 ? g / (frameCount - 1) : 0));
     const y = (v) => h - bottom - ((h - bottom - 6) * (v - low)) / (high - low);
@@ -227,7 +263,13 @@
     for (const line of lines) {
       c.strokeStyle = line.colour;
       c.beginPath();
-      for (let g = 1; g < frameCount; ++g) (g === 1 ? c.moveTo : c.lineTo).call(c, x(g), y(line.value(g)));
+      let drawing = false; // an unknown value (NaN) breaks the line
+      for (let g = 1; g < frameCount; ++g) {
+        const v = line.value(g);
+        if (!Number.isFinite(v)) { drawing = false; continue; }
+        (drawing ? c.lineTo : c.moveTo).call(c, x(g), y(v));
+        drawing = true;
+      }
       c.stroke();
     }
     c.strokeStyle = "#000000";
@@ -247,6 +289,15 @@
     plotLines($("energy-plot"), [{ colour: "#2b8a3e", value: (g) => series[g * 4 + 3] }], f);
     $("energy-label").textContent = `E = ${series[f * 4 + 3].toPrecision(8)}`;
     drawSpeedHistogram(f);
+    if (order) {
+      plotLines($("psi6-plot"), [{ colour: "#7048e8", value: (g) => meta.psi6[g] }], f);
+      $("psi6-label").textContent = meta.psi6[f].toFixed(4);
+      $("psi6-label").dataset.value = String(meta.psi6[f]);
+      const pressureAt = (g) => (meta.pressure[g] === null ? NaN : meta.pressure[g]);
+      plotLines($("pressure-plot"), [{ colour: "#e8590c", value: pressureAt }], f);
+      $("pressure-label").textContent = Number.isFinite(pressureAt(f)) ? pressureAt(f).toPrecision(6) : "";
+      $("pressure-label").dataset.value = String(pressureAt(f));
+    }
   };
   const formatCount = (v) => (Number.isInteger(v) ? String(v) : v.toFixed(2));
 
@@ -294,8 +345,14 @@
   const drawLegend = () => {
     const bar = $("legend-bar").getContext("2d");
     for (let k = 0; k < 220; ++k) {
-      bar.fillStyle = settings.colour === "fixed" ? fixedColour : ramp(k / 219);
+      bar.fillStyle = settings.colour === "fixed" ? fixedColour : settings.colour === "psi6" ? hueColour(k / 220, 1) : ramp(k / 219);
       bar.fillRect(k, 0, 1, 12);
+    }
+    if (settings.colour === "psi6") {
+      $("legend-low").textContent = "0\u00B0";
+      $("legend-high").textContent = "60\u00B0";
+      $("legend-name").textContent = "local lattice's orientation (phase of psi6 / 6); darker where |psi6| is small";
+      return;
     }
     const byCount = settings.colour === "collisions";
     $("legend-low").textContent = settings.colour === "fixed" ? "" : byCount ? "0" : meta.speedMin.toPrecision(3);
@@ -391,6 +448,19 @@
     // The pixel that contains the point (a disk at least 1.5 pixels in radius covers it whole).
     const pixelAt = (x, y) => Array.from(ctx.getImageData(Math.floor(px(x)), Math.floor(py(y)), 1, 1).data.slice(0, 3));
     const results = { frames: frameCount, openMs, scriptMs };
+    if (order) {
+      // Before anything else changes the colours: the pixel at each point in
+      // the psi6 colouring, and the plots' labels at the last frame.
+      settings.showHits = false;
+      settings.showOverlaps = false;
+      go(request.frame);
+      results.psi6Colours = request.on.map(([x, y]) => pixelAt(x, y));
+      go(frameCount - 1);
+      results.psi6Shown = !$("psi6-figure").hidden;
+      results.pressureShown = !$("pressure-figure").hidden;
+      results.psi6 = Number($("psi6-label").dataset.value);
+      results.pressure = Number($("pressure-label").dataset.value);
+    }
     settings.colour = "fixed";
     settings.showHits = false;
     settings.showOverlaps = false;
