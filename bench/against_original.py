@@ -1,0 +1,43 @@
+#!/usr/bin/env python3
+"""simcli against the original team's sequential program on one scene file,
+whole runs, the programs alternating run by run (the order flips every
+round). The original (ariadn3/DiscreteParticleSimulator, openmp/sequential,
+built with `gcc -O3 -fopenmp -o sim *.c -lm`) reads the scene on stdin.
+Prints CSV: per program the median, lowest and highest time, and the
+original's median over the program's.
+
+    bench/against_original.py ORIGINAL_SIM BUILD_DIR [SCENE [ROUNDS]] > bench/results/<machine>/against_original.csv
+"""
+import os
+import statistics
+import subprocess
+import sys
+import time
+
+original = sys.argv[1]
+build = sys.argv[2]
+scene = sys.argv[3] if len(sys.argv) > 3 else os.path.join(os.path.dirname(__file__), "..", "examples", "default.in")
+rounds = int(sys.argv[4]) if len(sys.argv) > 4 else 7
+simcli = os.path.join(build, "apps", "simcli")
+programs = {
+    "original sequential": ([original], True),
+    "simcli -t 1": ([simcli, "-t", "1", scene, "-o", os.devnull], False),
+    "simcli -t 2": ([simcli, "-t", "2", scene, "-o", os.devnull], False),
+    "simcli": ([simcli, scene, "-o", os.devnull], False),
+}
+times = {name: [] for name in programs}
+for round_number in range(rounds):
+    names = list(programs) if round_number % 2 == 0 else list(reversed(programs))
+    for name in names:
+        command, on_stdin = programs[name]
+        with open(scene) as stdin:
+            start = time.perf_counter()
+            subprocess.run(command, stdin=stdin if on_stdin else subprocess.DEVNULL, stdout=subprocess.DEVNULL,
+                           stderr=subprocess.DEVNULL, check=True)
+            times[name].append(time.perf_counter() - start)
+reference = statistics.median(times["original sequential"])
+print("scene,program,rounds,median_s,min_s,max_s,original_over_this")
+for name, values in times.items():
+    median = statistics.median(values)
+    print(f"{os.path.basename(scene)},{name},{rounds},{median:.4f},{min(values):.4f},{max(values):.4f},"
+          f"{reference / median:.2f}")
