@@ -222,7 +222,6 @@ void choice_benchmark(bool quick) {
         const double nd = static_cast<double>(c.count);
         const std::int64_t steps = steps_for(2e-9 * nd * nd / 16.0 + 1e-6, quick ? 0.05 : 0.3, 2000);
         std::vector<double> paths, grid;
-        PairSearch chosen = PairSearch::automatic;
         for (int round = 0; round < rounds; ++round) {
             for (int k = 0; k < 2; ++k) {
                 const bool run_paths = (k == 0) == (round % 2 == 0);
@@ -234,7 +233,7 @@ void choice_benchmark(bool quick) {
                 (run_paths ? paths : grid).push_back(seconds / static_cast<double>(steps));
             }
         }
-        chosen = SteppedSimulation(world, particles, {.threads = 1}).pair_search();
+        const PairSearch chosen = SteppedSimulation(world, particles, {.threads = 1}).pair_search();
         const double p = median(paths), g = median(grid);
         std::printf("%s,%zu,%g,%lld,%d,%s,%.6g,%.6g,%.3f\n", c.name.c_str(), c.count, c.box_size,
                     static_cast<long long>(steps), rounds, pair_search_name(chosen), p, g,

@@ -154,23 +154,18 @@ void Animation::add_frame(double time, std::span<const Particle> particles, cons
 void Animation::add_order(double time, std::span<const Particle> particles, double kinetic_energy,
                           const particlesim::CollisionSums* sums) {
     const std::vector<std::complex<double>> local = particlesim::local_hexatic_order(particles, world_, boundary_);
-    std::complex<double> total(0.0, 0.0);
     for (const std::complex<double>& psi : local) {
-        total += psi;
         const double phase = (std::arg(psi) + std::numbers::pi) / (2.0 * std::numbers::pi);
         order_.push_back(static_cast<unsigned char>(std::lround(std::clamp(phase, 0.0, 1.0) * 255.0)));
         order_.push_back(static_cast<unsigned char>(std::lround(std::clamp(std::abs(psi), 0.0, 1.0) * 255.0)));
     }
-    psi6_.push_back(particles.size() >= 7 ? std::abs(total / static_cast<double>(particles.size())) : 0.0);
+    psi6_.push_back(particlesim::mean_hexatic_order(local));
     double pressure = std::numeric_limits<double>::quiet_NaN();
     if (sums && last_sums_ && time > last_time_) {
         const particlesim::CollisionSums interval = *sums - *last_sums_;
-        pressure = (boundary_ == particlesim::Boundary::periodic
-                        ? particlesim::periodic_box_pressure(world_, particles.size(), kinetic_energy, interval,
-                                                             time - last_time_)
-                        : particlesim::walled_box_pressure(world_, particles.size(), kinetic_energy, interval,
-                                                           time - last_time_))
-                       .betaP_d2;
+        pressure =
+            particlesim::box_pressure(world_, boundary_, particles.size(), kinetic_energy, interval, time - last_time_)
+                .betaP_d2;
     }
     pressure_.push_back(pressure);
     if (sums) last_sums_ = *sums;

@@ -31,19 +31,16 @@ void ObservablesFile::observe(std::int64_t step, std::span<const particlesim::Pa
     double kinetic = 0.0;
     for (const particlesim::Particle& p : particles) kinetic += 0.5 * p.velocity.squaredNorm();
     const double duration = static_cast<double>(step - previous_step_);
+    const particlesim::Boundary boundary = periodic_ ? particlesim::Boundary::periodic : particlesim::Boundary::walls;
     const particlesim::Pressure pressure =
-        periodic_
-            ? particlesim::periodic_box_pressure(world_, particles.size(), kinetic, sums - previous_sums_, duration)
-            : particlesim::walled_box_pressure(world_, particles.size(), kinetic, sums - previous_sums_, duration);
+        particlesim::box_pressure(world_, boundary, particles.size(), kinetic, sums - previous_sums_, duration);
     text_.clear();
     text_ += std::to_string(step) + ',';
     append_shortest(text_, static_cast<double>(step));
     text_ += ',' + std::to_string(totals.particle_collisions - previous_totals_.particle_collisions);
     text_ += ',' + std::to_string(totals.wall_collisions - previous_totals_.wall_collisions);
     for (const double value :
-         {kinetic, pressure.betaP_d2, pressure.Z,
-          particlesim::hexatic_order(particles, world_,
-                                     periodic_ ? particlesim::Boundary::periodic : particlesim::Boundary::walls)}) {
+         {kinetic, pressure.betaP_d2, pressure.Z, particlesim::hexatic_order(particles, world_, boundary)}) {
         text_ += ',';
         append_shortest(text_, value);
     }

@@ -74,7 +74,7 @@ void write_snapshot(const std::string& path, const particlesim::World& world,
     char colour[160];
     if (by_order) {
         std::snprintf(colour, sizeof colour, "colour: local psi6, hue its phase, darker where small; |psi6| = %.3f",
-                      particlesim::hexatic_order(particles, world, boundary));
+                      particlesim::mean_hexatic_order(order));
     } else {
         std::snprintf(colour, sizeof colour, "colour: speed from %.4g (purple) to %.4g (yellow)", low, high);
     }

@@ -52,6 +52,10 @@ Pressure walled_box_pressure(const World& world, std::size_t count, double kinet
 Pressure periodic_box_pressure(const World& world, std::size_t count, double kinetic_energy, const CollisionSums& sums,
                                double duration);
 
+// The one of the two above that the boundary calls for.
+Pressure box_pressure(const World& world, Boundary boundary, std::size_t count, double kinetic_energy,
+                      const CollisionSums& sums, double duration);
+
 // |<psi6>|: the mean over disks of (1/6) sum over its six nearest neighbours
 // of exp(6 i theta), theta the bond's angle. Six nearest rather than Voronoi
 // neighbours: no tessellation to build, the same count at every disk (a
@@ -68,6 +72,11 @@ double hexatic_order(std::span<const Particle> particles, const World& world, Bo
 // than 7 disks.
 std::vector<std::complex<double>> local_hexatic_order(std::span<const Particle> particles, const World& world,
                                                       Boundary boundary = Boundary::walls);
+
+// |the mean of the disks' own psi6|: hexatic_order() from what
+// local_hexatic_order() gave, for a caller that has both to show. 0 for
+// fewer than 7 disks.
+double mean_hexatic_order(std::span<const std::complex<double>> local);
 
 // The mean of a series and its standard error from `blocks` block averages
 // (the error of correlated samples: blocks longer than the correlation time

@@ -60,6 +60,12 @@ Pressure periodic_box_pressure(const World& world, std::size_t count, double kin
     return p;
 }
 
+Pressure box_pressure(const World& world, Boundary boundary, std::size_t count, double kinetic_energy,
+                      const CollisionSums& sums, double duration) {
+    return boundary == Boundary::periodic ? periodic_box_pressure(world, count, kinetic_energy, sums, duration)
+                                          : walled_box_pressure(world, count, kinetic_energy, sums, duration);
+}
+
 std::vector<std::complex<double>> local_hexatic_order(std::span<const Particle> particles, const World& world,
                                                       Boundary boundary) {
     const std::size_t n = particles.size();
@@ -129,11 +135,15 @@ std::vector<std::complex<double>> local_hexatic_order(std::span<const Particle> 
     return local;
 }
 
-double hexatic_order(std::span<const Particle> particles, const World& world, Boundary boundary) {
-    if (particles.size() < 7) return 0.0;
+double mean_hexatic_order(std::span<const std::complex<double>> local) {
+    if (local.size() < 7) return 0.0;
     std::complex<double> total(0.0, 0.0);
-    for (const std::complex<double>& psi : local_hexatic_order(particles, world, boundary)) total += psi;
-    return std::abs(total / static_cast<double>(particles.size()));
+    for (const std::complex<double>& psi : local) total += psi;
+    return std::abs(total / static_cast<double>(local.size()));
+}
+
+double hexatic_order(std::span<const Particle> particles, const World& world, Boundary boundary) {
+    return mean_hexatic_order(local_hexatic_order(particles, world, boundary));
 }
 
 MeanWithError block_average(std::span<const double> samples, std::size_t blocks) {

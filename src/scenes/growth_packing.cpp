@@ -1,11 +1,11 @@
 #include "scenes/growth_packing.hpp"
 
+#include "core/physics.hpp"
 #include "core/random.hpp"
 #include "io/number_format.hpp"
 
 #include <algorithm>
 #include <cmath>
-#include <limits>
 #include <numbers>
 #include <queue>
 #include <stdexcept>
@@ -15,8 +15,6 @@
 namespace particlesim {
 
 namespace {
-
-constexpr double never = std::numeric_limits<double>::infinity();
 
 // Every gap ends at least this fraction of a diameter wide, so that scaling
 // the packing to the scene's units never makes two disks touch.
@@ -105,12 +103,10 @@ public:
         now_ = end_;
         GrownPacking packing;
         packing.box_size = box_;
-        packing.radius = target_radius_;
-        packing.collisions = collisions_;
         for (std::uint32_t i = 0; i < count_; ++i) {
             Vec2 centre = position_at(i, now_);
             if (request_.periodic) {
-                for (int axis = 0; axis < 2; ++axis) centre[axis] -= box_ * std::floor(centre[axis] / box_);
+                for (int axis = 0; axis < 2; ++axis) centre[axis] = wrap_into_periodic_box(centre[axis], box_);
             }
             packing.centres.push_back(centre);
         }
@@ -283,7 +279,6 @@ private:
             const Vec2 kick = (growth - closing) * normal;
             disks_[i].velocity -= kick;
             disks_[j].velocity += kick;
-            ++collisions_;
         }
         ++disks_[i].version;
         ++disks_[j].version;
@@ -358,16 +353,14 @@ private:
     std::vector<std::vector<std::uint32_t>> cells_;
     std::priority_queue<Event, std::vector<Event>, Later> queue_;
     double now_ = 0.0;
-    std::uint64_t collisions_ = 0;
 };
 
 }  // namespace
 
 GrownPacking grow_packing(const GrowthRequest& request) {
-    const double close_packing = std::numbers::pi / (2.0 * std::sqrt(3.0));
-    if (!(request.area_fraction > 0.0 && request.area_fraction < close_packing)) {
+    if (!(request.area_fraction > 0.0 && request.area_fraction < close_packing_fraction)) {
         throw std::invalid_argument("particlesim::make_family_scene: a compression reaches area fractions in (0, " +
-                                    format_short(close_packing) + "), below close packing, not " +
+                                    format_short(close_packing_fraction) + "), below close packing, not " +
                                     format_short(request.area_fraction));
     }
     if (!(request.growth_rate > 0.0 && request.growth_rate <= 10.0)) {
@@ -377,7 +370,7 @@ GrownPacking grow_packing(const GrowthRequest& request) {
     if (request.count > 0xfffffffeU) {
         throw std::invalid_argument("particlesim::make_family_scene: too many disks to grow a packing");
     }
-    if (request.count == 0) return GrownPacking{0.0, 0.0, {}, 0};
+    if (request.count == 0) return GrownPacking{};
     return Growth(request).run();
 }
 

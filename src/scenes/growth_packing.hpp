@@ -9,6 +9,7 @@
 #include "particlesim/particle.hpp"
 
 #include <cstdint>
+#include <numbers>
 #include <vector>
 
 namespace particlesim {
@@ -27,11 +28,12 @@ struct GrowthRequest {
     std::uint64_t seed = 1;
 };
 
+// The densest packing of disks in the plane, the triangular lattice's: pi / (2 sqrt 3).
+inline constexpr double close_packing_fraction = std::numbers::pi / (2.0 * std::numbers::sqrt3);
+
 struct GrownPacking {
     double box_size = 0.0;  // sqrt(N): a number density of 1
-    double radius = 0.0;    // the radius at the fraction asked for (gaps are a little wider)
     std::vector<Vec2> centres;
-    std::uint64_t collisions = 0;
 };
 
 // Throws std::invalid_argument when the packing cannot be grown: a fraction

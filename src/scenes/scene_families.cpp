@@ -1,5 +1,6 @@
 #include "particlesim/scene_families.hpp"
 
+#include "core/physics.hpp"
 #include "core/random.hpp"
 #include "input/scene_checks.hpp"
 #include "io/number_format.hpp"
@@ -284,9 +285,6 @@ double standard_normal(SplitMix64& rng) {
 // that rounding the positions never makes two touch.
 constexpr double crystal_clearance = 1e-9;
 
-// The densest packing of disks in the plane: the triangular lattice's.
-const double plane_packing = std::numbers::pi / (2.0 * std::sqrt(3.0));
-
 // Maxwell velocities at kT (mass 1) shifted to zero total momentum and
 // scaled so that the kinetic energy is exactly (N - 1) kT: the 2 (N - 1)
 // degrees of freedom that the fixed momentum leaves.
@@ -345,9 +343,10 @@ Scene periodic_crystal(const SceneFamilyOptions& o, std::size_t count) {
         }
     }
     const double densest_box = 2.0 * r * (1.0 + crystal_clearance) / best;
-    const double densest =
-        std::min(static_cast<double>(count) * std::numbers::pi * r * r / (densest_box * densest_box), plane_packing);
-    const double fraction = o.area_fraction ? area_fraction_or(o, 0.7, plane_packing) : std::min(0.7, 0.95 * densest);
+    const double densest = std::min(static_cast<double>(count) * std::numbers::pi * r * r / (densest_box * densest_box),
+                                    close_packing_fraction);
+    const double fraction =
+        o.area_fraction ? area_fraction_or(o, 0.7, close_packing_fraction) : std::min(0.7, 0.95 * densest);
     const double box = side_for(count, r, fraction);
     if (count > 1 && !(best * box >= 2.0 * r * (1.0 + crystal_clearance))) {
         throw std::invalid_argument("particlesim::make_family_scene: " + std::to_string(count) +
@@ -377,10 +376,11 @@ Scene crystal(const SceneFamilyOptions& o) {
     const double r = o.radius;
     const LatticeShape shape = squarest_lattice(std::max<std::size_t>(count, 1));
     const double densest_box = 2.0 * r + 2.0 * r * (1.0 + crystal_clearance) * shape.extent();
-    const double densest =
-        std::min(static_cast<double>(count) * std::numbers::pi * r * r / (densest_box * densest_box), plane_packing);
+    const double densest = std::min(static_cast<double>(count) * std::numbers::pi * r * r / (densest_box * densest_box),
+                                    close_packing_fraction);
     // Unasked: 0.7, or a little below the densest for the few disks that cannot reach it.
-    const double fraction = o.area_fraction ? area_fraction_or(o, 0.7, plane_packing) : std::min(0.7, 0.95 * densest);
+    const double fraction =
+        o.area_fraction ? area_fraction_or(o, 0.7, close_packing_fraction) : std::min(0.7, 0.95 * densest);
     const double kT = checked_temperature(o);
     const double box = side_for(count, r, fraction);
     const double room = box - 2.0 * r;  // for the centres
@@ -421,7 +421,8 @@ Scene compressed(const SceneFamilyOptions& o) {
     for (const Vec2& centre : grown.centres) {
         Vec2 at = centre * scale;
         for (int axis = 0; axis < 2; ++axis) {
-            at[axis] = periodic ? (at[axis] < box ? at[axis] : 0.0) : std::clamp(at[axis], o.radius, box - o.radius);
+            at[axis] =
+                periodic ? wrap_into_periodic_box(at[axis], box) : std::clamp(at[axis], o.radius, box - o.radius);
         }
         particles.push_back(disk(at.x(), at.y()));
     }

@@ -99,6 +99,11 @@ CellRegion cells_reaching(const SweptBounds& box, const UniformGrid& grid) {
 
 }  // namespace
 
+int time_slices(double mean_sweep, double slice_sweep) {
+    if (!(slice_sweep > 0.0)) return 1;
+    return static_cast<int>(std::clamp(std::ceil(mean_sweep / slice_sweep), 1.0, double{max_slices}));
+}
+
 GridSearch::GridSearch() = default;
 GridSearch::~GridSearch() = default;
 GridSearch::GridSearch(GridSearch&&) noexcept = default;
@@ -136,10 +141,7 @@ GridLayout GridSearch::choose_layout(const PairSearchInput& in, std::optional<in
     layout.float_scale = std::abs(exponent) > float_safe_exponent ? std::ldexp(1.0, -exponent) : 1.0;
     const double mean_sweep = length_sum / static_cast<double>(std::max<std::int64_t>(present, 1));
     const double diameter = 2.0 * layout.reach;
-    const auto slices_for = [&](double slice_sweep) {
-        if (!(slice_sweep > 0.0)) return 1;
-        return static_cast<int>(std::clamp(std::ceil(mean_sweep / slice_sweep), 1.0, double{max_slices}));
-    };
+    const auto slices_for = [&](double slice_sweep) { return time_slices(mean_sweep, slice_sweep); };
 
     if (forced_cells) {
         layout.grid = UniformGrid(box_size, *forced_cells);

@@ -34,6 +34,10 @@ struct GridLayout {
     double float_scale = 1.0;
 };
 
+// The time slices a step is cut into: enough for a mean path of `mean_sweep`
+// to cover about `slice_sweep` a slice, from 1 to stepped_tuning::max_slices.
+[[nodiscard]] int time_slices(double mean_sweep, double slice_sweep);
+
 // A particle's path within one time slice, widened by the layout's reach.
 struct SweptBounds {
     double min_x, min_y, max_x, max_y;

@@ -1,5 +1,6 @@
 #include "stepped/search_choice.hpp"
 
+#include "search/grid_search.hpp"
 #include "stepped/stepped_tuning.hpp"
 
 #include <algorithm>
@@ -30,9 +31,7 @@ SearchCosts estimate_search_costs(const World& world, std::span<const Particle> 
     costs.new_lines = (walls + 2.0 * pairs) * micro;
     // The grid's slices, as GridSearch::choose_layout() cuts them.
     const double spacing = box / std::sqrt(count);
-    const double sweep = speeds / count * micro;
-    costs.slices =
-        static_cast<int>(std::clamp(std::ceil(sweep / (slice_sweep_in_spacings * spacing)), 1.0, double{max_slices}));
+    costs.slices = time_slices(speeds / count * micro, slice_sweep_in_spacings * spacing);
     // Each new line is tested against every line; the lines that pass (about
     // 4r / L of them, more in a small box) get the exact interval.
     const double per_line_test = paths_line_test_ns + paths_near_line_ns * std::min(1.0, 4.0 * r / box);
