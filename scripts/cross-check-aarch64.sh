@@ -20,7 +20,7 @@ done
 [ -x "$native" ] || { echo "no native simcli at $native" >&2; exit 1; }
 
 cmake -S "$source_dir" -B "$work" -DCMAKE_TOOLCHAIN_FILE="$source_dir/cmake/aarch64-linux-gnu.toolchain.cmake" \
-  -DCMAKE_BUILD_TYPE=Release -DCMAKE_CXX_FLAGS_RELEASE="-O1 -DNDEBUG" -DPARTICLESIM_BUILD_TESTS=OFF \
+  -DCMAKE_BUILD_TYPE=Release -DCMAKE_CXX_FLAGS_RELEASE="-O1 -DNDEBUG" -DCMAKE_UNITY_BUILD=ON -DPARTICLESIM_BUILD_TESTS=OFF \
   -DPARTICLESIM_BUILD_BENCH=OFF >/dev/null
 cmake --build "$work" --target simcli -j "$(nproc)" >/dev/null
 foreign=(qemu-aarch64 -L /usr/aarch64-linux-gnu "$work/apps/simcli")

@@ -19,7 +19,7 @@ if ! command -v clang++ >/dev/null 2>&1 ||
 fi
 
 CXX=clang++ cmake -S "$source_dir" -B "$work" -DCMAKE_BUILD_TYPE=RelWithDebInfo -DCMAKE_CXX_FLAGS_RELWITHDEBINFO="-O1 -g1" \
-  -DPARTICLESIM_FUZZ=ON \
+  -DCMAKE_UNITY_BUILD=ON -DPARTICLESIM_FUZZ=ON \
   -DPARTICLESIM_BUILD_APPS=OFF -DPARTICLESIM_BUILD_TESTS=OFF -DPARTICLESIM_BUILD_BENCH=OFF >/dev/null
 cmake --build "$work" --target fuzz_scene -j "$(nproc)" >/dev/null
 mkdir -p "$work/corpus"

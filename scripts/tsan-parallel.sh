@@ -19,7 +19,7 @@ if ! command -v clang++ >/dev/null 2>&1 || ! ls /usr/lib/llvm-*/lib/libomp.so >/
 fi
 
 CXX=clang++ cmake -S "$source_dir" -B "$work" -DCMAKE_BUILD_TYPE=RelWithDebInfo -DCMAKE_CXX_FLAGS_RELWITHDEBINFO="-O1 -g1" \
-  -DPARTICLESIM_TSAN=ON -DPARTICLESIM_BUILD_APPS=OFF -DPARTICLESIM_BUILD_BENCH=OFF >/dev/null
+  -DCMAKE_UNITY_BUILD=ON -DPARTICLESIM_TSAN=ON -DPARTICLESIM_BUILD_APPS=OFF -DPARTICLESIM_BUILD_BENCH=OFF >/dev/null
 tests=(test_parallel_loops test_parallel_stages test_openmp_host)
 cmake --build "$work" --target "${tests[@]}" -j "$(nproc)" >/dev/null
 for test in "${tests[@]}"; do

@@ -1,5 +1,6 @@
 # Builds tests/subdirectory_consumer (particlesim added with add_subdirectory,
-# at -O0 for speed: the one build of the suite that makes the library alone),
+# at -O0 and as a unity build for speed: the one build of the suite that makes
+# the library alone; a consumer may build it either way),
 # runs it, then installs it and checks that only the consumer's own file was
 # installed: no particlesim header, library or package file (PARTICLESIM_INSTALL
 # defaults to off below the top level).
@@ -9,7 +10,8 @@ include("${CMAKE_CURRENT_LIST_DIR}/run_step.cmake")
 file(COPY "${SOURCE_DIR}/tests/subdirectory_consumer/CMakeLists.txt" DESTINATION "${WORK_DIR}/consumer")
 configure_file("${LIBRARY_USAGE_SOURCE}" "${WORK_DIR}/consumer/main.cpp" COPYONLY)
 run_step(${CMAKE_COMMAND} -S "${WORK_DIR}/consumer" -B "${WORK_DIR}/build" -DCMAKE_BUILD_TYPE=Debug
-         -DCMAKE_CXX_FLAGS_DEBUG=-O0 "-DPARTICLESIM_SOURCE_DIR=${SOURCE_DIR}")
+         -DCMAKE_CXX_FLAGS_DEBUG=-O0 -DCMAKE_UNITY_BUILD=ON
+         "-DPARTICLESIM_SOURCE_DIR=${SOURCE_DIR}")
 file(READ "${WORK_DIR}/build/CMakeCache.txt" cache)
 if(cache MATCHES "PARTICLESIM_BUILD_(APPS|TESTS|BENCH)")
   message(FATAL_ERROR "a subproject's cache holds particlesim's top-level options")

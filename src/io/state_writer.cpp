@@ -13,7 +13,7 @@ namespace {
 
 constexpr std::size_t buffer_size = std::size_t{1} << 20;
 // The longest line: two integers, four numbers, two counters, separators.
-constexpr std::size_t max_line_length = 4 * 21 + 4 * (max_fixed8_length + 1) + 1;
+constexpr std::size_t longest_state_line = 4 * 21 + 4 * (max_fixed8_length + 1) + 1;
 
 }  // namespace
 
@@ -33,7 +33,7 @@ void StateWriter::write_block(std::int64_t step, std::span<const Particle> parti
     const std::size_t step_length =
         static_cast<std::size_t>(std::to_chars(step_text, step_text + 24, step).ptr - step_text);
     for (std::size_t i = 0; i < particles.size(); ++i) {
-        if (buffer_.size() - used_ < max_line_length) drain();
+        if (buffer_.size() - used_ < longest_state_line) drain();
         char* out = buffer_.data() + used_;
         std::memcpy(out, step_text, step_length);
         out += step_length;

@@ -30,6 +30,16 @@ struct GridSearch::SliceWorkspace {
 
 using namespace stepped_tuning;
 
+// The time span of one slice. A particle's path in it runs from `begin` to
+// the particle's sweep end (its wall time or the step's end), if earlier.
+// Outside the anonymous namespace: GridSearch::Binning holds one.
+struct SliceSpan {
+    double begin, end;
+
+    [[nodiscard]] bool holds_path(double sweep_end) const { return sweep_end > 0.0 && !(sweep_end < begin); }
+    [[nodiscard]] double path_end(double sweep_end) const { return std::min(end, sweep_end); }
+};
+
 namespace {
 
 // Marks in cell_of, above every cell index: not moving in the slice, large,
@@ -50,15 +60,6 @@ constexpr int float_safe_exponent = 100;
 // A box that fits a cell with this slack keeps its neighbours within one cell
 // even after the rounding of the cell index computation.
 constexpr double cell_fit_slack = 1.0 - 1e-6;
-
-// The time span of one slice. A particle's path in it runs from `begin` to
-// the particle's sweep end (its wall time or the step's end), if earlier.
-struct SliceSpan {
-    double begin, end;
-
-    [[nodiscard]] bool holds_path(double sweep_end) const { return sweep_end > 0.0 && !(sweep_end < begin); }
-    [[nodiscard]] double path_end(double sweep_end) const { return std::min(end, sweep_end); }
-};
 
 // A particle's path ends at its wall time or at the end of the step.
 double sweep_end(const PairSearchInput& in, std::int64_t particle) {
