@@ -26,7 +26,12 @@ using FourFloats = float __attribute__((vector_size(16)));
 using EightFloats = float __attribute__((vector_size(32)));
 using SixteenFloats = float __attribute__((vector_size(64)));
 using FourInts = std::int32_t __attribute__((vector_size(16)));
-using LineQuery = PathLines::Query;
+
+struct LineQuery {
+    float x, y, vx, vy;  // the line tested against all, scaled
+    float reach_term;    // times |dv|^2
+    float margin_term;   // added
+};
 
 // One bit per lane of a comparison's result (all ones or all zeros), lane
 // 0 the lowest: on x86-64 the sign bits, four lanes at a time by SSE's
@@ -61,39 +66,11 @@ template <typename Mask>
     return lane_bits(either) != 0;
 }
 
-// Sets each lane of `close` to whether the line stored at `at` + lane has
-// |dp x dv|^2 <= reach_term |dv|^2 + margin_term (`Floats`: four, eight or
-// sixteen lanes; written through a reference, since a wider vector returned
-// by value would change the calling convention of a build without AVX).
-template <typename Floats, typename Mask>
-[[gnu::always_inline]] inline void close_lanes(const float* x, const float* y, const float* vx, const float* vy,
-                                               std::size_t at, const LineQuery& q, Mask& close) {
-    Floats dx, dy, dvx, dvy;
-    std::memcpy(&dx, x + at, sizeof(Floats));
-    std::memcpy(&dy, y + at, sizeof(Floats));
-    std::memcpy(&dvx, vx + at, sizeof(Floats));
-    std::memcpy(&dvy, vy + at, sizeof(Floats));
-    dx -= q.x;
-    dy -= q.y;
-    dvx -= q.vx;
-    dvy -= q.vy;
-    const Floats cross = dx * dvy - dy * dvx;
-    const Floats speed_sq = dvx * dvx + dvy * dvy;
-    close = cross * cross <= q.reach_term * speed_sq + q.margin_term;
-}
-
-[[gnu::always_inline]] inline void append_lanes(std::uint32_t bits, std::size_t first,
-                                                std::vector<std::uint32_t>& near) {
-    for (; bits != 0; bits &= bits - 1) {
-        near.push_back(static_cast<std::uint32_t>(first) + static_cast<std::uint32_t>(std::countr_zero(bits)));
-    }
-}
-
-// Appends every line j of [0, padded) that passes the query to `near`, two
-// groups of lanes at a time (nearly every pair of groups has no close line,
-// so one test of all their lanes), and a last group alone when `padded` is
-// an odd number of groups. Always inlined, so that a caller compiled for
-// AVX2 or AVX-512 gets its lanes.
+// Appends every line j of [0, padded) with |dp x dv|^2 <= reach_term |dv|^2
+// + margin_term to `near`, `Floats` lines (four, eight or sixteen) to a
+// group, two groups at a time: nearly every pair of groups has no close
+// line, so one test of all their lanes. Always inlined, so that a caller
+// compiled for AVX2 or AVX-512 gets its lanes.
 template <typename Floats>
 [[gnu::always_inline]] inline void gather_lanes(const float* x, const float* y, const float* vx, const float* vy,
                                                 std::size_t padded, const LineQuery& query,
@@ -102,18 +79,28 @@ template <typename Floats>
     constexpr std::size_t lanes = sizeof(Floats) / sizeof(float);
     // A copy: `near` could alias the query as far as the compiler knows.
     const LineQuery q = query;
-    std::size_t j = 0;
-    for (; j + 2 * lanes <= padded; j += 2 * lanes) {
+    for (std::size_t j = 0; j < padded; j += 2 * lanes) {
         Mask close[2];
-        close_lanes<Floats>(x, y, vx, vy, j, q, close[0]);
-        close_lanes<Floats>(x, y, vx, vy, j + lanes, q, close[1]);
+        for (std::size_t group = 0; group < 2; ++group) {
+            const std::size_t at = j + group * lanes;
+            Floats dx, dy, dvx, dvy;
+            std::memcpy(&dx, x + at, sizeof(Floats));
+            std::memcpy(&dy, y + at, sizeof(Floats));
+            std::memcpy(&dvx, vx + at, sizeof(Floats));
+            std::memcpy(&dvy, vy + at, sizeof(Floats));
+            dx -= q.x;
+            dy -= q.y;
+            dvx -= q.vx;
+            dvy -= q.vy;
+            const Floats cross = dx * dvy - dy * dvx;
+            const Floats speed_sq = dvx * dvx + dvy * dvy;
+            close[group] = cross * cross <= q.reach_term * speed_sq + q.margin_term;
+        }
         if (!any_lane(close[0] | close[1])) continue;
-        append_lanes(lane_bits(close[0]) | lane_bits(close[1]) << lanes, j, near);
-    }
-    if (j < padded) {
-        Mask close;
-        close_lanes<Floats>(x, y, vx, vy, j, q, close);
-        if (any_lane(close)) append_lanes(lane_bits(close), j, near);
+        std::uint32_t bits = lane_bits(close[0]) | lane_bits(close[1]) << lanes;
+        for (; bits != 0; bits &= bits - 1) {
+            near.push_back(static_cast<std::uint32_t>(j) + static_cast<std::uint32_t>(std::countr_zero(bits)));
+        }
     }
 }
 
@@ -192,7 +179,7 @@ void PathLines::set(std::uint32_t i, const Vec2& position, const Vec2& velocity)
     vy_[i] = static_cast<float>(vy);
 }
 
-PathLines::Query PathLines::query(std::uint32_t i, double reach) const {
+void PathLines::gather_near(std::uint32_t i, double reach, std::vector<std::uint32_t>& near) const {
     // Rounding each scaled value to float moves it by at most 2^-24 of the
     // largest coordinate or speed (M, V); the differences, products and sum
     // of the cross product then err by less than 64 * 2^-24 M V, and the
@@ -201,28 +188,20 @@ PathLines::Query PathLines::query(std::uint32_t i, double reach) const {
     const double reach_scaled = reach * position_scale_;
     const double error =
         128.0 * 0x1p-24 * largest_coordinate_ * largest_speed_ + 12.0 * 0x1p-24 * reach_scaled * largest_speed_;
-    return {x_[i],
-            y_[i],
-            vx_[i],
-            vy_[i],
-            static_cast<float>(1.3 * reach_scaled * reach_scaled),
-            static_cast<float>(6.0 * error * error)};
-}
-
-void PathLines::gather_among(const float* x, const float* y, const float* vx, const float* vy, std::size_t padded,
-                             const Query& q, std::vector<std::uint32_t>& near) const {
+    LineQuery q{x_[i],
+                y_[i],
+                vx_[i],
+                vy_[i],
+                static_cast<float>(1.3 * reach_scaled * reach_scaled),
+                static_cast<float>(6.0 * error * error)};
+    const std::size_t first = near.size();
     switch (lanes_) {
 #if defined(__x86_64__)
-    case 16: gather_sixteen(x, y, vx, vy, padded, q, near); break;
-    case 8: gather_eight(x, y, vx, vy, padded, q, near); break;
+    case 16: gather_sixteen(x_.data(), y_.data(), vx_.data(), vy_.data(), x_.size(), q, near); break;
+    case 8: gather_eight(x_.data(), y_.data(), vx_.data(), vy_.data(), x_.size(), q, near); break;
 #endif
-    default: gather_four(x, y, vx, vy, padded, q, near); break;
+    default: gather_four(x_.data(), y_.data(), vx_.data(), vy_.data(), x_.size(), q, near); break;
     }
-}
-
-void PathLines::gather_near(std::uint32_t i, double reach, std::vector<std::uint32_t>& near) const {
-    const std::size_t first = near.size();
-    gather_among(x_.data(), y_.data(), vx_.data(), vy_.data(), x_.size(), query(i, reach), near);
     // The padding's lines and i's own are not neighbours.
     near.erase(std::remove_if(near.begin() + static_cast<std::ptrdiff_t>(first), near.end(),
                               [&](std::uint32_t j) { return j == i || j >= count_; }),

@@ -66,25 +66,6 @@ public:
     // i's line (see above), in increasing order.
     void gather_near(std::uint32_t i, double reach, std::vector<std::uint32_t>& near) const;
 
-    // The same test among copies of some lines (LineCells keeps them by
-    // cell): i's line as the test takes it, and every k of [0, padded) (a
-    // whole number of lanes()) of the lines stored at x, y, vx, vy whose
-    // line passes it, appended to `near`. A line stored as NaN never passes.
-    struct Query {
-        float x, y, vx, vy;  // the line tested, scaled
-        float reach_term;    // times |dv|^2
-        float margin_term;   // added
-    };
-    [[nodiscard]] Query query(std::uint32_t i, double reach) const;
-    void gather_among(const float* x, const float* y, const float* vx, const float* vy, std::size_t padded,
-                      const Query& q, std::vector<std::uint32_t>& near) const;
-    [[nodiscard]] int lanes() const { return lanes_; }
-    // Line i's stored (scaled) point and velocity.
-    [[nodiscard]] float x(std::uint32_t i) const { return x_[i]; }
-    [[nodiscard]] float y(std::uint32_t i) const { return y_[i]; }
-    [[nodiscard]] float vx(std::uint32_t i) const { return vx_[i]; }
-    [[nodiscard]] float vy(std::uint32_t i) const { return vy_[i]; }
-
     [[nodiscard]] std::size_t size() const { return count_; }
 
 private:

@@ -5,7 +5,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstdlib>
 
 namespace particlesim {
 
@@ -22,7 +21,6 @@ void PathSearch::find_pairs(const PairSearchInput& in, std::span<ThreadCandidate
     if (thread_watches_.size() < out.size()) thread_watches_.resize(out.size());
     make_lines(in);
     const double reach = contact_reach(in.box);
-    make_cells(in, reach);
     const auto new_count = static_cast<std::int64_t>(new_lines_.size());
     const int workers = worker_count(out.size(), new_count * static_cast<std::int64_t>(in.particles.size()),
                                      stepped_tuning::paths_line_tests_per_thread);
@@ -91,41 +89,12 @@ void PathSearch::make_lines(const PairSearchInput& in) {
     }
 }
 
-// Each line's segment, from the particle's position now to where it reaches
-// a wall, rounded up to the end of that micro-step and one more (a free
-// particle's wall time is taken as the rules take it).
-void PathSearch::make_cells(const PairSearchInput& in, double reach) {
-    const char* forced = std::getenv("PARTICLESIM_LINE_CELLS");
-    const int per_side = forced ? std::atoi(forced) : 0;
-    use_cells_ = per_side > 0;
-    if (!use_cells_) return;
-    const std::size_t count = in.particles.size();
-    segments_.resize(count);
-    const Box& box = in.box;
-    for (std::size_t i = 0; i < count; ++i) {
-        const Particle& p = in.particles[i];
-        double wall_time = never;
-        for (int axis = 0; axis < 2; ++axis) {
-            const double v = p.velocity[axis];
-            if (v > 0.0) wall_time = std::min(wall_time, (box.upper - p.position[axis]) / v);
-            if (v < 0.0) wall_time = std::min(wall_time, (box.lower - p.position[axis]) / v);
-        }
-        const double until = wall_time < never ? std::max(wall_time, 0.0) * (1.0 + 0x1p-30) : 0.0;
-        segments_[i] = {p.position, p.position + p.velocity * until};
-    }
-    cells_.build(lines_, segments_, box.side, per_side, 2.0 * reach);
-}
-
 // Watches every pair of i's new line with a line that comes within `reach`
 // of it from now on; a pair of two new lines once, from the lower index.
 void PathSearch::watch_near(const PairSearchInput& in, std::uint32_t i, double reach, ThreadWatches& out) const {
     std::vector<std::uint32_t>& near = out.near;
     near.clear();
-    if (use_cells_) {
-        cells_.gather_near(lines_, i, segments_[i], reach, near);
-    } else {
-        lines_.gather_near(i, reach, near);
-    }
+    lines_.gather_near(i, reach, near);
     const auto now = static_cast<double>(micro_steps_);
     const Particle& a = in.particles[i];
     const double reach_sq = reach * reach;

@@ -21,7 +21,6 @@
 // particles collide in a step (docs/benchmarks.md).
 
 #include "search/pair_search.hpp"
-#include "search/line_cells.hpp"
 #include "search/path_lines.hpp"
 
 #include <cstdint>
@@ -59,13 +58,9 @@ private:
     };
 
     void make_lines(const PairSearchInput& in);
-    void make_cells(const PairSearchInput& in, double reach);
     void watch_near(const PairSearchInput& in, std::uint32_t i, double reach, ThreadWatches& out) const;
 
     PathLines lines_;
-    LineCells cells_;
-    bool use_cells_ = false;              // this micro-step
-    std::vector<LineSegment> segments_;  // by particle: where its line can still take it
     bool lines_made_ = false;
     std::int64_t micro_steps_ = 0;           // searched so far: the current time, in micro-steps
     std::int64_t lines_made_at_ = 0;         // when every line was last made afresh
