@@ -123,8 +123,10 @@ int main(int argc, char** argv) {
                       {{"calendar against brute-force minimum",
                         [] {
                             all_never();
+                            // One seed a size under the sanitizers: the minimum over 20000 owners is slow there.
+                            const std::uint64_t seeds = check::sanitized ? 1 : 4;
                             for (const std::uint32_t owners : {1U, 2U, 7U, 100U, 5000U, 20000U}) {
-                                for (std::uint64_t seed = 0; seed < 4; ++seed)
+                                for (std::uint64_t seed = 0; seed < seeds; ++seed)
                                     matches_brute_force(owners, seed, owners < 1000 ? 20000 : 4000);
                             }
                             for (const double scale : {1e-320, 1e-310, 1e-300, 1e300}) {

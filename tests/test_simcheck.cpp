@@ -341,6 +341,8 @@ void every_family_checks_cleanly() {
         {{"compressed", "-n", "10", "--boundary", "periodic"}, "at least 5 diameters wide"},
         {{"compressed", "--growth-rate", "0"}, "growth rate"},
         {{"crystal", "--fraction", "0.95"}, "area fraction"},
+        {{"suite", work_dir() + "/never-written", "--only", "cradle,nope"}, "no suite case \"nope\""},
+        {{"gas", "--only", "cradle"}, "belongs to simgen suite"},
     };
     for (const auto& [arguments, why] : refused) {
         const run_process::Result no = run_process::run(simgen, arguments);
@@ -372,6 +374,20 @@ void suite_checks_cleanly() {
         ++cases;
     }
     CHECK(cases >= 10);
+    // Some of the cases: the same files, under the same numbers, and a manifest of them alone.
+    const std::string some = work_dir() + "/some";
+    CHECK_EQ(run_process::run(simgen, {"suite", some, "--only", "line,cradle"}).status, 0);
+    std::vector<std::string> written;
+    for (const auto& entry : std::filesystem::directory_iterator(some)) written.push_back(entry.path().filename());
+    std::sort(written.begin(), written.end());
+    CHECK(written ==
+          std::vector<std::string>({"01-cradle.in", "01-cradle.out", "04-line.in", "04-line.out", "manifest.tsv"}));
+    for (const char* name : {"01-cradle.in", "01-cradle.out", "04-line.in", "04-line.out"}) {
+        CHECK_EQ(run_process::slurp(some + "/" + name), run_process::slurp(dir + "/" + name));
+    }
+    const std::string some_manifest = run_process::slurp(some + "/manifest.tsv");
+    CHECK_EQ(std::count(some_manifest.begin(), some_manifest.end(), '\n'), 3);
+    CHECK(!std::filesystem::exists(work_dir() + "/never-written"));
 }
 
 void report_forms() {

@@ -7,6 +7,7 @@
 
 #include "particlesim/particlesim.hpp"
 
+#include <algorithm>
 #include <charconv>
 #include <cmath>
 #include <cstdio>
@@ -14,6 +15,7 @@
 #include <optional>
 #include <stdexcept>
 #include <string>
+#include <vector>
 
 namespace {
 
@@ -27,10 +29,31 @@ public:
     using std::runtime_error::runtime_error;
 };
 
+// The suite cases a --only list names (comma-separated), each known.
+std::vector<std::string> suite_cases_named(const std::string& list) {
+    const std::vector<std::string> known = simgen::suite_case_names();
+    std::vector<std::string> names;
+    std::size_t begin = 0;
+    while (begin <= list.size()) {
+        const std::size_t end = std::min(list.find(',', begin), list.size());
+        const std::string name = list.substr(begin, end - begin);
+        if (std::find(known.begin(), known.end(), name) == known.end()) {
+            std::string all;
+            for (const std::string& k : known) all += (all.empty() ? "" : ", ") + k;
+            throw BadUsage("--only: no suite case \"" + name + "\" (the cases: " + all + ")");
+        }
+        names.push_back(name);
+        begin = end + 1;
+    }
+    return names;
+}
+
 void print_usage() {
     std::printf(
         "usage: simgen FAMILY [OPTIONS]    write one scene to stdout\n"
-        "       simgen suite DIR [--seed K] write a graded suite: NN-name.in, NN-name.out, manifest.tsv\n"
+        "       simgen suite DIR [--seed K] [--only NAME,...]\n"
+        "                                   write a graded suite: NN-name.in, NN-name.out, manifest.tsv\n"
+        "                                   (--only: just the cases named, each keeping its number)\n"
         "\n"
         "Every particle is listed, every number in the shortest text that reads back\n"
         "to the same double: the scene means the same to every program.\n"
@@ -85,6 +108,7 @@ int run(int argc, char** argv) {
     SceneFamilyOptions options;
     std::optional<double> speed_min, speed_max;
     std::optional<std::string> suite_directory;
+    std::vector<std::string> only_cases;
     int k = 2;
     if (first == "suite") {
         if (argc < 3) throw BadUsage("suite needs a directory");
@@ -97,8 +121,13 @@ int run(int argc, char** argv) {
             if (k + 1 >= argc) throw BadUsage(arg + " needs a value");
             return argv[++k];
         };
-        if (suite_directory && arg != "--seed") throw BadUsage("suite takes only --seed, not " + arg);
-        if (arg == "-n" || arg == "--particles") {
+        if (suite_directory && arg != "--seed" && arg != "--only") {
+            throw BadUsage("suite takes only --seed and --only, not " + arg);
+        }
+        if (arg == "--only") {
+            if (!suite_directory) throw BadUsage("--only belongs to simgen suite");
+            only_cases = suite_cases_named(value());
+        } else if (arg == "-n" || arg == "--particles") {
             options.particles = parse_number<std::size_t>(arg, value());
         } else if (arg == "-s" || arg == "--steps") {
             options.steps = parse_number<std::int64_t>(arg, value());
@@ -132,7 +161,7 @@ int run(int argc, char** argv) {
         }
     }
     if (suite_directory) {
-        simgen::write_suite(*suite_directory, options.seed);
+        simgen::write_suite(*suite_directory, options.seed, only_cases);
         return 0;
     }
     const std::optional<SceneFamily> family = scene_family_named(first);

@@ -2,6 +2,7 @@
 
 #include "particlesim/particlesim.hpp"
 
+#include <algorithm>
 #include <cerrno>
 #include <charconv>
 #include <cstdio>
@@ -95,15 +96,22 @@ void write_expected_output(const Scene& scene, const std::string& path) {
 
 }  // namespace
 
-void write_suite(const std::string& directory, std::uint64_t seed) {
+std::vector<std::string> suite_case_names() {
+    std::vector<std::string> names;
+    for (const SuiteCase& c : suite_cases(0)) names.emplace_back(c.name);
+    return names;
+}
+
+void write_suite(const std::string& directory, std::uint64_t seed, const std::vector<std::string>& only) {
     std::filesystem::create_directories(directory);
     std::ofstream manifest(directory + "/manifest.tsv");
     manifest << "case\tfamily\tparticles\tbox\tradius\tsteps\tmode\texercises\n";
     int number = 0;
     for (const SuiteCase& c : suite_cases(seed)) {
         ++number;
+        if (!only.empty() && std::find(only.begin(), only.end(), c.name) == only.end()) continue;
         const Scene scene = make_family_scene(c.family, c.options);
-        char prefix[8];
+        char prefix[16];
         std::snprintf(prefix, sizeof prefix, "%02d-", number);
         const std::string stem = directory + "/" + prefix + c.name;
         {
