@@ -164,7 +164,15 @@ void correct_outputs_pass() {
     for (std::size_t k = 0; k < scenes.size(); ++k) {
         const Scene& scene = scenes[k];
         const std::string text = scene_text(scene);
-        const auto& variant = variants[k % variants.size()];
+        // Substeps where no disk outruns the box: beyond, simcheck's bounds between
+        // micro-steps span the walls, and it accepts nearly anything, slowly
+        // (checking.md, "What it does not do").
+        const bool outruns_box = std::any_of(scene.particles.begin(), scene.particles.end(), [&](const Particle& p) {
+            return std::max(std::abs(p.velocity.x()), std::abs(p.velocity.y())) > scene.world.box_size;
+        });
+        const auto& variant = variants[k % variants.size()][0] == "--substeps" && outruns_box
+                                  ? variants[0]
+                                  : variants[k % variants.size()];
         const std::string ours = run_simcli(text, variant);
         const bool substeps = variant[0] == "--substeps";
         const Verdict v = run_simcheck(
