@@ -351,6 +351,7 @@ void every_family_checks_cleanly() {
         {{"crystal", "--fraction", "0.95"}, "area fraction"},
         {{"suite", work_dir() + "/never-written", "--only", "cradle,nope"}, "no suite case \"nope\""},
         {{"gas", "--only", "cradle"}, "belongs to simgen suite"},
+        {{"suite", "--seed", "3"}, "not the option --seed"},
     };
     for (const auto& [arguments, why] : refused) {
         const run_process::Result no = run_process::run(simgen, arguments);
@@ -396,6 +397,14 @@ void suite_checks_cleanly() {
     const std::string some_manifest = run_process::slurp(some + "/manifest.tsv");
     CHECK_EQ(std::count(some_manifest.begin(), some_manifest.end(), '\n'), 3);
     CHECK(!std::filesystem::exists(work_dir() + "/never-written"));
+    // Help anywhere is help, never a directory to write.
+    for (const std::vector<std::string>& arguments :
+         {std::vector<std::string>{"suite", "--help"}, std::vector<std::string>{"gas", "-h"}}) {
+        const run_process::Result help = run_process::run(simgen, arguments);
+        CHECK_EQ(help.status, 0);
+        CHECK(help.out.find("usage: simgen") != std::string::npos);
+    }
+    CHECK(!std::filesystem::exists("--help"));
 }
 
 void report_forms() {

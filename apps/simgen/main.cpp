@@ -97,9 +97,11 @@ T parse_number(const std::string& option, const std::string& text) {
 int run(int argc, char** argv) {
     if (argc < 2) throw BadUsage("needs a FAMILY or \"suite DIR\" (simgen --help)");
     const std::string first = argv[1];
-    if (first == "-h" || first == "--help") {
-        print_usage();
-        return 0;
+    for (int k = 1; k < argc; ++k) {
+        if (std::string(argv[k]) == "-h" || std::string(argv[k]) == "--help") {
+            print_usage();
+            return 0;
+        }
     }
     if (first == "--version") {
         std::printf("simgen %s\n", particlesim::version);
@@ -113,6 +115,10 @@ int run(int argc, char** argv) {
     if (first == "suite") {
         if (argc < 3) throw BadUsage("suite needs a directory");
         suite_directory = argv[2];
+        if (suite_directory->starts_with('-')) {
+            throw BadUsage("suite needs a directory first, not the option " + *suite_directory +
+                           " (a directory whose name starts with - is ./" + *suite_directory + ")");
+        }
         k = 3;
     }
     for (; k < argc; ++k) {
