@@ -305,6 +305,16 @@ void snapshot_is_the_state() {
     CHECK_EQ(run_process::run(simcli, {scene, "--snapshot-step", "3"}).status, 2);
 }
 
+// Each disk's fill in a snapshot, in the order drawn.
+std::vector<std::string> disk_colours(const std::string& svg_text) {
+    const std::regex fill("fill=\"(rgb\\([0-9,]+\\))\"");
+    std::vector<std::string> colours;
+    for (auto it = std::sregex_iterator(svg_text.begin(), svg_text.end(), fill); it != std::sregex_iterator(); ++it) {
+        colours.push_back((*it)[1]);
+    }
+    return colours;
+}
+
 // --colour-by psi6: in a lattice that fills a periodic box every disk sees
 // the same neighbourhood, so one psi6 and one colour everywhere, in the
 // picture and on the page; a gas many colours; the page plots |psi6| and the
@@ -324,11 +334,7 @@ void order_is_seen() {
                                   "--snapshot", svg, "--snapshot-step", "0", "--animate", page});
     CHECK_EQ(out.status, 0);
     const std::string text = run_process::slurp(svg);
-    const std::regex fill("fill=\"(rgb\\([0-9,]+\\))\"");
-    std::vector<std::string> lattice_colours;
-    for (auto it = std::sregex_iterator(text.begin(), text.end(), fill); it != std::sregex_iterator(); ++it) {
-        lattice_colours.push_back((*it)[1]);
-    }
+    const std::vector<std::string> lattice_colours = disk_colours(text);
     CHECK_EQ(lattice_colours.size(), std::size_t{100});
     CHECK(std::all_of(lattice_colours.begin(), lattice_colours.end(),
                       [&](const std::string& c) { return c == lattice_colours[0]; }));
@@ -337,11 +343,9 @@ void order_is_seen() {
 
     const std::string gas = write_file("order-gas.in", "100 60 1 2 print\n");
     CHECK_EQ(run_process::run(simcli, {gas, "--colour-by", "psi6", "--snapshot", svg}).status, 0);
-    const std::string gas_text = run_process::slurp(svg);
-    std::vector<std::string> colours;
-    for (auto it = std::sregex_iterator(gas_text.begin(), gas_text.end(), fill); it != std::sregex_iterator(); ++it) {
-        if (std::find(colours.begin(), colours.end(), (*it)[1].str()) == colours.end()) colours.push_back((*it)[1]);
-    }
+    std::vector<std::string> colours = disk_colours(run_process::slurp(svg));
+    std::sort(colours.begin(), colours.end());
+    colours.erase(std::unique(colours.begin(), colours.end()), colours.end());
     CHECK(colours.size() > 20);
 
     std::vector<Vec2> centres;

@@ -11,7 +11,6 @@
 #include <cstdio>
 #include <cstring>
 #include <limits>
-#include <numbers>
 
 namespace simcli {
 
@@ -155,8 +154,7 @@ void Animation::add_order(double time, std::span<const Particle> particles, doub
                           const particlesim::CollisionSums* sums) {
     const std::vector<std::complex<double>> local = particlesim::local_hexatic_order(particles, world_, boundary_);
     for (const std::complex<double>& psi : local) {
-        const double phase = (std::arg(psi) + std::numbers::pi) / (2.0 * std::numbers::pi);
-        order_.push_back(static_cast<unsigned char>(std::lround(std::clamp(phase, 0.0, 1.0) * 255.0)));
+        order_.push_back(static_cast<unsigned char>(std::lround(std::clamp(phase_turns(psi), 0.0, 1.0) * 255.0)));
         order_.push_back(static_cast<unsigned char>(std::lround(std::clamp(std::abs(psi), 0.0, 1.0) * 255.0)));
     }
     psi6_.push_back(particlesim::mean_hexatic_order(local));

@@ -15,10 +15,16 @@ namespace simcli {
 
 enum class ColourBy { speed, psi6 };
 
+// The phase of a local psi6 as a fraction of a turn, in [0, 1]: what the
+// snapshot's hue and the page's phase byte are made of.
+inline double phase_turns(std::complex<double> psi) {
+    return (std::arg(psi) + std::numbers::pi) / (2.0 * std::numbers::pi);
+}
+
 // The colour of a disk whose local psi6 is `psi`: hue from its phase,
 // brightness from 0.25 (disordered) to 1 (|psi6| = 1).
 inline std::array<int, 3> psi6_colour(std::complex<double> psi) {
-    const double hue = (std::arg(psi) + std::numbers::pi) / (2.0 * std::numbers::pi) * 6.0;  // [0, 6]
+    const double hue = phase_turns(psi) * 6.0;  // [0, 6]
     const double value = 0.25 + 0.75 * std::clamp(std::abs(psi), 0.0, 1.0);
     const int sector = std::min(static_cast<int>(hue), 5);
     const double f = hue - sector;

@@ -11,12 +11,12 @@ ObservablesFile::ObservablesFile(const std::string& path, const particlesim::Wor
                                  std::int64_t measure_from)
     : file_(path),
       world_(world),
-      periodic_(boundary == particlesim::Boundary::periodic),
+      boundary_(boundary),
       every_(every),
       last_step_(last_step),
       measure_from_(measure_from) {
     text_ = "step,time,pair_collisions,wall_collisions,kinetic_energy,betaP_d2,Z,psi6";
-    text_ += periodic_ ? "\n" : ",betaP_d2_walls,Z_walls\n";
+    text_ += periodic() ? "\n" : ",betaP_d2_walls,Z_walls\n";
     file_.write(text_, "observables");
 }
 
@@ -31,20 +31,19 @@ void ObservablesFile::observe(std::int64_t step, std::span<const particlesim::Pa
     double kinetic = 0.0;
     for (const particlesim::Particle& p : particles) kinetic += 0.5 * p.velocity.squaredNorm();
     const double duration = static_cast<double>(step - previous_step_);
-    const particlesim::Boundary boundary = periodic_ ? particlesim::Boundary::periodic : particlesim::Boundary::walls;
     const particlesim::Pressure pressure =
-        particlesim::box_pressure(world_, boundary, particles.size(), kinetic, sums - previous_sums_, duration);
+        particlesim::box_pressure(world_, boundary_, particles.size(), kinetic, sums - previous_sums_, duration);
     text_.clear();
     text_ += std::to_string(step) + ',';
     append_shortest(text_, static_cast<double>(step));
     text_ += ',' + std::to_string(totals.particle_collisions - previous_totals_.particle_collisions);
     text_ += ',' + std::to_string(totals.wall_collisions - previous_totals_.wall_collisions);
     for (const double value :
-         {kinetic, pressure.betaP_d2, pressure.Z, particlesim::hexatic_order(particles, world_, boundary)}) {
+         {kinetic, pressure.betaP_d2, pressure.Z, particlesim::hexatic_order(particles, world_, boundary_)}) {
         text_ += ',';
         append_shortest(text_, value);
     }
-    if (!periodic_) {
+    if (!periodic()) {
         for (const double value : {pressure.betaP_d2_walls, pressure.Z_walls}) {
             text_ += ',';
             append_shortest(text_, value);

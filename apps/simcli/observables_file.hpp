@@ -35,13 +35,13 @@ public:
     // Over the rows from measure_from on (the walls' route: a walled box only).
     [[nodiscard]] particlesim::MeanWithError virial_pressure() const;
     [[nodiscard]] particlesim::MeanWithError wall_pressure() const;
-    [[nodiscard]] bool periodic() const { return periodic_; }
+    [[nodiscard]] bool periodic() const { return boundary_ == particlesim::Boundary::periodic; }
     [[nodiscard]] std::int64_t measure_from() const { return measure_from_; }
 
 private:
     OutputFile file_;
     particlesim::World world_;
-    bool periodic_;
+    particlesim::Boundary boundary_;
     std::int64_t every_;
     std::int64_t last_step_;
     std::int64_t measure_from_;
