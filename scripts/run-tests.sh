@@ -26,12 +26,32 @@ else
   echo "OpenMPI is missing: the distributed engine is not built, and its tests will say SKIPPED"
 fi
 
-echo "== Release build and tests"
+echo "== Release build"
 cmake --preset release -DPARTICLESIM_MPI=$mpi
 cmake --build --preset release -j "$jobs"
+
+# The sanitized build compiles at the lowest priority while the release tests
+# run: it takes only the CPU they leave idle (waiting on mpirun, Chromium,
+# signals), and they keep their timing. Its log is shown once it ends.
+echo "== Sanitized build (address, undefined) beside the release tests, at nice 19"
+cmake --preset sanitize
+sanitize_log=build-sanitize/build.log
+# In a session of its own, so that a failing release test stops its compilers too.
+setsid nice -n 19 cmake --build --preset sanitize -j "$jobs" >"$sanitize_log" 2>&1 &
+sanitize_build=$!
+trap 'kill -- "-$sanitize_build" 2>/dev/null || true' EXIT
+
+echo "== Release tests"
 ctest --preset release -j "$jobs"
 
-echo "== Sanitized build (address, undefined) and tests"
-cmake --preset sanitize
-cmake --build --preset sanitize -j "$jobs"
+echo "== Sanitized build's log"
+sanitize_status=0
+wait "$sanitize_build" || sanitize_status=$?
+trap - EXIT
+cat "$sanitize_log"
+if [ "$sanitize_status" -ne 0 ]; then
+  echo "the sanitized build failed (status $sanitize_status)"
+  exit "$sanitize_status"
+fi
+echo "== Sanitized tests"
 ctest --preset sanitize -j "$jobs"

@@ -18,7 +18,6 @@
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
-#include <regex>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -282,6 +281,15 @@ void large_runs_stay_in_budget() {
     CHECK(std::filesystem::file_size(page) < 50'000'000);
 }
 
+// The value of the attribute `name` of the SVG element at or after `from`
+// (the first `name="` there): the text up to its closing quote.
+std::string attribute(const std::string& svg_text, std::size_t from, const std::string& name) {
+    const std::size_t start = svg_text.find(" " + name + "=\"", from - (from > 0 ? 1 : 0));
+    if (start == std::string::npos) return {};
+    const std::size_t value = start + name.size() + 3;
+    return svg_text.substr(value, svg_text.find('"', value) - value);
+}
+
 void snapshot_is_the_state() {
     const std::string scene =
         write_file("snap.in", "5 20 1 12 print\n0 4 10 0.5 0\n1 8 10 0 0\n2 10 10 0 0\n3 12 10 0 0\n4 14 10 0 0\n");
@@ -290,14 +298,13 @@ void snapshot_is_the_state() {
     CHECK_EQ(out.status, 0);
     const auto states = read_states(out.out);
     const std::string text = run_process::slurp(svg);
-    const std::regex circle("<circle cx=\"([^\"]+)\" cy=\"([^\"]+)\" r=\"([^\"]+)\"");
     std::size_t k = 0;
-    for (auto it = std::sregex_iterator(text.begin(), text.end(), circle); it != std::sregex_iterator(); ++it, ++k) {
+    for (std::size_t at = text.find("<circle "); at != std::string::npos; at = text.find("<circle ", at + 1), ++k) {
         CHECK(k < 5);
         if (k >= 5) break;
-        CHECK_NEAR(std::stod((*it)[1]), states[9][k].position.x(), 1e-5);
-        CHECK_NEAR(std::stod((*it)[2]), states[9][k].position.y(), 1e-5);
-        CHECK_EQ(std::stod((*it)[3]), 1.0);
+        CHECK_NEAR(std::stod(attribute(text, at, "cx")), states[9][k].position.x(), 1e-5);
+        CHECK_NEAR(std::stod(attribute(text, at, "cy")), states[9][k].position.y(), 1e-5);
+        CHECK_EQ(std::stod(attribute(text, at, "r")), 1.0);
     }
     CHECK_EQ(k, 5U);
     CHECK(text.find(">step 9, 5 particles") != std::string::npos);
@@ -307,10 +314,10 @@ void snapshot_is_the_state() {
 
 // Each disk's fill in a snapshot, in the order drawn.
 std::vector<std::string> disk_colours(const std::string& svg_text) {
-    const std::regex fill("fill=\"(rgb\\([0-9,]+\\))\"");
     std::vector<std::string> colours;
-    for (auto it = std::sregex_iterator(svg_text.begin(), svg_text.end(), fill); it != std::sregex_iterator(); ++it) {
-        colours.push_back((*it)[1]);
+    for (std::size_t at = svg_text.find("fill=\"rgb("); at != std::string::npos;
+         at = svg_text.find("fill=\"rgb(", at + 1)) {
+        colours.push_back(attribute(svg_text, at, "fill"));
     }
     return colours;
 }
