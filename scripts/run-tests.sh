@@ -36,7 +36,7 @@ cmake --build --preset release -j "$jobs"
 echo "== Sanitized build (address, undefined) beside the release tests, at nice 19"
 cmake --preset sanitize
 sanitize_log=build-sanitize/build.log
-# In a session of its own, so that a failing release test stops its compilers too.
+# In a process group of its own (setsid), so that a failing release test stops its compilers too.
 setsid nice -n 19 cmake --build --preset sanitize -j "$jobs" >"$sanitize_log" 2>&1 &
 sanitize_build=$!
 trap 'kill -- "-$sanitize_build" 2>/dev/null || true' EXIT
