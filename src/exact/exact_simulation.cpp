@@ -20,7 +20,6 @@
 #include <cmath>
 #include <optional>
 #include <string>
-#include <variant>
 
 namespace particlesim {
 
@@ -114,63 +113,6 @@ UniformGrid neighbour_grid(const World& world, std::size_t particle_count, const
 
 }  // namespace
 
-namespace {
-
-struct Crossing {
-    double time = never;
-    std::uint32_t cell = 0;  // the cell entered
-};
-struct PairPrediction {
-    Event event{never, EventKind::pair, 0, 0};
-    std::uint32_t partner = 0;
-    std::uint32_t partner_version = 0;  // the partner's version when predicted
-};
-
-// What save() writes for a particle besides its state: its time stamp,
-// its cell and its three predictions.
-struct SavedPredictions {
-    double stamp = 0.0;
-    std::uint32_t cell = 0;
-    double wall_time = never;
-    Crossing crossing;
-    PairPrediction pair;
-};
-struct SavedRun {
-    std::int64_t steps_done = 0;
-    StepCounts totals;
-    // Both grow with the input, whatever its header says.
-    std::vector<Particle> particles;  // each at its own stamp
-    std::vector<SavedPredictions> predictions;
-};
-
-// The state save() wrote, as read back (its particles not yet checked).
-SavedRun read_saved_run(SavedStateReader& in) {
-    SavedRun run;
-    const std::uint64_t count = in.count(0xfffffffeU);
-    const double now = in.real();
-    run.steps_done = static_cast<std::int64_t>(in.count(max_exact_steps));
-    if (now != static_cast<double>(run.steps_done)) in.fail("time and step disagree");
-    run.totals = read_counts(in);
-    for (std::uint64_t i = 0; i < count; ++i) {
-        run.particles.push_back(read_particle(in));
-        SavedPredictions p;
-        p.stamp = in.real();
-        p.cell = static_cast<std::uint32_t>(in.count(UINT32_MAX));
-        p.wall_time = in.real();
-        p.crossing.time = in.real();
-        p.crossing.cell = static_cast<std::uint32_t>(in.count(UINT32_MAX));
-        p.pair.event.time = in.real();
-        p.pair.event.i = static_cast<std::uint32_t>(in.count(UINT32_MAX));
-        p.pair.event.j = static_cast<std::uint32_t>(in.count(UINT32_MAX));
-        p.pair.partner = static_cast<std::uint32_t>(in.count(UINT32_MAX));
-        p.pair.partner_version = static_cast<std::uint32_t>(in.count(UINT32_MAX));
-        run.predictions.push_back(p);
-    }
-    return run;
-}
-
-}  // namespace
-
 // The engine's state. A particle's stored position is where it was at its
 // own time stamp, the time of its last collision (or 0); it is moved only by
 // its own collisions, so that every prediction reads an unchanged state.
@@ -187,15 +129,38 @@ SavedRun read_saved_run(SavedStateReader& in) {
 // then predicts its pairs afresh. No collision is missed: a particle's pair
 // prediction is never later than any valid pair event with a neighbour, and a
 // collision partner is always a neighbour (cells are wider than a diameter).
-//
-// Compiled once for walls and once for a periodic box: the walled box's
-// events carry no test of which box they are in.
-template <bool Periodic>
-class ExactEngine {
+class ExactSimulation::Implementation {
 public:
+    struct Crossing {
+        double time = never;
+        std::uint32_t cell = 0;  // the cell entered
+    };
+    struct PairPrediction {
+        Event event{never, EventKind::pair, 0, 0};
+        std::uint32_t partner = 0;
+        std::uint32_t partner_version = 0;  // the partner's version when predicted
+    };
+
+    // What save() writes for a particle besides its state: its time stamp,
+    // its cell and its three predictions.
+    struct SavedPredictions {
+        double stamp = 0.0;
+        std::uint32_t cell = 0;
+        double wall_time = never;
+        Crossing crossing;
+        PairPrediction pair;
+    };
+    struct SavedRun {
+        std::int64_t steps_done = 0;
+        StepCounts totals;
+        // Both grow with the input, whatever its header says.
+        std::vector<Particle> particles;  // each at its own stamp
+        std::vector<SavedPredictions> predictions;
+    };
+
     // A scene to run from its start: every prediction made here.
-    ExactEngine(const World& world, std::vector<Particle> particles, const ExactOptions& options)
-        : ExactEngine(world, std::move(particles), options, Unpredicted{}) {
+    Implementation(const World& world, std::vector<Particle> particles, const ExactOptions& options)
+        : Implementation(world, std::move(particles), options, Unpredicted{}) {
         for (std::uint32_t i = 0; i < count(); ++i) {
             cells_.insert(i, cells_.grid().cell_of(bodies_[i].particle.position));
         }
@@ -216,8 +181,8 @@ public:
     // Continues from the state save() wrote (read by read_saved(), its
     // particles checked by require_valid_scene()); the queue is rebuilt from
     // the saved predictions.
-    ExactEngine(const World& world, SavedRun saved, const ExactOptions& options)
-        : ExactEngine(world, std::move(saved.particles), options, Unpredicted{}) {
+    Implementation(const World& world, SavedRun saved, const ExactOptions& options)
+        : Implementation(world, std::move(saved.particles), options, Unpredicted{}) {
         now_ = static_cast<double>(saved.steps_done);
         steps_done_ = saved.steps_done;
         totals_ = saved.totals;
@@ -237,7 +202,7 @@ public:
             plans_[i].crossing = in.crossing;
             plans_[i].pair = in.pair;
         }
-        if constexpr (periodic_box) {
+        if (periodic_) {
             // The whole boxes crossed since each stored position: as many as
             // put its path now in the cell it was saved in.
             const UniformGrid& grid = cells_.grid();
@@ -255,6 +220,31 @@ public:
         for (std::uint32_t i = 0; i < count(); ++i) reschedule(i);
         make_lines();
         take_snapshot();
+    }
+
+    static SavedRun read_saved(SavedStateReader& in) {
+        SavedRun run;
+        const std::uint64_t count = in.count(0xfffffffeU);
+        const double now = in.real();
+        run.steps_done = static_cast<std::int64_t>(in.count(max_exact_steps));
+        if (now != static_cast<double>(run.steps_done)) in.fail("time and step disagree");
+        run.totals = read_counts(in);
+        for (std::uint64_t i = 0; i < count; ++i) {
+            run.particles.push_back(read_particle(in));
+            SavedPredictions p;
+            p.stamp = in.real();
+            p.cell = static_cast<std::uint32_t>(in.count(UINT32_MAX));
+            p.wall_time = in.real();
+            p.crossing.time = in.real();
+            p.crossing.cell = static_cast<std::uint32_t>(in.count(UINT32_MAX));
+            p.pair.event.time = in.real();
+            p.pair.event.i = static_cast<std::uint32_t>(in.count(UINT32_MAX));
+            p.pair.event.j = static_cast<std::uint32_t>(in.count(UINT32_MAX));
+            p.pair.partner = static_cast<std::uint32_t>(in.count(UINT32_MAX));
+            p.pair.partner_version = static_cast<std::uint32_t>(in.count(UINT32_MAX));
+            run.predictions.push_back(p);
+        }
+        return run;
     }
 
     void save(std::ostream& out) const {
@@ -329,9 +319,10 @@ private:
     struct Unpredicted {};
 
     // Every member sized for the particles; no cell filled, nothing predicted.
-    ExactEngine(const World& world, std::vector<Particle> particles, const ExactOptions& options, Unpredicted)
+    Implementation(const World& world, std::vector<Particle> particles, const ExactOptions& options, Unpredicted)
         : world_(world),
           box_(Box::of(world)),
+          periodic_(options.boundary == Boundary::periodic),
           bodies_(particles.begin(), particles.end()),
           cells_(neighbour_grid(world, particles.size(), options), particles.size()),
           plans_(particles.size()),
@@ -381,7 +372,7 @@ private:
 
     template <typename Visit>
     void for_each_neighbour(std::uint32_t i, Visit&& visit) const {
-        for_each_neighbour(cells_, i, periodic_box, visit);
+        for_each_neighbour(cells_, i, periodic_, visit);
     }
 
     // In a periodic box, a separation made the nearest image's. A particle's
@@ -412,17 +403,17 @@ private:
     void reject_overlaps(const CellList& cells) const {
         const auto overlaps = [&](std::uint32_t i, std::uint32_t j) {
             Vec2 separation = bodies_[j].particle.position - bodies_[i].particle.position;
-            if constexpr (periodic_box) separation = nearest_image(separation);
+            if (periodic_) separation = nearest_image(separation);
             return j > i && disks_overlap(separation, box_.contact_dist_sq);
         };
         bool found = false;
         cells.for_each_by_cell([&](std::uint32_t i) {
             if (!found)
-                for_each_neighbour(cells, i, periodic_box, [&](std::uint32_t j) { found = found || overlaps(i, j); });
+                for_each_neighbour(cells, i, periodic_, [&](std::uint32_t j) { found = found || overlaps(i, j); });
         });
         if (!found) return;
         for (std::uint32_t i = 0; i < count(); ++i) {
-            for_each_neighbour(cells, i, periodic_box, [&](std::uint32_t j) {
+            for_each_neighbour(cells, i, periodic_, [&](std::uint32_t j) {
                 if (overlaps(i, j)) throw OverlappingStart(i, j);
             });
         }
@@ -483,7 +474,7 @@ private:
     }
 
     void predict_wall(std::uint32_t i) {
-        if constexpr (periodic_box) {
+        if (periodic_) {
             bodies_[i].wall_time = never;
             return;
         }
@@ -508,15 +499,15 @@ private:
         // axis at a time.
         // In a periodic box the cell's frame is the stored position's moved
         // by the whole boxes crossed since (Plans::images).
-        const TwoDoubles where = periodic_box ? TwoDoubles{p.position.x() - plans_[i].images[0] * world_.box_size,
-                                                           p.position.y() - plans_[i].images[1] * world_.box_size}
-                                              : TwoDoubles{p.position.x(), p.position.y()};
+        const TwoDoubles where = periodic_ ? TwoDoubles{p.position.x() - plans_[i].images[0] * world_.box_size,
+                                                        p.position.y() - plans_[i].images[1] * world_.box_size}
+                                           : TwoDoubles{p.position.x(), p.position.y()};
         const TwoDoubles speed{p.velocity.x(), p.velocity.y()};
         const TwoDoubles index{static_cast<double>(column), static_cast<double>(row)};
         const double last = static_cast<double>(grid.per_side() - 1);
         const TwoDoubles edge = (speed > 0.0 ? index + 1.0 : index) * grid.cell_size();
-        const TwoMasks exits = periodic_box ? (speed > 0.0) | (speed < 0.0)
-                                            : ((speed > 0.0) & (index < last)) | ((speed < 0.0) & (index > 0.0));
+        const TwoMasks exits = periodic_ ? (speed > 0.0) | (speed < 0.0)
+                                         : ((speed > 0.0) & (index < last)) | ((speed < 0.0) & (index > 0.0));
         const TwoDoubles to_edge = exits ? (edge - where) / speed : TwoDoubles{never, never};
         const double along_x = to_edge[0];
         const double along_y = to_edge[1];
@@ -528,7 +519,7 @@ private:
         const int x_first = static_cast<int>(along_x <= along_y);
         column += x_first * (2 * static_cast<int>(p.velocity.x() > 0.0) - 1);
         row += (1 - x_first) * (2 * static_cast<int>(p.velocity.y() > 0.0) - 1);
-        if constexpr (periodic_box) {  // one step past an edge wraps to the other
+        if (periodic_) {  // one step past an edge wraps to the other
             const int side = grid.per_side();
             column += column < 0 ? side : column >= side ? -side : 0;
             row += row < 0 ? side : row >= side ? -side : 0;
@@ -544,7 +535,7 @@ private:
         ++last_step_.pair_tests;
         const double reference = std::max(bodies_[i].stamp, bodies_[j].stamp);
         Vec2 separation = position_at(j, reference) - position_at(i, reference);
-        if constexpr (periodic_box) separation = nearest_image(separation);
+        if (periodic_) separation = nearest_image(separation);
         const double delay =
             contact_time(separation, bodies_[j].particle.velocity - bodies_[i].particle.velocity, box_.contact_dist_sq);
         if (delay != never) keep_contact(i, j, reference + delay);
@@ -570,7 +561,7 @@ private:
         const TwoDoubles other_y = TwoDoubles{first.position.y(), second.position.y()} + other_vy * other_since;
         TwoDoubles dx = other_x - own_x;
         TwoDoubles dy = other_y - own_y;
-        if constexpr (periodic_box) {
+        if (periodic_) {
             // Nearly every pair is nearer than half a box on both axes: one test of all four.
             const double half = 0.5 * world_.box_size;
             const TwoMasks far = (dx > half) | (dx < -half) | (dy > half) | (dy < -half);
@@ -694,17 +685,17 @@ private:
         a.position = position_at(i, now_);
         b.position = position_at(j, now_);
         // In a periodic box, b's image next to a (each keeps its own position).
-        if constexpr (!periodic_box) {
+        if (!periodic_) {
             clamp_into_box(a.position, box_);
             clamp_into_box(b.position, box_);
         }
-        const Vec2 b_image = periodic_box ? a.position + nearest_image(b.position - a.position) : b.position;
+        const Vec2 b_image = periodic_ ? a.position + nearest_image(b.position - a.position) : b.position;
         bodies_[i].stamp = now_;
         bodies_[j].stamp = now_;
         const Vec2 velocity_before = a.velocity;
         exchange_normal_velocities(a.position, b_image, a.velocity, b.velocity);
         collision_sums_.pair_virial += (a.velocity - velocity_before).dot(a.position - b_image);
-        if constexpr (periodic_box) {
+        if (periodic_) {
             // Stored again in [0, L), measured from the box: the whole boxes
             // crossed since move into Plans::images.
             for (const std::uint32_t k : {i, j}) {
@@ -736,7 +727,7 @@ private:
 
     // Only the cells that have just become neighbours need new predictions.
     void cross_cell(std::uint32_t i, std::uint32_t cell) {
-        if constexpr (periodic_box) {
+        if (periodic_) {
             cross_cell_periodic(i, cell);
             return;
         }
@@ -801,7 +792,7 @@ private:
             Particle& out = snapshot_[i];
             out = bodies_[i].particle;
             out.position = position_at(i, now_);
-            if constexpr (periodic_box) {
+            if (periodic_) {
                 out.position = Vec2(wrap_into_periodic_box(out.position.x(), world_.box_size),
                                     wrap_into_periodic_box(out.position.y(), world_.box_size));
             } else {
@@ -812,7 +803,7 @@ private:
 
     World world_;
     Box box_;
-    static constexpr bool periodic_box = Periodic;  // the box wraps: no walls, the nearest image meets
+    bool periodic_;  // the box wraps: no walls, the nearest image meets
     // What an event reads of a particle first, in one 64-byte line: its
     // state at its own time stamp (the time of its last collision, or 0),
     // the stamp, and the absolute time of its next wall event.
@@ -882,33 +873,6 @@ std::vector<Particle> checked(const World& world, std::vector<Particle> particle
 
 }  // namespace
 
-// What ExactSimulation holds: the engine for its kind of box.
-class ExactSimulation::Implementation {
-public:
-    // From a scene or a saved run.
-    template <typename From>
-    Implementation(const World& world, From from, const ExactOptions& options)
-        : engine_(options.boundary == Boundary::periodic ? variant_of<true>(world, std::move(from), options)
-                                                         : variant_of<false>(world, std::move(from), options)) {}
-    // body(engine) on the engine, whichever box it is for.
-    template <typename Body>
-    decltype(auto) on_engine(Body&& body) {
-        return std::visit(std::forward<Body>(body), engine_);
-    }
-    template <typename Body>
-    decltype(auto) on_engine(Body&& body) const {
-        return std::visit(std::forward<Body>(body), engine_);
-    }
-
-private:
-    using Engines = std::variant<ExactEngine<false>, ExactEngine<true>>;
-    template <bool Periodic, typename From>
-    static Engines variant_of(const World& world, From from, const ExactOptions& options) {
-        return Engines(std::in_place_type<ExactEngine<Periodic>>, world, std::move(from), options);
-    }
-    Engines engine_;
-};
-
 ExactSimulation::ExactSimulation(const World& world, std::vector<Particle> particles, const ExactOptions& options)
     : engine_(std::make_unique<Implementation>(world, checked(world, std::move(particles), options), options)) {}
 
@@ -919,7 +883,7 @@ ExactSimulation ExactSimulation::restore(const World& world, std::istream& saved
     SavedStateReader reader(saved, restore_refusal);
     reader.expect("exact-engine-state");
     reader.expect("1");
-    SavedRun run = read_saved_run(reader);
+    Implementation::SavedRun run = Implementation::read_saved(reader);
     require_valid_scene("particlesim::ExactSimulation::restore", world, run.particles,
                         options.boundary == Boundary::periodic ? CentresIn::periodic_saved : CentresIn::walled_box);
     return ExactSimulation(std::make_unique<Implementation>(world, std::move(run), options));
@@ -927,43 +891,23 @@ ExactSimulation ExactSimulation::restore(const World& world, std::istream& saved
 
 void ExactSimulation::save(std::ostream& out) const {
     out << "exact-engine-state 1\n";
-    engine_->on_engine([&](const auto& engine) { engine.save(out); });
+    engine_->save(out);
 }
 
 ExactSimulation::~ExactSimulation() = default;
 ExactSimulation::ExactSimulation(ExactSimulation&&) noexcept = default;
 ExactSimulation& ExactSimulation::operator=(ExactSimulation&&) noexcept = default;
 
-void ExactSimulation::step() {
-    engine_->on_engine([](auto& engine) { engine.step(); });
-}
-std::span<const Particle> ExactSimulation::particles() const {
-    return engine_->on_engine([](const auto& engine) -> std::span<const Particle> { return engine.snapshot(); });
-}
-const World& ExactSimulation::world() const {
-    return engine_->on_engine([](const auto& engine) -> const World& { return engine.world(); });
-}
-std::int64_t ExactSimulation::steps_done() const {
-    return engine_->on_engine([](const auto& engine) { return engine.steps_done(); });
-}
-const StepCounts& ExactSimulation::last_step() const {
-    return engine_->on_engine([](const auto& engine) -> const StepCounts& { return engine.last_step(); });
-}
-const StepCounts& ExactSimulation::totals() const {
-    return engine_->on_engine([](const auto& engine) -> const StepCounts& { return engine.totals(); });
-}
-const CollisionSums& ExactSimulation::collision_sums() const {
-    return engine_->on_engine([](const auto& engine) -> const CollisionSums& { return engine.collision_sums(); });
-}
-std::uint64_t ExactSimulation::last_step_particles_with_several_events() const {
-    return engine_->on_engine([](const auto& engine) { return engine.several_events(); });
-}
-std::uint64_t ExactSimulation::events_processed() const {
-    return engine_->on_engine([](const auto& engine) { return engine.events_processed(); });
-}
-int ExactSimulation::cells_per_side() const {
-    return engine_->on_engine([](const auto& engine) { return engine.cells_per_side(); });
-}
+void ExactSimulation::step() { engine_->step(); }
+std::span<const Particle> ExactSimulation::particles() const { return engine_->snapshot(); }
+const World& ExactSimulation::world() const { return engine_->world(); }
+std::int64_t ExactSimulation::steps_done() const { return engine_->steps_done(); }
+const StepCounts& ExactSimulation::last_step() const { return engine_->last_step(); }
+const StepCounts& ExactSimulation::totals() const { return engine_->totals(); }
+const CollisionSums& ExactSimulation::collision_sums() const { return engine_->collision_sums(); }
+std::uint64_t ExactSimulation::last_step_particles_with_several_events() const { return engine_->several_events(); }
+std::uint64_t ExactSimulation::events_processed() const { return engine_->events_processed(); }
+int ExactSimulation::cells_per_side() const { return engine_->cells_per_side(); }
 
 double estimated_events_per_step(const World& world, std::span<const Particle> particles) {
     double speed_sum = 0.0;  // sum of |vx| + |vy|
