@@ -159,14 +159,13 @@ void correct_outputs_pass() {
                                                          {"--broadphase", "grid", "-t", "2"},
                                                          {"--grid", "3", "-t", "2"},
                                                          {"--substeps", "3"}};
-    int checked = 0, diverged = 0;
+    int checked = 0, diverged = 0, substeps_strict = 0, substeps_loose = 0;
     const std::vector<Scene> scenes = test_scenes(60);
     for (std::size_t k = 0; k < scenes.size(); ++k) {
         const Scene& scene = scenes[k];
         const std::string text = scene_text(scene);
-        // Substeps where no disk outruns the box: beyond, simcheck's bounds between
-        // micro-steps span the walls, and it accepts nearly anything, slowly
-        // (checking.md, "What it does not do").
+        // Substeps where no disk outruns the box: beyond, nearly every step's
+        // bounds grow wider than a diameter, slowly (substeps_beyond_a_diameter).
         const bool outruns_box = std::any_of(scene.particles.begin(), scene.particles.end(), [&](const Particle& p) {
             return std::max(std::abs(p.velocity.x()), std::abs(p.velocity.y())) > scene.world.box_size;
         });
@@ -177,8 +176,15 @@ void correct_outputs_pass() {
         const bool substeps = variant[0] == "--substeps";
         const Verdict v = run_simcheck(
             text, ours, substeps ? std::vector<std::string>{"--substeps", "3"} : std::vector<std::string>{});
-        if (v.status != 0) std::fprintf(stderr, "scene %zu (%s): %s\n", k, variant[0].c_str(), v.out.c_str());
-        CHECK_EQ(v.status, 0);
+        // With substeps, a decision within rounding before the last micro-step
+        // may leave bounds too wide to judge strictly: then no verdict, and why.
+        const bool loose = substeps && v.status == 3 &&
+                           v.first_line.rfind("no verdict: no step breaks the rules, but at ", 0) == 0 &&
+                           v.first_line.find("wider than a diameter") != std::string::npos;
+        substeps_loose += loose ? 1 : 0;
+        substeps_strict += substeps && v.status == 0 ? 1 : 0;
+        if (v.status != 0 && !loose) std::fprintf(stderr, "scene %zu (%s): %s\n", k, variant[0].c_str(), v.out.c_str());
+        CHECK(v.status == 0 || loose);
         const std::string theirs = textbook::output(scene, scene.particles);
         const Verdict t = run_simcheck(text, theirs);
         if (t.status != 0) std::fprintf(stderr, "scene %zu (textbook): %s\n", k, t.out.c_str());
@@ -186,11 +192,53 @@ void correct_outputs_pass() {
         checked += 2;
         if (!substeps && divergence(ours, theirs, 1e-3).material >= 0) ++diverged;
     }
-    std::printf("correct outputs: %d checked, textbook and simcli diverge beyond 1e-3 on %d scenes\n", checked,
-                diverged);
+    std::printf(
+        "correct outputs: %d checked, textbook and simcli diverge beyond 1e-3 on %d scenes; with substeps "
+        "%d judged strictly, %d with bounds wider than a diameter\n",
+        checked, diverged, substeps_strict, substeps_loose);
+    CHECK(substeps_strict >= 5);
     // The point of checking step by step: correct programs drift apart.
     CHECK(diverged >= 10);
     CHECK(checked >= 170);
+}
+
+// Disks that outrun the box (up to 5 L a step) with 3 substeps: a wall hit
+// within rounding of a micro-step's end leaves a disk's velocity known only up
+// to its sign, so its bounds span the box. A correct output gets no verdict,
+// with the step and the decision named; a wrong state is still caught.
+void substeps_beyond_a_diameter() {
+    const Scene fast = family_scene(SceneFamily::fast, 5, 120, 8);
+    const std::string text = scene_text(fast);
+    const std::string right = run_simcli(text, {"--substeps", "3"});
+    const Verdict none = run_simcheck(text, right, {"--substeps", "3"});
+    CHECK_EQ(none.status, 3);
+    CHECK(none.first_line.rfind("no verdict: no step breaks the rules, but at ", 0) == 0);
+    CHECK(none.first_line.find(" a decision within rounding in a micro-step before the last left a disk's bounds "
+                               "wider than a diameter: particle ") != std::string::npos);
+    CHECK(none.first_line.find("(micro-step ") != std::string::npos);
+    // The JSON report says the same.
+    const Verdict json = run_simcheck(text, right, {"--substeps", "3", "--json"});
+    CHECK_EQ(json.status, 3);
+    CHECK(json.out.find("\"verdict\": \"no_verdict\"") != std::string::npos);
+    // A disk moved by 10 r in the middle of the run: caught (exit 1), loose steps or not.
+    std::istringstream lines(right);
+    std::string wrong;
+    long at = 0;
+    const long moved = static_cast<long>(fast.particle_count) * 4 + 3;
+    for (std::string line; std::getline(lines, line); ++at) {
+        if (at == moved) {
+            std::istringstream fields(line);
+            long step = 0, index = 0;
+            double x = 0.0;
+            fields >> step >> index >> x;
+            char shifted[32];
+            std::snprintf(shifted, sizeof shifted, "%.8f", x < 0.5 * fast.world.box_size ? x + 10.0 : x - 10.0);
+            const std::size_t x_at = line.find(' ', line.find(' ') + 1) + 1;
+            line.replace(x_at, line.find(' ', x_at) - x_at, shifted);
+        }
+        wrong += line + "\n";
+    }
+    CHECK_EQ(run_simcheck(text, wrong, {"--substeps", "3"}).status, 1);
 }
 
 void exact_engine_outputs_pass() {
@@ -478,6 +526,7 @@ void report_forms() {
 int main(int argc, char** argv) {
     const int status = check::run(argc, argv, "test_simcheck",
                                   {{"correct outputs pass", correct_outputs_pass},
+                                   {"substeps beyond a diameter", substeps_beyond_a_diameter},
                                    {"exact engine outputs pass", exact_engine_outputs_pass},
                                    {"mistakes are caught where they show", mistakes_are_caught_where_they_show},
                                    {"exact ties are decided", exact_ties_are_decided},

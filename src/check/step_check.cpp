@@ -9,6 +9,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <stdexcept>
 #include <string>
 
@@ -226,14 +227,16 @@ private:
             state_[p] = uncertain_particle(before.particles[p], before.uncertainty);
         }
         result.collisions.assign(count, CollisionRange{});
-        std::string undecided;
+        std::string undecided, undecided_first;
         for (int micro = 1; micro < options_.substeps; ++micro) {
             advance_micro_step(result.collisions, &undecided);
             if (!undecided.empty()) {
                 result.within_rounding.push_back("micro-step " + std::to_string(micro) + ": " + undecided);
+                if (undecided_first.empty()) undecided_first = result.within_rounding.back();
                 undecided.clear();
             }
         }
+        if (options_.substeps > 1) result.loose = wider_than_a_diameter(undecided_first);
         // The last micro-step is matched fate by fate against the printed state.
         step_.predict(state_, 1.0 / options_.substeps);
         matched_.assign(count, {});
@@ -268,6 +271,29 @@ private:
             add_counts(result.collisions[p], fates_);
         }
         return result;
+    }
+
+    // Whether, after the micro-steps before the last, some particle may end
+    // the step anywhere in a span wider than a diameter on an axis (its
+    // position's bounds, plus its velocity's over the last micro-step): why,
+    // or nothing. `first_undecided` names the first decision within rounding.
+    std::optional<std::string> wider_than_a_diameter(const std::string& first_undecided) const {
+        const double last_micro_step = 1.0 / options_.substeps;
+        const double diameter = 2.0 * world_.radius;
+        for (std::uint32_t p = 0; p < state_.size(); ++p) {
+            const UncertainParticle& q = state_[p];
+            const double span_x = (q.x.hi - q.x.lo) + last_micro_step * (q.vx.hi - q.vx.lo);
+            const double span_y = (q.y.hi - q.y.lo) + last_micro_step * (q.vy.hi - q.vy.lo);
+            if (span_x > diameter || span_y > diameter) {
+                const double span = std::max(span_x, span_y);
+                char span_text[32];
+                std::snprintf(span_text, sizeof span_text, " in a span of %.4g", span);
+                return "particle " + std::to_string(p) + " may end the step anywhere" +
+                       (std::isfinite(span) ? std::string(span_text) : std::string()) + " along " +
+                       (span_x > diameter ? "x" : "y") + (first_undecided.empty() ? "" : " (" + first_undecided + ")");
+            }
+        }
+        return std::nullopt;
     }
 
     // A pair fate needs both particles: drop it where the other does not match it.
