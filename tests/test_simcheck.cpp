@@ -196,7 +196,7 @@ void correct_outputs_pass() {
         "correct outputs: %d checked, textbook and simcli diverge beyond 1e-3 on %d scenes; with substeps "
         "%d judged strictly, %d with bounds wider than a diameter\n",
         checked, diverged, substeps_strict, substeps_loose);
-    CHECK(substeps_strict >= 5);
+    CHECK(substeps_strict >= 14);
     // The point of checking step by step: correct programs drift apart.
     CHECK(diverged >= 10);
     CHECK(checked >= 170);
@@ -239,6 +239,39 @@ void substeps_beyond_a_diameter() {
         wrong += line + "\n";
     }
     CHECK_EQ(run_simcheck(text, wrong, {"--substeps", "3"}).status, 1);
+}
+
+// Near ties before the last micro-step, followed branch by branch: a
+// lattice's near ties and a striker meeting a touching row conform strictly,
+// and a state half a radius off is caught.
+void substeps_follow_each_way() {
+    std::vector<Scene> scenes;
+    for (const std::uint64_t seed : {1, 2, 3}) scenes.push_back(family_scene(SceneFamily::crystal, seed, 120, 30));
+    scenes.push_back(family_scene(SceneFamily::cradle, 1, 120, 3));
+    for (std::size_t k = 0; k < scenes.size(); ++k) {
+        const check::Context context("scene ", k);
+        const std::string text = scene_text(scenes[k]);
+        const std::string right = run_simcli(text, {"--substeps", "3"});
+        const Verdict v = run_simcheck(text, right, {"--substeps", "3"});
+        CHECK_EQ(v.status, 0);
+        CHECK(v.first_line.rfind("conforms: ", 0) == 0);
+        if (k > 0) continue;
+        std::string wrong = right;
+        const std::size_t line = static_cast<std::size_t>(scenes[k].particle_count) * 6 + 7;
+        std::size_t at = 0;
+        for (std::size_t n = 0; n < line; ++n) at = wrong.find('\n', at) + 1;
+        const std::size_t x_at = wrong.find(' ', wrong.find(' ', at) + 1) + 1;
+        const std::size_t x_end = wrong.find(' ', x_at);
+        const double x = std::stod(wrong.substr(x_at, x_end - x_at));
+        char shifted[32];
+        std::snprintf(shifted, sizeof shifted, "%.8f", x < 0.5 * scenes[k].world.box_size ? x + 0.5 : x - 0.5);
+        wrong.replace(x_at, x_end - x_at, shifted);
+        const Verdict caught = run_simcheck(text, wrong, {"--substeps", "3"});
+        CHECK_EQ(caught.status, 1);
+        CHECK(caught.first_line.rfind("step 6: particle", 0) == 0);
+        CHECK(caught.out.find("particle 7's printed state") != std::string::npos ||
+              caught.first_line.rfind("step 6: particle 7", 0) == 0);
+    }
 }
 
 void exact_engine_outputs_pass() {
@@ -527,6 +560,7 @@ int main(int argc, char** argv) {
     const int status = check::run(argc, argv, "test_simcheck",
                                   {{"correct outputs pass", correct_outputs_pass},
                                    {"substeps beyond a diameter", substeps_beyond_a_diameter},
+                                   {"substeps follow each way", substeps_follow_each_way},
                                    {"exact engine outputs pass", exact_engine_outputs_pass},
                                    {"mistakes are caught where they show", mistakes_are_caught_where_they_show},
                                    {"exact ties are decided", exact_ties_are_decided},

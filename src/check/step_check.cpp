@@ -10,6 +10,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <numeric>
 #include <stdexcept>
 #include <string>
 
@@ -219,32 +220,216 @@ private:
                (c.kind == CollisionKind::wall ? "it" : "theirs") + " is within rounding (a near tie)";
     }
 
+    // The state after some micro-steps of a step, on one branch of the
+    // decisions within rounding met so far, with its counts and notes.
+    struct Branch {
+        std::vector<UncertainParticle> state;
+        std::vector<CollisionRange> counts;
+        std::vector<std::string> notes;
+        std::string first_undecided;
+    };
+
+    // With substeps, the micro-steps before the last follow each way the
+    // decisions within rounding may go (up to max_branches at once, beyond
+    // which fates are merged into bounds); the step conforms if one branch
+    // explains the printed state, strictly if its bounds stay narrow.
     StepCheck check_stepped(const PrintedState& before, const PrintedState& after) {
-        StepCheck result;
         const std::size_t count = before.particles.size();
-        state_.resize(count);
+        std::vector<Branch> branches(1);
+        branches.front().state.resize(count);
         for (std::size_t p = 0; p < count; ++p) {
-            state_[p] = uncertain_particle(before.particles[p], before.uncertainty);
+            branches.front().state[p] = uncertain_particle(before.particles[p], before.uncertainty);
         }
-        result.collisions.assign(count, CollisionRange{});
-        std::string undecided, undecided_first;
+        branches.front().counts.assign(count, CollisionRange{});
         for (int micro = 1; micro < options_.substeps; ++micro) {
-            advance_micro_step(result.collisions, &undecided);
-            if (!undecided.empty()) {
-                result.within_rounding.push_back("micro-step " + std::to_string(micro) + ": " + undecided);
-                if (undecided_first.empty()) undecided_first = result.within_rounding.back();
-                undecided.clear();
+            std::vector<Branch> next;
+            const std::size_t room = std::max<std::size_t>(1, max_branches / branches.size());
+            for (Branch& branch : branches) advance_branch(branch, micro, room, next);
+            branches = std::move(next);
+        }
+        // Every branch that explains the printed state may be the one the
+        // program took: their collision counts are merged, and the step is
+        // strict if one of them is.
+        std::optional<StepCheck> passed, failure;
+        std::size_t fewest_unmatched = count + 1;
+        for (Branch& branch : branches) {
+            std::size_t unmatched = 0;
+            StepCheck checked = match_last_micro_step(branch, after, unmatched);
+            if (!checked.violation) {
+                if (!passed) {
+                    passed = std::move(checked);
+                    continue;
+                }
+                for (std::size_t p = 0; p < count; ++p) merge_counts(passed->collisions[p], checked.collisions[p]);
+                if (!checked.loose) passed->loose.reset();
+            } else if (unmatched < fewest_unmatched) {
+                fewest_unmatched = unmatched;
+                failure = std::move(checked);
             }
         }
-        if (options_.substeps > 1) result.loose = wider_than_a_diameter(undecided_first);
-        // The last micro-step is matched fate by fate against the printed state.
-        step_.predict(state_, 1.0 / options_.substeps);
+        return passed ? std::move(*passed) : std::move(*failure);
+    }
+
+    static void merge_counts(CollisionRange& into, const CollisionRange& other) {
+        into.particle_min = std::min(into.particle_min, other.particle_min);
+        into.particle_max = std::max(into.particle_max, other.particle_max);
+        into.wall_min = std::min(into.wall_min, other.wall_min);
+        into.wall_max = std::max(into.wall_max, other.wall_max);
+    }
+
+    // One micro-step of `branch`: a branch in `out` for each way its
+    // decisions within rounding may go together, or one with their fates
+    // merged into bounds when there are more than `room` ways.
+    void advance_branch(Branch& branch, int micro, std::size_t room, std::vector<Branch>& out) {
+        const auto count = static_cast<std::uint32_t>(branch.state.size());
+        step_.predict(branch.state, 1.0 / options_.substeps);
+        next_.resize(count);
+        sole_candidate_.resize(count);
+        undecided_.clear();
+        undecided_fates_.clear();
+        for (std::uint32_t p = 0; p < count; ++p) {
+            step_.fates_of(p, fates_);
+            sole_candidate_[p] = fates_.front().candidate;
+            next_[p] = fates_.front().outcome;
+            if (fates_.size() == 1) {
+                add_counts(branch.counts[p], fates_);
+            } else {
+                undecided_.push_back(p);
+                undecided_fates_.push_back(fates_);
+            }
+        }
+        if (undecided_.empty()) {
+            branch.state.swap(next_);
+            out.push_back(std::move(branch));
+            return;
+        }
+        branch.notes.push_back("micro-step " + std::to_string(micro) + ": " + why_undecided(undecided_.front()));
+        if (branch.first_undecided.empty()) branch.first_undecided = branch.notes.back();
+        const std::vector<std::vector<std::size_t>> ways = ways_to_decide(room);
+        if (ways.empty()) {  // too many: every fate merged into one bounds
+            for (std::size_t u = 0; u < undecided_.size(); ++u) {
+                const std::uint32_t p = undecided_[u];
+                for (const Fate& f : undecided_fates_[u]) next_[p] = hull(next_[p], f.outcome);
+                add_counts(branch.counts[p], undecided_fates_[u]);
+            }
+            branch.state.swap(next_);
+            out.push_back(std::move(branch));
+            return;
+        }
+        for (const std::vector<std::size_t>& way : ways) {
+            Branch taken{next_, branch.counts, branch.notes, branch.first_undecided};
+            for (std::size_t u = 0; u < undecided_.size(); ++u) {
+                const Fate& f = undecided_fates_[u][way[u]];
+                taken.state[undecided_[u]] = f.outcome;
+                add_counts(taken.counts[undecided_[u]], {f});
+            }
+            out.push_back(std::move(taken));
+        }
+    }
+
+    // Every choice of one fate per undecided particle in which each pair
+    // collision is chosen by both its particles (each a fate index per
+    // undecided particle), or nothing when there are more than `room`.
+    // Particles that share no possible collision decide independently: the
+    // choices are made per group of linked particles, then combined.
+    std::vector<std::vector<std::size_t>> ways_to_decide(std::size_t room) const {
+        const std::size_t count = undecided_.size();
+        const auto index_of = [&](std::uint32_t particle) -> std::optional<std::size_t> {
+            const auto at = std::lower_bound(undecided_.begin(), undecided_.end(), particle);
+            if (at == undecided_.end() || *at != particle) return std::nullopt;
+            return static_cast<std::size_t>(at - undecided_.begin());
+        };
+        std::vector<std::size_t> group(count);
+        std::iota(group.begin(), group.end(), std::size_t{0});
+        const auto root = [&](std::size_t u) {
+            while (group[u] != u) u = group[u] = group[group[u]];
+            return u;
+        };
+        for (std::size_t u = 0; u < count; ++u) {
+            for (const Fate& f : undecided_fates_[u]) {
+                const PossibleCollision* c = pair_of(f);
+                if (const auto other = c ? index_of(c->other(undecided_[u])) : std::nullopt)
+                    group[root(*other)] = root(u);
+            }
+        }
+        std::vector<std::size_t> way(count, 0);
+        const auto chosen_candidate = [&](std::uint32_t particle) {
+            const auto u = index_of(particle);
+            return u ? undecided_fates_[*u][way[*u]].candidate : sole_candidate_[particle];
+        };
+        // Each pair chosen by one of a group's particles is chosen by its partner, and back.
+        const auto consistent = [&](const std::vector<std::size_t>& members) {
+            for (const std::size_t u : members) {
+                const int mine = undecided_fates_[u][way[u]].candidate;
+                for (const std::uint32_t k : step_.candidates_of(undecided_[u])) {
+                    const PossibleCollision& c = step_.candidates()[k];
+                    if (c.kind != CollisionKind::pair) continue;
+                    const bool theirs = chosen_candidate(c.other(undecided_[u])) == static_cast<int>(k);
+                    if (theirs != (mine == static_cast<int>(k))) return false;
+                }
+            }
+            return true;
+        };
+        std::vector<std::vector<std::size_t>> ways{way};
+        for (std::size_t first = 0; first < count; ++first) {
+            if (root(first) != first) continue;
+            std::vector<std::size_t> members;
+            double combinations = 1.0;
+            for (std::size_t u = 0; u < count; ++u) {
+                if (root(u) != first) continue;
+                members.push_back(u);
+                combinations *= static_cast<double>(undecided_fates_[u].size());
+            }
+            if (combinations > max_combinations_tried) return {};
+            // Every combination of the group, like an odometer.
+            std::vector<std::vector<std::size_t>> choices;
+            for (const std::size_t u : members) way[u] = 0;
+            while (true) {
+                if (consistent(members)) {
+                    std::vector<std::size_t>& choice = choices.emplace_back();
+                    for (const std::size_t u : members) choice.push_back(way[u]);
+                }
+                std::size_t m = 0;
+                while (m < members.size() && ++way[members[m]] == undecided_fates_[members[m]].size())
+                    way[members[m++]] = 0;
+                if (m == members.size()) break;
+            }
+            if (choices.empty() || ways.size() * choices.size() > room) return {};
+            std::vector<std::vector<std::size_t>> combined;
+            for (const std::vector<std::size_t>& partial : ways) {
+                for (const std::vector<std::size_t>& choice : choices) {
+                    std::vector<std::size_t>& next = combined.emplace_back(partial);
+                    for (std::size_t m = 0; m < members.size(); ++m) next[members[m]] = choice[m];
+                }
+            }
+            ways = std::move(combined);
+        }
+        return ways;
+    }
+
+    // The pair collision a fate takes, or null.
+    const PossibleCollision* pair_of(const Fate& fate) const {
+        if (fate.candidate < 0) return nullptr;
+        const PossibleCollision& c = step_.candidates()[static_cast<std::size_t>(fate.candidate)];
+        return c.kind == CollisionKind::pair ? &c : nullptr;
+    }
+
+    // The last micro-step of `branch`, matched fate by fate against the
+    // printed state; `unmatched` counts the particles no fate explains.
+    StepCheck match_last_micro_step(Branch& branch, const PrintedState& after, std::size_t& unmatched) {
+        StepCheck result;
+        const auto count = static_cast<std::uint32_t>(branch.state.size());
+        result.collisions = std::move(branch.counts);
+        result.within_rounding = std::move(branch.notes);
+        if (options_.substeps > 1) result.loose = wider_than_a_diameter(branch.state, branch.first_undecided);
+        step_.predict(branch.state, 1.0 / options_.substeps);
         matched_.assign(count, {});
         for (std::uint32_t p = 0; p < count; ++p) {
             step_.fates_of(p, fates_);
             for (const Fate& f : fates_) {
                 if (matches(f.outcome, after.particles[p], after.uncertainty)) matched_[p].push_back(f.candidate);
             }
+            unmatched += matched_[p].empty() ? 1 : 0;
         }
         // A particle that no fate explains on its own comes first; then one
         // whose collision its partner's printed state does not show.
@@ -257,6 +442,7 @@ private:
         drop_one_sided_pairs();
         for (std::uint32_t p = 0; p < count; ++p) {
             if (matched_[p].empty()) {
+                ++unmatched;
                 result.violation = explain(p, after);
                 return result;
             }
@@ -277,11 +463,12 @@ private:
     // the step anywhere in a span wider than a diameter on an axis (its
     // position's bounds, plus its velocity's over the last micro-step): why,
     // or nothing. `first_undecided` names the first decision within rounding.
-    std::optional<std::string> wider_than_a_diameter(const std::string& first_undecided) const {
+    std::optional<std::string> wider_than_a_diameter(std::span<const UncertainParticle> state,
+                                                     const std::string& first_undecided) const {
         const double last_micro_step = 1.0 / options_.substeps;
         const double diameter = 2.0 * world_.radius;
-        for (std::uint32_t p = 0; p < state_.size(); ++p) {
-            const UncertainParticle& q = state_[p];
+        for (std::uint32_t p = 0; p < state.size(); ++p) {
+            const UncertainParticle& q = state[p];
             const double span_x = (q.x.hi - q.x.lo) + last_micro_step * (q.vx.hi - q.vx.lo);
             const double span_y = (q.y.hi - q.y.lo) + last_micro_step * (q.vy.hi - q.vy.lo);
             if (span_x > diameter || span_y > diameter) {
@@ -441,6 +628,15 @@ private:
     std::vector<UncertainParticle> state_, next_;
     std::vector<Fate> fates_;
     std::vector<std::vector<int>> matched_;
+    // Of the micro-step being branched: each particle's fate when it has one,
+    // the particles with several (ascending) and their fates.
+    std::vector<int> sole_candidate_;
+    std::vector<std::uint32_t> undecided_;
+    std::vector<std::vector<Fate>> undecided_fates_;
+    // Branches followed at once; a micro-step whose undecided particles'
+    // fates combine in more ways than this is merged into bounds untried.
+    static constexpr std::size_t max_branches = 256;
+    static constexpr double max_combinations_tried = 4096.0;
 };
 
 StepChecker::StepChecker(const World& world, const StepCheckOptions& options) {

@@ -122,8 +122,11 @@ UncertainParticle rest_of_step(const UncertainParticle& q, const Uncertain& rema
     };
     if (stops != Tri::yes) include(moved(q, remaining, box));
     if (stops != Tri::no) {
+        // It stops only on reaching the wall within the remaining time: a
+        // creeping particle's open-ended reach is cut there.
+        const Uncertain until_stop{std::min(reach.time.lo, remaining.hi), std::min(reach.time.hi, remaining.hi)};
         for_each_hit(reach.on_x, reach.on_y, [&](bool x, bool y) {
-            UncertainParticle at_wall = moved(q, reach.time, box);
+            UncertainParticle at_wall = moved(q, until_stop, box);
             if (x) at_wall.x = Uncertain::exact(reach.wall_x);
             if (y) at_wall.y = Uncertain::exact(reach.wall_y);
             include(at_wall);
@@ -353,12 +356,17 @@ UncertainParticle UncertainStep::outcome(std::uint32_t particle, int candidate) 
     const Uncertain step_end = Uncertain::exact(duration_);
     if (candidate < 0) return moved(q, step_end, box_);
     const PossibleCollision& c = candidates_[static_cast<std::size_t>(candidate)];
+    // A candidate's time, as any program that accepts it computes it, lies in
+    // [0, duration] (rules.md: a candidate when t <= the step's end): so does
+    // the time it moves to, however little its bounds knew (a pair at rest
+    // and touching within rounding may meet at any time from 0 on).
+    const Uncertain when{std::clamp(c.time.lo, 0.0, duration_), std::clamp(c.time.hi, 0.0, duration_)};
     if (c.kind == CollisionKind::wall) {
         bool any = false;
         UncertainParticle result;
         const WallReach reach = wall_reach(q, box_);
         for_each_hit(c.on_x, c.on_y, [&](bool x, bool y) {
-            UncertainParticle at_wall = moved(q, c.time, box_);
+            UncertainParticle at_wall = moved(q, when, box_);
             if (x) {
                 at_wall.x = Uncertain::exact(reach.wall_x);
                 at_wall.vx = -at_wall.vx;
@@ -367,15 +375,15 @@ UncertainParticle UncertainStep::outcome(std::uint32_t particle, int candidate) 
                 at_wall.y = Uncertain::exact(reach.wall_y);
                 at_wall.vy = -at_wall.vy;
             }
-            const UncertainParticle option = rest_of_step(at_wall, step_end - c.time, box_);
+            const UncertainParticle option = rest_of_step(at_wall, step_end - when, box_);
             result = any ? hull(result, option) : option;
             any = true;
         });
         return result;
     }
     // rules.md "Pair at time t": both at contact, exchange along the line of centres.
-    const UncertainParticle a = moved(clamped_into(before_[c.i], box_), c.time, box_);
-    const UncertainParticle b = moved(clamped_into(before_[c.j], box_), c.time, box_);
+    const UncertainParticle a = moved(clamped_into(before_[c.i], box_), when, box_);
+    const UncertainParticle b = moved(clamped_into(before_[c.j], box_), when, box_);
     const Uncertain dx = b.x - a.x, dy = b.y - a.y;
     const Uncertain along = ((b.vx - a.vx) * dx + (b.vy - a.vy) * dy) / (square(dx) + square(dy));
     const Uncertain ex = along * dx, ey = along * dy;
@@ -383,7 +391,7 @@ UncertainParticle UncertainStep::outcome(std::uint32_t particle, int candidate) 
     const double sign = particle == c.i ? 1.0 : -1.0;
     mine.vx = mine.vx + Uncertain::exact(sign) * ex;
     mine.vy = mine.vy + Uncertain::exact(sign) * ey;
-    return rest_of_step(mine, step_end - c.time, box_);
+    return rest_of_step(mine, step_end - when, box_);
 }
 
 void UncertainStep::fates_of(std::uint32_t particle, std::vector<Fate>& out) const {
