@@ -65,11 +65,13 @@ struct StepCheck {
     std::vector<std::string> within_rounding;
     // Per particle (when there is no violation).
     std::vector<CollisionRange> collisions;
-    // With substeps: set when a decision within rounding in a micro-step
-    // before the last left a particle's bounds wider than a diameter by the
-    // step's end (say a wall hit at a micro-step's end, taken or not: its
-    // velocity is known only up to its sign). The step was checked, and a
-    // violation found is one, but a wrong state may pass: why, in words.
+    // With substeps: set when the decisions within rounding in the
+    // micro-steps before the last went too many ways to follow each, so
+    // their fates were merged into one set of bounds, and a particle's grew
+    // wider than a diameter by the step's end (a wall hit at a micro-step's
+    // end, taken or not, leaves its velocity known only up to its sign).
+    // The step was checked, and a violation found is one, but a wrong state
+    // may pass: why, in words.
     std::optional<std::string> loose;
 };
 

@@ -227,6 +227,11 @@ private:
         std::vector<CollisionRange> counts;
         std::vector<std::string> notes;
         std::string first_undecided;
+        // Some micro-step's fates were merged into one set of bounds (too
+        // many ways): wide bounds then hold states no correct program
+        // reaches. (Wide bounds of one way are the scene's own sensitivity:
+        // correct programs do end anywhere in them.)
+        bool merged = false;
     };
 
     // With substeps, the micro-steps before the last follow each way the
@@ -243,7 +248,9 @@ private:
         branches.front().counts.assign(count, CollisionRange{});
         for (int micro = 1; micro < options_.substeps; ++micro) {
             std::vector<Branch> next;
-            const std::size_t room = std::max<std::size_t>(1, max_branches / branches.size());
+            const std::size_t most =
+                std::clamp<std::size_t>(branched_particles / std::max<std::size_t>(count, 1), 1, max_branches);
+            const std::size_t room = std::max<std::size_t>(1, most / branches.size());
             for (Branch& branch : branches) advance_branch(branch, micro, room, next);
             branches = std::move(next);
         }
@@ -307,6 +314,7 @@ private:
         if (branch.first_undecided.empty()) branch.first_undecided = branch.notes.back();
         const std::vector<std::vector<std::size_t>> ways = ways_to_decide(room);
         if (ways.empty()) {  // too many: every fate merged into one bounds
+            branch.merged = true;
             for (std::size_t u = 0; u < undecided_.size(); ++u) {
                 const std::uint32_t p = undecided_[u];
                 for (const Fate& f : undecided_fates_[u]) next_[p] = hull(next_[p], f.outcome);
@@ -317,7 +325,7 @@ private:
             return;
         }
         for (const std::vector<std::size_t>& way : ways) {
-            Branch taken{next_, branch.counts, branch.notes, branch.first_undecided};
+            Branch taken{next_, branch.counts, branch.notes, branch.first_undecided, branch.merged};
             for (std::size_t u = 0; u < undecided_.size(); ++u) {
                 const Fate& f = undecided_fates_[u][way[u]];
                 taken.state[undecided_[u]] = f.outcome;
@@ -421,7 +429,7 @@ private:
         const auto count = static_cast<std::uint32_t>(branch.state.size());
         result.collisions = std::move(branch.counts);
         result.within_rounding = std::move(branch.notes);
-        if (options_.substeps > 1) result.loose = wider_than_a_diameter(branch.state, branch.first_undecided);
+        if (branch.merged) result.loose = wider_than_a_diameter(branch.state, branch.first_undecided);
         step_.predict(branch.state, 1.0 / options_.substeps);
         matched_.assign(count, {});
         for (std::uint32_t p = 0; p < count; ++p) {
@@ -462,7 +470,8 @@ private:
     // Whether, after the micro-steps before the last, some particle may end
     // the step anywhere in a span wider than a diameter on an axis (its
     // position's bounds, plus its velocity's over the last micro-step): why,
-    // or nothing. `first_undecided` names the first decision within rounding.
+    // or nothing. `first_undecided` names the first decision within rounding
+    // (whose fates were merged).
     std::optional<std::string> wider_than_a_diameter(std::span<const UncertainParticle> state,
                                                      const std::string& first_undecided) const {
         const double last_micro_step = 1.0 / options_.substeps;
@@ -636,6 +645,9 @@ private:
     // Branches followed at once; a micro-step whose undecided particles'
     // fates combine in more ways than this is merged into bounds untried.
     static constexpr std::size_t max_branches = 256;
+    // And fewer for a large scene: branches times particles at most this
+    // (each branch holds about 100 bytes a particle).
+    static constexpr std::size_t branched_particles = std::size_t{1} << 20;
     static constexpr double max_combinations_tried = 4096.0;
 };
 
