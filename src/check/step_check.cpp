@@ -293,17 +293,24 @@ private:
         next_.resize(count);
         sole_candidate_.resize(count);
         undecided_.clear();
-        undecided_fates_.clear();
+        undecided_groups_.clear();
         for (std::uint32_t p = 0; p < count; ++p) {
             step_.fates_of(p, fates_);
-            sole_candidate_[p] = fates_.front().candidate;
-            next_[p] = fates_.front().outcome;
             if (fates_.size() == 1) {
+                sole_candidate_[p] = fates_.front().candidate;
+                next_[p] = fates_.front().outcome;
                 add_counts(branch.counts[p], fates_);
-            } else {
-                undecided_.push_back(p);
-                undecided_fates_.push_back(fates_);
+                continue;
             }
+            group_fates(fates_, groups_);
+            if (groups_.size() == 1) {  // every way ends alike
+                sole_candidate_[p] = several_candidates;
+                next_[p] = groups_.front().outcome;
+                add_counts(branch.counts[p], groups_.front().fates);
+                continue;
+            }
+            undecided_.push_back(p);
+            undecided_groups_.push_back(groups_);
         }
         if (undecided_.empty()) {
             branch.state.swap(next_);
@@ -317,8 +324,13 @@ private:
             branch.merged = true;
             for (std::size_t u = 0; u < undecided_.size(); ++u) {
                 const std::uint32_t p = undecided_[u];
-                for (const Fate& f : undecided_fates_[u]) next_[p] = hull(next_[p], f.outcome);
-                add_counts(branch.counts[p], undecided_fates_[u]);
+                next_[p] = undecided_groups_[u].front().outcome;
+                fates_.clear();
+                for (const FateGroup& g : undecided_groups_[u]) {
+                    next_[p] = hull(next_[p], g.outcome);
+                    fates_.insert(fates_.end(), g.fates.begin(), g.fates.end());
+                }
+                add_counts(branch.counts[p], fates_);
             }
             branch.state.swap(next_);
             out.push_back(std::move(branch));
@@ -327,19 +339,54 @@ private:
         for (const std::vector<std::size_t>& way : ways) {
             Branch taken{next_, branch.counts, branch.notes, branch.first_undecided, branch.merged};
             for (std::size_t u = 0; u < undecided_.size(); ++u) {
-                const Fate& f = undecided_fates_[u][way[u]];
-                taken.state[undecided_[u]] = f.outcome;
-                add_counts(taken.counts[undecided_[u]], {f});
+                const FateGroup& g = undecided_groups_[u][way[u]];
+                taken.state[undecided_[u]] = g.outcome;
+                add_counts(taken.counts[undecided_[u]], g.fates);
             }
             out.push_back(std::move(taken));
         }
     }
 
-    // Every choice of one fate per undecided particle in which each pair
-    // collision is chosen by both its particles (each a fate index per
-    // undecided particle), or nothing when there are more than `room`.
-    // Particles that share no possible collision decide independently: the
-    // choices are made per group of linked particles, then combined.
+    // Fates whose outcomes differ negligibly (joined, their bounds span at
+    // most a millionth of a diameter more by the step's end than either's)
+    // are followed as one: a pair at rest touching within rounding collides
+    // or not to the same effect.
+    struct FateGroup {
+        std::vector<int> candidates;
+        UncertainParticle outcome;
+        std::vector<Fate> fates;
+    };
+    void group_fates(const std::vector<Fate>& fates, std::vector<FateGroup>& groups) const {
+        const double negligible = 1e-6 * 2.0 * world_.radius;
+        groups.clear();
+        for (const Fate& f : fates) {
+            const auto joins = [&](FateGroup& g) {
+                const UncertainParticle both = hull(g.outcome, f.outcome);
+                const double span = end_span(both);
+                if (!(std::isfinite(span) && span <= std::max(end_span(g.outcome), end_span(f.outcome)) + negligible))
+                    return false;
+                g.candidates.push_back(f.candidate);
+                g.outcome = both;
+                g.fates.push_back(f);
+                return true;
+            };
+            if (std::none_of(groups.begin(), groups.end(), joins)) groups.push_back({{f.candidate}, f.outcome, {f}});
+        }
+    }
+    // How far apart a particle may end the step on its wider axis: its
+    // position's bounds plus its velocity's over the last micro-step.
+    double end_span(const UncertainParticle& q) const {
+        const double last_micro_step = 1.0 / options_.substeps;
+        return std::max((q.x.hi - q.x.lo) + last_micro_step * (q.vx.hi - q.vx.lo),
+                        (q.y.hi - q.y.lo) + last_micro_step * (q.vy.hi - q.vy.lo));
+    }
+
+    // Every choice of one group of fates per undecided particle in which no
+    // pair collision is taken by one of its particles alone (each a group
+    // index per undecided particle), or nothing when there are more than
+    // `room`. Particles that share no possible collision decide
+    // independently: the choices are made per group of linked particles,
+    // then combined.
     std::vector<std::vector<std::size_t>> ways_to_decide(std::size_t room) const {
         const std::size_t count = undecided_.size();
         const auto index_of = [&](std::uint32_t particle) -> std::optional<std::size_t> {
@@ -347,33 +394,46 @@ private:
             if (at == undecided_.end() || *at != particle) return std::nullopt;
             return static_cast<std::size_t>(at - undecided_.begin());
         };
-        std::vector<std::size_t> group(count);
-        std::iota(group.begin(), group.end(), std::size_t{0});
+        std::vector<std::size_t> linked(count);
+        std::iota(linked.begin(), linked.end(), std::size_t{0});
         const auto root = [&](std::size_t u) {
-            while (group[u] != u) u = group[u] = group[group[u]];
+            while (linked[u] != u) u = linked[u] = linked[linked[u]];
             return u;
         };
         for (std::size_t u = 0; u < count; ++u) {
-            for (const Fate& f : undecided_fates_[u]) {
-                const PossibleCollision* c = pair_of(f);
-                if (const auto other = c ? index_of(c->other(undecided_[u])) : std::nullopt)
-                    group[root(*other)] = root(u);
+            for (const FateGroup& g : undecided_groups_[u]) {
+                for (const int k : g.candidates) {
+                    const PossibleCollision* c = pair_candidate(k);
+                    if (const auto other = c ? index_of(c->other(undecided_[u])) : std::nullopt)
+                        linked[root(*other)] = root(u);
+                }
             }
         }
         std::vector<std::size_t> way(count, 0);
-        const auto chosen_candidate = [&](std::uint32_t particle) {
-            const auto u = index_of(particle);
-            return u ? undecided_fates_[*u][way[*u]].candidate : sole_candidate_[particle];
+        // Whether a particle's choice may take pair k, and whether it must.
+        struct Takes {
+            bool may, must;
         };
-        // Each pair chosen by one of a group's particles is chosen by its partner, and back.
+        const auto takes = [&](std::uint32_t particle, std::uint32_t k) -> Takes {
+            if (const auto u = index_of(particle)) {
+                const std::vector<int>& chosen = undecided_groups_[*u][way[*u]].candidates;
+                const bool may = std::find(chosen.begin(), chosen.end(), static_cast<int>(k)) != chosen.end();
+                return {may, may && chosen.size() == 1};
+            }
+            if (sole_candidate_[particle] == several_candidates)
+                return {step_.candidates()[k].accepted != Tri::no, false};
+            const bool only = sole_candidate_[particle] == static_cast<int>(k);
+            return {only, only};
+        };
+        // No pair that one particle must take and its partner may not.
         const auto consistent = [&](const std::vector<std::size_t>& members) {
             for (const std::size_t u : members) {
-                const int mine = undecided_fates_[u][way[u]].candidate;
                 for (const std::uint32_t k : step_.candidates_of(undecided_[u])) {
                     const PossibleCollision& c = step_.candidates()[k];
                     if (c.kind != CollisionKind::pair) continue;
-                    const bool theirs = chosen_candidate(c.other(undecided_[u])) == static_cast<int>(k);
-                    if (theirs != (mine == static_cast<int>(k))) return false;
+                    const Takes mine = takes(undecided_[u], k);
+                    const Takes theirs = takes(c.other(undecided_[u]), k);
+                    if ((mine.must && !theirs.may) || (theirs.must && !mine.may)) return false;
                 }
             }
             return true;
@@ -386,10 +446,10 @@ private:
             for (std::size_t u = 0; u < count; ++u) {
                 if (root(u) != first) continue;
                 members.push_back(u);
-                combinations *= static_cast<double>(undecided_fates_[u].size());
+                combinations *= static_cast<double>(undecided_groups_[u].size());
             }
             if (combinations > max_combinations_tried) return {};
-            // Every combination of the group, like an odometer.
+            // Every combination of the linked particles, like an odometer.
             std::vector<std::vector<std::size_t>> choices;
             for (const std::size_t u : members) way[u] = 0;
             while (true) {
@@ -398,7 +458,7 @@ private:
                     for (const std::size_t u : members) choice.push_back(way[u]);
                 }
                 std::size_t m = 0;
-                while (m < members.size() && ++way[members[m]] == undecided_fates_[members[m]].size())
+                while (m < members.size() && ++way[members[m]] == undecided_groups_[members[m]].size())
                     way[members[m++]] = 0;
                 if (m == members.size()) break;
             }
@@ -415,10 +475,10 @@ private:
         return ways;
     }
 
-    // The pair collision a fate takes, or null.
-    const PossibleCollision* pair_of(const Fate& fate) const {
-        if (fate.candidate < 0) return nullptr;
-        const PossibleCollision& c = step_.candidates()[static_cast<std::size_t>(fate.candidate)];
+    // Candidate k if it is a pair collision, or null (k < 0: no collision).
+    const PossibleCollision* pair_candidate(int k) const {
+        if (k < 0) return nullptr;
+        const PossibleCollision& c = step_.candidates()[static_cast<std::size_t>(k)];
         return c.kind == CollisionKind::pair ? &c : nullptr;
     }
 
@@ -638,10 +698,12 @@ private:
     std::vector<Fate> fates_;
     std::vector<std::vector<int>> matched_;
     // Of the micro-step being branched: each particle's fate when it has one,
-    // the particles with several (ascending) and their fates.
-    std::vector<int> sole_candidate_;
+    // the particles with several ways to end (ascending) and their fates, grouped.
+    std::vector<int> sole_candidate_;  // or several_candidates, all ending alike
     std::vector<std::uint32_t> undecided_;
-    std::vector<std::vector<Fate>> undecided_fates_;
+    std::vector<std::vector<FateGroup>> undecided_groups_;
+    std::vector<FateGroup> groups_;
+    static constexpr int several_candidates = -2;
     // Branches followed at once; a micro-step whose undecided particles'
     // fates combine in more ways than this is merged into bounds untried.
     static constexpr std::size_t max_branches = 256;
