@@ -535,19 +535,16 @@ private:
     std::optional<std::string> wider_than_a_diameter(std::span<const UncertainParticle> state,
                                                      const std::string& first_undecided) const {
         const double last_micro_step = 1.0 / options_.substeps;
-        const double diameter = 2.0 * world_.radius;
         for (std::uint32_t p = 0; p < state.size(); ++p) {
+            const double span = end_span(state[p]);
+            if (!(span > 2.0 * world_.radius)) continue;
             const UncertainParticle& q = state[p];
-            const double span_x = (q.x.hi - q.x.lo) + last_micro_step * (q.vx.hi - q.vx.lo);
-            const double span_y = (q.y.hi - q.y.lo) + last_micro_step * (q.vy.hi - q.vy.lo);
-            if (span_x > diameter || span_y > diameter) {
-                const double span = std::max(span_x, span_y);
-                char span_text[32];
-                std::snprintf(span_text, sizeof span_text, " in a span of %.4g", span);
-                return "particle " + std::to_string(p) + " may end the step anywhere" +
-                       (std::isfinite(span) ? std::string(span_text) : std::string()) + " along " +
-                       (span_x > diameter ? "x" : "y") + (first_undecided.empty() ? "" : " (" + first_undecided + ")");
-            }
+            const bool along_x = (q.x.hi - q.x.lo) + last_micro_step * (q.vx.hi - q.vx.lo) == span;
+            char span_text[32];
+            std::snprintf(span_text, sizeof span_text, " in a span of %.4g", span);
+            return "particle " + std::to_string(p) + " may end the step anywhere" +
+                   (std::isfinite(span) ? std::string(span_text) : std::string()) + " along " + (along_x ? "x" : "y") +
+                   (first_undecided.empty() ? "" : " (" + first_undecided + ")");
         }
         return std::nullopt;
     }
