@@ -146,6 +146,30 @@ void substeps() {
     CHECK(halves.check({before, 0.0}, {one_collision, fixed8_uncertainty}).violation.has_value());
 }
 
+void wall_hit_at_a_micro_step_end() {
+    // Disk 0 at x = 2 moving -2 reaches the wall x = 1 at t = 0.5, the end of
+    // the first of two micro-steps. Printed (known within 5e-9), the hit may
+    // fall in either micro-step: bounced at the end of the first, or stopped
+    // there and bounced at t = 0 of the second. Both end at x = 2 moving +2
+    // with one wall hit, and the checker follows both instead of merging
+    // velocities -2 and +2 into one bound: strict, and 1 r off is caught.
+    const std::vector<Particle> before{disk(2, 10, -2, 0), disk(15, 10, 0, 0)};
+    StepChecker halves(World{20, 1.0}, {CheckedRules::stepped, 2});
+    const StepCheck right = halves.check({before, fixed8_uncertainty},
+                                         {std::vector{disk(2, 10, 2, 0), disk(15, 10, 0, 0)}, fixed8_uncertainty});
+    CHECK(!right.violation);
+    CHECK(!right.loose);
+    CHECK_EQ(right.collisions[0].wall_min, 1U);
+    CHECK_EQ(right.collisions[0].wall_max, 1U);
+    CHECK(!right.within_rounding.empty());
+    const StepCheck off = halves.check({before, fixed8_uncertainty},
+                                       {std::vector{disk(3, 10, 2, 0), disk(15, 10, 0, 0)}, fixed8_uncertainty});
+    CHECK(off.violation && off.violation->particle == 0);
+    const StepCheck unbounced = halves.check({before, fixed8_uncertainty},
+                                             {std::vector{disk(1, 10, -2, 0), disk(15, 10, 0, 0)}, fixed8_uncertainty});
+    CHECK(unbounced.violation.has_value());
+}
+
 void outside_the_box() {
     const StepCheck outside = check_exact(20, {disk(10, 18, 0, 3)}, {disk(10, 21, 0, 3)});
     CHECK(says(outside, "particle 0 is outside the box: y = 21 is beyond L - r = 19"));
@@ -192,6 +216,7 @@ int main(int argc, char** argv) {
                        {"overlapping pair collides at t = 0", overlapping_pair_collides_at_zero},
                        {"contact at t = 1 within rounding", contact_at_t_one_within_rounding},
                        {"substeps", substeps},
+                       {"wall hit at a micro-step's end", wall_hit_at_a_micro_step_end},
                        {"outside the box", outside_the_box},
                        {"exact rules", exact_rules},
                        {"perf run", perf_run}});
