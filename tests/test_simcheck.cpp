@@ -90,6 +90,21 @@ Scene family_scene(SceneFamily family, std::uint64_t seed, std::size_t particles
     return make_family_scene(family, options);
 }
 
+// `output` with the x of its line `line` (from 0) moved `distance` towards
+// the middle of a box of side `box`, printed as simcli prints it (%.8f).
+std::string with_x_moved(const std::string& output, std::size_t line, double distance, double box) {
+    std::size_t at = 0;
+    for (std::size_t n = 0; n < line; ++n) at = output.find('\n', at) + 1;
+    const std::size_t x_at = output.find(' ', output.find(' ', at) + 1) + 1;
+    const std::size_t x_end = output.find(' ', x_at);
+    const double x = std::stod(output.substr(x_at, x_end - x_at));
+    char moved[32];
+    std::snprintf(moved, sizeof moved, "%.8f", x < 0.5 * box ? x + distance : x - distance);
+    std::string changed = output;
+    changed.replace(x_at, x_end - x_at, moved);
+    return changed;
+}
+
 // Small scenes of every family, and the random test scenes of every regime.
 std::vector<Scene> test_scenes(int random_count) {
     std::vector<Scene> scenes;
@@ -221,23 +236,7 @@ void substeps_beyond_a_diameter() {
     CHECK_EQ(json.status, 3);
     CHECK(json.out.find("\"verdict\": \"no_verdict\"") != std::string::npos);
     // A disk moved by 10 r in the middle of the run: caught (exit 1), loose steps or not.
-    std::istringstream lines(right);
-    std::string wrong;
-    long at = 0;
-    const long moved = static_cast<long>(fast.particle_count) * 4 + 3;
-    for (std::string line; std::getline(lines, line); ++at) {
-        if (at == moved) {
-            std::istringstream fields(line);
-            long step = 0, index = 0;
-            double x = 0.0;
-            fields >> step >> index >> x;
-            char shifted[32];
-            std::snprintf(shifted, sizeof shifted, "%.8f", x < 0.5 * fast.world.box_size ? x + 10.0 : x - 10.0);
-            const std::size_t x_at = line.find(' ', line.find(' ') + 1) + 1;
-            line.replace(x_at, line.find(' ', x_at) - x_at, shifted);
-        }
-        wrong += line + "\n";
-    }
+    const std::string wrong = with_x_moved(right, fast.particle_count * 4 + 3, 10.0, fast.world.box_size);
     CHECK_EQ(run_simcheck(text, wrong, {"--substeps", "3"}).status, 1);
 }
 
@@ -260,16 +259,7 @@ void substeps_follow_each_way() {
         CHECK_EQ(v.status, 0);
         CHECK(v.first_line.rfind("conforms: ", 0) == 0);
         if (k > 0) continue;
-        std::string wrong = right;
-        const std::size_t line = static_cast<std::size_t>(scene.particle_count) * 6 + 7;
-        std::size_t at = 0;
-        for (std::size_t n = 0; n < line; ++n) at = wrong.find('\n', at) + 1;
-        const std::size_t x_at = wrong.find(' ', wrong.find(' ', at) + 1) + 1;
-        const std::size_t x_end = wrong.find(' ', x_at);
-        const double x = std::stod(wrong.substr(x_at, x_end - x_at));
-        char shifted[32];
-        std::snprintf(shifted, sizeof shifted, "%.8f", x < 0.5 * scene.world.box_size ? x + 0.5 : x - 0.5);
-        wrong.replace(x_at, x_end - x_at, shifted);
+        const std::string wrong = with_x_moved(right, scene.particle_count * 6 + 7, 0.5, scene.world.box_size);
         const Verdict caught = run_simcheck(text, wrong, {"--substeps", substeps});
         CHECK_EQ(caught.status, 1);
         CHECK(caught.first_line.rfind("step 6: particle", 0) == 0);

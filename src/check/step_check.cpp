@@ -177,7 +177,7 @@ private:
     void add_counts(CollisionRange& counts, const std::vector<Fate>& fates) const {
         std::uint64_t pmin = 1, pmax = 0, wmin = 1, wmax = 0;
         for (const Fate& f : fates) {
-            const bool pair = f.candidate >= 0 && step_.candidates()[f.candidate].kind == CollisionKind::pair;
+            const bool pair = pair_candidate(f.candidate) != nullptr;
             const bool wall = f.candidate >= 0 && !pair;
             pmin = std::min<std::uint64_t>(pmin, pair);
             pmax = std::max<std::uint64_t>(pmax, pair);
@@ -225,8 +225,7 @@ private:
     struct Branch {
         std::vector<UncertainParticle> state;
         std::vector<CollisionRange> counts;
-        std::vector<std::string> notes;
-        std::string first_undecided;
+        std::vector<std::string> notes;  // its decisions within rounding, in order
         // Some micro-step's fates were merged into one set of bounds (too
         // many ways): wide bounds then hold states no correct program
         // reaches. (Wide bounds of one way are the scene's own sensitivity:
@@ -318,7 +317,6 @@ private:
             return;
         }
         branch.notes.push_back("micro-step " + std::to_string(micro) + ": " + why_undecided(undecided_.front()));
-        if (branch.first_undecided.empty()) branch.first_undecided = branch.notes.back();
         const std::vector<std::vector<std::size_t>> ways = ways_to_decide(room);
         if (ways.empty()) {  // too many: every fate merged into one bounds
             branch.merged = true;
@@ -337,7 +335,7 @@ private:
             return;
         }
         for (const std::vector<std::size_t>& way : ways) {
-            Branch taken{next_, branch.counts, branch.notes, branch.first_undecided, branch.merged};
+            Branch taken{next_, branch.counts, branch.notes, branch.merged};
             for (std::size_t u = 0; u < undecided_.size(); ++u) {
                 const FateGroup& g = undecided_groups_[u][way[u]];
                 taken.state[undecided_[u]] = g.outcome;
@@ -373,12 +371,15 @@ private:
             if (std::none_of(groups.begin(), groups.end(), joins)) groups.push_back({{f.candidate}, f.outcome, {f}});
         }
     }
-    // How far apart a particle may end the step on its wider axis: its
-    // position's bounds plus its velocity's over the last micro-step.
-    double end_span(const UncertainParticle& q) const {
+    // How far apart a particle may end the step along an axis: its
+    // position's bounds plus its velocity's over the last micro-step; and on
+    // its wider axis.
+    double end_span_along(const Uncertain& position, const Uncertain& velocity) const {
         const double last_micro_step = 1.0 / options_.substeps;
-        return std::max((q.x.hi - q.x.lo) + last_micro_step * (q.vx.hi - q.vx.lo),
-                        (q.y.hi - q.y.lo) + last_micro_step * (q.vy.hi - q.vy.lo));
+        return (position.hi - position.lo) + last_micro_step * (velocity.hi - velocity.lo);
+    }
+    double end_span(const UncertainParticle& q) const {
+        return std::max(end_span_along(q.x, q.vx), end_span_along(q.y, q.vy));
     }
 
     // Every choice of one group of fates per undecided particle in which no
@@ -488,8 +489,8 @@ private:
         StepCheck result;
         const auto count = static_cast<std::uint32_t>(branch.state.size());
         result.collisions = std::move(branch.counts);
+        if (branch.merged) result.loose = wider_than_a_diameter(branch.state, branch.notes);
         result.within_rounding = std::move(branch.notes);
-        if (branch.merged) result.loose = wider_than_a_diameter(branch.state, branch.first_undecided);
         step_.predict(branch.state, 1.0 / options_.substeps);
         matched_.assign(count, {});
         for (std::uint32_t p = 0; p < count; ++p) {
@@ -528,23 +529,21 @@ private:
     }
 
     // Whether, after the micro-steps before the last, some particle may end
-    // the step anywhere in a span wider than a diameter on an axis (its
-    // position's bounds, plus its velocity's over the last micro-step): why,
-    // or nothing. `first_undecided` names the first decision within rounding
+    // the step anywhere in a span wider than a diameter on an axis: why, or
+    // nothing. The first of `notes` names the first decision within rounding
     // (whose fates were merged).
     std::optional<std::string> wider_than_a_diameter(std::span<const UncertainParticle> state,
-                                                     const std::string& first_undecided) const {
-        const double last_micro_step = 1.0 / options_.substeps;
+                                                     const std::vector<std::string>& notes) const {
         for (std::uint32_t p = 0; p < state.size(); ++p) {
-            const double span = end_span(state[p]);
+            const double span_x = end_span_along(state[p].x, state[p].vx);
+            const double span_y = end_span_along(state[p].y, state[p].vy);
+            const double span = std::max(span_x, span_y);
             if (!(span > 2.0 * world_.radius)) continue;
-            const UncertainParticle& q = state[p];
-            const bool along_x = (q.x.hi - q.x.lo) + last_micro_step * (q.vx.hi - q.vx.lo) == span;
             char span_text[32];
             std::snprintf(span_text, sizeof span_text, " in a span of %.4g", span);
             return "particle " + std::to_string(p) + " may end the step anywhere" +
-                   (std::isfinite(span) ? std::string(span_text) : std::string()) + " along " + (along_x ? "x" : "y") +
-                   (first_undecided.empty() ? "" : " (" + first_undecided + ")");
+                   (std::isfinite(span) ? std::string(span_text) : std::string()) + " along " +
+                   (span_x == span ? "x" : "y") + (notes.empty() ? "" : " (" + notes.front() + ")");
         }
         return std::nullopt;
     }
