@@ -170,6 +170,26 @@ void wall_hit_at_a_micro_step_end() {
     CHECK(unbounced.violation.has_value());
 }
 
+void sure_wall_hit_is_never_free() {
+    // Disk 0 at x = 12 moving +8 meets disk 1, resting at x = 16, at t = 0.25;
+    // so does disk 2, coming down at -8 from y = 14: an exact tie, which the
+    // printing turns into one within rounding. If disk 1 takes disk 2, disk 0
+    // reaches the wall x = 19 at t = 0.875 and bounces back to x = 18. Either
+    // way disk 0 collides: it cannot end the step unbounced at the wall.
+    const std::vector<Particle> before{disk(12, 10, 8, 0), disk(16, 10, 0, 0), disk(16, 14, 0, -8)};
+    StepChecker checker(World{20, 1.0});
+    const auto check_after = [&](const std::vector<Particle>& after) {
+        return checker.check({before, fixed8_uncertainty}, {after, fixed8_uncertainty});
+    };
+    const StepCheck first_pair = check_after({disk(14, 10, 0, 0), disk(19, 10, 8, 0), disk(16, 6, 0, -8)});
+    CHECK(!first_pair.violation);
+    const StepCheck second_pair = check_after({disk(18, 10, -8, 0), disk(16, 4, 0, -8), disk(16, 12, 0, 0)});
+    CHECK(!second_pair.violation);
+    CHECK_EQ(second_pair.collisions[0].wall_min, 1U);
+    const StepCheck unbounced = check_after({disk(19, 10, 8, 0), disk(16, 4, 0, -8), disk(16, 12, 0, 0)});
+    CHECK(unbounced.violation && unbounced.violation->particle == 0);
+}
+
 void outside_the_box() {
     const StepCheck outside = check_exact(20, {disk(10, 18, 0, 3)}, {disk(10, 21, 0, 3)});
     CHECK(says(outside, "particle 0 is outside the box: y = 21 is beyond L - r = 19"));
@@ -217,6 +237,7 @@ int main(int argc, char** argv) {
                        {"contact at t = 1 within rounding", contact_at_t_one_within_rounding},
                        {"substeps", substeps},
                        {"wall hit at a micro-step's end", wall_hit_at_a_micro_step_end},
+                       {"a sure wall hit is never free", sure_wall_hit_is_never_free},
                        {"outside the box", outside_the_box},
                        {"exact rules", exact_rules},
                        {"perf run", perf_run}});

@@ -346,7 +346,11 @@ std::span<const std::uint32_t> UncertainStep::candidates_of(std::uint32_t partic
 
 bool UncertainStep::may_be_free(std::uint32_t particle) const {
     for (const std::uint32_t k : candidates_of(particle)) {
-        if (candidates_[k].accepted == Tri::yes) return false;
+        const PossibleCollision& c = candidates_[k];
+        if (c.accepted == Tri::yes) return false;
+        // A wall candidate that surely exists is accepted unless an earlier
+        // collision of the particle is: either way the particle collides.
+        if (c.kind == CollisionKind::wall && c.exists == Tri::yes) return false;
     }
     return true;
 }
