@@ -5,6 +5,7 @@
 #include "check.hpp"
 #include "disk.hpp"
 
+#include "check/uncertain_step.hpp"
 #include "particlesim/step_check.hpp"
 
 #include <string>
@@ -190,6 +191,40 @@ void sure_wall_hit_is_never_free() {
     CHECK(unbounced.violation && unbounced.violation->particle == 0);
 }
 
+void creeping_along_a_wall() {
+    // Disk 0 slides down the wall x = 1 (vx printed 0, so its sign is within
+    // rounding); the floor y = 1 is 4.5 steps away. In this step it may touch
+    // the wall it slides on, to no effect, but cannot bounce off the floor.
+    const std::vector<Particle> before{disk(1, 10, 0, -2), disk(15, 15, 0, 0)};
+    StepChecker checker(World{20, 1.0});
+    const auto check_after = [&](const std::vector<Particle>& after) {
+        return checker.check({before, fixed8_uncertainty}, {after, fixed8_uncertainty});
+    };
+    CHECK(!check_after({disk(1, 8, 0, -2), disk(15, 15, 0, 0)}).violation);
+    const StepCheck bounced = check_after({disk(1, 2, 0, 2), disk(15, 15, 0, 0)});
+    CHECK(bounced.violation && bounced.violation->particle == 0);
+}
+
+void either_wall_within_wide_bounds() {
+    // Bounds merged from several fates may allow real speeds both ways:
+    // x in [1, 98.5], vx in [-100, 100], in a micro-step of 0.1 (L = 100). A
+    // wall hit may then be on either side: from x = 98.5 at +100 the disk
+    // reaches x = 99 at t = 0.005 and comes back to 99 - 9.5 = 89.5.
+    const Box box = Box::of(World{100, 1.0});
+    UncertainStep step(box);
+    const std::vector<UncertainParticle> state{
+        {Uncertain{1, 98.5}, Uncertain::exact(50), Uncertain{-100, 100}, Uncertain::exact(0)}};
+    step.predict(state, 0.1);
+    int wall = -1;
+    for (std::size_t k = 0; k < step.candidates().size(); ++k) {
+        if (step.candidates()[k].kind == CollisionKind::wall) wall = static_cast<int>(k);
+    }
+    CHECK(wall >= 0);
+    const UncertainParticle hit = step.outcome(0, wall);
+    CHECK(hit.x.lo <= 89.5 && 89.5 <= hit.x.hi);
+    CHECK(hit.vx.lo <= -100.0);
+}
+
 void outside_the_box() {
     const StepCheck outside = check_exact(20, {disk(10, 18, 0, 3)}, {disk(10, 21, 0, 3)});
     CHECK(says(outside, "particle 0 is outside the box: y = 21 is beyond L - r = 19"));
@@ -238,6 +273,8 @@ int main(int argc, char** argv) {
                        {"substeps", substeps},
                        {"wall hit at a micro-step's end", wall_hit_at_a_micro_step_end},
                        {"a sure wall hit is never free", sure_wall_hit_is_never_free},
+                       {"creeping along a wall", creeping_along_a_wall},
+                       {"either wall within wide bounds", either_wall_within_wide_bounds},
                        {"outside the box", outside_the_box},
                        {"exact rules", exact_rules},
                        {"perf run", perf_run}});

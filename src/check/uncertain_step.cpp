@@ -39,36 +39,63 @@ Uncertain textbook_cancellation(const Uncertain& quarter_disc, const Uncertain& 
 }
 
 struct AxisWall {
-    Uncertain time = Uncertain::exact(infinity);
-    double wall = 0.0;
+    Uncertain time = Uncertain::exact(infinity);  // to the first wall it may reach
+    // The earliest it may reach each wall (infinity: it does not move towards it).
+    double lower_from = infinity;
+    double upper_from = infinity;
 };
 
 // rules.md "Wall candidate" on one axis.
 AxisWall axis_wall(const Uncertain& position, const Uncertain& velocity, const Box& box) {
-    if (velocity.lo > 0.0) return {not_negative((Uncertain::exact(box.upper) - position) / velocity), box.upper};
-    if (velocity.hi < 0.0) return {not_negative((Uncertain::exact(box.lower) - position) / velocity), box.lower};
+    if (velocity.lo > 0.0) {
+        const Uncertain time = not_negative((Uncertain::exact(box.upper) - position) / velocity);
+        return {time, infinity, time.lo};
+    }
+    if (velocity.hi < 0.0) {
+        const Uncertain time = not_negative((Uncertain::exact(box.lower) - position) / velocity);
+        return {time, time.lo, infinity};
+    }
     if (velocity.lo == 0.0 && velocity.hi == 0.0) return {};
-    // Its sign is within rounding: it may creep to either wall, no sooner
-    // than its distance over the fastest speed allowed.
-    const double to_lower = (position.lo - box.lower) / -velocity.lo;
-    const double to_upper = (box.upper - position.hi) / velocity.hi;
-    const bool lower_first = velocity.lo < 0.0 && (!(velocity.hi > 0.0) || to_lower <= to_upper);
-    const double earliest = std::max(0.0, lower_first ? to_lower : to_upper) * (1.0 - 0x1p-40);
-    return {Uncertain{earliest, infinity}, lower_first ? box.lower : box.upper};
+    // Its sign is within its bounds: it may creep to the wall on either side
+    // its bounds point to, no sooner than its distance over the fastest speed
+    // allowed. (Bounds merged from several fates may allow real speeds both
+    // ways: then either wall may be the one reached.)
+    const auto no_sooner_than = [](double distance, double speed) {
+        return std::max(0.0, distance / speed) * (1.0 - 0x1p-40);
+    };
+    AxisWall wall;
+    if (velocity.lo < 0.0) wall.lower_from = no_sooner_than(position.lo - box.lower, -velocity.lo);
+    if (velocity.hi > 0.0) wall.upper_from = no_sooner_than(box.upper - position.hi, velocity.hi);
+    wall.time = Uncertain{std::min(wall.lower_from, wall.upper_from), infinity};
+    return wall;
+}
+
+// Where an axis meets its wall within `limit`: the wall it moves to, or
+// either one where both may be reached by then.
+Uncertain wall_position(const AxisWall& axis, const Uncertain& limit, const Box& box) {
+    const bool lower = axis.lower_from <= limit.hi;
+    const bool upper = axis.upper_from <= limit.hi;
+    if (lower && upper) return {box.lower, box.upper};
+    if (lower || upper) return Uncertain::exact(lower ? box.lower : box.upper);
+    return Uncertain::exact(axis.lower_from <= axis.upper_from ? box.lower : box.upper);  // not hit by then
 }
 
 struct WallReach {
     Uncertain time;
     Tri on_x = Tri::no;
     Tri on_y = Tri::no;
-    double wall_x = 0.0;
-    double wall_y = 0.0;
+    Uncertain wall_x, wall_y;  // where the axes hit
 };
 
-WallReach wall_reach(const UncertainParticle& q, const Box& box) {
+// The first wall the particle may reach within `limit`, as far as decided.
+// An axis whose own wall lies beyond the limit is not the one hit (a disk
+// creeping along one wall, its time to it open-ended, does not jump to the
+// other).
+WallReach wall_reach(const UncertainParticle& q, const Box& box, const Uncertain& limit) {
     const AxisWall x = axis_wall(q.x, q.vx, box);
     const AxisWall y = axis_wall(q.y, q.vy, box);
-    WallReach reach{min_of(x.time, y.time), Tri::maybe, Tri::maybe, x.wall, y.wall};
+    WallReach reach{min_of(x.time, y.time), Tri::maybe, Tri::maybe, wall_position(x, limit, box),
+                    wall_position(y, limit, box)};
     if (x.time.hi < y.time.lo) {
         reach.on_x = Tri::yes;
         reach.on_y = Tri::no;
@@ -78,8 +105,8 @@ WallReach wall_reach(const UncertainParticle& q, const Box& box) {
     } else if (x.time.is_exact() && y.time.is_exact() && x.time.lo == y.time.lo) {
         reach.on_x = reach.on_y = Tri::yes;  // a corner, exactly
     }
-    if (x.time.lo == infinity) reach.on_x = Tri::no;
-    if (y.time.lo == infinity) reach.on_y = Tri::no;
+    if (x.time.lo == infinity || x.time.lo > limit.hi) reach.on_x = Tri::no;
+    if (y.time.lo == infinity || y.time.lo > limit.hi) reach.on_y = Tri::no;
     return reach;
 }
 
@@ -112,7 +139,7 @@ void for_each_hit(Tri on_x, Tri on_y, Visit visit) {
 // rules.md "Rest of the step": move for `remaining`, stopping at a wall
 // reached on the way.
 UncertainParticle rest_of_step(const UncertainParticle& q, const Uncertain& remaining, const Box& box) {
-    const WallReach reach = wall_reach(q, box);
+    const WallReach reach = wall_reach(q, box, remaining);
     const Tri stops = at_most(reach.time, remaining);
     bool any = false;
     UncertainParticle result;
@@ -127,8 +154,8 @@ UncertainParticle rest_of_step(const UncertainParticle& q, const Uncertain& rema
         const Uncertain until_stop{std::min(reach.time.lo, remaining.hi), std::min(reach.time.hi, remaining.hi)};
         for_each_hit(reach.on_x, reach.on_y, [&](bool x, bool y) {
             UncertainParticle at_wall = moved(q, until_stop, box);
-            if (x) at_wall.x = Uncertain::exact(reach.wall_x);
-            if (y) at_wall.y = Uncertain::exact(reach.wall_y);
+            if (x) at_wall.x = reach.wall_x;
+            if (y) at_wall.y = reach.wall_y;
             include(at_wall);
         });
     }
@@ -168,7 +195,7 @@ void UncertainStep::predict(std::span<const UncertainParticle> before, double du
     const Uncertain step_end = Uncertain::exact(duration);
     for (std::uint32_t p = 0; p < before.size(); ++p) {
         const UncertainParticle q = clamped_into(before[p], box_);
-        const WallReach reach = wall_reach(q, box_);
+        const WallReach reach = wall_reach(q, box_, step_end);
         const Tri exists = at_most(reach.time, step_end);
         if (exists == Tri::no) continue;
         PossibleCollision wall;
@@ -368,15 +395,15 @@ UncertainParticle UncertainStep::outcome(std::uint32_t particle, int candidate) 
     if (c.kind == CollisionKind::wall) {
         bool any = false;
         UncertainParticle result;
-        const WallReach reach = wall_reach(q, box_);
+        const WallReach reach = wall_reach(q, box_, step_end);
         for_each_hit(c.on_x, c.on_y, [&](bool x, bool y) {
             UncertainParticle at_wall = moved(q, when, box_);
             if (x) {
-                at_wall.x = Uncertain::exact(reach.wall_x);
+                at_wall.x = reach.wall_x;
                 at_wall.vx = -at_wall.vx;
             }
             if (y) {
-                at_wall.y = Uncertain::exact(reach.wall_y);
+                at_wall.y = reach.wall_y;
                 at_wall.vy = -at_wall.vy;
             }
             const UncertainParticle option = rest_of_step(at_wall, step_end - when, box_);
