@@ -241,8 +241,9 @@ void substeps_beyond_a_diameter() {
 }
 
 // Near ties before the last micro-step, followed branch by branch: a
-// lattice's near ties, and a striker meeting a touching row (every pair of
-// the row at rest may or may not collide, to the same effect), conform
+// lattice's near ties, a striker meeting a touching row (every pair of the
+// row at rest may or may not collide, to the same effect), and exact ties
+// beside disks creeping along walls (their speed printed as 0) conform
 // strictly; a state half a radius off is caught.
 void substeps_follow_each_way() {
     std::vector<std::pair<Scene, std::string>> cases;
@@ -250,6 +251,7 @@ void substeps_follow_each_way() {
         cases.emplace_back(family_scene(SceneFamily::crystal, seed, 120, 30), "3");
     cases.emplace_back(family_scene(SceneFamily::cradle, 1, 120, 3), "3");
     cases.emplace_back(family_scene(SceneFamily::cradle, 1, 57, 15), "5");
+    cases.emplace_back(family_scene(SceneFamily::ties, 1, 57, 15), "5");
     for (std::size_t k = 0; k < cases.size(); ++k) {
         const auto& [scene, substeps] = cases[k];
         const check::Context context("case ", k);
