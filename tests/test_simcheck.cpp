@@ -211,7 +211,8 @@ void correct_outputs_pass() {
         "correct outputs: %d checked, textbook and simcli diverge beyond 1e-3 on %d scenes; with substeps "
         "%d judged strictly, %d with bounds wider than a diameter\n",
         checked, diverged, substeps_strict, substeps_loose);
-    CHECK(substeps_strict >= 14);
+    CHECK(substeps_strict >= 19);
+    CHECK_EQ(substeps_loose, 0);
     // The point of checking step by step: correct programs drift apart.
     CHECK(diverged >= 10);
     CHECK(checked >= 170);
