@@ -218,27 +218,40 @@ void correct_outputs_pass() {
     CHECK(checked >= 170);
 }
 
-// Disks that outrun the box (up to 5 L a step) with 3 substeps: a wall hit
-// within rounding of a micro-step's end leaves a disk's velocity known only up
-// to its sign, so its bounds span the box. A correct output gets no verdict,
-// with the step and the decision named; a wrong state is still caught.
+// Disks that outrun the box (up to 5 L a step) with substeps: many stop at a
+// wall every step, and start the next exactly there (StepCheck::on_wall), so
+// that their wall hits at t = 0 come before any pair's. Judged strictly, and a
+// disk moved by 10 r is caught. Where a near tie before the last micro-step
+// is still left to rounding, a disk's merged bounds may span the box: a
+// correct output then gets no verdict, with the step and the decision named,
+// and a wrong state is still caught.
 void substeps_beyond_a_diameter() {
     const Scene fast = family_scene(SceneFamily::fast, 5, 120, 8);
     const std::string text = scene_text(fast);
     const std::string right = run_simcli(text, {"--substeps", "3"});
-    const Verdict none = run_simcheck(text, right, {"--substeps", "3"});
+    const Verdict strict = run_simcheck(text, right, {"--substeps", "3"});
+    CHECK_EQ(strict.status, 0);
+    CHECK(strict.first_line.rfind("conforms: ", 0) == 0);
+    const std::string wrong = with_x_moved(right, fast.particle_count * 4 + 3, 10.0, fast.world.box_size);
+    CHECK_EQ(run_simcheck(text, wrong, {"--substeps", "3"}).status, 1);
+
+    const Scene tied = family_scene(SceneFamily::fast, 8, 166, 11);
+    const std::string tied_text = scene_text(tied);
+    const std::string tied_right = run_simcli(tied_text, {"--substeps", "5"});
+    const Verdict none = run_simcheck(tied_text, tied_right, {"--substeps", "5"});
     CHECK_EQ(none.status, 3);
-    CHECK(none.first_line.rfind("no verdict: no step breaks the rules, but at ", 0) == 0);
+    CHECK(none.first_line.rfind("no verdict: no step breaks the rules, but at 1 of 11 steps (the first: step 11)", 0) ==
+          0);
     CHECK(none.first_line.find(" a decision within rounding in a micro-step before the last left a disk's bounds "
                                "wider than a diameter: particle ") != std::string::npos);
     CHECK(none.first_line.find("(micro-step ") != std::string::npos);
     // The JSON report says the same.
-    const Verdict json = run_simcheck(text, right, {"--substeps", "3", "--json"});
+    const Verdict json = run_simcheck(tied_text, tied_right, {"--substeps", "5", "--json"});
     CHECK_EQ(json.status, 3);
     CHECK(json.out.find("\"verdict\": \"no_verdict\"") != std::string::npos);
-    // A disk moved by 10 r in the middle of the run: caught (exit 1), loose steps or not.
-    const std::string wrong = with_x_moved(right, fast.particle_count * 4 + 3, 10.0, fast.world.box_size);
-    CHECK_EQ(run_simcheck(text, wrong, {"--substeps", "3"}).status, 1);
+    // A disk moved by 10 r before the loose step: caught (exit 1).
+    const std::string tied_wrong = with_x_moved(tied_right, tied.particle_count * 6 + 3, 10.0, tied.world.box_size);
+    CHECK_EQ(run_simcheck(tied_text, tied_wrong, {"--substeps", "5"}).status, 1);
 }
 
 // Near ties before the last micro-step, followed branch by branch: a

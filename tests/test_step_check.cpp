@@ -225,6 +225,34 @@ void either_wall_within_wide_bounds() {
     CHECK(hit.vx.lo <= -100.0);
 }
 
+void starts_on_the_wall_exactly() {
+    // The rules put a disk stopped at a wall exactly on it (x = r), and the
+    // checker says so (StepCheck::on_wall): here disk 1 stops at x = 1.
+    const std::vector<Particle> stopping{disk(5, 52, -2, 0), disk(2, 52, 0, 0)};
+    const StepCheck stopped = check_exact(64, stopping, {disk(4, 52, 0, 0), disk(1, 52, -2, 0)});
+    CHECK(!stopped.violation);
+    CHECK_EQ(static_cast<int>(stopped.on_wall[1].x), -1);
+    CHECK_EQ(static_cast<int>(stopped.on_wall[1].y), 0);
+    CHECK_EQ(static_cast<int>(stopped.on_wall[0].x), 0);
+    // The next step: disk 0 on the wall x = 1 moving into it, disk 1
+    // overlapping it (centres 1.5 apart) and approaching. From x = 1 exactly
+    // both hit at t = 0 and the wall comes first: disk 0 bounces to x = 3,
+    // disk 1 reaches the wall at t = 0.5 and comes back to 2.5. Were disk 0
+    // a hair inside, the pair would come first (velocities swapped, both
+    // stopping at the wall): printed as 1.00000000, either is within
+    // rounding, unless the step before put it there exactly.
+    const std::vector<Particle> before{disk(1, 10, -2, 0), disk(2.5, 10, -3, 0)};
+    const std::vector<Particle> wall_first{disk(3, 10, 2, 0), disk(2.5, 10, 3, 0)};
+    const std::vector<Particle> pair_first{disk(1, 10, -3, 0), disk(1, 10, -2, 0)};
+    StepChecker checker(World{20, 1.0});
+    const std::vector<OnWall> on_wall{{-1, 0}, {0, 0}};
+    CHECK(!checker.check({before, fixed8_uncertainty, on_wall}, {wall_first, fixed8_uncertainty}).violation);
+    const StepCheck pair = checker.check({before, fixed8_uncertainty, on_wall}, {pair_first, fixed8_uncertainty});
+    CHECK(pair.violation && pair.violation->particle == 0);
+    CHECK(!checker.check({before, fixed8_uncertainty}, {pair_first, fixed8_uncertainty}).violation);
+    CHECK(!checker.check({before, fixed8_uncertainty}, {wall_first, fixed8_uncertainty}).violation);
+}
+
 void outside_the_box() {
     const StepCheck outside = check_exact(20, {disk(10, 18, 0, 3)}, {disk(10, 21, 0, 3)});
     CHECK(says(outside, "particle 0 is outside the box: y = 21 is beyond L - r = 19"));
@@ -275,6 +303,7 @@ int main(int argc, char** argv) {
                        {"a sure wall hit is never free", sure_wall_hit_is_never_free},
                        {"creeping along a wall", creeping_along_a_wall},
                        {"either wall within wide bounds", either_wall_within_wide_bounds},
+                       {"starts on the wall exactly", starts_on_the_wall_exactly},
                        {"outside the box", outside_the_box},
                        {"exact rules", exact_rules},
                        {"perf run", perf_run}});

@@ -193,6 +193,9 @@ Report check_output(const Scene& scene, LineSource& output, const StepCheckOptio
     }
 
     std::vector<CollisionRange> totals(count);  // N lines are read by now
+    // The coordinates the last step put exactly on a wall: the next step
+    // starts from them exactly (StepCheck::on_wall).
+    std::vector<OnWall> previous_on_wall;
     std::int64_t loose_steps = 0, first_loose_step = 0;
     std::string first_loose_why;
     const auto compare = [&](std::int64_t step, const StepCheck& check) -> std::optional<Finding> {
@@ -216,11 +219,12 @@ Report check_output(const Scene& scene, LineSource& output, const StepCheckOptio
     if (scene.mode == OutputMode::print && steps > 0) {
         for (std::int64_t step = 1; step <= steps; ++step) {
             if (auto wrong = block.read(step, step == steps)) return broken(report, *wrong);
-            const StepCheck check =
-                checker.check({previous, previous_uncertainty}, {block.particles(), report.uncertainty});
+            StepCheck check = checker.check({previous, previous_uncertainty, previous_on_wall},
+                                            {block.particles(), report.uncertainty});
             if (auto wrong = compare(step, check)) return broken(report, *wrong);
             previous.swap(block.particles());
             previous_uncertainty = report.uncertainty;
+            previous_on_wall.swap(check.on_wall);
             report.steps_checked = step;
         }
         const std::span<const Particle> last = previous;

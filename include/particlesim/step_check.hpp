@@ -21,12 +21,24 @@
 
 namespace particlesim {
 
+// Where the rules put a particle's coordinate on each axis: exactly on the
+// lower wall (r: -1), exactly on the upper one (L - r: +1), or not known to
+// be on either (0).
+struct OnWall {
+    std::int8_t x = 0;
+    std::int8_t y = 0;
+};
+
 // A state as a program printed it (counters are ignored).
 struct PrintedState {
     std::span<const Particle> particles;
     // How far each printed number may be from the value the program held:
     // 0.5e-8 for io.md's %.8f, 0 for exact numbers (a scene, --exact-numbers).
     double uncertainty = 0.0;
+    // Optional, per particle: the coordinates the step that led here put
+    // exactly on a wall (StepCheck::on_wall), known exactly however they
+    // were printed. Empty: none.
+    std::span<const OnWall> on_wall = {};
 };
 
 inline constexpr double fixed8_uncertainty = 0.5e-8;
@@ -65,6 +77,14 @@ struct StepCheck {
     std::vector<std::string> within_rounding;
     // Per particle (when there is no violation).
     std::vector<CollisionRange> collisions;
+    // Per particle (stepped rules, when there is no violation): the
+    // coordinates that every way of explaining the step leaves exactly on a
+    // wall, where the rules set them (a disk stopped at the wall, or hitting
+    // it at the step's very end). The next step starts from them exactly
+    // (PrintedState::on_wall): a disk printed on the wall is otherwise known
+    // only within the printing, and whether its wall hit at t = 0 comes
+    // before a pair's is then within rounding.
+    std::vector<OnWall> on_wall;
     // With substeps: set when the decisions within rounding in the
     // micro-steps before the last went too many ways to follow each, so
     // their fates were merged into one set of bounds, and a particle's grew

@@ -244,6 +244,7 @@ private:
         for (std::size_t p = 0; p < count; ++p) {
             branches.front().state[p] = uncertain_particle(before.particles[p], before.uncertainty);
         }
+        place_on_walls(before, branches.front().state);
         branches.front().counts.assign(count, CollisionRange{});
         for (int micro = 1; micro < options_.substeps; ++micro) {
             std::vector<Branch> next;
@@ -266,7 +267,10 @@ private:
                     passed = std::move(checked);
                     continue;
                 }
-                for (std::size_t p = 0; p < count; ++p) merge_counts(passed->collisions[p], checked.collisions[p]);
+                for (std::size_t p = 0; p < count; ++p) {
+                    merge_counts(passed->collisions[p], checked.collisions[p]);
+                    merge_on_wall(passed->on_wall[p], checked.on_wall[p]);
+                }
                 if (!checked.loose) passed->loose.reset();
             } else if (unmatched < fewest_unmatched) {
                 fewest_unmatched = unmatched;
@@ -274,6 +278,32 @@ private:
             }
         }
         return passed ? std::move(*passed) : std::move(*failure);
+    }
+
+    // The coordinates the previous step put exactly on a wall start there
+    // exactly, where the printed value agrees.
+    void place_on_walls(const PrintedState& before, std::vector<UncertainParticle>& state) const {
+        if (before.on_wall.size() != before.particles.size()) return;
+        const auto place = [&](Uncertain& bounds, std::int8_t side) {
+            if (side == 0) return;
+            const double wall = side < 0 ? box_.lower : box_.upper;
+            if (bounds.lo <= wall && wall <= bounds.hi) bounds = Uncertain::exact(wall);
+        };
+        for (std::size_t p = 0; p < state.size(); ++p) {
+            place(state[p].x, before.on_wall[p].x);
+            place(state[p].y, before.on_wall[p].y);
+        }
+    }
+    // On a wall in both explanations, or not known to be.
+    static void merge_on_wall(OnWall& into, const OnWall& other) {
+        if (into.x != other.x) into.x = 0;
+        if (into.y != other.y) into.y = 0;
+    }
+    // The side of the wall a fate's outcome sets a coordinate exactly on, or 0.
+    std::int8_t wall_side(const Uncertain& coordinate) const {
+        if (!coordinate.is_exact()) return 0;
+        if (coordinate.lo == box_.lower) return -1;
+        return coordinate.lo == box_.upper ? 1 : 0;
     }
 
     static void merge_counts(CollisionRange& into, const CollisionRange& other) {
@@ -489,6 +519,7 @@ private:
         StepCheck result;
         const auto count = static_cast<std::uint32_t>(branch.state.size());
         result.collisions = std::move(branch.counts);
+        result.on_wall.assign(count, OnWall{});
         if (branch.merged) result.loose = wider_than_a_diameter(branch.state, branch.notes);
         result.within_rounding = std::move(branch.notes);
         step_.predict(branch.state, 1.0 / options_.substeps);
@@ -524,8 +555,21 @@ private:
                                         }),
                          fates_.end());
             add_counts(result.collisions[p], fates_);
+            result.on_wall[p] = placed_on_walls(fates_);
         }
         return result;
+    }
+
+    // Where every one of these fates sets the particle exactly on a wall: a
+    // collision's (a stop at the wall, or a hit at the step's very end); a
+    // free flight's bounds are no such placement.
+    OnWall placed_on_walls(const std::vector<Fate>& fates) const {
+        OnWall placed{wall_side(fates.front().outcome.x), wall_side(fates.front().outcome.y)};
+        for (const Fate& f : fates) {
+            if (f.candidate < 0) return {};
+            merge_on_wall(placed, {wall_side(f.outcome.x), wall_side(f.outcome.y)});
+        }
+        return placed;
     }
 
     // Whether, after the micro-steps before the last, some particle may end
