@@ -56,10 +56,10 @@ AxisWall axis_wall(const Uncertain& position, const Uncertain& velocity, const B
         return {time, time.lo, infinity};
     }
     if (velocity.lo == 0.0 && velocity.hi == 0.0) return {};
-    // Its sign is within its bounds: it may creep to the wall on either side
-    // its bounds point to, no sooner than its distance over the fastest speed
-    // allowed. (Bounds merged from several fates may allow real speeds both
-    // ways: then either wall may be the one reached.)
+    // Its bounds straddle 0: it may creep to the wall on either side they
+    // point to, no sooner than its distance over the fastest speed allowed.
+    // (Bounds merged from several fates may allow real speeds both ways: then
+    // either wall may be the one reached.)
     const auto no_sooner_than = [](double distance, double speed) {
         return std::max(0.0, distance / speed) * (1.0 - 0x1p-40);
     };
@@ -105,8 +105,8 @@ WallReach wall_reach(const UncertainParticle& q, const Box& box, const Uncertain
     } else if (x.time.is_exact() && y.time.is_exact() && x.time.lo == y.time.lo) {
         reach.on_x = reach.on_y = Tri::yes;  // a corner, exactly
     }
-    if (x.time.lo == infinity || x.time.lo > limit.hi) reach.on_x = Tri::no;
-    if (y.time.lo == infinity || y.time.lo > limit.hi) reach.on_y = Tri::no;
+    if (!(x.time.lo <= limit.hi)) reach.on_x = Tri::no;  // also never (infinity)
+    if (!(y.time.lo <= limit.hi)) reach.on_y = Tri::no;
     return reach;
 }
 
