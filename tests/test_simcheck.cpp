@@ -179,14 +179,7 @@ void correct_outputs_pass() {
     for (std::size_t k = 0; k < scenes.size(); ++k) {
         const Scene& scene = scenes[k];
         const std::string text = scene_text(scene);
-        // Substeps where no disk outruns the box: beyond, nearly every step's
-        // bounds grow wider than a diameter, slowly (substeps_beyond_a_diameter).
-        const bool outruns_box = std::any_of(scene.particles.begin(), scene.particles.end(), [&](const Particle& p) {
-            return std::max(std::abs(p.velocity.x()), std::abs(p.velocity.y())) > scene.world.box_size;
-        });
-        const auto& variant = variants[k % variants.size()][0] == "--substeps" && outruns_box
-                                  ? variants[0]
-                                  : variants[k % variants.size()];
+        const auto& variant = variants[k % variants.size()];
         const std::string ours = run_simcli(text, variant);
         const bool substeps = variant[0] == "--substeps";
         const Verdict v = run_simcheck(
@@ -211,7 +204,7 @@ void correct_outputs_pass() {
         "correct outputs: %d checked, textbook and simcli diverge beyond 1e-3 on %d scenes; with substeps "
         "%d judged strictly, %d with bounds wider than a diameter\n",
         checked, diverged, substeps_strict, substeps_loose);
-    CHECK(substeps_strict >= 19);
+    CHECK(substeps_strict >= 23);
     CHECK_EQ(substeps_loose, 0);
     // The point of checking step by step: correct programs drift apart.
     CHECK(diverged >= 10);
