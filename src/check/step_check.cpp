@@ -165,13 +165,20 @@ private:
         step_.predict(state_, 1.0 / options_.substeps);
         next_.resize(state_.size());
         for (std::uint32_t p = 0; p < state_.size(); ++p) {
-            step_.fates_of(p, fates_);
+            next_[p] = merged_fates(p, counts[p]);
             if (fates_.size() > 1 && undecided && undecided->empty()) *undecided = why_undecided(p);
-            add_counts(counts[p], fates_);
-            next_[p] = fates_.front().outcome;
-            for (const Fate& f : fates_) next_[p] = hull(next_[p], f.outcome);
         }
         state_.swap(next_);
+    }
+
+    // Every fate the last predict() allows particle p, merged into one set of
+    // bounds, their collisions added to `counts` (the fates stay in fates_).
+    UncertainParticle merged_fates(std::uint32_t p, CollisionRange& counts) {
+        step_.fates_of(p, fates_);
+        add_counts(counts, fates_);
+        UncertainParticle merged = fates_.front().outcome;
+        for (const Fate& f : fates_) merged = hull(merged, f.outcome);
+        return merged;
     }
 
     void add_counts(CollisionRange& counts, const std::vector<Fate>& fates) const {
@@ -350,16 +357,7 @@ private:
         const std::vector<std::vector<std::size_t>> ways = ways_to_decide(room);
         if (ways.empty()) {  // too many: every fate merged into one bounds
             branch.merged = true;
-            for (std::size_t u = 0; u < undecided_.size(); ++u) {
-                const std::uint32_t p = undecided_[u];
-                next_[p] = undecided_groups_[u].front().outcome;
-                fates_.clear();
-                for (const FateGroup& g : undecided_groups_[u]) {
-                    next_[p] = hull(next_[p], g.outcome);
-                    fates_.insert(fates_.end(), g.fates.begin(), g.fates.end());
-                }
-                add_counts(branch.counts[p], fates_);
-            }
+            for (const std::uint32_t p : undecided_) next_[p] = merged_fates(p, branch.counts[p]);
             branch.state.swap(next_);
             out.push_back(std::move(branch));
             return;
