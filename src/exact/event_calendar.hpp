@@ -1,167 +1,60 @@
 #pragma once
 // The exact engine's event queue: one entry per particle, holding the earliest
-// event predicted for it, in a calendar queue (R. Brown, CACM 1988). Entries
-// sit in time buckets of width 1 / `buckets_per_time_`, each a linked list; entries
-// beyond the buckets' window wait in an overflow list. Replacing an entry is
-// O(1), and finding the earliest scans the first non-empty bucket, which
-// holds about one entry. Unlike a heap, the work per event stays in a few
-// cache lines however many particles there are. When the window is used up,
-// it is rebuilt from the overflow, its width chosen so that the next N / 2
-// events fill about N / 2 buckets.
+// event predicted for it. Two calendar queues give the same earliest entry
+// (the first in the rules' order), and a scene keeps the one chosen at its
+// start: linked buckets (LinkedCalendar) while the state fits the caches,
+// where they cost least; appended buckets in two tiers (LadderCalendar)
+// where it does not, where unlinking and linking list nodes at random places
+// missed memory three to five times an event; only the second lets the
+// engine look ahead along the queue (docs/benchmarks.md).
 
-#include "core/event_order.hpp"
-#include "core/huge_page_allocator.hpp"
-#include "core/prefetch.hpp"
-#include "exact/bucket_lists.hpp"
+#include "exact/event.hpp"
+#include "exact/ladder_calendar.hpp"
+#include "exact/linked_calendar.hpp"
 
-#include <algorithm>
 #include <cstdint>
-#include <limits>
-#include <tuple>
-#include <vector>
 
 namespace particlesim {
 
-enum class EventKind : std::uint8_t {
-    wall = 0,  // the same kinds and order as Collision: walls first
-    pair = 1,
-    cell_crossing = 2,  // bookkeeping only, changes no motion
-};
-
-struct Event {
-    double time = 0.0;  // absolute, in steps since the start
-    EventKind kind = EventKind::wall;
-    std::uint32_t i = 0;  // the particle, or the lower index of a pair
-    std::uint32_t j = 0;  // pair: the higher index; crossing: the cell entered
-
-    friend bool operator<(const Event& a, const Event& b) { return comes_before(a, b); }
-};
-
 class EventCalendar {
 public:
-    // Every owner starts with `initial`; replace() sets each.
-    EventCalendar(std::uint32_t owners, const Event& initial)
-        : filled_by_half_(bucket_count_for(owners) / 2),
-          buckets_(std::max(filled_by_half_ * 2, std::min(filled_by_half_ * 8, max_stretched_window))),
-          lists_(buckets_ + 1, owners),
-          events_(owners, initial) {
-        for (std::uint32_t owner = 0; owner < owners; ++owner) lists_.insert(owner, overflow());
-        current_ = buckets_;  // the window is empty: the first earliest() builds it
-    }
+    using LookAhead = LadderCalendar::LookAhead;
 
-    [[nodiscard]] bool empty() const { return events_.empty(); }
+    // Every owner starts with `initial`; replace() sets each. `large`: the
+    // two tiers, for a state that outgrows the caches.
+    EventCalendar(std::uint32_t owners, const Event& initial, bool large)
+        : large_(large), linked_(large ? 0 : owners, initial), ladder_(large ? owners : 0, initial) {}
 
+    [[nodiscard]] bool empty() const { return large_ ? ladder_.empty() : linked_.empty(); }
     [[nodiscard]] std::uint32_t earliest_owner() {
-        if (earliest_ == none) find_earliest();
-        return earliest_;
+        return large_ ? ladder_.earliest_owner() : linked_.earliest_owner();
     }
-    [[nodiscard]] const Event& earliest() { return events_[earliest_owner()]; }
+    [[nodiscard]] const Event& earliest() { return large_ ? ladder_.earliest() : linked_.earliest(); }
+    [[nodiscard]] const Event& entry(std::uint32_t owner) const {
+        return large_ ? ladder_.entry(owner) : linked_.entry(owner);
+    }
+    void replace(std::uint32_t owner, const Event& event) {
+        if (large_) {
+            ladder_.replace(owner, event);
+        } else {
+            linked_.replace(owner, event);
+        }
+    }
 
-    // A look at the events to come, for prefetching: for_each_coming()
-    // visits the owners listed in each bucket once, when the bucket comes
-    // within `ahead` buckets of the current one; after a jump over many
-    // empty buckets, or into a new window, only the nearest few.
-    struct LookAhead {
-        std::uint32_t ahead;
-        std::uint32_t visited_up_to = 0;  // one past the last bucket visited
-    };
+    // The look ahead (LadderCalendar::for_each_coming()); nothing to visit
+    // in the linked buckets.
     template <typename Visit>
     void for_each_coming(LookAhead& look, Visit&& visit) const {
-        constexpr std::uint32_t most_buckets = 4;
-        const std::uint32_t end = current_ + look.ahead + 1;
-        if (look.visited_up_to > end) look.visited_up_to = 0;  // a new window
-        const std::uint32_t first = std::max(look.visited_up_to, end - std::min(end, most_buckets));
-        for (std::uint32_t bucket = first; bucket < std::min(end, buckets_); ++bucket)
-            lists_.for_each_in(bucket, visit);
-        look.visited_up_to = end;
+        if (large_) ladder_.for_each_coming(look, visit);
     }
-    [[nodiscard]] const Event& entry(std::uint32_t owner) const { return events_[owner]; }
     void prefetch_entry(std::uint32_t owner) const {
-        prefetch_lines_of(events_[owner]);
-        lists_.prefetch_links(owner);
-    }
-
-    void replace(std::uint32_t owner, const Event& event) {
-        events_[owner] = event;
-        lists_.move(owner, bucket_of(event.time));
-        if (owner == earliest_) {
-            earliest_ = none;
-        } else if (earliest_ != none && event < events_[earliest_]) {
-            earliest_ = owner;
-        }
+        if (large_) ladder_.prefetch_entry(owner);
     }
 
 private:
-    static constexpr std::uint32_t none = BucketLists::none;
-    // The window holds at least twice the buckets that the earliest half of
-    // the entries fill at a rebuild (Brown's choice), and up to eight times
-    // as many while the buckets fit this many (256 KiB, in the caches): on a
-    // small scene a rebuild, which reads every entry, then comes a quarter as
-    // often. Larger scenes were slower with the longer window
-    // (docs/benchmarks.md).
-    static constexpr std::uint32_t max_stretched_window = 65536;
-
-    static std::uint32_t bucket_count_for(std::uint32_t owners) {
-        std::uint32_t count = 16;
-        while (count < owners && count < (1U << 30)) count *= 2;
-        return count;
-    }
-    [[nodiscard]] std::uint32_t overflow() const { return buckets_; }
-
-    // Never before the current bucket: time does not go back. Everything
-    // waits in the overflow while the window is used up.
-    [[nodiscard]] std::uint32_t bucket_of(double time) const {
-        if (current_ == buckets_) return overflow();
-        const double offset = (time - base_) * buckets_per_time_;
-        if (!(offset < static_cast<double>(buckets_))) return overflow();  // also `never` and NaN-free infinities
-        return std::max(current_, static_cast<std::uint32_t>(std::max(offset, 0.0)));
-    }
-
-    void find_earliest() {
-        while (current_ < buckets_ && lists_.first(current_) == none) ++current_;
-        if (current_ == buckets_) rebuild_window();
-        const std::uint32_t bucket = current_ < buckets_ ? current_ : overflow();
-        std::uint32_t best = lists_.first(bucket);
-        lists_.for_each_in(bucket, [&](std::uint32_t k) {
-            if (events_[k] < events_[best]) best = k;
-        });
-        earliest_ = best;
-    }
-
-    // Moves the overflow's earliest events into a fresh window of buckets.
-    // The window is used up, so every entry is in the overflow: they are
-    // read, and put in their new buckets, in owner order.
-    void rebuild_window() {
-        times_.clear();
-        for (const Event& event : events_) {
-            if (event.time < std::numeric_limits<double>::infinity()) times_.push_back(event.time);
-        }
-        if (times_.empty()) return;  // nothing will ever happen: earliest is any entry, at `never`
-        const auto first = std::min_element(times_.begin(), times_.end());
-        base_ = *first;
-        const std::size_t sample = std::min<std::size_t>(times_.size() - 1, filled_by_half_);
-        std::nth_element(times_.begin(), times_.begin() + static_cast<std::ptrdiff_t>(sample), times_.end());
-        const double spread = times_[sample] - base_;
-        // About one entry a bucket over the first filled_by_half_ buckets; a
-        // positive width even when many events share one instant, and one
-        // whose inverse is finite. Bucket indices are then a product instead
-        // of a quotient: either is monotonic in time, and that is all the
-        // order of events needs.
-        const double width = spread > 0.0 ? spread / static_cast<double>(filled_by_half_) : std::abs(base_) * 1e-12;
-        buckets_per_time_ = 1.0 / std::max(width, 1e-300);
-        current_ = 0;
-        lists_.refill_all([&](std::uint32_t owner) { return bucket_of(events_[owner].time); });
-    }
-
-    std::uint32_t filled_by_half_;  // buckets holding the earliest half of the entries after a rebuild
-    std::uint32_t buckets_;
-    BucketLists lists_;              // owners by bucket; the last bucket is the overflow
-    HugePageVector<Event> events_;   // by owner
-    std::vector<double> times_;      // scratch of rebuild_window()
-    double base_ = 0.0;              // start time of bucket 0
-    double buckets_per_time_ = 1.0;  // the inverse of a bucket's width
-    std::uint32_t current_ = 0;      // no entry lies in an earlier bucket
-    std::uint32_t earliest_ = none;  // cached; none when unknown
+    bool large_;
+    LinkedCalendar linked_;  // empty when large_
+    LadderCalendar ladder_;  // empty unless large_
 };
 
 }  // namespace particlesim

@@ -328,10 +328,10 @@ private:
           plans_(particles.size()),
           snapshot_(std::move(particles)),
           reach_(contact_reach(box_)),
-          queue_(count(), Event{never, EventKind::cell_crossing, 0, 0}),
+          look_ahead_(options.look_ahead.value_or(count() >= exact_tuning::look_ahead_from) && !by_lines()),
+          queue_(count(), Event{never, EventKind::cell_crossing, 0, 0}, look_ahead_),
           predicted_events_(estimated_events_per_step(world, snapshot_)),
-          event_budget_(event_budget(options, predicted_events_, count())),
-          look_ahead_(options.look_ahead.value_or(count() >= exact_tuning::look_ahead_from) && !by_lines()) {}
+          event_budget_(event_budget(options, predicted_events_, count())) {}
 
     std::uint32_t count() const { return static_cast<std::uint32_t>(bodies_.size()); }
 
@@ -836,6 +836,9 @@ private:
     double lines_epoch_ = 0.0;
     double reach_;
     std::vector<std::uint32_t> near_;
+    // A state that outgrows the caches: the queue in two tiers, and each
+    // event prefetching for the events behind it (prefetch_coming_events()).
+    bool look_ahead_;
     EventCalendar queue_;
     double now_ = 0.0;
     std::int64_t steps_done_ = 0;
@@ -846,9 +849,7 @@ private:
     std::uint64_t events_processed_ = 0;  // by this object, not saved: a measure of work
     double predicted_events_;             // per step
     double event_budget_;                 // per step
-    // The prefetching's four stages, each a few buckets nearer than the last
-    // (prefetch_coming_events()).
-    bool look_ahead_;
+    // The prefetching's four stages, each a few buckets nearer than the last.
     EventCalendar::LookAhead look_entries_{exact_tuning::look_entries_buckets};
     EventCalendar::LookAhead look_particles_{exact_tuning::look_particles_buckets};
     EventCalendar::LookAhead look_heads_{exact_tuning::look_heads_buckets};
