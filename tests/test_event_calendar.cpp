@@ -7,15 +7,17 @@
 #include "check.hpp"
 
 #include "core/random.hpp"
-#include "exact/event_calendar.hpp"
+#include "exact/ladder_calendar.hpp"
+#include "exact/linked_calendar.hpp"
 
 #include <algorithm>
 #include <limits>
 #include <vector>
 
 using particlesim::Event;
-using particlesim::EventCalendar;
 using particlesim::EventKind;
+using particlesim::LadderCalendar;
+using particlesim::LinkedCalendar;
 
 namespace {
 
@@ -31,10 +33,11 @@ double delay(particlesim::SplitMix64& rng, double scale) {
     }
 }
 
-void matches_brute_force(bool large, std::uint32_t owners, std::uint64_t seed, int operations, double scale = 1.0) {
+template <typename Calendar>
+void matches_brute_force(std::uint32_t owners, std::uint64_t seed, int operations, double scale = 1.0) {
     particlesim::SplitMix64 rng(seed);
     std::vector<Event> events(owners, Event{never, EventKind::cell_crossing, 0, 0});
-    EventCalendar calendar(owners, events[0], large);
+    Calendar calendar(owners, events[0]);
     const auto random_event = [&](double now) {
         const auto kind = static_cast<EventKind>(rng.next() % 3);
         return Event{now + delay(rng, scale), kind, static_cast<std::uint32_t>(rng.next() % 8),
@@ -70,7 +73,7 @@ void matches_brute_force(bool large, std::uint32_t owners, std::uint64_t seed, i
 // ahead, some never, a partner's entry replaced now and then.
 void look_ahead_visits_each_coming_entry_once(std::uint32_t owners, std::uint32_t ahead, std::uint64_t seed) {
     particlesim::SplitMix64 rng(seed);
-    EventCalendar calendar(owners, Event{never, EventKind::wall, 0, 0}, true);
+    LadderCalendar calendar(owners, Event{never, EventKind::wall, 0, 0});
     std::vector<std::uint32_t> version(owners, 0);
     std::vector<std::uint32_t> visited_version(owners, ~0U);
     const auto schedule = [&](std::uint32_t owner, double now) {
@@ -79,7 +82,7 @@ void look_ahead_visits_each_coming_entry_once(std::uint32_t owners, std::uint32_
         calendar.replace(owner, Event{time, EventKind::wall, owner, 0});
     };
     for (std::uint32_t owner = 0; owner < owners; ++owner) schedule(owner, 0.0);
-    EventCalendar::LookAhead look{ahead};
+    LadderCalendar::LookAhead look{ahead};
     int taken = 0;
     int visited_before_taken = 0;
     int visited_twice = 0;
@@ -107,39 +110,40 @@ void look_ahead_visits_each_coming_entry_once(std::uint32_t owners, std::uint32_
     CHECK(visited_before_taken > taken / 100 * 99);
 }
 
-void all_never(bool large) {
-    EventCalendar calendar(5, Event{never, EventKind::wall, 0, 0}, large);
+template <typename Calendar>
+void all_never() {
+    Calendar calendar(5, Event{never, EventKind::wall, 0, 0});
     CHECK(calendar.earliest().time == never);
     calendar.replace(3, Event{2.5, EventKind::pair, 1, 3});
     CHECK_EQ(calendar.earliest_owner(), 3U);
     calendar.replace(3, Event{never, EventKind::wall, 3, 0});
     CHECK(calendar.earliest().time == never);
     // Of entries all at `never`, the first in the rules' order.
-    EventCalendar crossings(5, Event{never, EventKind::cell_crossing, 9, 9}, large);
+    Calendar crossings(5, Event{never, EventKind::cell_crossing, 9, 9});
     crossings.replace(2, Event{never, EventKind::pair, 1, 4});
     CHECK_EQ(crossings.earliest_owner(), 2U);
+}
+
+template <typename Calendar>
+void against_brute_force() {
+    all_never<Calendar>();
+    // One seed a size under the sanitizers: the minimum over 20000 owners is slow there.
+    const std::uint64_t seeds = check::sanitized ? 1 : 4;
+    for (const std::uint32_t owners : {1U, 2U, 7U, 100U, 5000U, 20000U}) {
+        for (std::uint64_t seed = 0; seed < seeds; ++seed)
+            matches_brute_force<Calendar>(owners, seed, owners < 1000 ? 20000 : 4000);
+    }
+    for (const double scale : {1e-320, 1e-310, 1e-300, 1e300}) {
+        for (const std::uint32_t owners : {2U, 100U, 5000U}) matches_brute_force<Calendar>(owners, 7, 4000, scale);
+    }
 }
 
 }  // namespace
 
 int main(int argc, char** argv) {
     return check::run(argc, argv, "test_event_calendar",
-                      {{"calendar against brute-force minimum",
-                        [] {
-                            // One seed a size under the sanitizers: the minimum over 20000 owners is slow there.
-                            const std::uint64_t seeds = check::sanitized ? 1 : 4;
-                            for (const bool large : {false, true}) {
-                                all_never(large);
-                                for (const std::uint32_t owners : {1U, 2U, 7U, 100U, 5000U, 20000U}) {
-                                    for (std::uint64_t seed = 0; seed < seeds; ++seed)
-                                        matches_brute_force(large, owners, seed, owners < 1000 ? 20000 : 4000);
-                                }
-                                for (const double scale : {1e-320, 1e-310, 1e-300, 1e300}) {
-                                    for (const std::uint32_t owners : {2U, 100U, 5000U})
-                                        matches_brute_force(large, owners, 7, 4000, scale);
-                                }
-                            }
-                        }},
+                      {{"linked calendar against brute-force minimum", [] { against_brute_force<LinkedCalendar>(); }},
+                       {"two-tier calendar against brute-force minimum", [] { against_brute_force<LadderCalendar>(); }},
                        {"look ahead visits each coming entry once", [] {
                             for (const std::uint32_t owners : {5000U, 40000U}) {
                                 for (const std::uint32_t ahead : {1U, 3U, 8U})

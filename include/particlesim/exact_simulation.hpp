@@ -62,10 +62,12 @@ struct ExactOptions {
     // Empty: 1e6 + 100 x (predicted events per step + N), reached within about a second.
     std::optional<std::uint64_t> max_events_per_step = std::nullopt;
     // Whether each event prefetches what the events a few places behind it
-    // in the queue will read, so that their misses to memory overlap: much
-    // faster where the state outgrows the caches, slower where it fits
-    // (docs/benchmarks.md). Empty: on from 32 768 particles. No effect with
-    // one cell. Every value gives the same events.
+    // in the queue will read, so that their misses to memory overlap, in a
+    // queue built for it whose events write to few places (two tiers of
+    // appended buckets instead of linked lists): much faster where the state
+    // outgrows the caches, slower where it fits (docs/benchmarks.md). Empty:
+    // on from 32 768 particles. No effect with one cell. Every value gives
+    // the same events.
     std::optional<bool> look_ahead = std::nullopt;
     // Walls, or a periodic box (docs/physics.md): then the particles' centres
     // lie in [0, L) and the box must be at least 5 cells of a contact

@@ -2,7 +2,7 @@
 // Items 0 .. n-1, each in one of a fixed number of buckets, every bucket a
 // doubly linked list threaded through per-item records: O(1) insert, remove
 // and move, no allocation after construction. The exact engine's cell lists
-// (particles by cell) and its calendar queue (particles by time bucket) are
+// (particles by cell) and its linked calendar (particles by time bucket) are
 // both this.
 
 #include "core/huge_page_allocator.hpp"

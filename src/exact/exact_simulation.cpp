@@ -8,8 +8,9 @@
 #include "core/prefetch.hpp"
 #include "core/uniform_grid.hpp"
 #include "exact/cell_list.hpp"
-#include "exact/event_calendar.hpp"
 #include "exact/exact_tuning.hpp"
+#include "exact/ladder_calendar.hpp"
+#include "exact/linked_calendar.hpp"
 #include "input/options_check.hpp"
 #include "input/scene_checks.hpp"
 #include "io/number_format.hpp"
@@ -20,6 +21,7 @@
 #include <cmath>
 #include <optional>
 #include <string>
+#include <type_traits>
 
 namespace particlesim {
 
@@ -275,34 +277,45 @@ public:
         move_lines_to_now();
         last_step_ = {};
         several_events_ = 0;
-        std::uint64_t events = 0;
-        while (!queue_.empty() && queue_.earliest().time <= end) {
-            if (static_cast<double>(++events) > event_budget_)
-                throw TooManyEvents(steps_done_ + 1, events - 1, predicted_events_);
-            ++events_processed_;
-            const std::uint32_t owner = queue_.earliest_owner();
-            if (look_ahead_) prefetch_coming_events();
-            const Event event = queue_.earliest();
-            if (event.kind == EventKind::pair && pair_partner_moved(owner)) {
-                predict_pairs(owner);
-                reschedule(owner);
-                continue;
-            }
-            PARTICLESIM_ASSERT(event.time >= now_, "the calendar hands out events in time order");
-            if constexpr (validating) {
-                if (events % 1024 == 1) require_earliest_in_calendar(event);
-            }
-            now_ = event.time;
-            switch (event.kind) {
-            case EventKind::wall: collide_with_wall(event.i); break;
-            case EventKind::pair: collide_pair(event.i, event.j); break;
-            case EventKind::cell_crossing: cross_cell(event.i, event.j); break;
-            }
+        if (look_ahead_) {
+            run_events(ladder_queue_, end);
+        } else {
+            run_events(linked_queue_, end);
         }
         now_ = end;
         ++steps_done_;
         take_snapshot();
         totals_ += last_step_;
+    }
+
+    // The step's events, from the queue chosen at the start (compiled for
+    // each, so that neither pays for the other's choice at every event).
+    template <typename Queue>
+    void run_events(Queue& queue, double end) {
+        std::uint64_t events = 0;
+        while (!queue.empty() && queue.earliest().time <= end) {
+            if (static_cast<double>(++events) > event_budget_)
+                throw TooManyEvents(steps_done_ + 1, events - 1, predicted_events_);
+            ++events_processed_;
+            const std::uint32_t owner = queue.earliest_owner();
+            if constexpr (std::is_same_v<Queue, LadderCalendar>) prefetch_coming_events();
+            const Event event = queue.earliest();
+            if (event.kind == EventKind::pair && pair_partner_moved(owner)) {
+                predict_pairs(owner);
+                reschedule(queue, owner);
+                continue;
+            }
+            PARTICLESIM_ASSERT(event.time >= now_, "the calendar hands out events in time order");
+            if constexpr (validating) {
+                if (events % 1024 == 1) require_earliest_in_calendar(queue, event);
+            }
+            now_ = event.time;
+            switch (event.kind) {
+            case EventKind::wall: collide_with_wall(queue, event.i); break;
+            case EventKind::pair: collide_pair(queue, event.i, event.j); break;
+            case EventKind::cell_crossing: cross_cell(queue, event.i, event.j); break;
+            }
+        }
     }
 
     const std::vector<Particle>& snapshot() const { return snapshot_; }
@@ -329,7 +342,8 @@ private:
           snapshot_(std::move(particles)),
           reach_(contact_reach(box_)),
           look_ahead_(options.look_ahead.value_or(count() >= exact_tuning::look_ahead_from) && !by_lines()),
-          queue_(count(), Event{never, EventKind::cell_crossing, 0, 0}, look_ahead_),
+          linked_queue_(look_ahead_ ? 0 : count(), Event{never, EventKind::cell_crossing, 0, 0}),
+          ladder_queue_(look_ahead_ ? count() : 0, Event{never, EventKind::cell_crossing, 0, 0}),
           predicted_events_(estimated_events_per_step(world, snapshot_)),
           event_budget_(event_budget(options, predicted_events_, count())) {}
 
@@ -430,19 +444,19 @@ private:
     // are hints: a queue that changes meanwhile costs a wasted fetch, never a
     // different event.
     void prefetch_coming_events() {
-        queue_.for_each_coming(look_entries_, [&](std::uint32_t o) { queue_.prefetch_entry(o); });
-        queue_.for_each_coming(look_particles_, [&](std::uint32_t o) { prefetch_particle(o); });
-        queue_.for_each_coming(look_heads_, [&](std::uint32_t o) {
-            const Event& event = queue_.entry(o);
+        ladder_queue_.for_each_coming(look_entries_, [&](std::uint32_t o) { ladder_queue_.prefetch_entry(o); });
+        ladder_queue_.for_each_coming(look_particles_, [&](std::uint32_t o) { prefetch_particle(o); });
+        ladder_queue_.for_each_coming(look_heads_, [&](std::uint32_t o) {
+            const Event& event = ladder_queue_.entry(o);
             if (event.kind == EventKind::pair) {
                 const std::uint32_t partner = event.i ^ event.j ^ o;  // o is one of the two
-                queue_.prefetch_entry(partner);
+                ladder_queue_.prefetch_entry(partner);
                 prefetch_particle(partner);
             }
             cells_.prefetch_heads_around(searched_cell(event, o));
         });
-        queue_.for_each_coming(look_members_, [&](std::uint32_t o) {
-            cells_.for_each_first_member_around(searched_cell(queue_.entry(o), o), [&](std::uint32_t first) {
+        ladder_queue_.for_each_coming(look_members_, [&](std::uint32_t o) {
+            cells_.for_each_first_member_around(searched_cell(ladder_queue_.entry(o), o), [&](std::uint32_t first) {
                 const std::uint32_t j = std::min(first, count() - 1);  // no branch: `none` fetches the last
                 prefetch(&bodies_[j]);
                 cells_.prefetch_links(j);
@@ -467,9 +481,10 @@ private:
 
     // The calendar's earliest event comes before every other entry in the
     // rules' order (a check of O(N)).
-    void require_earliest_in_calendar(const Event& earliest) const {
+    template <typename Queue>
+    void require_earliest_in_calendar(const Queue& queue, const Event& earliest) const {
         for (std::uint32_t owner = 0; owner < bodies_.size(); ++owner) {
-            PARTICLESIM_ASSERT(!comes_before(queue_.entry(owner), earliest), "the calendar's earliest entry is first");
+            PARTICLESIM_ASSERT(!comes_before(queue.entry(owner), earliest), "the calendar's earliest entry is first");
         }
     }
 
@@ -643,12 +658,21 @@ private:
     }
 
     // Puts the first of the particle's three predictions in the queue.
-    void reschedule(std::uint32_t i) {
+    template <typename Queue>
+    void reschedule(Queue& queue, std::uint32_t i) {
         Event next{bodies_[i].wall_time, EventKind::wall, i, 0};
         const Event crossing{plans_[i].crossing.time, EventKind::cell_crossing, i, plans_[i].crossing.cell};
         if (crossing < next) next = crossing;
         if (plans_[i].pair.event < next) next = plans_[i].pair.event;
-        queue_.replace(i, next);
+        queue.replace(i, next);
+    }
+    // The same, outside the event loop.
+    void reschedule(std::uint32_t i) {
+        if (look_ahead_) {
+            reschedule(ladder_queue_, i);
+        } else {
+            reschedule(linked_queue_, i);
+        }
     }
 
     void note_event(std::uint32_t i) {
@@ -662,7 +686,8 @@ private:
         }
     }
 
-    void collide_with_wall(std::uint32_t i) {
+    template <typename Queue>
+    void collide_with_wall(Queue& queue, std::uint32_t i) {
         Particle& p = bodies_[i].particle;
         // The same start state as the prediction, so the same hit.
         const WallHit hit = time_to_wall(p.position, p.velocity, box_);
@@ -676,10 +701,11 @@ private:
         predict_wall(i);
         predict_crossing(i);
         predict_pairs(i);
-        reschedule(i);
+        reschedule(queue, i);
     }
 
-    void collide_pair(std::uint32_t i, std::uint32_t j) {
+    template <typename Queue>
+    void collide_pair(Queue& queue, std::uint32_t i, std::uint32_t j) {
         Particle& a = bodies_[i].particle;
         Particle& b = bodies_[j].particle;
         a.position = position_at(i, now_);
@@ -721,14 +747,15 @@ private:
         for (const std::uint32_t k : {i, j}) {
             predict_crossing(k);
             predict_pairs(k);
-            reschedule(k);
+            reschedule(queue, k);
         }
     }
 
     // Only the cells that have just become neighbours need new predictions.
-    void cross_cell(std::uint32_t i, std::uint32_t cell) {
+    template <typename Queue>
+    void cross_cell(Queue& queue, std::uint32_t i, std::uint32_t cell) {
         if (periodic_) {
-            cross_cell_periodic(i, cell);
+            cross_cell_periodic(queue, i, cell);
             return;
         }
         const std::uint32_t old_cell = cells_.cell_of_particle(i);
@@ -751,14 +778,15 @@ private:
             }
         });
         predict_crossing(i, column, row);
-        reschedule(i);
+        reschedule(queue, i);
     }
 
     // The same in a periodic box, where a crossing may wrap around the box's
     // edge: the particle's path has then crossed one more box (Plans::images). Its
     // stored position stays: the physics never depends on when crossings
     // happen, so every cell count gives the same events.
-    void cross_cell_periodic(std::uint32_t i, std::uint32_t cell) {
+    template <typename Queue>
+    void cross_cell_periodic(Queue& queue, std::uint32_t i, std::uint32_t cell) {
         const UniformGrid& grid = cells_.grid();
         const std::uint32_t old_cell = cells_.cell_of_particle(i);
         const int old_column = grid.column(old_cell);
@@ -784,7 +812,7 @@ private:
             }
         });
         predict_crossing(i, column, row);
-        reschedule(i);
+        reschedule(queue, i);
     }
 
     void take_snapshot() {
@@ -837,9 +865,11 @@ private:
     double reach_;
     std::vector<std::uint32_t> near_;
     // A state that outgrows the caches: the queue in two tiers, and each
-    // event prefetching for the events behind it (prefetch_coming_events()).
+    // event prefetching for the events behind it (prefetch_coming_events());
+    // else the linked buckets. The queue not chosen stays empty.
     bool look_ahead_;
-    EventCalendar queue_;
+    LinkedCalendar linked_queue_;
+    LadderCalendar ladder_queue_;
     double now_ = 0.0;
     std::int64_t steps_done_ = 0;
     StepCounts last_step_;
@@ -850,10 +880,10 @@ private:
     double predicted_events_;             // per step
     double event_budget_;                 // per step
     // The prefetching's four stages, each a few buckets nearer than the last.
-    EventCalendar::LookAhead look_entries_{exact_tuning::look_entries_buckets};
-    EventCalendar::LookAhead look_particles_{exact_tuning::look_particles_buckets};
-    EventCalendar::LookAhead look_heads_{exact_tuning::look_heads_buckets};
-    EventCalendar::LookAhead look_members_{exact_tuning::look_members_buckets};
+    LadderCalendar::LookAhead look_entries_{exact_tuning::look_entries_buckets, true};
+    LadderCalendar::LookAhead look_particles_{exact_tuning::look_particles_buckets};
+    LadderCalendar::LookAhead look_heads_{exact_tuning::look_heads_buckets};
+    LadderCalendar::LookAhead look_members_{exact_tuning::look_members_buckets};
 };
 
 namespace {

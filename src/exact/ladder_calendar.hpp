@@ -62,9 +62,12 @@ public:
     // visits the owners listed in each bucket of the current epoch once,
     // when the bucket comes within `ahead` buckets of the current one; after
     // a jump over many empty buckets, or into a new epoch, only the nearest
-    // few. Stale listings are passed over.
+    // few. Stale listings are passed over, unless `stale_too`: a look that
+    // fetches the entries themselves would otherwise wait for each to arrive
+    // (a miss to memory in a large run) before it could fetch the next.
     struct LookAhead {
         std::uint32_t ahead;
+        bool stale_too = false;
         std::uint64_t visited_up_to = 0;  // one past the last bucket visited, counted from the window's start
     };
     template <typename Visit>
@@ -77,7 +80,7 @@ public:
         const std::uint64_t first = std::max({look.visited_up_to, end - std::min(end, most_buckets), epoch_start});
         for (std::uint64_t bucket = first; bucket < end; ++bucket) {
             for (const Listing& listing : buckets_[bucket - epoch_start]) {
-                if (live(listing)) visit(listing.owner);
+                if (look.stale_too || live(listing)) visit(listing.owner);
             }
         }
         look.visited_up_to = end;
