@@ -42,7 +42,7 @@ inline constexpr std::uint32_t lines_up_to = 20000;  // particles: the first pre
 // read, and the queue is the two-tier calendar: below, the state mostly fits
 // in the caches, and the prefetching's own work, and the two tiers' (stale
 // listings, bins spread into buckets), cost more than they save (the gas of
-// 1e4 disks took 1.15 to 1.2 times as long with the two tiers).
+// 1e4 disks took 1.18 times as long with both).
 inline constexpr std::uint32_t look_ahead_from = 32768;
 // The four stages' distances in calendar buckets: entries and links, then
 // particles, then partners and cell heads, then the cells' first members
