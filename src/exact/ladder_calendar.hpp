@@ -90,22 +90,13 @@ public:
 
     void replace(std::uint32_t owner, const Event& event) {
         Owned& owned = owners_[owner];
-        if (owner == earliest_) {
-            // Its listing is dropped at once instead of being met, stale, by
-            // the next search of the current bucket: one in nearly every event.
-            if (earliest_at_ != none) buckets_[current_].erase(buckets_[current_].begin() + earliest_at_);
-            earliest_ = none;
-        }
         owned.event = event;
         ++owned.serial;
         list(owner, owned);
-        if (earliest_ == none) return;
-        if (earliest_at_ == none) {
-            earliest_ = none;  // no entry was listed (none had a finite time): search afresh
-        } else if (event < owners_[earliest_].event) {
-            // Earlier than an entry of the current bucket: listed last in it.
-            earliest_ = owner;
-            earliest_at_ = static_cast<std::uint32_t>(buckets_[current_].size() - 1);
+        if (owner == earliest_ || (earliest_ != none && !earliest_listed_)) {
+            earliest_ = none;  // its listing is stale now; or none was listed: search afresh
+        } else if (earliest_ != none && event < owners_[earliest_].event) {
+            earliest_ = owner;  // earlier than an entry of the current bucket: listed in it
         }
     }
 
@@ -167,11 +158,9 @@ private:
     void find_earliest() {
         for (;;) {
             while (epoch_ < epochs_ && current_ < epoch_buckets_) {
-                std::vector<Listing>& bucket = buckets_[current_];
-                drop_stale(bucket);
-                if (!bucket.empty()) {
-                    earliest_at_ = earliest_in(bucket);
-                    earliest_ = bucket[earliest_at_].owner;
+                if (const std::uint32_t best = earliest_in(buckets_[current_]); best != none) {
+                    earliest_ = best;
+                    earliest_listed_ = true;
                     return;
                 }
                 ++current_;
@@ -184,32 +173,26 @@ private:
                 for (std::uint32_t owner = 1; owner < owners_.size(); ++owner) {
                     if (owners_[owner].event < owners_[earliest_].event) earliest_ = owner;
                 }
-                earliest_at_ = none;
+                earliest_listed_ = false;
                 return;
             }
         }
     }
 
-    // Without a branch on each listing's liveness, which is random.
-    void drop_stale(std::vector<Listing>& bucket) const {
+    // The owner of a bucket's first live entry in the rules' order, or none,
+    // in one pass that drops the stale listings. Of equal entries (a pair
+    // event both partners hold) the last listed, as the linked buckets'
+    // newest-first lists give it, so that both queues take them in the same
+    // order (the same events, stale predictions included).
+    std::uint32_t earliest_in(std::vector<Listing>& bucket) const {
+        std::uint32_t best = none;
         std::size_t kept = 0;
         for (const Listing& listing : bucket) {
-            bucket[kept] = listing;
-            kept += live(listing) ? 1U : 0U;
+            if (!live(listing)) continue;
+            if (best == none || !(owners_[best].event < owners_[listing.owner].event)) best = listing.owner;
+            bucket[kept++] = listing;
         }
         bucket.resize(kept);
-    }
-
-    // Where in a bucket of live listings the first entry in the rules' order
-    // is: of equal ones (a pair event both partners hold), the last listed,
-    // as the linked buckets' newest-first lists give it, so that both
-    // queues take them in the same order (the same events, stale
-    // predictions included).
-    std::uint32_t earliest_in(const std::vector<Listing>& bucket) const {
-        std::uint32_t best = 0;
-        for (std::uint32_t k = 1; k < bucket.size(); ++k) {
-            if (!(owners_[bucket[best].owner].event < owners_[bucket[k].owner].event)) best = k;
-        }
         return best;
     }
 
@@ -278,7 +261,7 @@ private:
     std::uint32_t epoch_ = 0;                    // the current epoch; epochs_ when the window is used up
     std::uint32_t current_ = 0;                  // the current bucket of the epoch: no entry lies in an earlier one
     std::uint32_t earliest_ = none;              // cached; none when unknown
-    std::uint32_t earliest_at_ = none;           // its listing's place in the current bucket; none if unlisted
+    bool earliest_listed_ = false;               // in the current bucket; else found among entries at `never`
 };
 
 }  // namespace particlesim
