@@ -28,6 +28,7 @@
 #include "core/assert.hpp"
 #include "core/huge_page_allocator.hpp"
 #include "core/prefetch.hpp"
+#include "exact/calendar_window.hpp"
 #include "exact/event.hpp"
 
 #include <algorithm>
@@ -41,9 +42,9 @@ class LadderCalendar {
 public:
     // Every owner starts with `initial`; replace() sets each.
     LadderCalendar(std::uint32_t owners, const Event& initial)
-        : filled_by_half_(bucket_count_for(owners) / 2),
-          epoch_buckets_(std::min(window_buckets_for(filled_by_half_), max_epoch_buckets)),
-          epochs_(window_buckets_for(filled_by_half_) / epoch_buckets_),
+        : window_(owners),
+          epoch_buckets_(std::min(window_.buckets, max_epoch_buckets)),
+          epochs_(window_.buckets / epoch_buckets_),
           buckets_(epoch_buckets_),
           bins_(epochs_),
           owners_(owners, Owned{initial, 0}) {
@@ -103,14 +104,9 @@ public:
 private:
     static constexpr std::uint32_t none = 0xffffffffU;  // below any particle count the engines accept
 
-    // The window holds at least twice the buckets that the earliest half of
-    // the entries fill at a rebuild (Brown's choice), and up to eight times
-    // as many while that is no more than this: on a small scene a rebuild,
-    // which reads every entry, then comes a quarter as often. Larger scenes
-    // were slower with the longer window (docs/benchmarks.md).
-    static constexpr std::uint32_t max_stretched_window = 65536;
     // An epoch's buckets, whose ends an event may write to: few enough that
-    // their lines stay in the caches (docs/benchmarks.md).
+    // their lines stay in the caches (1024 to 8192 ran within noise of one
+    // another at 1e6 disks).
     static constexpr std::uint32_t max_epoch_buckets = 2048;
 
     // An owner's entry and the serial of its latest listing; 32 bytes,
@@ -124,15 +120,6 @@ private:
         std::uint32_t owner;
         std::uint32_t serial;
     };
-
-    static std::uint32_t bucket_count_for(std::uint32_t owners) {
-        std::uint32_t count = 16;
-        while (count < owners && count < (1U << 30)) count *= 2;
-        return count;
-    }
-    static std::uint32_t window_buckets_for(std::uint32_t filled_by_half) {
-        return std::max(filled_by_half * 2, std::min(filled_by_half * 8, max_stretched_window));
-    }
 
     [[nodiscard]] bool live(const Listing& listing) const { return owners_[listing.owner].serial == listing.serial; }
 
@@ -231,25 +218,16 @@ private:
             if (owned.event.time < std::numeric_limits<double>::infinity()) times_.push_back(owned.event.time);
         }
         if (times_.empty()) return false;
-        const auto first = std::min_element(times_.begin(), times_.end());
-        base_ = *first;
-        const std::size_t sample = std::min<std::size_t>(times_.size() - 1, filled_by_half_);
-        std::nth_element(times_.begin(), times_.begin() + static_cast<std::ptrdiff_t>(sample), times_.end());
-        const double spread = times_[sample] - base_;
-        // About one entry a bucket over the first filled_by_half_ buckets; a
-        // positive width even when many events share one instant, and one
-        // whose inverse is finite. Bucket indices are then a product instead
-        // of a quotient: either is monotonic in time, and that is all the
-        // order of events needs.
-        const double width = spread > 0.0 ? spread / static_cast<double>(filled_by_half_) : std::abs(base_) * 1e-12;
-        buckets_per_time_ = 1.0 / std::max(width, 1e-300);
+        const CalendarWindow::Start start = window_.start_for(times_);
+        base_ = start.base;
+        buckets_per_time_ = start.buckets_per_time;
         epoch_ = 0;
         current_ = 0;
         for (std::uint32_t owner = 0; owner < owners_.size(); ++owner) list(owner, owners_[owner]);
         return true;
     }
 
-    std::uint32_t filled_by_half_;               // buckets holding the earliest half of the entries after a rebuild
+    CalendarWindow window_;
     std::uint32_t epoch_buckets_;                // buckets an epoch
     std::uint32_t epochs_;                       // epochs a window
     std::vector<std::vector<Listing>> buckets_;  // the current epoch's

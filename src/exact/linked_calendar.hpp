@@ -10,6 +10,7 @@
 
 #include "core/huge_page_allocator.hpp"
 #include "exact/bucket_lists.hpp"
+#include "exact/calendar_window.hpp"
 #include "exact/event.hpp"
 
 #include <algorithm>
@@ -23,10 +24,7 @@ class LinkedCalendar {
 public:
     // Every owner starts with `initial`; replace() sets each.
     LinkedCalendar(std::uint32_t owners, const Event& initial)
-        : filled_by_half_(bucket_count_for(owners) / 2),
-          buckets_(std::max(filled_by_half_ * 2, std::min(filled_by_half_ * 8, max_stretched_window))),
-          lists_(buckets_ + 1, owners),
-          events_(owners, initial) {
+        : window_(owners), buckets_(window_.buckets), lists_(buckets_ + 1, owners), events_(owners, initial) {
         for (std::uint32_t owner = 0; owner < owners; ++owner) lists_.insert(owner, overflow());
         current_ = buckets_;  // the window is empty: the first earliest() builds it
     }
@@ -52,19 +50,6 @@ public:
 
 private:
     static constexpr std::uint32_t none = BucketLists::none;
-    // The window holds at least twice the buckets that the earliest half of
-    // the entries fill at a rebuild (Brown's choice), and up to eight times
-    // as many while the buckets fit this many (256 KiB, in the caches): on a
-    // small scene a rebuild, which reads every entry, then comes a quarter as
-    // often. Larger scenes were slower with the longer window
-    // (docs/benchmarks.md).
-    static constexpr std::uint32_t max_stretched_window = 65536;
-
-    static std::uint32_t bucket_count_for(std::uint32_t owners) {
-        std::uint32_t count = 16;
-        while (count < owners && count < (1U << 30)) count *= 2;
-        return count;
-    }
     [[nodiscard]] std::uint32_t overflow() const { return buckets_; }
 
     // Never before the current bucket: time does not go back. Everything
@@ -96,24 +81,15 @@ private:
             if (event.time < std::numeric_limits<double>::infinity()) times_.push_back(event.time);
         }
         if (times_.empty()) return;  // nothing will ever happen: earliest is any entry, at `never`
-        const auto first = std::min_element(times_.begin(), times_.end());
-        base_ = *first;
-        const std::size_t sample = std::min<std::size_t>(times_.size() - 1, filled_by_half_);
-        std::nth_element(times_.begin(), times_.begin() + static_cast<std::ptrdiff_t>(sample), times_.end());
-        const double spread = times_[sample] - base_;
-        // About one entry a bucket over the first filled_by_half_ buckets; a
-        // positive width even when many events share one instant, and one
-        // whose inverse is finite. Bucket indices are then a product instead
-        // of a quotient: either is monotonic in time, and that is all the
-        // order of events needs.
-        const double width = spread > 0.0 ? spread / static_cast<double>(filled_by_half_) : std::abs(base_) * 1e-12;
-        buckets_per_time_ = 1.0 / std::max(width, 1e-300);
+        const CalendarWindow::Start start = window_.start_for(times_);
+        base_ = start.base;
+        buckets_per_time_ = start.buckets_per_time;
         current_ = 0;
         lists_.refill_all([&](std::uint32_t owner) { return bucket_of(events_[owner].time); });
     }
 
-    std::uint32_t filled_by_half_;  // buckets holding the earliest half of the entries after a rebuild
-    std::uint32_t buckets_;
+    CalendarWindow window_;
+    std::uint32_t buckets_;          // the window's
     BucketLists lists_;              // owners by bucket; the last bucket is the overflow
     HugePageVector<Event> events_;   // by owner
     std::vector<double> times_;      // scratch of rebuild_window()

@@ -1,0 +1,47 @@
+"""What the exact engine's comparisons on the gas share (exact_boundaries.py,
+exact_builds.py): the scene files, simcli's step time, and two ways of
+running alternating run by run, the order flipping every round."""
+import os
+import re
+import statistics
+import subprocess
+
+cases = [(10000, 200), (100000, 20), (1000000, 4)]  # the gas at area fraction 0.3: about 5e5 to 1e6 collisions each
+
+
+def write_gas(simgen, directory, particles, steps):
+    """simgen gas -n PARTICLES -s STEPS --mode perf --seed 7, into DIRECTORY; returns its path."""
+    scene = os.path.join(directory, f"gas{particles}.in")
+    with open(scene, "w") as out:
+        subprocess.run([simgen, "gas", "-n", str(particles), "-s", str(steps), "--mode", "perf", "--seed", "7"],
+                       stdout=out, check=True)
+    return scene
+
+
+def step_time(command):
+    """simcli's --stats step time and its collisions (pairs and walls) for COMMAND (a list ending in the scene)."""
+    run = subprocess.run(command + ["--stats", "-o", os.devnull], capture_output=True, text=True, check=True)
+    seconds = float(re.search(r"steps in ([0-9.e+-]+) s", run.stderr).group(1))
+    counts = re.search(r"stats: (\d+) particle collisions, (\d+) wall collisions", run.stderr)
+    return seconds, int(counts.group(1)), int(counts.group(2))
+
+
+def alternate(commands, rounds):
+    """Runs the two commands {name: command} alternately; returns each one's times, its last
+    step_time() counts, and the per-round ratios second / first."""
+    first, second = commands
+    times = {first: [], second: []}
+    counts = {}
+    ratios = []
+    for round_number in range(rounds):
+        order = [first, second] if round_number % 2 == 0 else [second, first]
+        this_round = {}
+        for name in order:
+            this_round[name], *counts[name] = step_time(commands[name])
+            times[name].append(this_round[name])
+        ratios.append(this_round[second] / this_round[first])
+    return times, counts, ratios
+
+
+def median(values):
+    return statistics.median(values)

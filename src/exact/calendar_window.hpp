@@ -1,0 +1,55 @@
+#pragma once
+// What both calendar queues share: how many time buckets a window has, and,
+// at a rebuild, where the new window starts and how wide its buckets are.
+//
+// The window holds at least twice the buckets that the earliest half of the
+// entries fill at a rebuild (Brown's choice), and up to eight times as many
+// while that is at most 65 536 buckets: on a small scene a rebuild, which
+// reads every entry, then comes a quarter as often. Larger scenes were slower
+// with the longer window (docs/benchmarks.md).
+
+#include <algorithm>
+#include <cmath>
+#include <cstddef>
+#include <cstdint>
+#include <vector>
+
+namespace particlesim {
+
+struct CalendarWindow {
+    static constexpr std::uint32_t max_stretched_buckets = 65536;
+
+    std::uint32_t filled_by_half;  // buckets holding the earliest half of the entries after a rebuild
+    std::uint32_t buckets;         // the window's
+
+    explicit CalendarWindow(std::uint32_t owners)
+        : filled_by_half(power_of_two_from(owners) / 2),
+          buckets(std::max(filled_by_half * 2, std::min(filled_by_half * 8, max_stretched_buckets))) {}
+
+    struct Start {
+        double base;              // the start time of the window's first bucket
+        double buckets_per_time;  // the inverse of a bucket's width
+    };
+    // From the entries' finite times (at least one; reordered): about one
+    // entry a bucket over the first filled_by_half buckets; a positive width
+    // even when many events share one instant, and one whose inverse is
+    // finite. Bucket indices are then a product instead of a quotient: either
+    // is monotonic in time, and that is all the order of events needs.
+    [[nodiscard]] Start start_for(std::vector<double>& times) const {
+        const double base = *std::min_element(times.begin(), times.end());
+        const std::size_t sample = std::min<std::size_t>(times.size() - 1, filled_by_half);
+        std::nth_element(times.begin(), times.begin() + static_cast<std::ptrdiff_t>(sample), times.end());
+        const double spread = times[sample] - base;
+        const double width = spread > 0.0 ? spread / static_cast<double>(filled_by_half) : std::abs(base) * 1e-12;
+        return {base, 1.0 / std::max(width, 1e-300)};
+    }
+
+private:
+    static std::uint32_t power_of_two_from(std::uint32_t owners) {
+        std::uint32_t count = 16;
+        while (count < owners && count < (1U << 30)) count *= 2;
+        return count;
+    }
+};
+
+}  // namespace particlesim
