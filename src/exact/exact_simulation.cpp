@@ -438,7 +438,7 @@ private:
     // the particle its cell, the cell its members), so the event rate fell
     // with N. The queue already knows the next events, so each
     // event fetches, in four stages, what those a few buckets behind it will
-    // read: their entries and queue links; their particles; partners and the
+    // read: their queue entries; their particles; partners and the
     // heads of the cells they will search; the first member of each of those
     // cells. Each stage reads only what the stage before fetched. Prefetches
     // are hints: a queue that changes meanwhile costs a wasted fetch, never a
