@@ -1,6 +1,7 @@
 // The float-lane line test of the paths search: it never drops a pair whose
 // lines come within the reach, at any scale, for grazing lines, nearly
-// parallel motion and particles at rest; and it drops most pairs that do not.
+// parallel motion and particles at rest; it drops most pairs that do not; and
+// lines tested in blocks find what each finds alone.
 
 #include "check.hpp"
 
@@ -8,8 +9,10 @@
 #include "search/path_lines.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstdio>
+#include <span>
 #include <vector>
 
 using namespace particlesim;
@@ -118,6 +121,21 @@ void never_drops_a_pair_within_reach(int lanes) {
                 }
             }
             CHECK(std::find(near.begin(), near.end(), i) == near.end());
+        }
+        // Blocks of two to four lines give each line what it gives alone.
+        std::vector<std::uint32_t> alone;
+        for (std::uint32_t first = 0; first + 4 <= t.particles.size(); first += 4) {
+            const std::uint32_t size = 2 + static_cast<std::uint32_t>(rng.next() % 3);
+            std::vector<std::uint32_t> block;
+            for (std::uint32_t k = 0; k < size; ++k) block.push_back(first + k);
+            std::array<std::vector<std::uint32_t>, 4> found;
+            std::array<std::vector<std::uint32_t>*, 4> nears{&found[0], &found[1], &found[2], &found[3]};
+            lines.gather_near_block(block, t.reach, std::span(nears).first(size));
+            for (std::uint32_t k = 0; k < size; ++k) {
+                alone.clear();
+                lines.gather_near(block[k], t.reach, alone);
+                CHECK(found[k] == alone);
+            }
         }
     }
     CHECK_EQ(dropped, 0L);

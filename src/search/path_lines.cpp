@@ -9,6 +9,12 @@
 
 namespace particlesim {
 
+struct LineQuery {
+    float x, y, vx, vy;  // the line tested against all, scaled
+    float reach_term;    // times |dv|^2
+    float margin_term;   // added
+};
+
 namespace {
 
 // Lines tested together by the widest test compiled (two groups of
@@ -26,12 +32,6 @@ using FourFloats = float __attribute__((vector_size(16)));
 using EightFloats = float __attribute__((vector_size(32)));
 using SixteenFloats = float __attribute__((vector_size(64)));
 using FourInts = std::int32_t __attribute__((vector_size(16)));
-
-struct LineQuery {
-    float x, y, vx, vy;  // the line tested against all, scaled
-    float reach_term;    // times |dv|^2
-    float margin_term;   // added
-};
 
 // One bit per lane of a comparison's result (all ones or all zeros), lane
 // 0 the lowest: on x86-64 the sign bits, four lanes at a time by SSE's
@@ -104,6 +104,43 @@ template <typename Floats>
     }
 }
 
+// gather_lanes() for `queries` lines at once (1 to 4), each line group
+// loaded once for all of them: the same comparisons, lane by lane.
+template <typename Floats, int queries>
+[[gnu::always_inline]] inline void gather_lanes_block(const float* x, const float* y, const float* vx, const float* vy,
+                                                      std::size_t padded, const LineQuery* query,
+                                                      std::vector<std::uint32_t>* const* near) {
+    using Mask = decltype(Floats{} < Floats{});
+    constexpr std::size_t lanes = sizeof(Floats) / sizeof(float);
+    LineQuery q[queries];
+    for (int k = 0; k < queries; ++k) q[k] = query[k];
+    for (std::size_t j = 0; j < padded; j += lanes) {
+        Floats px, py, pvx, pvy;
+        std::memcpy(&px, x + j, sizeof(Floats));
+        std::memcpy(&py, y + j, sizeof(Floats));
+        std::memcpy(&pvx, vx + j, sizeof(Floats));
+        std::memcpy(&pvy, vy + j, sizeof(Floats));
+        Mask close[queries];
+        for (int k = 0; k < queries; ++k) {
+            const Floats dx = px - q[k].x;
+            const Floats dy = py - q[k].y;
+            const Floats dvx = pvx - q[k].vx;
+            const Floats dvy = pvy - q[k].vy;
+            const Floats cross = dx * dvy - dy * dvx;
+            const Floats speed_sq = dvx * dvx + dvy * dvy;
+            close[k] = cross * cross <= q[k].reach_term * speed_sq + q[k].margin_term;
+        }
+        Mask any = close[0];
+        for (int k = 1; k < queries; ++k) any |= close[k];
+        if (!any_lane(any)) continue;
+        for (int k = 0; k < queries; ++k) {
+            for (std::uint32_t bits = lane_bits(close[k]); bits != 0; bits &= bits - 1) {
+                near[k]->push_back(static_cast<std::uint32_t>(j) + static_cast<std::uint32_t>(std::countr_zero(bits)));
+            }
+        }
+    }
+}
+
 void gather_four(const float* x, const float* y, const float* vx, const float* vy, std::size_t padded,
                  const LineQuery& q, std::vector<std::uint32_t>& near) {
     gather_lanes<FourFloats>(x, y, vx, vy, padded, q, near);
@@ -122,6 +159,20 @@ void gather_four(const float* x, const float* y, const float* vx, const float* v
     gather_lanes<SixteenFloats>(x, y, vx, vy, padded, q, near);
 }
 
+template <int queries>
+[[gnu::target("avx2,fma")]] void gather_eight_block(const float* x, const float* y, const float* vx, const float* vy,
+                                                    std::size_t padded, const LineQuery* q,
+                                                    std::vector<std::uint32_t>* const* near) {
+    gather_lanes_block<EightFloats, queries>(x, y, vx, vy, padded, q, near);
+}
+
+template <int queries>
+[[gnu::target("avx512f,fma")]] void gather_sixteen_block(const float* x, const float* y, const float* vx,
+                                                         const float* vy, std::size_t padded, const LineQuery* q,
+                                                         std::vector<std::uint32_t>* const* near) {
+    gather_lanes_block<SixteenFloats, queries>(x, y, vx, vy, padded, q, near);
+}
+
 bool cpu_supports_lanes(int lanes) {
     static const bool sixteen = [] {
         __builtin_cpu_init();  // in case this first runs before the library's constructors
@@ -131,6 +182,24 @@ bool cpu_supports_lanes(int lanes) {
     return lanes == 4 || (lanes == 8 && eight) || (lanes == 16 && sixteen);
 }
 #endif
+
+template <int queries>
+void gather_four_block(const float* x, const float* y, const float* vx, const float* vy, std::size_t padded,
+                       const LineQuery* q, std::vector<std::uint32_t>* const* near) {
+    gather_lanes_block<FourFloats, queries>(x, y, vx, vy, padded, q, near);
+}
+
+template <int queries>
+void gather_block(int lanes, const float* x, const float* y, const float* vx, const float* vy, std::size_t padded,
+                  const LineQuery* q, std::vector<std::uint32_t>* const* near) {
+    switch (lanes) {
+#if defined(__x86_64__)
+    case 16: gather_sixteen_block<queries>(x, y, vx, vy, padded, q, near); break;
+    case 8: gather_eight_block<queries>(x, y, vx, vy, padded, q, near); break;
+#endif
+    default: gather_four_block<queries>(x, y, vx, vy, padded, q, near); break;
+    }
+}
 
 }  // namespace
 
@@ -179,7 +248,7 @@ void PathLines::set(std::uint32_t i, const Vec2& position, const Vec2& velocity)
     vy_[i] = static_cast<float>(vy);
 }
 
-void PathLines::gather_near(std::uint32_t i, double reach, std::vector<std::uint32_t>& near) const {
+LineQuery PathLines::query_for(std::uint32_t i, double reach) const {
     // Rounding each scaled value to float moves it by at most 2^-24 of the
     // largest coordinate or speed (M, V); the differences, products and sum
     // of the cross product then err by less than 64 * 2^-24 M V, and the
@@ -188,12 +257,50 @@ void PathLines::gather_near(std::uint32_t i, double reach, std::vector<std::uint
     const double reach_scaled = reach * position_scale_;
     const double error =
         128.0 * 0x1p-24 * largest_coordinate_ * largest_speed_ + 12.0 * 0x1p-24 * reach_scaled * largest_speed_;
-    LineQuery q{x_[i],
-                y_[i],
-                vx_[i],
-                vy_[i],
-                static_cast<float>(1.3 * reach_scaled * reach_scaled),
-                static_cast<float>(6.0 * error * error)};
+    return {x_[i],
+            y_[i],
+            vx_[i],
+            vy_[i],
+            static_cast<float>(1.3 * reach_scaled * reach_scaled),
+            static_cast<float>(6.0 * error * error)};
+}
+
+void PathLines::gather_near_block(std::span<const std::uint32_t> lines, double reach,
+                                  std::span<std::vector<std::uint32_t>* const> nears) const {
+    if (lines.size() == 1) {
+        gather_near(lines[0], reach, *nears[0]);
+        return;
+    }
+    if (lines.size() > 4) throw std::invalid_argument("PathLines::gather_near_block: at most four lines a block");
+    LineQuery q[4];
+    std::size_t first[4];
+    for (std::size_t k = 0; k < lines.size(); ++k) {
+        q[k] = query_for(lines[k], reach);
+        first[k] = nears[k]->size();
+    }
+    const float* x = x_.data();
+    const float* y = y_.data();
+    const float* vx = vx_.data();
+    const float* vy = vy_.data();
+    std::vector<std::uint32_t>* const* near = nears.data();
+    switch (lines.size()) {
+    case 2: gather_block<2>(lanes_, x, y, vx, vy, x_.size(), q, near); break;
+    case 3: gather_block<3>(lanes_, x, y, vx, vy, x_.size(), q, near); break;
+    case 4: gather_block<4>(lanes_, x, y, vx, vy, x_.size(), q, near); break;
+    default: return;  // no lines
+    }
+    // The padding's lines and each line's own are not neighbours.
+    for (std::size_t k = 0; k < lines.size(); ++k) {
+        std::vector<std::uint32_t>& found = *nears[k];
+        const std::uint32_t i = lines[k];
+        found.erase(std::remove_if(found.begin() + static_cast<std::ptrdiff_t>(first[k]), found.end(),
+                                   [&](std::uint32_t j) { return j == i || j >= count_; }),
+                    found.end());
+    }
+}
+
+void PathLines::gather_near(std::uint32_t i, double reach, std::vector<std::uint32_t>& near) const {
+    const LineQuery q = query_for(i, reach);
     const std::size_t first = near.size();
     switch (lanes_) {
 #if defined(__x86_64__)

@@ -31,6 +31,8 @@
 
 namespace particlesim {
 
+struct LineQuery;  // one line's test against all (path_lines.cpp)
+
 // The distance a pair must be kept within, for a contact distance of 2r:
 // above 2r by far more than the rounding of a double-precision pair test
 // (a few ulps of L in dp) and of free motion along a line over 1024 steps
@@ -65,10 +67,15 @@ public:
     // Appends to `near` every j != i whose line may come within `reach` of
     // i's line (see above), in increasing order.
     void gather_near(std::uint32_t i, double reach, std::vector<std::uint32_t>& near) const;
+    // gather_near() for up to four lines at once, *nears[k] for lines[k]:
+    // each group of lines is read once for all of them.
+    void gather_near_block(std::span<const std::uint32_t> lines, double reach,
+                           std::span<std::vector<std::uint32_t>* const> nears) const;
 
     [[nodiscard]] std::size_t size() const { return count_; }
 
 private:
+    [[nodiscard]] LineQuery query_for(std::uint32_t i, double reach) const;
     void store_position(std::uint32_t i, const Vec2& position) {
         const double x = position.x() * position_scale_;
         const double y = position.y() * position_scale_;

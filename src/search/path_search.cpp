@@ -4,6 +4,7 @@
 #include "stepped/stepped_tuning.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 
 namespace particlesim {
@@ -24,8 +25,13 @@ void PathSearch::find_pairs(const PairSearchInput& in, std::span<ThreadCandidate
     const auto new_count = static_cast<std::int64_t>(new_lines_.size());
     const int workers = worker_count(out.size(), new_count * static_cast<std::int64_t>(in.particles.size()),
                                      stepped_tuning::paths_line_tests_per_thread);
-    parallel_for_dynamic(workers, new_count, 4, [&](std::int64_t k, std::size_t thread) {
-        watch_near(in, new_lines_[static_cast<std::size_t>(k)], reach, thread_watches_[thread]);
+    // New lines in blocks of four: PathLines reads each group of lines once for the block.
+    constexpr std::int64_t block = 4;
+    parallel_for_dynamic(workers, (new_count + block - 1) / block, 1, [&](std::int64_t b, std::size_t thread) {
+        const auto first = static_cast<std::size_t>(b * block);
+        const std::size_t count = std::min<std::size_t>(block, new_lines_.size() - first);
+        watch_near(in, std::span<const std::uint32_t>(new_lines_).subspan(first, count), reach,
+                   thread_watches_[thread]);
     });
     for (ThreadWatches& thread : thread_watches_) {
         watches_.insert(watches_.end(), thread.found.begin(), thread.found.end());
@@ -62,7 +68,7 @@ void PathSearch::make_lines(const PairSearchInput& in) {
         // Room for a busy micro-step from the start, so that steps rarely grow them.
         watches_.reserve(2 * count + 64);
         for (ThreadWatches& thread : thread_watches_) {
-            thread.near.reserve(count);
+            for (std::vector<std::uint32_t>& near : thread.near) near.reserve(count);
             thread.found.reserve(count + 64);
         }
         lines_made_ = true;
@@ -91,10 +97,21 @@ void PathSearch::make_lines(const PairSearchInput& in) {
 
 // Watches every pair of i's new line with a line that comes within `reach`
 // of it from now on; a pair of two new lines once, from the lower index.
-void PathSearch::watch_near(const PairSearchInput& in, std::uint32_t i, double reach, ThreadWatches& out) const {
-    std::vector<std::uint32_t>& near = out.near;
-    near.clear();
-    lines_.gather_near(i, reach, near);
+void PathSearch::watch_near(const PairSearchInput& in, std::span<const std::uint32_t> lines, double reach,
+                            ThreadWatches& out) const {
+    std::array<std::vector<std::uint32_t>*, 4> nears{};
+    for (std::size_t k = 0; k < lines.size(); ++k) {
+        nears[k] = &out.near[k];
+        nears[k]->clear();
+    }
+    lines_.gather_near_block(lines, reach, std::span(nears).first(lines.size()));
+    for (std::size_t k = 0; k < lines.size(); ++k) watch_pairs(in, lines[k], out.near[k], reach, out);
+}
+
+// Watches every pair of i's new line with a line of `near` that comes within
+// `reach` of it from now on; a pair of two new lines once, from the lower index.
+void PathSearch::watch_pairs(const PairSearchInput& in, std::uint32_t i, std::span<const std::uint32_t> near,
+                             double reach, ThreadWatches& out) const {
     const auto now = static_cast<double>(micro_steps_);
     const Particle& a = in.particles[i];
     const double reach_sq = reach * reach;

@@ -23,6 +23,7 @@
 #include "search/pair_search.hpp"
 #include "search/path_lines.hpp"
 
+#include <array>
 #include <cstdint>
 #include <span>
 #include <vector>
@@ -53,12 +54,15 @@ private:
 
     // What one thread finds for the new lines it tests, on a cache line of its own.
     struct alignas(64) ThreadWatches {
-        std::vector<std::uint32_t> near;
+        std::array<std::vector<std::uint32_t>, 4> near;  // a block's new lines
         std::vector<Watch> found;
     };
 
     void make_lines(const PairSearchInput& in);
-    void watch_near(const PairSearchInput& in, std::uint32_t i, double reach, ThreadWatches& out) const;
+    void watch_near(const PairSearchInput& in, std::span<const std::uint32_t> lines, double reach,
+                    ThreadWatches& out) const;
+    void watch_pairs(const PairSearchInput& in, std::uint32_t i, std::span<const std::uint32_t> near, double reach,
+                     ThreadWatches& out) const;
 
     PathLines lines_;
     bool lines_made_ = false;
