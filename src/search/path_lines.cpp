@@ -271,9 +271,10 @@ void PathLines::gather_near_block(std::span<const std::uint32_t> lines, double r
         gather_near(lines[0], reach, *nears[0]);
         return;
     }
-    if (lines.size() > 4) throw std::invalid_argument("PathLines::gather_near_block: at most four lines a block");
-    LineQuery q[4];
-    std::size_t first[4];
+    if (lines.size() > max_block)
+        throw std::invalid_argument("PathLines::gather_near_block: at most four lines a block");
+    LineQuery q[max_block];
+    std::size_t first[max_block];
     for (std::size_t k = 0; k < lines.size(); ++k) {
         q[k] = query_for(lines[k], reach);
         first[k] = nears[k]->size();
@@ -283,6 +284,7 @@ void PathLines::gather_near_block(std::span<const std::uint32_t> lines, double r
     const float* vx = vx_.data();
     const float* vy = vy_.data();
     std::vector<std::uint32_t>* const* near = nears.data();
+    static_assert(max_block == 4, "a case below for each block size");
     switch (lines.size()) {
     case 2: gather_block<2>(lanes_, x, y, vx, vy, x_.size(), q, near); break;
     case 3: gather_block<3>(lanes_, x, y, vx, vy, x_.size(), q, near); break;

@@ -67,8 +67,10 @@ public:
     // Appends to `near` every j != i whose line may come within `reach` of
     // i's line (see above), in increasing order.
     void gather_near(std::uint32_t i, double reach, std::vector<std::uint32_t>& near) const;
-    // gather_near() for up to four lines at once, *nears[k] for lines[k]:
-    // each group of lines is read once for all of them.
+    // gather_near() for up to max_block lines at once, *nears[k] for
+    // lines[k]: each group of lines is read once for all of them (four
+    // queries' temporaries still fit AVX2's sixteen registers).
+    static constexpr std::size_t max_block = 4;
     void gather_near_block(std::span<const std::uint32_t> lines, double reach,
                            std::span<std::vector<std::uint32_t>* const> nears) const;
 

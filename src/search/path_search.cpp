@@ -25,8 +25,8 @@ void PathSearch::find_pairs(const PairSearchInput& in, std::span<ThreadCandidate
     const auto new_count = static_cast<std::int64_t>(new_lines_.size());
     const int workers = worker_count(out.size(), new_count * static_cast<std::int64_t>(in.particles.size()),
                                      stepped_tuning::paths_line_tests_per_thread);
-    // New lines in blocks of four: PathLines reads each group of lines once for the block.
-    constexpr std::int64_t block = 4;
+    // New lines in blocks: PathLines reads each group of lines once for the block.
+    constexpr std::int64_t block = PathLines::max_block;
     parallel_for_dynamic(workers, (new_count + block - 1) / block, 1, [&](std::int64_t b, std::size_t thread) {
         const auto first = static_cast<std::size_t>(b * block);
         const std::size_t count = std::min<std::size_t>(block, new_lines_.size() - first);
@@ -95,11 +95,11 @@ void PathSearch::make_lines(const PairSearchInput& in) {
     }
 }
 
-// Watches every pair of i's new line with a line that comes within `reach`
-// of it from now on; a pair of two new lines once, from the lower index.
+// The pairs of a block of new lines (at most PathLines::max_block), each
+// line's near ones found in one pass over the lines.
 void PathSearch::watch_near(const PairSearchInput& in, std::span<const std::uint32_t> lines, double reach,
                             ThreadWatches& out) const {
-    std::array<std::vector<std::uint32_t>*, 4> nears{};
+    std::array<std::vector<std::uint32_t>*, PathLines::max_block> nears{};
     for (std::size_t k = 0; k < lines.size(); ++k) {
         nears[k] = &out.near[k];
         nears[k]->clear();

@@ -54,7 +54,7 @@ private:
 
     // What one thread finds for the new lines it tests, on a cache line of its own.
     struct alignas(64) ThreadWatches {
-        std::array<std::vector<std::uint32_t>, 4> near;  // a block's new lines
+        std::array<std::vector<std::uint32_t>, PathLines::max_block> near;  // a block's new lines
         std::vector<Watch> found;
     };
 
