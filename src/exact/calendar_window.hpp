@@ -27,8 +27,12 @@ struct CalendarWindow {
           buckets(std::max(filled_by_half * 2, std::min(filled_by_half * 8, max_stretched_buckets))) {}
 
     struct Start {
-        double base;              // the start time of the window's first bucket
-        double buckets_per_time;  // the inverse of a bucket's width
+        double base = 0.0;              // the start time of the window's first bucket
+        double buckets_per_time = 1.0;  // the inverse of a bucket's width
+
+        // Buckets from the window's first to `time` (negative before it,
+        // infinite for `never`); the bucket is its whole part.
+        [[nodiscard]] double offset(double time) const { return (time - base) * buckets_per_time; }
     };
     // From the entries' finite times (at least one; reordered): about one
     // entry a bucket over the first filled_by_half buckets; a positive width

@@ -4,7 +4,7 @@
 // calendar queue (R. Brown, CACM 1988) of two tiers, as in a ladder queue
 // (Tang, Goh and Thng, ACM TOMACS 2005).
 //
-// Time is cut into buckets of width 1 / `buckets_per_time_`; a window of
+// Time is cut into buckets of width 1 / `buckets_per_time`; a window of
 // buckets is cut into epochs of `epoch_buckets_` buckets. The current
 // epoch's buckets hold their entries; each later epoch of the window is one
 // bin, unsorted; entries beyond the window are listed nowhere, and are read
@@ -128,9 +128,8 @@ private:
     // current bucket: time does not go back.
     void list(std::uint32_t owner, const Owned& owned) {
         if (epoch_ >= epochs_) return;
-        const double offset = (owned.event.time - base_) * buckets_per_time_;
-        const double window = static_cast<double>(std::uint64_t{epochs_} * epoch_buckets_);
-        if (!(offset < window)) return;  // also `never`
+        const double offset = start_.offset(owned.event.time);
+        if (!(offset < static_cast<double>(window_.buckets))) return;  // also `never`
         const std::uint64_t now = std::uint64_t{epoch_} * epoch_buckets_ + current_;
         const std::uint64_t bucket = std::max(now, static_cast<std::uint64_t>(std::max(offset, 0.0)));
         const auto epoch = static_cast<std::uint32_t>(bucket / epoch_buckets_);
@@ -201,8 +200,7 @@ private:
     // The same bucket as list() found when it put the listing in the bin
     // (it was beyond the current bucket then, so not moved forward).
     void list_in_epoch(const Listing& listing) {
-        const double offset = (owners_[listing.owner].event.time - base_) * buckets_per_time_;
-        const auto bucket = static_cast<std::uint64_t>(std::max(offset, 0.0));
+        const auto bucket = static_cast<std::uint64_t>(std::max(start_.offset(owners_[listing.owner].event.time), 0.0));
         PARTICLESIM_ASSERT(bucket / epoch_buckets_ == epoch_, "a bin holds its epoch's entries");
         buckets_[bucket % epoch_buckets_].push_back(listing);
     }
@@ -218,9 +216,7 @@ private:
             if (owned.event.time < std::numeric_limits<double>::infinity()) times_.push_back(owned.event.time);
         }
         if (times_.empty()) return false;
-        const CalendarWindow::Start start = window_.start_for(times_);
-        base_ = start.base;
-        buckets_per_time_ = start.buckets_per_time;
+        start_ = window_.start_for(times_);
         epoch_ = 0;
         current_ = 0;
         for (std::uint32_t owner = 0; owner < owners_.size(); ++owner) list(owner, owners_[owner]);
@@ -228,14 +224,13 @@ private:
     }
 
     CalendarWindow window_;
-    std::uint32_t epoch_buckets_;                // buckets an epoch
-    std::uint32_t epochs_;                       // epochs a window
+    std::uint32_t epoch_buckets_;  // buckets an epoch
+    std::uint32_t epochs_;         // epochs a window (both powers of two: epochs_ x epoch_buckets_ = window_.buckets)
     std::vector<std::vector<Listing>> buckets_;  // the current epoch's
     std::vector<std::vector<Listing>> bins_;     // by epoch of the window; the current one's and those before are empty
     HugePageVector<Owned> owners_;               // by owner
     std::vector<double> times_;                  // scratch of rebuild_window()
-    double base_ = 0.0;                          // start time of the window's first bucket
-    double buckets_per_time_ = 1.0;              // the inverse of a bucket's width
+    CalendarWindow::Start start_;                // where the window's first bucket starts, and the buckets' width
     std::uint32_t epoch_ = 0;                    // the current epoch; epochs_ when the window is used up
     std::uint32_t current_ = 0;                  // the current bucket of the epoch: no entry lies in an earlier one
     std::uint32_t earliest_ = none;              // cached; none when unknown

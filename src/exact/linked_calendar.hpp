@@ -2,7 +2,7 @@
 // The exact engine's event queue for a scene whose state fits the caches: one
 // entry per particle, holding the earliest event predicted for it, in a
 // calendar queue (R. Brown, CACM 1988). Entries sit in time buckets of width
-// 1 / `buckets_per_time_`, each a linked list; entries beyond the buckets'
+// 1 / `buckets_per_time`, each a linked list; entries beyond the buckets'
 // window wait in an overflow list. Replacing an entry is O(1), and finding
 // the earliest scans the first non-empty bucket, which holds about one entry.
 // When the window is used up, it is rebuilt from the overflow, its width
@@ -24,9 +24,9 @@ class LinkedCalendar {
 public:
     // Every owner starts with `initial`; replace() sets each.
     LinkedCalendar(std::uint32_t owners, const Event& initial)
-        : window_(owners), buckets_(window_.buckets), lists_(buckets_ + 1, owners), events_(owners, initial) {
+        : window_(owners), lists_(window_.buckets + 1, owners), events_(owners, initial) {
         for (std::uint32_t owner = 0; owner < owners; ++owner) lists_.insert(owner, overflow());
-        current_ = buckets_;  // the window is empty: the first earliest() builds it
+        current_ = window_.buckets;  // the window is empty: the first earliest() builds it
     }
 
     [[nodiscard]] bool empty() const { return events_.empty(); }
@@ -50,21 +50,22 @@ public:
 
 private:
     static constexpr std::uint32_t none = BucketLists::none;
-    [[nodiscard]] std::uint32_t overflow() const { return buckets_; }
+    [[nodiscard]] std::uint32_t overflow() const { return window_.buckets; }
 
     // Never before the current bucket: time does not go back. Everything
     // waits in the overflow while the window is used up.
     [[nodiscard]] std::uint32_t bucket_of(double time) const {
-        if (current_ == buckets_) return overflow();
-        const double offset = (time - base_) * buckets_per_time_;
-        if (!(offset < static_cast<double>(buckets_))) return overflow();  // also `never` and NaN-free infinities
+        if (current_ == window_.buckets) return overflow();
+        const double offset = start_.offset(time);
+        if (!(offset < static_cast<double>(window_.buckets)))
+            return overflow();  // also `never` and NaN-free infinities
         return std::max(current_, static_cast<std::uint32_t>(std::max(offset, 0.0)));
     }
 
     void find_earliest() {
-        while (current_ < buckets_ && lists_.first(current_) == none) ++current_;
-        if (current_ == buckets_) rebuild_window();
-        const std::uint32_t bucket = current_ < buckets_ ? current_ : overflow();
+        while (current_ < window_.buckets && lists_.first(current_) == none) ++current_;
+        if (current_ == window_.buckets) rebuild_window();
+        const std::uint32_t bucket = current_ < window_.buckets ? current_ : overflow();
         std::uint32_t best = lists_.first(bucket);
         lists_.for_each_in(bucket, [&](std::uint32_t k) {
             if (events_[k] < events_[best]) best = k;
@@ -81,20 +82,16 @@ private:
             if (event.time < std::numeric_limits<double>::infinity()) times_.push_back(event.time);
         }
         if (times_.empty()) return;  // nothing will ever happen: earliest is any entry, at `never`
-        const CalendarWindow::Start start = window_.start_for(times_);
-        base_ = start.base;
-        buckets_per_time_ = start.buckets_per_time;
+        start_ = window_.start_for(times_);
         current_ = 0;
         lists_.refill_all([&](std::uint32_t owner) { return bucket_of(events_[owner].time); });
     }
 
     CalendarWindow window_;
-    std::uint32_t buckets_;          // the window's
     BucketLists lists_;              // owners by bucket; the last bucket is the overflow
     HugePageVector<Event> events_;   // by owner
     std::vector<double> times_;      // scratch of rebuild_window()
-    double base_ = 0.0;              // start time of bucket 0
-    double buckets_per_time_ = 1.0;  // the inverse of a bucket's width
+    CalendarWindow::Start start_;    // where bucket 0 starts, and the buckets' width
     std::uint32_t current_ = 0;      // no entry lies in an earlier bucket
     std::uint32_t earliest_ = none;  // cached; none when unknown
 };
