@@ -66,11 +66,50 @@ template <typename Mask>
     return lane_bits(either) != 0;
 }
 
-// Appends every line j of [0, padded) with |dp x dv|^2 <= reach_term |dv|^2
-// + margin_term to `near`, `Floats` lines (four, eight or sixteen) to a
-// group, two groups at a time: nearly every pair of groups has no close
-// line, so one test of all their lanes. Always inlined, so that a caller
-// compiled for AVX2 or AVX-512 gets its lanes.
+// One group of stored lines (four, eight or sixteen), as loaded into lanes.
+template <typename Floats>
+struct LineGroup {
+    Floats x, y, vx, vy;
+};
+
+// (Vectors are passed by reference only: a wider one passed or returned by
+// value would change the calling convention of a build without AVX.)
+template <typename Floats>
+[[gnu::always_inline]] inline void load_group(const float* x, const float* y, const float* vx, const float* vy,
+                                              std::size_t at, LineGroup<Floats>& group) {
+    std::memcpy(&group.x, x + at, sizeof(Floats));
+    std::memcpy(&group.y, y + at, sizeof(Floats));
+    std::memcpy(&group.vx, vx + at, sizeof(Floats));
+    std::memcpy(&group.vy, vy + at, sizeof(Floats));
+}
+
+// The line test, lane by lane: |dp x dv|^2 <= reach_term |dv|^2 +
+// margin_term. Written once, so that a line passes the same way alone and in
+// a block.
+template <typename Floats, typename Mask>
+[[gnu::always_inline]] inline void lines_close(const LineGroup<Floats>& group, const LineQuery& q, Mask& close) {
+    const Floats dx = group.x - q.x;
+    const Floats dy = group.y - q.y;
+    const Floats dvx = group.vx - q.vx;
+    const Floats dvy = group.vy - q.vy;
+    const Floats cross = dx * dvy - dy * dvx;
+    const Floats speed_sq = dvx * dvx + dvy * dvy;
+    close = cross * cross <= q.reach_term * speed_sq + q.margin_term;
+}
+
+// Appends first + k to `near` for every bit k set, lowest first.
+[[gnu::always_inline]] inline void append_lanes(std::uint64_t bits, std::size_t first,
+                                                std::vector<std::uint32_t>& near) {
+    for (; bits != 0; bits &= bits - 1) {
+        near.push_back(static_cast<std::uint32_t>(first) + static_cast<std::uint32_t>(std::countr_zero(bits)));
+    }
+}
+
+// Appends to `near` every line j of [0, padded) that passes lines_close(),
+// `Floats` lines (four, eight or sixteen) to a group, two groups at a time:
+// nearly every pair of groups has no close line, so one test of all their
+// lanes. Always inlined, so that a caller compiled for AVX2 or AVX-512 gets
+// its lanes.
 template <typename Floats>
 [[gnu::always_inline]] inline void gather_lanes(const float* x, const float* y, const float* vx, const float* vy,
                                                 std::size_t padded, const LineQuery& query,
@@ -81,31 +120,19 @@ template <typename Floats>
     const LineQuery q = query;
     for (std::size_t j = 0; j < padded; j += 2 * lanes) {
         Mask close[2];
-        for (std::size_t group = 0; group < 2; ++group) {
-            const std::size_t at = j + group * lanes;
-            Floats dx, dy, dvx, dvy;
-            std::memcpy(&dx, x + at, sizeof(Floats));
-            std::memcpy(&dy, y + at, sizeof(Floats));
-            std::memcpy(&dvx, vx + at, sizeof(Floats));
-            std::memcpy(&dvy, vy + at, sizeof(Floats));
-            dx -= q.x;
-            dy -= q.y;
-            dvx -= q.vx;
-            dvy -= q.vy;
-            const Floats cross = dx * dvy - dy * dvx;
-            const Floats speed_sq = dvx * dvx + dvy * dvy;
-            close[group] = cross * cross <= q.reach_term * speed_sq + q.margin_term;
+        for (std::size_t g = 0; g < 2; ++g) {
+            LineGroup<Floats> group;
+            load_group(x, y, vx, vy, j + g * lanes, group);
+            lines_close(group, q, close[g]);
         }
         if (!any_lane(close[0] | close[1])) continue;
-        std::uint32_t bits = lane_bits(close[0]) | lane_bits(close[1]) << lanes;
-        for (; bits != 0; bits &= bits - 1) {
-            near.push_back(static_cast<std::uint32_t>(j) + static_cast<std::uint32_t>(std::countr_zero(bits)));
-        }
+        append_lanes(lane_bits(close[0]) | std::uint64_t{lane_bits(close[1])} << lanes, j, near);
     }
 }
 
-// gather_lanes() for `queries` lines at once (1 to 4), each line group
-// loaded once for all of them: the same comparisons, lane by lane.
+// gather_lanes() for `queries` lines at once (2 to 4), one group at a time,
+// each group loaded once for all of them (two groups' temporaries for four
+// queries would not fit AVX2's sixteen registers).
 template <typename Floats, int queries>
 [[gnu::always_inline]] inline void gather_lanes_block(const float* x, const float* y, const float* vx, const float* vy,
                                                       std::size_t padded, const LineQuery* query,
@@ -115,29 +142,14 @@ template <typename Floats, int queries>
     LineQuery q[queries];
     for (int k = 0; k < queries; ++k) q[k] = query[k];
     for (std::size_t j = 0; j < padded; j += lanes) {
-        Floats px, py, pvx, pvy;
-        std::memcpy(&px, x + j, sizeof(Floats));
-        std::memcpy(&py, y + j, sizeof(Floats));
-        std::memcpy(&pvx, vx + j, sizeof(Floats));
-        std::memcpy(&pvy, vy + j, sizeof(Floats));
+        LineGroup<Floats> group;
+        load_group(x, y, vx, vy, j, group);
         Mask close[queries];
-        for (int k = 0; k < queries; ++k) {
-            const Floats dx = px - q[k].x;
-            const Floats dy = py - q[k].y;
-            const Floats dvx = pvx - q[k].vx;
-            const Floats dvy = pvy - q[k].vy;
-            const Floats cross = dx * dvy - dy * dvx;
-            const Floats speed_sq = dvx * dvx + dvy * dvy;
-            close[k] = cross * cross <= q[k].reach_term * speed_sq + q[k].margin_term;
-        }
+        for (int k = 0; k < queries; ++k) lines_close(group, q[k], close[k]);
         Mask any = close[0];
         for (int k = 1; k < queries; ++k) any |= close[k];
         if (!any_lane(any)) continue;
-        for (int k = 0; k < queries; ++k) {
-            for (std::uint32_t bits = lane_bits(close[k]); bits != 0; bits &= bits - 1) {
-                near[k]->push_back(static_cast<std::uint32_t>(j) + static_cast<std::uint32_t>(std::countr_zero(bits)));
-            }
-        }
+        for (int k = 0; k < queries; ++k) append_lanes(lane_bits(close[k]), j, *near[k]);
     }
 }
 
