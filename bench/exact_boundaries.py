@@ -11,7 +11,7 @@ import os
 import sys
 import tempfile
 
-from exact_gas import alternate, cases, median, write_gas
+from simcli_runs import alternate, cases, median, write_gas
 
 build = sys.argv[1] if len(sys.argv) > 1 else "build"
 rounds = int(sys.argv[2]) if len(sys.argv) > 2 else 7

@@ -13,7 +13,7 @@ import subprocess
 import sys
 import tempfile
 
-from exact_gas import alternate, cases, median, write_gas
+from simcli_runs import alternate, cases, median, write_gas
 
 arguments = [a for a in sys.argv[1:] if a != "--busy"]
 busy = "--busy" in sys.argv[1:]

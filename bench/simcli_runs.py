@@ -1,6 +1,6 @@
-"""What the exact engine's comparisons on the gas share (exact_boundaries.py,
-exact_builds.py): the scene files, simcli's step time, and two ways of
-running alternating run by run, the order flipping every round."""
+"""What the comparison scripts share (exact_boundaries.py, exact_builds.py,
+stepped_builds.py): simcli's step time, two commands run alternately, the
+order flipping every round, and the exact engine's gas scenes."""
 import os
 import re
 import statistics
@@ -45,3 +45,9 @@ def alternate(commands, rounds):
 
 def median(values):
     return statistics.median(values)
+
+
+def quartiles(values):
+    """The lower and upper quartiles."""
+    cuts = statistics.quantiles(values, n=4)
+    return cuts[0], cuts[2]
