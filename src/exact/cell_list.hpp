@@ -1,10 +1,14 @@
 #pragma once
-// A uniform grid of cells, each a linked list of the particles in it (see
-// bucket_lists.hpp), so that a particle moves between cells in O(1). Cells are at least a
-// diameter wide: two disks in contact are in the same or adjacent cells.
+// A uniform grid of cells and the particles in each, so that a particle
+// moves between cells in O(1). Cells are at least a diameter wide: two disks
+// in contact are in the same or adjacent cells. The members are kept one of
+// two ways, chosen once: each cell a linked list through the particles
+// (bucket_lists.hpp), or each cell's first members in a record of its own
+// (cell_records.hpp), for states far larger than the caches.
 
 #include "core/uniform_grid.hpp"
 #include "exact/bucket_lists.hpp"
+#include "exact/cell_records.hpp"
 
 #include <algorithm>
 #include <cstdint>
@@ -13,60 +17,139 @@ namespace particlesim {
 
 class CellList {
 public:
-    CellList(const UniformGrid& grid, std::size_t particle_count)
-        : grid_(grid), members_(grid.cell_count(), particle_count) {}
+    // The way not chosen stays empty.
+    CellList(const UniformGrid& grid, std::size_t particle_count, bool in_records)
+        : grid_(grid),
+          in_records_(in_records),
+          members_(in_records ? 0 : grid.cell_count(), in_records ? 0 : particle_count),
+          records_(in_records ? grid.cell_count() : 0, in_records ? particle_count : 0) {}
 
     [[nodiscard]] const UniformGrid& grid() const { return grid_; }
-    [[nodiscard]] std::uint32_t cell_of_particle(std::uint32_t particle) const { return members_.bucket_of(particle); }
+    [[nodiscard]] bool in_records() const { return in_records_; }
+    [[nodiscard]] std::uint32_t cell_of_particle(std::uint32_t particle) const {
+        return in_records_ ? records_.bucket_of(particle) : members_.bucket_of(particle);
+    }
 
     // For prefetching, the 3 x 3 cells around `cell`, as three runs of
     // three cell indices, without divisions: at the grid's edges a run may
     // end in the next row or start in the last (a wasted prefetch), but
     // never leaves the grid. Needs 2 x 2 cells or more.
-    void prefetch_heads_around(std::uint32_t cell) const {
+    void prefetch_cells_around(std::uint32_t cell) const {
         for_each_run_around(cell, [&](std::uint32_t start) {
-            members_.prefetch_head(start);
-            members_.prefetch_head(start + 2);
+            for (const std::uint32_t c : {start, start + 2}) {
+                if (in_records_) {
+                    records_.prefetch_record(c);
+                } else {
+                    members_.prefetch_head(c);
+                }
+            }
         });
     }
-    // visit(first) for the first member of each of those cells (none if empty).
+    // visit(member) for the members those cells name without a further read
+    // (their records' slots, or their lists' first members; `none` where
+    // there is none); a linked list's next link is fetched too.
     template <typename Visit>
-    void for_each_first_member_around(std::uint32_t cell, Visit&& visit) const {
+    void for_each_named_member_around(std::uint32_t cell, Visit&& visit) const {
         for_each_run_around(cell, [&](std::uint32_t start) {
-            for (std::uint32_t c = start; c < start + 3; ++c) visit(members_.first(c));
+            for (std::uint32_t c = start; c < start + 3; ++c) {
+                if (in_records_) {
+                    records_.for_each_slot(c, visit);
+                } else {
+                    const std::uint32_t first = members_.first(c);
+                    visit(first);
+                    members_.prefetch_links(first);
+                }
+            }
         });
     }
-    void prefetch_links(std::uint32_t particle) const { members_.prefetch_links(particle); }
+    // Where the particle's membership is kept.
+    void prefetch_place(std::uint32_t particle) const {
+        if (in_records_) {
+            records_.prefetch_place(particle);
+        } else {
+            members_.prefetch_links(particle);
+        }
+    }
 
-    void insert(std::uint32_t particle, std::uint32_t cell) { members_.insert(particle, cell); }
-    void move(std::uint32_t particle, std::uint32_t cell) { members_.move(particle, cell); }
+    void insert(std::uint32_t particle, std::uint32_t cell) {
+        if (in_records_) {
+            records_.insert(particle, cell);
+        } else {
+            members_.insert(particle, cell);
+        }
+    }
+    void move(std::uint32_t particle, std::uint32_t cell) {
+        if (in_records_) {
+            move_in_records(particle, cell);
+        } else {
+            members_.move(particle, cell);
+        }
+    }
+
+    // The members' storage, either way.
+    [[nodiscard]] const BucketLists& lists() const { return members_; }
+    [[nodiscard]] const CellRecords& records() const { return records_; }
+
+    // body(members) with the members' storage (BucketLists or CellRecords,
+    // both with for_each_in(cell, visit)): a search of several cells
+    // chooses once, not at every cell (at every cell it cost the gas of 1e4
+    // disks 3 %).
+    template <typename Body>
+    void with_members(Body&& body) const {
+        if (in_records_) {
+            body(records_);
+        } else {
+            body(members_);
+        }
+    }
+    // visit(j) for every particle in the cell at (column, row) of `members`
+    // (this grid's storage, as with_members() gives it), if the cell exists.
+    template <typename Members, typename Visit>
+    void for_each_in(const Members& members, int column, int row, Visit&& visit) const {
+        // One test for all four edges (a negative index wraps to a large one).
+        const auto side = static_cast<unsigned>(grid_.per_side());
+        if ((static_cast<unsigned>(column) >= side) | (static_cast<unsigned>(row) >= side)) return;
+        members.for_each_in(grid_.cell_at(column, row), visit);
+    }
+    // The same in a periodic grid: indices one beyond an edge wrap around.
+    template <typename Members, typename Visit>
+    void for_each_in_wrapped(const Members& members, int column, int row, Visit&& visit) const {
+        const int side = grid_.per_side();
+        column += column < 0 ? side : column >= side ? -side : 0;
+        row += row < 0 ? side : row >= side ? -side : 0;
+        members.for_each_in(grid_.cell_at(column, row), visit);
+    }
 
     // visit(j) for every particle in the cell at (column, row), if it exists.
     template <typename Visit>
     void for_each_in(int column, int row, Visit&& visit) const {
-        // One test for all four edges (a negative index wraps to a large one).
-        const auto side = static_cast<unsigned>(grid_.per_side());
-        if ((static_cast<unsigned>(column) >= side) | (static_cast<unsigned>(row) >= side)) return;
-        members_.for_each_in(grid_.cell_at(column, row), visit);
-    }
-
-    // The same in a periodic grid: indices one beyond an edge wrap around.
-    template <typename Visit>
-    void for_each_in_wrapped(int column, int row, Visit&& visit) const {
-        const int side = grid_.per_side();
-        column += column < 0 ? side : column >= side ? -side : 0;
-        row += row < 0 ? side : row >= side ? -side : 0;
-        members_.for_each_in(grid_.cell_at(column, row), visit);
+        with_members([&](const auto& members) { for_each_in(members, column, row, visit); });
     }
 
     // visit(j) for every particle, cell by cell: neighbours come close
     // together, so their data is still in the caches when it is read again.
     template <typename Visit>
     void for_each_by_cell(Visit&& visit) const {
-        for (std::uint32_t cell = 0; cell < grid_.cell_count(); ++cell) members_.for_each_in(cell, visit);
+        for (std::uint32_t cell = 0; cell < grid_.cell_count(); ++cell) for_each_in(cell, visit);
+    }
+
+    // visit(j) for every particle in `cell`.
+    template <typename Visit>
+    void for_each_in(std::uint32_t cell, Visit&& visit) const {
+        if (in_records_) {
+            records_.for_each_in(cell, visit);
+        } else {
+            members_.for_each_in(cell, visit);
+        }
     }
 
 private:
+    // Out of line: the lists' move, inlined into the event loop, then
+    // compiles as it would alone.
+    [[gnu::noinline]] void move_in_records(std::uint32_t particle, std::uint32_t cell) {
+        records_.move(particle, cell);
+    }
+
     template <typename Visit>
     void for_each_run_around(std::uint32_t cell, Visit&& visit) const {
         const auto side = static_cast<std::int64_t>(grid_.per_side());
@@ -77,7 +160,9 @@ private:
     }
 
     UniformGrid grid_;
-    BucketLists members_;  // particles by cell
+    bool in_records_;
+    BucketLists members_;  // particles by cell, as lists
+    CellRecords records_;  // or in records
 };
 
 }  // namespace particlesim
