@@ -12,6 +12,7 @@
 
 #include <algorithm>
 #include <cstdint>
+#include <type_traits>
 
 namespace particlesim {
 
@@ -34,42 +35,25 @@ public:
     // three cell indices, without divisions: at the grid's edges a run may
     // end in the next row or start in the last (a wasted prefetch), but
     // never leaves the grid. Needs 2 x 2 cells or more.
-    void prefetch_cells_around(std::uint32_t cell) const {
+    template <typename Members>
+    void prefetch_cells_around(const Members& members, std::uint32_t cell) const {
         for_each_run_around(cell, [&](std::uint32_t start) {
-            for (const std::uint32_t c : {start, start + 2}) {
-                if (in_records_) {
-                    records_.prefetch_record(c);
-                } else {
-                    members_.prefetch_head(c);
-                }
-            }
+            prefetch_cell(members, start);
+            prefetch_cell(members, start + 2);
         });
     }
     // visit(member) for the members those cells name without a further read
-    // (their records' slots, or their lists' first members; `none` where
-    // there is none); a linked list's next link is fetched too.
-    template <typename Visit>
-    void for_each_named_member_around(std::uint32_t cell, Visit&& visit) const {
+    // (their lists' first members, or the members in their records; `none`
+    // where there is none); a list's next link is fetched too.
+    template <typename Members, typename Visit>
+    void for_each_named_member_around(const Members& members, std::uint32_t cell, Visit&& visit) const {
         for_each_run_around(cell, [&](std::uint32_t start) {
-            for (std::uint32_t c = start; c < start + 3; ++c) {
-                if (in_records_) {
-                    records_.for_each_slot(c, visit);
-                } else {
-                    const std::uint32_t first = members_.first(c);
-                    visit(first);
-                    members_.prefetch_links(first);
-                }
-            }
+            for (std::uint32_t c = start; c < start + 3; ++c) visit_named_members(members, c, visit);
         });
     }
     // Where the particle's membership is kept.
-    void prefetch_place(std::uint32_t particle) const {
-        if (in_records_) {
-            records_.prefetch_place(particle);
-        } else {
-            members_.prefetch_links(particle);
-        }
-    }
+    static void prefetch_place(const BucketLists& lists, std::uint32_t particle) { lists.prefetch_links(particle); }
+    static void prefetch_place(const CellRecords& records, std::uint32_t particle) { records.prefetch_place(particle); }
 
     void insert(std::uint32_t particle, std::uint32_t cell) {
         if (in_records_) {
@@ -78,17 +62,25 @@ public:
             members_.insert(particle, cell);
         }
     }
+
+    // The members' storage, BucketLists or CellRecords (the one chosen:
+    // in_records()), for code compiled for each.
+    template <typename Members>
+    [[nodiscard]] const Members& storage() const {
+        if constexpr (std::is_same_v<Members, CellRecords>) {
+            return records_;
+        } else {
+            return members_;
+        }
+    }
+    template <typename Members>
     void move(std::uint32_t particle, std::uint32_t cell) {
-        if (in_records_) {
-            move_in_records(particle, cell);
+        if constexpr (std::is_same_v<Members, CellRecords>) {
+            records_.move(particle, cell);
         } else {
             members_.move(particle, cell);
         }
     }
-
-    // The members' storage, either way.
-    [[nodiscard]] const BucketLists& lists() const { return members_; }
-    [[nodiscard]] const CellRecords& records() const { return records_; }
 
     // body(members) with the members' storage (BucketLists or CellRecords,
     // both with for_each_in(cell, visit)): a search of several cells
@@ -144,10 +136,17 @@ public:
     }
 
 private:
-    // Out of line: the lists' move, inlined into the event loop, then
-    // compiles as it would alone.
-    [[gnu::noinline]] void move_in_records(std::uint32_t particle, std::uint32_t cell) {
-        records_.move(particle, cell);
+    static void prefetch_cell(const BucketLists& lists, std::uint32_t cell) { lists.prefetch_head(cell); }
+    static void prefetch_cell(const CellRecords& records, std::uint32_t cell) { records.prefetch_record(cell); }
+    template <typename Visit>
+    static void visit_named_members(const BucketLists& lists, std::uint32_t cell, Visit&& visit) {
+        const std::uint32_t first = lists.first(cell);
+        visit(first);
+        lists.prefetch_links(first);
+    }
+    template <typename Visit>
+    static void visit_named_members(const CellRecords& records, std::uint32_t cell, Visit&& visit) {
+        records.for_each_slot(cell, visit);
     }
 
     template <typename Visit>

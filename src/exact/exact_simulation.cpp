@@ -174,8 +174,7 @@ public:
         // the caches instead of memory.
         for (std::uint32_t i = 0; i < count(); ++i) predict_wall(i);
         cells_.for_each_by_cell([&](std::uint32_t i) {
-            predict_crossing(i);
-            predict_pairs(i);
+            predict_crossing_and_pairs(i);
             reschedule(i);
         });
     }
@@ -278,9 +277,9 @@ public:
         last_step_ = {};
         several_events_ = 0;
         if (look_ahead_) {
-            run_events(ladder_queue_, end);
+            run_events_with(ladder_queue_, end);
         } else {
-            run_events(linked_queue_, end);
+            run_events_with(linked_queue_, end);
         }
         now_ = end;
         ++steps_done_;
@@ -288,9 +287,19 @@ public:
         totals_ += last_step_;
     }
 
-    // The step's events, from the queue chosen at the start (compiled for
-    // each, so that neither pays for the other's choice at every event).
     template <typename Queue>
+    void run_events_with(Queue& queue, double end) {
+        if (cells_.in_records()) {
+            run_events<CellRecords>(queue, end);
+        } else {
+            run_events<BucketLists>(queue, end);
+        }
+    }
+
+    // The step's events, from the queue and with the cells' storage chosen
+    // at the start (compiled for each, so that none pays for the others at
+    // every event).
+    template <typename Members, typename Queue>
     void run_events(Queue& queue, double end) {
         std::uint64_t events = 0;
         while (!queue.empty() && queue.earliest().time <= end) {
@@ -298,10 +307,10 @@ public:
                 throw TooManyEvents(steps_done_ + 1, events - 1, predicted_events_);
             ++events_processed_;
             const std::uint32_t owner = queue.earliest_owner();
-            if constexpr (std::is_same_v<Queue, LadderCalendar>) prefetch_coming_events();
+            if constexpr (std::is_same_v<Queue, LadderCalendar>) prefetch_coming_events<Members>();
             const Event event = queue.earliest();
             if (event.kind == EventKind::pair && pair_partner_moved(owner)) {
-                predict_pairs(owner);
+                predict_pairs<Members>(owner);
                 reschedule(queue, owner);
                 continue;
             }
@@ -311,9 +320,9 @@ public:
             }
             now_ = event.time;
             switch (event.kind) {
-            case EventKind::wall: collide_with_wall(queue, event.i); break;
-            case EventKind::pair: collide_pair(queue, event.i, event.j); break;
-            case EventKind::cell_crossing: cross_cell(queue, event.i, event.j); break;
+            case EventKind::wall: collide_with_wall<Members>(queue, event.i); break;
+            case EventKind::pair: collide_pair<Members>(queue, event.i, event.j); break;
+            case EventKind::cell_crossing: cross_cell<Members>(queue, event.i, event.j); break;
             }
         }
     }
@@ -442,38 +451,43 @@ private:
     // with N. The queue already knows the next events, so each
     // event fetches, in four stages, what those a few buckets behind it will
     // read: their queue entries; their particles; partners and the
-    // heads of the cells they will search; the first member of each of those
-    // cells. Each stage reads only what the stage before fetched. Prefetches
+    // heads (or records) of the cells they will search; the members those
+    // name. Each stage reads only what the stage before fetched. Prefetches
     // are hints: a queue that changes meanwhile costs a wasted fetch, never a
     // different event.
+    template <typename Members>
     void prefetch_coming_events() {
+        const Members& members = cells_.storage<Members>();
         ladder_queue_.for_each_coming(look_entries_, [&](std::uint32_t o) { ladder_queue_.prefetch_entry(o); });
-        ladder_queue_.for_each_coming(look_particles_, [&](std::uint32_t o) { prefetch_particle(o); });
+        ladder_queue_.for_each_coming(look_particles_, [&](std::uint32_t o) { prefetch_particle(members, o); });
         ladder_queue_.for_each_coming(look_heads_, [&](std::uint32_t o) {
             const Event& event = ladder_queue_.entry(o);
             if (event.kind == EventKind::pair) {
                 const std::uint32_t partner = event.i ^ event.j ^ o;  // o is one of the two
                 ladder_queue_.prefetch_entry(partner);
-                prefetch_particle(partner);
+                prefetch_particle(members, partner);
             }
-            cells_.prefetch_cells_around(searched_cell(event, o));
+            cells_.prefetch_cells_around(members, searched_cell(members, event, o));
         });
         ladder_queue_.for_each_coming(look_members_, [&](std::uint32_t o) {
-            cells_.for_each_named_member_around(searched_cell(ladder_queue_.entry(o), o), [&](std::uint32_t j) {
+            const std::uint32_t cell = searched_cell(members, ladder_queue_.entry(o), o);
+            cells_.for_each_named_member_around(members, cell, [&](std::uint32_t j) {
                 prefetch(&bodies_[std::min(j, count() - 1)]);  // no branch: `none` fetches the last
             });
         });
     }
 
-    void prefetch_particle(std::uint32_t i) const {
+    template <typename Members>
+    void prefetch_particle(const Members& members, std::uint32_t i) const {
         prefetch(&bodies_[i]);
         prefetch(&plans_[i]);
-        cells_.prefetch_place(i);
+        CellList::prefetch_place(members, i);
     }
 
     // The cell around which the owner's event will search for partners.
-    std::uint32_t searched_cell(const Event& event, std::uint32_t owner) const {
-        return event.kind == EventKind::cell_crossing ? event.j : cells_.cell_of_particle(owner);
+    template <typename Members>
+    std::uint32_t searched_cell(const Members& members, const Event& event, std::uint32_t owner) const {
+        return event.kind == EventKind::cell_crossing ? event.j : members.bucket_of(owner);
     }
 
     // Rounding may put a prediction a hair before the present; time must
@@ -499,8 +513,9 @@ private:
     }
 
     // The next time the particle leaves its cell, and the cell it enters.
+    template <typename Members>
     void predict_crossing(std::uint32_t i) {
-        const std::uint32_t cell = cells_.cell_of_particle(i);
+        const std::uint32_t cell = cells_.storage<Members>().bucket_of(i);
         predict_crossing(i, cells_.grid().column(cell), cells_.grid().row(cell));
     }
 
@@ -622,24 +637,23 @@ private:
         if (waiting != BucketLists::none) consider_pair(i, waiting);
     }
 
-    // The pairs of i and its neighbours in the cells, `members` being their
-    // storage.
-    template <typename Members>
-    void predict_pairs_in(std::uint32_t i, const Members& members) {
-        consider_pairs(i, [&](auto&& visit) { for_each_neighbour(cells_, members, i, periodic_, visit); });
+    // Outside the event loop, with whichever storage the cells have.
+    void predict_crossing_and_pairs(std::uint32_t i) {
+        if (cells_.in_records()) {
+            predict_crossing<CellRecords>(i);
+            predict_pairs<CellRecords>(i);
+        } else {
+            predict_crossing<BucketLists>(i);
+            predict_pairs<BucketLists>(i);
+        }
     }
-    // Out of line, so that the lists' loop, inlined, compiles as it would
-    // alone (inlined too, the two loops cost the gas of 1e4 disks 3 %).
-    [[gnu::noinline]] void predict_pairs_in_records(std::uint32_t i) { predict_pairs_in(i, cells_.records()); }
 
+    template <typename Members>
     void predict_pairs(std::uint32_t i) {
         plans_[i].pair = {};
         if (!by_lines()) {
-            if (cells_.in_records()) {
-                predict_pairs_in_records(i);
-            } else {
-                predict_pairs_in(i, cells_.lists());
-            }
+            consider_pairs(
+                i, [&](auto&& visit) { for_each_neighbour(cells_, cells_.storage<Members>(), i, periodic_, visit); });
             return;
         }
         near_.clear();
@@ -701,7 +715,7 @@ private:
         }
     }
 
-    template <typename Queue>
+    template <typename Members, typename Queue>
     void collide_with_wall(Queue& queue, std::uint32_t i) {
         Particle& p = bodies_[i].particle;
         // The same start state as the prediction, so the same hit.
@@ -714,12 +728,12 @@ private:
         ++last_step_.wall_collisions;
         note_event(i);
         predict_wall(i);
-        predict_crossing(i);
-        predict_pairs(i);
+        predict_crossing<Members>(i);
+        predict_pairs<Members>(i);
         reschedule(queue, i);
     }
 
-    template <typename Queue>
+    template <typename Members, typename Queue>
     void collide_pair(Queue& queue, std::uint32_t i, std::uint32_t j) {
         Particle& a = bodies_[i].particle;
         Particle& b = bodies_[j].particle;
@@ -760,8 +774,8 @@ private:
         predict_wall(i);
         predict_wall(j);
         for (const std::uint32_t k : {i, j}) {
-            predict_crossing(k);
-            predict_pairs(k);
+            predict_crossing<Members>(k);
+            predict_pairs<Members>(k);
             reschedule(queue, k);
         }
     }
@@ -773,7 +787,8 @@ private:
     // consider_pair(i, j) for the particles of the run's cells, `members`
     // being their storage; in a periodic box the run may wrap around.
     template <typename Members>
-    void consider_run(std::uint32_t i, const CellRun& run, const Members& members) {
+    void consider_run(std::uint32_t i, const CellRun& run) {
+        const Members& members = cells_.storage<Members>();
         consider_pairs(i, [&](auto&& visit) {
             if (periodic_) {
                 for (int k = 0; k < 3; ++k) {
@@ -786,20 +801,16 @@ private:
             }
         });
     }
-    // Out of line, as predict_pairs_in_records().
-    [[gnu::noinline]] void consider_run_in_records(std::uint32_t i, const CellRun& run) {
-        consider_run(i, run, cells_.records());
-    }
 
     // Only the cells that have just become neighbours need new predictions.
-    template <typename Queue>
+    template <typename Members, typename Queue>
     void cross_cell(Queue& queue, std::uint32_t i, std::uint32_t cell) {
         if (periodic_) {
-            cross_cell_periodic(queue, i, cell);
+            cross_cell_periodic<Members>(queue, i, cell);
             return;
         }
-        const std::uint32_t old_cell = cells_.cell_of_particle(i);
-        cells_.move(i, cell);
+        const std::uint32_t old_cell = cells_.storage<Members>().bucket_of(i);
+        cells_.move<Members>(i, cell);
         const UniformGrid& grid = cells_.grid();
         const int column = grid.column(cell);
         const int row = grid.row(cell);
@@ -812,12 +823,7 @@ private:
         const int across_x = 1 - step_x * step_x;  // 1 when the step is along y
         const int step_y = across_x * (2 * static_cast<int>(cell > old_cell) - 1);
         const int across_y = 1 - across_x;
-        const CellRun entered{column + step_x - across_x, row + step_y - across_y, across_x, across_y};
-        if (cells_.in_records()) {
-            consider_run_in_records(i, entered);
-        } else {
-            consider_run(i, entered, cells_.lists());
-        }
+        consider_run<Members>(i, {column + step_x - across_x, row + step_y - across_y, across_x, across_y});
         predict_crossing(i, column, row);
         reschedule(queue, i);
     }
@@ -826,13 +832,13 @@ private:
     // edge: the particle's path has then crossed one more box (Plans::images). Its
     // stored position stays: the physics never depends on when crossings
     // happen, so every cell count gives the same events.
-    template <typename Queue>
+    template <typename Members, typename Queue>
     void cross_cell_periodic(Queue& queue, std::uint32_t i, std::uint32_t cell) {
         const UniformGrid& grid = cells_.grid();
-        const std::uint32_t old_cell = cells_.cell_of_particle(i);
+        const std::uint32_t old_cell = cells_.storage<Members>().bucket_of(i);
         const int old_column = grid.column(old_cell);
         const int old_row = grid.row(old_cell);
-        cells_.move(i, cell);
+        cells_.move<Members>(i, cell);
         const int column = grid.column(cell);
         const int row = grid.row(cell);
         const auto step_of = [](int from, int to) {
@@ -847,12 +853,7 @@ private:
         if (row - old_row < -1) ++plans_[i].images[1];
         const int across_x = step_x == 0 ? 1 : 0;
         const int across_y = 1 - across_x;
-        const CellRun entered{column + step_x - across_x, row + step_y - across_y, across_x, across_y};
-        if (cells_.in_records()) {
-            consider_run_in_records(i, entered);
-        } else {
-            consider_run(i, entered, cells_.lists());
-        }
+        consider_run<Members>(i, {column + step_x - across_x, row + step_y - across_y, across_x, across_y});
         predict_crossing(i, column, row);
         reschedule(queue, i);
     }

@@ -55,7 +55,7 @@ inline constexpr std::uint32_t cell_records_from = 131072;
 // 1e4 disks took 1.18 times as long with both).
 inline constexpr std::uint32_t look_ahead_from = 32768;
 // The four stages' distances in calendar buckets: entries and links, then
-// particles, then partners and cell heads, then the cells' first members
+// particles, then partners and cell heads or records, then the members they name
 // ((16, 12, 8, 4) to (4, 3, 2, 1) measured within noise of one another).
 inline constexpr std::uint32_t look_entries_buckets = 8;
 inline constexpr std::uint32_t look_particles_buckets = 6;
