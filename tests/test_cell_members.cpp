@@ -67,7 +67,11 @@ void matches_reference(int side, std::uint32_t particles, bool in_records, std::
         from.erase(std::find(from.begin(), from.end(), i));
         reference[to].push_back(i);
         cell_of[i] = to;
-        cells.move(i, to);
+        if (in_records) {
+            cells.move<particlesim::CellRecords>(i, to);
+        } else {
+            cells.move<particlesim::BucketLists>(i, to);
+        }
         if (move % 50 == 0) compare_all();
     }
     compare_all();

@@ -43,7 +43,7 @@ inline constexpr std::uint32_t lines_up_to = 20000;  // particles: the first pre
 // 270 bytes a particle) outgrows the last-level cache. Below, the records'
 // larger footprint cost more than the links saved (the gas at 1e4 and 1e5
 // disks took 1.05 to 1.08 times as long with them; at 2.5e5 0.93, at 1e6
-// 0.81 to 0.85).
+// 0.81 to 0.87).
 inline constexpr std::uint32_t cell_records_from = 131072;
 
 // --- The look ahead along the queue
