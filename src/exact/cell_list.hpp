@@ -22,13 +22,13 @@ public:
     CellList(const UniformGrid& grid, std::size_t particle_count, bool in_records)
         : grid_(grid),
           in_records_(in_records),
-          members_(in_records ? 0 : grid.cell_count(), in_records ? 0 : particle_count),
+          lists_(in_records ? 0 : grid.cell_count(), in_records ? 0 : particle_count),
           records_(in_records ? grid.cell_count() : 0, in_records ? particle_count : 0) {}
 
     [[nodiscard]] const UniformGrid& grid() const { return grid_; }
     [[nodiscard]] bool in_records() const { return in_records_; }
     [[nodiscard]] std::uint32_t cell_of_particle(std::uint32_t particle) const {
-        return in_records_ ? records_.bucket_of(particle) : members_.bucket_of(particle);
+        return in_records_ ? records_.bucket_of(particle) : lists_.bucket_of(particle);
     }
 
     // For prefetching, the 3 x 3 cells around `cell`, as three runs of
@@ -59,7 +59,7 @@ public:
         if (in_records_) {
             records_.insert(particle, cell);
         } else {
-            members_.insert(particle, cell);
+            lists_.insert(particle, cell);
         }
     }
 
@@ -70,7 +70,7 @@ public:
         if constexpr (std::is_same_v<Members, CellRecords>) {
             return records_;
         } else {
-            return members_;
+            return lists_;
         }
     }
     template <typename Members>
@@ -78,20 +78,19 @@ public:
         if constexpr (std::is_same_v<Members, CellRecords>) {
             records_.move(particle, cell);
         } else {
-            members_.move(particle, cell);
+            lists_.move(particle, cell);
         }
     }
 
     // body(members) with the members' storage (BucketLists or CellRecords,
-    // both with for_each_in(cell, visit)): a search of several cells
-    // chooses once, not at every cell (at every cell it cost the gas of 1e4
-    // disks 3 %).
+    // both with for_each_in(cell, visit)), for code outside the event loop:
+    // a search of several cells chooses once, not at every cell.
     template <typename Body>
     void with_members(Body&& body) const {
         if (in_records_) {
             body(records_);
         } else {
-            body(members_);
+            body(lists_);
         }
     }
     // visit(j) for every particle in the cell at (column, row) of `members`
@@ -131,7 +130,7 @@ public:
         if (in_records_) {
             records_.for_each_in(cell, visit);
         } else {
-            members_.for_each_in(cell, visit);
+            lists_.for_each_in(cell, visit);
         }
     }
 
@@ -160,7 +159,7 @@ private:
 
     UniformGrid grid_;
     bool in_records_;
-    BucketLists members_;  // particles by cell, as lists
+    BucketLists lists_;    // particles by cell, as lists
     CellRecords records_;  // or in records
 };
 

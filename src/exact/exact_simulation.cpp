@@ -784,8 +784,8 @@ private:
     struct CellRun {
         int column, row, step_x, step_y;
     };
-    // consider_pair(i, j) for the particles of the run's cells, `members`
-    // being their storage; in a periodic box the run may wrap around.
+    // consider_pair(i, j) for the particles of the run's cells, kept in the
+    // storage `Members`; in a periodic box the run may wrap around.
     template <typename Members>
     void consider_run(std::uint32_t i, const CellRun& run) {
         const Members& members = cells_.storage<Members>();
