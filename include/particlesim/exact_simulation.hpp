@@ -73,12 +73,6 @@ struct ExactOptions {
     // lie in [0, L) and the box must be at least 5 cells of a contact
     // distance wide (L >= 10 r, a little more); cells_per_side >= 5.
     Boundary boundary = Boundary::walls;
-    // Whether each neighbour cell keeps its first members in a record of its
-    // own instead of a linked list through the particles: a search then
-    // reads no chain of links, much faster where the state is far larger
-    // than the caches, slower where it fits (docs/benchmarks.md). Empty: on
-    // from 131 072 particles. Every value gives the same events.
-    std::optional<bool> cell_records = std::nullopt;
 };
 
 class ExactSimulation {

@@ -2,8 +2,8 @@
 // Items 0 .. n-1, each in one of a fixed number of buckets, every bucket a
 // doubly linked list threaded through per-item records: O(1) insert, remove
 // and move, no allocation after construction. The exact engine's cell lists
-// (particles by cell, in states that fit the caches: else cell_records.hpp)
-// and its linked calendar (particles by time bucket) are both this.
+// (particles by cell) and its linked calendar (particles by time bucket) are
+// both this.
 
 #include "core/huge_page_allocator.hpp"
 #include "core/prefetch.hpp"

@@ -174,7 +174,8 @@ public:
         // the caches instead of memory.
         for (std::uint32_t i = 0; i < count(); ++i) predict_wall(i);
         cells_.for_each_by_cell([&](std::uint32_t i) {
-            predict_crossing_and_pairs(i);
+            predict_crossing(i);
+            predict_pairs(i);
             reschedule(i);
         });
     }
@@ -277,9 +278,9 @@ public:
         last_step_ = {};
         several_events_ = 0;
         if (look_ahead_) {
-            run_events_with(ladder_queue_, end);
+            run_events(ladder_queue_, end);
         } else {
-            run_events_with(linked_queue_, end);
+            run_events(linked_queue_, end);
         }
         now_ = end;
         ++steps_done_;
@@ -287,19 +288,9 @@ public:
         totals_ += last_step_;
     }
 
+    // The step's events, from the queue chosen at the start (compiled for
+    // each, so that neither pays for the other's choice at every event).
     template <typename Queue>
-    void run_events_with(Queue& queue, double end) {
-        if (cells_.in_records()) {
-            run_events<CellRecords>(queue, end);
-        } else {
-            run_events<BucketLists>(queue, end);
-        }
-    }
-
-    // The step's events, from the queue and with the cells' storage chosen
-    // at the start (compiled for each, so that none pays for the others at
-    // every event).
-    template <typename Members, typename Queue>
     void run_events(Queue& queue, double end) {
         std::uint64_t events = 0;
         while (!queue.empty() && queue.earliest().time <= end) {
@@ -307,10 +298,10 @@ public:
                 throw TooManyEvents(steps_done_ + 1, events - 1, predicted_events_);
             ++events_processed_;
             const std::uint32_t owner = queue.earliest_owner();
-            if constexpr (std::is_same_v<Queue, LadderCalendar>) prefetch_coming_events<Members>();
+            if constexpr (std::is_same_v<Queue, LadderCalendar>) prefetch_coming_events();
             const Event event = queue.earliest();
             if (event.kind == EventKind::pair && pair_partner_moved(owner)) {
-                predict_pairs<Members>(owner);
+                predict_pairs(owner);
                 reschedule(queue, owner);
                 continue;
             }
@@ -320,9 +311,9 @@ public:
             }
             now_ = event.time;
             switch (event.kind) {
-            case EventKind::wall: collide_with_wall<Members>(queue, event.i); break;
-            case EventKind::pair: collide_pair<Members>(queue, event.i, event.j); break;
-            case EventKind::cell_crossing: cross_cell<Members>(queue, event.i, event.j); break;
+            case EventKind::wall: collide_with_wall(queue, event.i); break;
+            case EventKind::pair: collide_pair(queue, event.i, event.j); break;
+            case EventKind::cell_crossing: cross_cell(queue, event.i, event.j); break;
             }
         }
     }
@@ -346,8 +337,7 @@ private:
           box_(Box::of(world)),
           periodic_(options.boundary == Boundary::periodic),
           bodies_(particles.begin(), particles.end()),
-          cells_(neighbour_grid(world, particles.size(), options), particles.size(),
-                 options.cell_records.value_or(particles.size() >= exact_tuning::cell_records_from)),
+          cells_(neighbour_grid(world, particles.size(), options), particles.size()),
           plans_(particles.size()),
           snapshot_(std::move(particles)),
           reach_(contact_reach(box_)),
@@ -375,30 +365,28 @@ private:
         return bodies_[i].particle.position + bodies_[i].particle.velocity * (time - bodies_[i].stamp);
     }
 
-    // visit(j) for every j != i in the 3 x 3 cells around i's, `members`
-    // being the cells' storage (CellList::with_members()).
-    template <typename Members, typename Visit>
-    static void for_each_neighbour(const CellList& cells, const Members& members, std::uint32_t i, bool periodic,
-                                   Visit&& visit) {
+    template <typename Visit>
+    static void for_each_neighbour(const CellList& cells, std::uint32_t i, bool periodic, Visit&& visit) {
         const std::uint32_t cell = cells.cell_of_particle(i);
         const int column = cells.grid().column(cell);
         const int row = cells.grid().row(cell);
-        const auto others = [&](std::uint32_t j) {
-            if (j != i) visit(j);
-        };
-        if (periodic) {
-            for (int dy = -1; dy <= 1; ++dy) {
-                for (int dx = -1; dx <= 1; ++dx) cells.for_each_in_wrapped(members, column + dx, row + dy, others);
-            }
-        } else {
-            for (int dy = -1; dy <= 1; ++dy) {
-                for (int dx = -1; dx <= 1; ++dx) cells.for_each_in(members, column + dx, row + dy, others);
+        for (int dy = -1; dy <= 1; ++dy) {
+            for (int dx = -1; dx <= 1; ++dx) {
+                const auto others = [&](std::uint32_t j) {
+                    if (j != i) visit(j);
+                };
+                if (periodic) {
+                    cells.for_each_in_wrapped(column + dx, row + dy, others);
+                } else {
+                    cells.for_each_in(column + dx, row + dy, others);
+                }
             }
         }
     }
+
     template <typename Visit>
-    static void for_each_neighbour(const CellList& cells, std::uint32_t i, bool periodic, Visit&& visit) {
-        cells.with_members([&](const auto& members) { for_each_neighbour(cells, members, i, periodic, visit); });
+    void for_each_neighbour(std::uint32_t i, Visit&& visit) const {
+        for_each_neighbour(cells_, i, periodic_, visit);
     }
 
     // In a periodic box, a separation made the nearest image's. A particle's
@@ -421,7 +409,7 @@ private:
             reject_overlaps(cells_);
             return;
         }
-        CellList cells(UniformGrid(world_.box_size, cells_per_side_for(world_, count())), count(), false);
+        CellList cells(UniformGrid(world_.box_size, cells_per_side_for(world_, count())), count());
         for (std::uint32_t i = 0; i < count(); ++i) cells.insert(i, cells.grid().cell_of(bodies_[i].particle.position));
         reject_overlaps(cells);
     }
@@ -451,43 +439,40 @@ private:
     // with N. The queue already knows the next events, so each
     // event fetches, in four stages, what those a few buckets behind it will
     // read: their queue entries; their particles; partners and the
-    // heads (or records) of the cells they will search; the members those
-    // name. Each stage reads only what the stage before fetched. Prefetches
+    // heads of the cells they will search; the first member of each of those
+    // cells. Each stage reads only what the stage before fetched. Prefetches
     // are hints: a queue that changes meanwhile costs a wasted fetch, never a
     // different event.
-    template <typename Members>
     void prefetch_coming_events() {
-        const Members& members = cells_.storage<Members>();
         ladder_queue_.for_each_coming(look_entries_, [&](std::uint32_t o) { ladder_queue_.prefetch_entry(o); });
-        ladder_queue_.for_each_coming(look_particles_, [&](std::uint32_t o) { prefetch_particle(members, o); });
+        ladder_queue_.for_each_coming(look_particles_, [&](std::uint32_t o) { prefetch_particle(o); });
         ladder_queue_.for_each_coming(look_heads_, [&](std::uint32_t o) {
             const Event& event = ladder_queue_.entry(o);
             if (event.kind == EventKind::pair) {
                 const std::uint32_t partner = event.i ^ event.j ^ o;  // o is one of the two
                 ladder_queue_.prefetch_entry(partner);
-                prefetch_particle(members, partner);
+                prefetch_particle(partner);
             }
-            cells_.prefetch_cells_around(members, searched_cell(members, event, o));
+            cells_.prefetch_heads_around(searched_cell(event, o));
         });
         ladder_queue_.for_each_coming(look_members_, [&](std::uint32_t o) {
-            const std::uint32_t cell = searched_cell(members, ladder_queue_.entry(o), o);
-            cells_.for_each_named_member_around(members, cell, [&](std::uint32_t j) {
-                prefetch(&bodies_[std::min(j, count() - 1)]);  // no branch: `none` fetches the last
+            cells_.for_each_first_member_around(searched_cell(ladder_queue_.entry(o), o), [&](std::uint32_t first) {
+                const std::uint32_t j = std::min(first, count() - 1);  // no branch: `none` fetches the last
+                prefetch(&bodies_[j]);
+                cells_.prefetch_links(j);
             });
         });
     }
 
-    template <typename Members>
-    void prefetch_particle(const Members& members, std::uint32_t i) const {
+    void prefetch_particle(std::uint32_t i) const {
         prefetch(&bodies_[i]);
         prefetch(&plans_[i]);
-        CellList::prefetch_place(members, i);
+        cells_.prefetch_links(i);
     }
 
     // The cell around which the owner's event will search for partners.
-    template <typename Members>
-    std::uint32_t searched_cell(const Members& members, const Event& event, std::uint32_t owner) const {
-        return event.kind == EventKind::cell_crossing ? event.j : members.bucket_of(owner);
+    std::uint32_t searched_cell(const Event& event, std::uint32_t owner) const {
+        return event.kind == EventKind::cell_crossing ? event.j : cells_.cell_of_particle(owner);
     }
 
     // Rounding may put a prediction a hair before the present; time must
@@ -513,9 +498,8 @@ private:
     }
 
     // The next time the particle leaves its cell, and the cell it enters.
-    template <typename Members>
     void predict_crossing(std::uint32_t i) {
-        const std::uint32_t cell = cells_.storage<Members>().bucket_of(i);
+        const std::uint32_t cell = cells_.cell_of_particle(i);
         predict_crossing(i, cells_.grid().column(cell), cells_.grid().row(cell));
     }
 
@@ -637,23 +621,10 @@ private:
         if (waiting != BucketLists::none) consider_pair(i, waiting);
     }
 
-    // Outside the event loop, with whichever storage the cells have.
-    void predict_crossing_and_pairs(std::uint32_t i) {
-        if (cells_.in_records()) {
-            predict_crossing<CellRecords>(i);
-            predict_pairs<CellRecords>(i);
-        } else {
-            predict_crossing<BucketLists>(i);
-            predict_pairs<BucketLists>(i);
-        }
-    }
-
-    template <typename Members>
     void predict_pairs(std::uint32_t i) {
         plans_[i].pair = {};
         if (!by_lines()) {
-            consider_pairs(
-                i, [&](auto&& visit) { for_each_neighbour(cells_, cells_.storage<Members>(), i, periodic_, visit); });
+            consider_pairs(i, [&](auto&& visit) { for_each_neighbour(i, visit); });
             return;
         }
         near_.clear();
@@ -715,7 +686,7 @@ private:
         }
     }
 
-    template <typename Members, typename Queue>
+    template <typename Queue>
     void collide_with_wall(Queue& queue, std::uint32_t i) {
         Particle& p = bodies_[i].particle;
         // The same start state as the prediction, so the same hit.
@@ -728,12 +699,12 @@ private:
         ++last_step_.wall_collisions;
         note_event(i);
         predict_wall(i);
-        predict_crossing<Members>(i);
-        predict_pairs<Members>(i);
+        predict_crossing(i);
+        predict_pairs(i);
         reschedule(queue, i);
     }
 
-    template <typename Members, typename Queue>
+    template <typename Queue>
     void collide_pair(Queue& queue, std::uint32_t i, std::uint32_t j) {
         Particle& a = bodies_[i].particle;
         Particle& b = bodies_[j].particle;
@@ -774,43 +745,21 @@ private:
         predict_wall(i);
         predict_wall(j);
         for (const std::uint32_t k : {i, j}) {
-            predict_crossing<Members>(k);
-            predict_pairs<Members>(k);
+            predict_crossing(k);
+            predict_pairs(k);
             reschedule(queue, k);
         }
     }
 
-    // Three cells in a row or a column: the first, and the step to the next.
-    struct CellRun {
-        int column, row, step_x, step_y;
-    };
-    // consider_pair(i, j) for the particles of the run's cells, kept in the
-    // storage `Members`; in a periodic box the run may wrap around.
-    template <typename Members>
-    void consider_run(std::uint32_t i, const CellRun& run) {
-        const Members& members = cells_.storage<Members>();
-        consider_pairs(i, [&](auto&& visit) {
-            if (periodic_) {
-                for (int k = 0; k < 3; ++k) {
-                    cells_.for_each_in_wrapped(members, run.column + run.step_x * k, run.row + run.step_y * k, visit);
-                }
-            } else {
-                for (int k = 0; k < 3; ++k) {
-                    cells_.for_each_in(members, run.column + run.step_x * k, run.row + run.step_y * k, visit);
-                }
-            }
-        });
-    }
-
     // Only the cells that have just become neighbours need new predictions.
-    template <typename Members, typename Queue>
+    template <typename Queue>
     void cross_cell(Queue& queue, std::uint32_t i, std::uint32_t cell) {
         if (periodic_) {
-            cross_cell_periodic<Members>(queue, i, cell);
+            cross_cell_periodic(queue, i, cell);
             return;
         }
-        const std::uint32_t old_cell = cells_.storage<Members>().bucket_of(i);
-        cells_.move<Members>(i, cell);
+        const std::uint32_t old_cell = cells_.cell_of_particle(i);
+        cells_.move(i, cell);
         const UniformGrid& grid = cells_.grid();
         const int column = grid.column(cell);
         const int row = grid.row(cell);
@@ -823,7 +772,11 @@ private:
         const int across_x = 1 - step_x * step_x;  // 1 when the step is along y
         const int step_y = across_x * (2 * static_cast<int>(cell > old_cell) - 1);
         const int across_y = 1 - across_x;
-        consider_run<Members>(i, {column + step_x - across_x, row + step_y - across_y, across_x, across_y});
+        consider_pairs(i, [&](auto&& visit) {
+            for (int k = -1; k <= 1; ++k) {
+                cells_.for_each_in(column + step_x + across_x * k, row + step_y + across_y * k, visit);
+            }
+        });
         predict_crossing(i, column, row);
         reschedule(queue, i);
     }
@@ -832,13 +785,13 @@ private:
     // edge: the particle's path has then crossed one more box (Plans::images). Its
     // stored position stays: the physics never depends on when crossings
     // happen, so every cell count gives the same events.
-    template <typename Members, typename Queue>
+    template <typename Queue>
     void cross_cell_periodic(Queue& queue, std::uint32_t i, std::uint32_t cell) {
         const UniformGrid& grid = cells_.grid();
-        const std::uint32_t old_cell = cells_.storage<Members>().bucket_of(i);
+        const std::uint32_t old_cell = cells_.cell_of_particle(i);
         const int old_column = grid.column(old_cell);
         const int old_row = grid.row(old_cell);
-        cells_.move<Members>(i, cell);
+        cells_.move(i, cell);
         const int column = grid.column(cell);
         const int row = grid.row(cell);
         const auto step_of = [](int from, int to) {
@@ -853,7 +806,11 @@ private:
         if (row - old_row < -1) ++plans_[i].images[1];
         const int across_x = step_x == 0 ? 1 : 0;
         const int across_y = 1 - across_x;
-        consider_run<Members>(i, {column + step_x - across_x, row + step_y - across_y, across_x, across_y});
+        consider_pairs(i, [&](auto&& visit) {
+            for (int k = -1; k <= 1; ++k) {
+                cells_.for_each_in_wrapped(column + step_x + across_x * k, row + step_y + across_y * k, visit);
+            }
+        });
         predict_crossing(i, column, row);
         reschedule(queue, i);
     }

@@ -36,16 +36,6 @@ inline constexpr double cell_event_ns = 110.0;       // an event with the cells
 inline constexpr double lines_chosen_below = 0.8;    // lines' cost / cells' cost; the margin covers stale predictions
 inline constexpr std::uint32_t lines_up_to = 20000;  // particles: the first predictions test all N^2 / 2 pairs
 
-// --- The cells' members
-
-// Particles from which each cell keeps its first members in a record of its
-// own (cell_records.hpp) instead of a linked list: where the state (about
-// 270 bytes a particle) outgrows the last-level cache. Below, the records'
-// larger footprint cost more than the links saved (the gas at 1e4 and 1e5
-// disks took 1.05 to 1.08 times as long with them; at 2.5e5 0.93, at 1e6
-// 0.81 to 0.87).
-inline constexpr std::uint32_t cell_records_from = 131072;
-
 // --- The look ahead along the queue
 
 // Particles from which each event prefetches what the next events will
@@ -55,7 +45,7 @@ inline constexpr std::uint32_t cell_records_from = 131072;
 // 1e4 disks took 1.18 times as long with both).
 inline constexpr std::uint32_t look_ahead_from = 32768;
 // The four stages' distances in calendar buckets: entries and links, then
-// particles, then partners and cell heads or records, then the members they name
+// particles, then partners and cell heads, then the cells' first members
 // ((16, 12, 8, 4) to (4, 3, 2, 1) measured within noise of one another).
 inline constexpr std::uint32_t look_entries_buckets = 8;
 inline constexpr std::uint32_t look_particles_buckets = 6;
