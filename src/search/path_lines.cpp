@@ -213,6 +213,14 @@ void gather_block(int lanes, const float* x, const float* y, const float* vx, co
     }
 }
 
+// Drops from near[first, end) what the lane tests let through that is no
+// neighbour of line i: the padding's lines (from `count` on) and i's own.
+void drop_non_neighbours(std::uint32_t i, std::size_t count, std::vector<std::uint32_t>& near, std::size_t first) {
+    near.erase(std::remove_if(near.begin() + static_cast<std::ptrdiff_t>(first), near.end(),
+                              [&](std::uint32_t j) { return j == i || j >= count; }),
+               near.end());
+}
+
 }  // namespace
 
 bool PathLines::supports_lanes(int lanes) {
@@ -303,14 +311,7 @@ void PathLines::gather_near_block(std::span<const std::uint32_t> lines, double r
     case 4: gather_block<4>(lanes_, x, y, vx, vy, x_.size(), q, near); break;
     default: return;  // no lines
     }
-    // The padding's lines and each line's own are not neighbours.
-    for (std::size_t k = 0; k < lines.size(); ++k) {
-        std::vector<std::uint32_t>& found = *nears[k];
-        const std::uint32_t i = lines[k];
-        found.erase(std::remove_if(found.begin() + static_cast<std::ptrdiff_t>(first[k]), found.end(),
-                                   [&](std::uint32_t j) { return j == i || j >= count_; }),
-                    found.end());
-    }
+    for (std::size_t k = 0; k < lines.size(); ++k) drop_non_neighbours(lines[k], count_, *nears[k], first[k]);
 }
 
 void PathLines::gather_near(std::uint32_t i, double reach, std::vector<std::uint32_t>& near) const {
@@ -323,10 +324,7 @@ void PathLines::gather_near(std::uint32_t i, double reach, std::vector<std::uint
 #endif
     default: gather_four(x_.data(), y_.data(), vx_.data(), vy_.data(), x_.size(), q, near); break;
     }
-    // The padding's lines and i's own are not neighbours.
-    near.erase(std::remove_if(near.begin() + static_cast<std::ptrdiff_t>(first), near.end(),
-                              [&](std::uint32_t j) { return j == i || j >= count_; }),
-               near.end());
+    drop_non_neighbours(i, count_, near, first);
 }
 
 }  // namespace particlesim
