@@ -13,6 +13,7 @@
 #include "search/brute_force_search.hpp"
 #include "search/grid_search.hpp"
 #include "search/path_search.hpp"
+#include "stepped/early_selection.hpp"
 #include "stepped/step_pipeline.hpp"
 
 #include <algorithm>
@@ -64,6 +65,82 @@ bool same_candidates_every_step(const NamedScene& scene, std::optional<int> grid
         if (reference != pair_candidates(in, grid_cells, false, threads) || reference != merged(path_buffers)) {
             return false;
         }
+        sim.step();
+    }
+    return true;
+}
+
+// The stages of the selection that the grid search runs between its slices,
+// counted.
+struct CountedStages final : SliceDecisions {
+    explicit CountedStages(EarlySelection& selection) : selection(selection) {}
+    void decide_before(double time, std::span<ThreadCandidates> found) override {
+        ++stages;
+        selection.decide_before(time, found);
+    }
+    EarlySelection& selection;
+    int stages = 0;
+};
+
+// What the selection leaves for the resolution: each particle's partner and
+// the time of its collision.
+struct Selected {
+    std::vector<std::uint32_t> partner;
+    std::vector<double> time;
+
+    bool operator==(const Selected& other) const {
+        for (std::size_t i = 0; i < partner.size(); ++i) {
+            if (partner[i] != other.partner[i]) return false;
+            if (partner[i] != no_collision && time[i] != other.time[i]) return false;
+        }
+        return true;
+    }
+};
+
+// Runs the scene with the brute force and, at every step, selects twice on
+// the same state: once from all the brute force's candidates, once in stages
+// between the grid's slices (EarlySelection), the later slices leaving out
+// the decided particles. The same collisions every step; `stages` and
+// `pair_tests` (with and without the stages) add up what the grid did.
+bool same_selection_every_step(const NamedScene& scene, int threads, int& stages, std::uint64_t& staged_tests,
+                               std::uint64_t& unstaged_tests) {
+    SteppedSimulation sim(scene.world, scene.particles, {.pair_search = PairSearch::brute_force, .threads = 1});
+    const Box box = Box::of(scene.world);
+    const std::size_t count = scene.particles.size();
+    const CandidateOrder order({});
+    std::vector<double> wall_time(count);
+    StepStart start;
+    start.with_motion = true;
+    for (std::int64_t s = 0; s < scene.steps; ++s) {
+        measure_step_start(sim.particles(), box, 1.0, wall_time, start, 1);
+        const auto select = [&](bool staged) {
+            Selected out{std::vector<std::uint32_t>(count, no_collision), wall_time};
+            std::vector<Collision> candidates;
+            std::vector<Collision> ready;
+            gather_wall_candidates(wall_time, 1.0, start, candidates, 1);
+            SelectionScratch scratch(count);
+            std::vector<ThreadCandidates> buffers(static_cast<std::size_t>(staged ? threads : 1));
+            EarlySelection selection(candidates, ready, order, out.partner, out.time, scratch, threads);
+            // The search reads the times the selection writes, as in the engine.
+            const PairSearchInput in{sim.particles(), out.time, box, 1.0, start.blocks};
+            if (staged) {
+                CountedStages counted(selection);
+                GridSearch grid;
+                grid.find_pairs(in, std::nullopt, buffers, &counted);
+                stages += counted.stages;
+                for (const ThreadCandidates& thread : buffers) staged_tests += thread.pair_tests;
+                // And the grid without stages, for its pair tests alone.
+                std::vector<ThreadCandidates> unstaged(static_cast<std::size_t>(threads));
+                grid.find_pairs({sim.particles(), wall_time, box, 1.0, start.blocks}, std::nullopt, unstaged);
+                for (const ThreadCandidates& thread : unstaged) unstaged_tests += thread.pair_tests;
+            } else {
+                find_pairs_brute_force(in, buffers);
+            }
+            selection.decide_rest(buffers);
+            return out;
+        };
+        const Selected reference = select(false);
+        if (!(select(true) == reference)) return false;
         sim.step();
     }
     return true;
@@ -155,6 +232,35 @@ int main(int argc, char** argv) {
               CHECK(same_candidates_every_step(scene, std::nullopt, 1));
               CHECK_EQ(run_hash(scene, {.pair_search = PairSearch::paths, .threads = 2}),
                        run_hash(scene, {.pair_search = PairSearch::brute_force, .threads = 1}));
+          }},
+         // Sparse scenes of fast particles, which the grid cuts into 4 to 64
+         // slices: the selection decided in stages between them, the decided
+         // particles left out of the later slices, against one selection of
+         // the brute force's candidates.
+         {"selection in stages between the slices",
+          [] {
+              int stages = 0;
+              std::uint64_t staged_tests = 0;
+              std::uint64_t unstaged_tests = 0;
+              for (std::uint64_t k = 0; k < 24; ++k) {
+                  SplitMix64 rng(7000 + k);
+                  const double box_size = 5000.0;
+                  const std::size_t count = 400 + rng.next() % 2600;
+                  const double top_speed = k % 3 == 0 ? 2.0 * box_size : box_size / 2.0;
+                  NamedScene scene{"", World{box_size, 3.0}, 5, {}};
+                  scene.particles =
+                      make_random_particles(count, scene.world, {k, SpeedRange{box_size / 8.0, top_speed}});
+                  const int threads = thread_counts[k % 3];
+                  const check::Context context("sparse scene ", k, ", ", count, " particles, ", threads, " threads");
+                  CHECK(same_selection_every_step(scene, threads, stages, staged_tests, unstaged_tests));
+                  if (k % 4 == 0) {
+                      CHECK_EQ(run_hash(scene, {.pair_search = PairSearch::grid, .threads = threads}),
+                               run_hash(scene, {.pair_search = PairSearch::brute_force, .threads = 1}));
+                  }
+              }
+              // The stages ran, and the slices after them left particles out.
+              CHECK(stages > 24 * 5);
+              CHECK(staged_tests < unstaged_tests * 17 / 20);
           }},
          {"clustered scenes", [] {
               for (std::uint64_t k = 0; k < 12; ++k) {

@@ -163,7 +163,7 @@ GridLayout GridSearch::choose_layout(const PairSearchInput& in, std::optional<in
 }
 
 void GridSearch::find_pairs(const PairSearchInput& in, std::optional<int> forced_cells,
-                            std::span<ThreadCandidates> buffers) {
+                            std::span<ThreadCandidates> buffers, SliceDecisions* decisions) {
     const int threads = static_cast<int>(buffers.size());
     layout_ = choose_layout(in, forced_cells, threads);
 
@@ -178,16 +178,43 @@ void GridSearch::find_pairs(const PairSearchInput& in, std::optional<int> forced
     if (workspaces_.size() < workspaces) workspaces_.resize(workspaces);
     for (std::size_t k = 0; k < workspaces; ++k) prepare(workspaces_[k], count, parallel_slices ? 1 : workers);
 
-    if (parallel_slices) {
+    // Decisions pay where a step has enough slices for the decided
+    // particles to leave out a good part of it.
+    if (layout_.slices < decide_from_slices) decisions = nullptr;
+    if (parallel_slices && decisions == nullptr) {
         parallel_for_dynamic(
             std::min(threads, layout_.slices), layout_.slices, 1, [&](std::int64_t slice, std::size_t thread) {
                 process_slice(in, static_cast<int>(slice), workspaces_[thread], buffers.subspan(thread, 1), 1);
             });
+    } else if (parallel_slices) {
+        // In rounds of one slice a thread, in time order, deciding between rounds.
+        const int round = std::min(threads, layout_.slices);
+        for (int first = 0; first < layout_.slices; first += round) {
+            const int in_round = std::min(round, layout_.slices - first);
+            parallel_for_dynamic(in_round, in_round, 1, [&](std::int64_t k, std::size_t thread) {
+                process_slice(in, first + static_cast<int>(k), workspaces_[thread], buffers.subspan(thread, 1), 1);
+            });
+            decide_after_slices(in, first + in_round, *decisions, buffers);
+        }
     } else {
         for (int slice = 0; slice < layout_.slices; ++slice) {
             process_slice(in, slice, workspaces_[0], buffers, workers);
+            if (decisions != nullptr) decide_after_slices(in, slice + 1, *decisions, buffers);
         }
     }
+}
+
+// After the first `searched` slices, every candidate before the last one's
+// start has been found: a contact within a slice makes the two paths' boxes
+// overlap in it, and a computed contact time errs by far less than a slice
+// (a slice is at least 1/max_slices of the step). The one slice of margin
+// makes the decisions independent of where rounding puts a contact near a
+// slice's edge.
+void GridSearch::decide_after_slices(const PairSearchInput& in, int searched, SliceDecisions& decisions,
+                                     std::span<ThreadCandidates> buffers) const {
+    if (searched >= layout_.slices) return;  // the caller decides the rest
+    const double before = slice_span(in, searched - 1, layout_.slices).begin;
+    if (before > 0.0) decisions.decide_before(before, buffers);
 }
 
 void GridSearch::prepare(SliceWorkspace& ws, std::size_t count, int workers) const {

@@ -56,8 +56,13 @@ public:
     GridSearch& operator=(GridSearch&&) noexcept;
 
     // forced_cells imposes a G x G grid (still exact); without it the grid is
-    // sized from the particles' motion in this step and r.
-    void find_pairs(const PairSearchInput& in, std::optional<int> forced_cells, std::span<ThreadCandidates> buffers);
+    // sized from the particles' motion in this step and r. With `decisions`,
+    // the slices are searched in time order, and between them the
+    // collisions before the last slice's start are decided, so that the
+    // slices after it leave out the particles already decided (the same
+    // candidates for the selection, fewer paths to bin and test).
+    void find_pairs(const PairSearchInput& in, std::optional<int> forced_cells, std::span<ThreadCandidates> buffers,
+                    SliceDecisions* decisions = nullptr);
 
     // Per-slice buffers; one per thread when slices run in parallel.
     struct SliceWorkspace;  // defined in grid_search.cpp
@@ -85,6 +90,8 @@ private:
     GridLayout choose_layout(const PairSearchInput& in, std::optional<int> forced_cells, int threads);
     void process_slice(const PairSearchInput& in, int slice, SliceWorkspace& ws, std::span<ThreadCandidates> out,
                        int threads) const;
+    void decide_after_slices(const PairSearchInput& in, int searched, SliceDecisions& decisions,
+                             std::span<ThreadCandidates> buffers) const;
     void prepare(SliceWorkspace& ws, std::size_t count, int workers) const;
     // Binning a slice: a counting sort of the paths' boxes by cell, in four steps.
     struct Binning;  // what the steps share; defined in grid_search.cpp

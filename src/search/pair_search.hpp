@@ -20,6 +20,8 @@ struct PairSearchInput {
     // without one). A pair candidate at or after either particle's wall time
     // can never be selected: that particle's wall candidate comes first in
     // the order and marks it. Every search drops those candidates alike.
+    // A SliceDecisions (below) may lower it during the search to the time
+    // of the particle's decided collision, which has the same property.
     std::span<const double> wall_time;
     Box box;
     double duration = 1.0;  // of the (micro-)step
@@ -36,6 +38,26 @@ struct PairSearchInput {
 struct alignas(64) ThreadCandidates {
     std::vector<Collision> found;
     std::uint64_t pair_tests = 0;
+};
+
+// A selection a search may run between its time slices (the grid's). Once
+// every candidate before `time` has been found, the collisions before it are
+// decided: in the rules' greedy order a candidate's fate depends only on the
+// candidates before it. A decided particle's entry of `wall_time` becomes
+// its collision's time: every candidate not found yet for it comes later and
+// is ruled out, so the later slices leave its path out, as they leave out a
+// path after its wall time.
+class SliceDecisions {
+public:
+    // Takes the candidates in `found` (leaving them empty) and decides every
+    // collision before `time`.
+    virtual void decide_before(double time, std::span<ThreadCandidates> found) = 0;
+
+protected:
+    SliceDecisions() = default;
+    SliceDecisions(const SliceDecisions&) = default;
+    SliceDecisions& operator=(const SliceDecisions&) = default;
+    ~SliceDecisions() = default;
 };
 
 // What the pair test reads of one particle's motion; searches may keep

@@ -12,6 +12,7 @@
 #include "search/grid_search.hpp"
 #include "search/pair_search.hpp"
 #include "search/path_search.hpp"
+#include "stepped/early_selection.hpp"
 #include "stepped/search_choice.hpp"
 #include "stepped/step_pipeline.hpp"
 #include "stepped/stepped_state.hpp"
@@ -62,6 +63,7 @@ public:
         selection_ = SelectionScratch(count);
         // Room for a busy step from the start, so that steps rarely need to grow it.
         candidates_.reserve(2 * count + 64);
+        ready_.reserve(count + 64);
         thread_candidates_.resize(static_cast<std::size_t>(threads_));
         for (ThreadCandidates& thread : thread_candidates_) {
             thread.found.reserve(count / static_cast<std::size_t>(threads_) + 64);
@@ -165,17 +167,19 @@ private:
         const PairSearchInput input{
             particles_, wall_time, box_, duration,
             start_.with_motion ? std::span<const BlockStart>(start_.blocks) : std::span<const BlockStart>()};
+        // ... then, from the selection on (which the grid search may run in
+        // stages between its slices), the time of its accepted collision ...
+        const std::span<double> collision_time = particle_time_;
+        const CandidateOrder order(storage_order_.user_index());
+        EarlySelection selection(candidates_, ready_, order, partner_, collision_time, selection_, threads);
         if (search_ == PairSearch::brute_force) {
             find_pairs_brute_force(input, found);
         } else if (search_ == PairSearch::paths) {
             paths_.find_pairs(input, found);
         } else {
-            grid_.find_pairs(input, options_.grid_cells, found);
+            grid_.find_pairs(input, options_.grid_cells, found, &selection);
         }
-        // ... then, from the selection on, the time of its accepted collision ...
-        const std::span<double> collision_time = particle_time_;
-        const StepCounts accepted = select_collisions(candidates_, found, CandidateOrder(storage_order_.user_index()),
-                                                      partner_, collision_time, selection_, threads);
+        const StepCounts accepted = selection.decide_rest(found);
         resolve_collisions(particles_, partner_, collision_time, box_, duration, threads);
         // ... and the next step's first wall time again, measured as the free flight moves the particles.
         advance_free_particles(particles_, partner_, box_, duration, particle_time_, start_, threads);
@@ -203,6 +207,7 @@ private:
     std::vector<std::uint32_t> partner_;  // by particle: its partner, no_collision or wall_collision
     SelectionScratch selection_;
     std::vector<Collision> candidates_;
+    std::vector<Collision> ready_;  // EarlySelection's
     std::vector<ThreadCandidates> thread_candidates_;
     GridSearch grid_;
     PathSearch paths_;

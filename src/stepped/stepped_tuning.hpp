@@ -17,17 +17,19 @@ inline constexpr std::size_t brute_force_below = 48;
 // Otherwise the paths search or the grid, whichever a cost model of a
 // micro-step finds cheaper (search_choice.cpp). Fitted to one thread's runs
 // of both searches on the rules' random scene at the default scene's density
-// and the gas at area fraction 0.3, 256 to 16384 particles, within 20 % of
-// every run; nanoseconds of the benchmark machine (AVX2: eight float lanes),
-// so only their ratios matter. The paths search: each new line ...
-inline constexpr double paths_new_line_ns = 350.0;
+// and the gas at area fraction 0.3, 64 to 16384 particles: the grid within
+// 13 % of every run, the paths search within 15 % from 1000 to 8000 disks
+// (the close calls) and within 37 % elsewhere, where the margins are wide;
+// nanoseconds of the benchmark machine (AVX2: eight float lanes), so only
+// their ratios matter. The paths search: each new line ...
+inline constexpr double paths_new_line_ns = 180.0;
 // ... plus this for each line it is tested against ...
-inline constexpr double paths_line_test_ns = 0.24;
+inline constexpr double paths_line_test_ns = 0.16;
 // ... plus this times the fraction that pass (about 4r / L): their intervals.
-inline constexpr double paths_near_line_ns = 45.0;
+inline constexpr double paths_near_line_ns = 100.0;
 // The grid: each particle, plus this for each time slice it is binned in.
-inline constexpr double grid_particle_ns = 60.0;
-inline constexpr double grid_particle_slice_ns = 55.0;
+inline constexpr double grid_particle_ns = 30.0;
+inline constexpr double grid_particle_slice_ns = 60.0;
 // Particles up to which the paths search may be chosen: its first
 // micro-step tests all N^2 / 2 pairs.
 inline constexpr std::size_t paths_up_to = 20000;
@@ -83,14 +85,18 @@ inline constexpr std::size_t resolution_fetch_ahead = 16;
 // --- The grid search (search/grid_search.cpp)
 
 // A slice's typical path, in mean particle spacings: fewer, longer slices bin
-// fewer boxes but test more pairs (4/3 was the fastest from N = 1000 to
-// 32000; 1.5 to 3 measured the same on 2 threads).
-inline constexpr double slice_sweep_in_spacings = 4.0 / 3.0;
+// fewer boxes but test more pairs, and leave out the decided particles later
+// (with the decisions between slices, 1.8 to 2.4 were the fastest at N =
+// 8000 and 32000, 0.92 of 4/3's time; without them 4/3 had been).
+inline constexpr double slice_sweep_in_spacings = 2.0;
 // With a forced grid, a slice's typical path in cells: at most half a cell,
 // so that most boxes fit their cell.
 inline constexpr double slice_sweep_in_forced_cells = 0.5;
 // The most slices a step is cut into.
 inline constexpr int max_slices = 64;
+// Slices from which the search lets the selection decide collisions between
+// slices, and leaves the decided particles out of the later ones.
+inline constexpr int decide_from_slices = 4;
 // The most equal pieces in time a path whose box exceeds a cell is cut
 // into, each binned as a box of its own: fast particles then cost a few more
 // boxes instead of joining the large boxes, which meet each other in a

@@ -1,0 +1,50 @@
+#include "stepped/early_selection.hpp"
+
+#include <limits>
+
+namespace particlesim {
+
+void EarlySelection::gather_ready(double time, std::span<ThreadCandidates> found) {
+    ready_.clear();
+    // Kept in place: the later ones close up at the front of candidates_.
+    auto kept_end = candidates_.begin();
+    const auto sort_out = [&](const Collision& c, bool kept) {
+        const bool undecided =
+            partner_[c.i] == no_collision && (c.kind == CollisionKind::wall || partner_[c.j] == no_collision);
+        if (!undecided) return;
+        if (c.time < time) {
+            ready_.push_back(c);
+        } else if (kept) {
+            *kept_end++ = c;
+        } else {
+            candidates_.push_back(c);
+        }
+    };
+    for (const Collision& c : candidates_) sort_out(c, true);
+    candidates_.erase(kept_end, candidates_.end());
+    for (ThreadCandidates& thread : found) {
+        for (const Collision& c : thread.found) sort_out(c, false);
+        thread.found.clear();
+    }
+}
+
+void EarlySelection::decide_before(double time, std::span<ThreadCandidates> found) {
+    gather_ready(time, found);
+    if (ready_.empty()) return;
+    // Every candidate before `time` is in ready_, and none shares a particle
+    // with a collision decided before: the rounds decide them as the greedy
+    // pass over all candidates would.
+    accepted_ += select_collisions(ready_, {}, order_, partner_, collision_time_, scratch_, threads_);
+    decided_any_ = true;
+}
+
+StepCounts EarlySelection::decide_rest(std::span<ThreadCandidates> found) {
+    if (decided_any_) {
+        decide_before(std::numeric_limits<double>::infinity(), found);
+    } else {  // no stage ran: the one selection of every candidate
+        accepted_ += select_collisions(candidates_, found, order_, partner_, collision_time_, scratch_, threads_);
+    }
+    return accepted_;
+}
+
+}  // namespace particlesim
