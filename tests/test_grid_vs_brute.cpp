@@ -73,10 +73,11 @@ bool same_candidates_every_step(const NamedScene& scene, std::optional<int> grid
 // The stages of the selection that the grid search runs between its slices,
 // counted.
 struct CountedStages final : SliceDecisions {
-    explicit CountedStages(EarlySelection& selection) : selection(selection) {}
-    void decide_before(double time, std::span<ThreadCandidates> found) override {
+    CountedStages(EarlySelection& selection, std::span<std::uint32_t> partner)
+        : SliceDecisions(partner), selection(selection) {}
+    void decide_before(double time, std::span<ThreadCandidates> found, int threads) override {
         ++stages;
-        selection.decide_before(time, found);
+        selection.decide_before(time, found, threads);
     }
     EarlySelection& selection;
     int stages = 0;
@@ -118,13 +119,15 @@ bool same_selection_every_step(const NamedScene& scene, int threads, int& stages
             std::vector<Collision> candidates;
             std::vector<Collision> ready;
             gather_wall_candidates(wall_time, 1.0, start, candidates, 1);
+            std::vector<double> stage_time;
             SelectionScratch scratch(count);
             std::vector<ThreadCandidates> buffers(static_cast<std::size_t>(staged ? threads : 1));
-            EarlySelection selection(candidates, ready, order, out.partner, out.time, scratch, threads);
-            // The search reads the times the selection writes, as in the engine.
+            EarlySelection selection(candidates, ready, order, out.partner, out.time, stage_time, scratch, threads);
+            // The search reads its wall times from the array the selection
+            // leaves the collision times in, as in the engine.
             const PairSearchInput in{sim.particles(), out.time, box, 1.0, start.blocks};
             if (staged) {
-                CountedStages counted(selection);
+                CountedStages counted(selection, out.partner);
                 GridSearch grid;
                 grid.find_pairs(in, std::nullopt, buffers, &counted);
                 stages += counted.stages;

@@ -1,5 +1,6 @@
 // Every parallel stage of a step on two threads against one: the grid search
-// with a slice per thread and with one slice shared, the paths search, the
+// with a slice per thread (also deciding collisions in stages as the slices
+// are searched) and with one slice shared, the paths search, the
 // brute force, the selection, the resolution, the free flight and the storage
 // sort, on scenes just large enough for each to share its work. The final
 // states must be the same bits. Small on purpose: the suite also runs it
@@ -50,6 +51,15 @@ void two_threads_give_one_threads_bits() {
          2,
          {.pair_search = PairSearch::grid, .sort_by_position_every = 1},
          slow},
+        // The rules' speeds in a sparse box: 6 slices, taken by the threads
+        // as they come free, with the selection run in stages between them
+        // by whichever thread finishes one.
+        {"grid, slices decided in stages",
+         World{20000.0, 1.0},
+         4000,
+         3,
+         {.pair_search = PairSearch::grid},
+         std::nullopt},
         {"paths search", World{20000.0, 1.0}, 4000, 6, {.pair_search = PairSearch::paths}, std::nullopt},
         {"brute force", World{250.0, 1.0}, 3000, 2, {.pair_search = PairSearch::brute_force}, slow},
     };

@@ -11,6 +11,11 @@ namespace particlesim {
 
 enum class CollisionKind : std::uint8_t { wall = 0, pair = 1 };
 
+// What the selection leaves for each particle in place of a partner's
+// stored index.
+inline constexpr std::uint32_t no_collision = 0xffffffffU;
+inline constexpr std::uint32_t wall_collision = 0xfffffffeU;
+
 struct Collision {
     double time = 0.0;  // within the step (or micro-step), from its start
     CollisionKind kind = CollisionKind::wall;

@@ -10,6 +10,7 @@
 #include <atomic>
 #include <cmath>
 #include <limits>
+#include <mutex>
 #include <numeric>
 #include <utility>
 
@@ -181,25 +182,18 @@ void GridSearch::find_pairs(const PairSearchInput& in, std::optional<int> forced
     // Decisions pay where a step has enough slices for the decided
     // particles to leave out a good part of it.
     if (layout_.slices < decide_from_slices) decisions = nullptr;
-    if (parallel_slices && decisions == nullptr) {
+    if (parallel_slices && decisions != nullptr) {
+        search_slices_deciding(in, buffers, *decisions);
+    } else if (parallel_slices) {
         parallel_for_dynamic(
             std::min(threads, layout_.slices), layout_.slices, 1, [&](std::int64_t slice, std::size_t thread) {
-                process_slice(in, static_cast<int>(slice), workspaces_[thread], buffers.subspan(thread, 1), 1);
+                process_slice(in, static_cast<int>(slice), workspaces_[thread], buffers.subspan(thread, 1), 1, nullptr);
             });
-    } else if (parallel_slices) {
-        // In rounds of one slice a thread, in time order, deciding between rounds.
-        const int round = std::min(threads, layout_.slices);
-        for (int first = 0; first < layout_.slices; first += round) {
-            const int in_round = std::min(round, layout_.slices - first);
-            parallel_for_dynamic(in_round, in_round, 1, [&](std::int64_t k, std::size_t thread) {
-                process_slice(in, first + static_cast<int>(k), workspaces_[thread], buffers.subspan(thread, 1), 1);
-            });
-            decide_after_slices(in, first + in_round, *decisions, buffers);
-        }
     } else {
         for (int slice = 0; slice < layout_.slices; ++slice) {
-            process_slice(in, slice, workspaces_[0], buffers, workers);
-            if (decisions != nullptr) decide_after_slices(in, slice + 1, *decisions, buffers);
+            process_slice(in, slice, workspaces_[0], buffers, workers, decisions);
+            const double before = decided_before(in, slice + 1);
+            if (decisions != nullptr && before > 0.0) decisions->decide_before(before, buffers, threads);
         }
     }
 }
@@ -209,12 +203,53 @@ void GridSearch::find_pairs(const PairSearchInput& in, std::optional<int> forced
 // overlap in it, and a computed contact time errs by far less than a slice
 // (a slice is at least 1/max_slices of the step). The one slice of margin
 // makes the decisions independent of where rounding puts a contact near a
-// slice's edge.
-void GridSearch::decide_after_slices(const PairSearchInput& in, int searched, SliceDecisions& decisions,
-                                     std::span<ThreadCandidates> buffers) const {
-    if (searched >= layout_.slices) return;  // the caller decides the rest
-    const double before = slice_span(in, searched - 1, layout_.slices).begin;
-    if (before > 0.0) decisions.decide_before(before, buffers);
+// slice's edge. 0 when nothing can be decided yet, or when the caller
+// decides the rest.
+double GridSearch::decided_before(const PairSearchInput& in, int searched) const {
+    if (searched < 2 || searched >= layout_.slices) return 0.0;
+    return slice_span(in, searched - 1, layout_.slices).begin;
+}
+
+// Threads take whole slices as they come free, in time order, as without
+// decisions; each slice's candidates go to a buffer of its own. After each
+// slice, its thread hands the slices searched so far, from the first, to the
+// decisions, unless another thread is deciding (that one searches no slice
+// meanwhile, the others do): no thread ever waits for one the system has
+// descheduled.
+void GridSearch::search_slices_deciding(const PairSearchInput& in, std::span<ThreadCandidates> buffers,
+                                        SliceDecisions& decisions) {
+    const int slices = layout_.slices;
+    if (slice_found_.size() < static_cast<std::size_t>(slices)) slice_found_.resize(static_cast<std::size_t>(slices));
+    for (ThreadCandidates& found : slice_found_) {
+        found.found.clear();
+        found.pair_tests = 0;
+    }
+    slice_searched_.assign(static_cast<std::size_t>(slices), 0);
+    std::mutex deciding;
+    int handed_over = 0;  // slices whose candidates the decisions have; under `deciding`
+    const auto searched_flag = [&](int slice) { return std::atomic_ref<std::uint8_t>(slice_searched_[slice]); };
+    const int threads = static_cast<int>(buffers.size());
+    parallel_for_dynamic(std::min(threads, slices), slices, 1, [&](std::int64_t slice, std::size_t thread) {
+        process_slice(in, static_cast<int>(slice), workspaces_[thread], std::span(slice_found_).subspan(slice, 1), 1,
+                      &decisions);
+        searched_flag(static_cast<int>(slice)).store(1, std::memory_order_release);
+        const std::unique_lock lock(deciding, std::try_to_lock);
+        if (!lock.owns_lock()) return;
+        int searched = handed_over;
+        while (searched < slices && searched_flag(searched).load(std::memory_order_acquire) != 0) ++searched;
+        const double before = decided_before(in, searched);
+        if (before > 0.0) {
+            decisions.decide_before(before, std::span(slice_found_).subspan(handed_over, searched - handed_over), 1);
+            handed_over = searched;
+        }
+    });
+    // The rest for the caller, spread over its buffers as the threads would have.
+    for (int slice = 0; slice < slices; ++slice) {
+        ThreadCandidates& into = buffers[static_cast<std::size_t>(slice) % buffers.size()];
+        const ThreadCandidates& found = slice_found_[slice];
+        into.found.insert(into.found.end(), found.found.begin(), found.found.end());
+        into.pair_tests += found.pair_tests;
+    }
 }
 
 void GridSearch::prepare(SliceWorkspace& ws, std::size_t count, int workers) const {
@@ -243,8 +278,8 @@ void GridSearch::prepare(SliceWorkspace& ws, std::size_t count, int workers) con
 }
 
 void GridSearch::process_slice(const PairSearchInput& in, int slice, SliceWorkspace& ws,
-                               std::span<ThreadCandidates> out, int threads) const {
-    bin_slice(in, slice, ws, threads);
+                               std::span<ThreadCandidates> out, int threads, const SliceDecisions* decisions) const {
+    bin_slice(in, slice, ws, threads, decisions);
     test_small_pairs(in, ws, out, threads);
     test_large_pairs(in, ws, out, threads);
 }
@@ -270,6 +305,7 @@ struct GridSearch::Binning {
     const PairSearchInput& in;
     SliceWorkspace& ws;
     SliceSpan span;
+    const SliceDecisions* decisions;  // its decided particles are left out; may be null
     const UniformGrid& grid;
     double fit;  // the largest box side that fits a cell
     int threads;
@@ -287,6 +323,12 @@ struct GridSearch::Binning {
     }
     [[nodiscard]] std::uint32_t cell_of_box(const SweptBounds& box) const { return grid.cell_of(box.min_x, box.min_y); }
     [[nodiscard]] double path_end(std::int64_t i) const { return span.path_end(sweep_end(in, i)); }
+    // Whether particle i has a path to bin in the slice: its path reaches
+    // into it, and its collision is not decided.
+    [[nodiscard]] bool binned(std::int64_t i) const {
+        if (!span.holds_path(sweep_end(in, i))) return false;
+        return decisions == nullptr || !decisions->decided(static_cast<std::uint32_t>(i));
+    }
     // Particle i's path in the slice, and piece `piece` of `pieces` equal parts of it.
     [[nodiscard]] SweptBounds path_bounds(std::int64_t i) const {
         return search.swept_bounds(in.particles[i], span.begin, path_end(i));
@@ -303,13 +345,15 @@ struct GridSearch::Binning {
 
 // Counting sort of the fitting boxes (and pieces) by cell, the large ones
 // aside. (The order within a cell does not change the pairs tested.)
-void GridSearch::bin_slice(const PairSearchInput& in, int slice, SliceWorkspace& ws, int threads) const {
+void GridSearch::bin_slice(const PairSearchInput& in, int slice, SliceWorkspace& ws, int threads,
+                           const SliceDecisions* decisions) const {
     const auto count = static_cast<std::int64_t>(in.particles.size());
     const auto cells = static_cast<std::int64_t>(ws.cell_start.size()) - 1;
     const Binning binning{*this,
                           in,
                           ws,
                           slice_span(in, slice, layout_.slices),
+                          decisions,
                           layout_.grid,
                           layout_.grid.cell_size() * cell_fit_slack,
                           threads,
@@ -352,7 +396,7 @@ std::size_t GridSearch::count_boxes(const Binning& binning, bool cut_into_pieces
         std::size_t counted = 0;
         std::uint32_t large = 0;
         for (std::int64_t i = first; i < last; ++i) {
-            if (!span.holds_path(sweep_end(in, i))) {
+            if (!binning.binned(i)) {
                 ws.cell_of[i] = absent_marker;
                 continue;
             }

@@ -57,10 +57,11 @@ public:
 
     // forced_cells imposes a G x G grid (still exact); without it the grid is
     // sized from the particles' motion in this step and r. With `decisions`,
-    // the slices are searched in time order, and between them the
-    // collisions before the last slice's start are decided, so that the
-    // slices after it leave out the particles already decided (the same
-    // candidates for the selection, fewer paths to bin and test).
+    // the slices are searched in time order, and as they are searched the
+    // collisions before them are decided, so that the slices after leave
+    // out the particles already decided (the same collisions for the
+    // selection, fewer paths to bin and test). Candidates the decisions
+    // did not take are left in `buffers`.
     void find_pairs(const PairSearchInput& in, std::optional<int> forced_cells, std::span<ThreadCandidates> buffers,
                     SliceDecisions* decisions = nullptr);
 
@@ -89,13 +90,15 @@ private:
     [[nodiscard]] int pieces_to_fit(const Particle& particle, double begin, double end, double fit) const;
     GridLayout choose_layout(const PairSearchInput& in, std::optional<int> forced_cells, int threads);
     void process_slice(const PairSearchInput& in, int slice, SliceWorkspace& ws, std::span<ThreadCandidates> out,
-                       int threads) const;
-    void decide_after_slices(const PairSearchInput& in, int searched, SliceDecisions& decisions,
-                             std::span<ThreadCandidates> buffers) const;
+                       int threads, const SliceDecisions* decisions) const;
+    [[nodiscard]] double decided_before(const PairSearchInput& in, int searched) const;
+    void search_slices_deciding(const PairSearchInput& in, std::span<ThreadCandidates> buffers,
+                                SliceDecisions& decisions);
     void prepare(SliceWorkspace& ws, std::size_t count, int workers) const;
     // Binning a slice: a counting sort of the paths' boxes by cell, in four steps.
     struct Binning;  // what the steps share; defined in grid_search.cpp
-    void bin_slice(const PairSearchInput& in, int slice, SliceWorkspace& ws, int threads) const;
+    void bin_slice(const PairSearchInput& in, int slice, SliceWorkspace& ws, int threads,
+                   const SliceDecisions* decisions) const;
     std::size_t count_boxes(const Binning& binning, bool cut_into_pieces) const;
     void sum_cell_places(const Binning& binning) const;
     void place_boxes(const Binning& binning) const;
@@ -108,6 +111,10 @@ private:
     GridLayout layout_;
     std::vector<BlockStart> block_starts_;  // when the step brings none
     std::vector<SliceWorkspace> workspaces_;
+    // Where threads take whole slices and decisions run: each slice's
+    // candidates, and whether it is searched.
+    std::vector<ThreadCandidates> slice_found_;
+    std::vector<std::uint8_t> slice_searched_;
 };
 
 }  // namespace particlesim

@@ -8,6 +8,7 @@
 #include "particlesim/particle.hpp"
 #include "stepped/step_start.hpp"
 
+#include <atomic>
 #include <cstdint>
 #include <span>
 #include <vector>
@@ -20,8 +21,6 @@ struct PairSearchInput {
     // without one). A pair candidate at or after either particle's wall time
     // can never be selected: that particle's wall candidate comes first in
     // the order and marks it. Every search drops those candidates alike.
-    // A SliceDecisions (below) may lower it during the search to the time
-    // of the particle's decided collision, which has the same property.
     std::span<const double> wall_time;
     Box box;
     double duration = 1.0;  // of the (micro-)step
@@ -43,21 +42,30 @@ struct alignas(64) ThreadCandidates {
 // A selection a search may run between its time slices (the grid's). Once
 // every candidate before `time` has been found, the collisions before it are
 // decided: in the rules' greedy order a candidate's fate depends only on the
-// candidates before it. A decided particle's entry of `wall_time` becomes
-// its collision's time: every candidate not found yet for it comes later and
-// is ruled out, so the later slices leave its path out, as they leave out a
-// path after its wall time.
+// candidates before it. Every candidate not found yet for a decided particle
+// comes later and is ruled out, so the slices after leave its path out.
 class SliceDecisions {
 public:
     // Takes the candidates in `found` (leaving them empty) and decides every
-    // collision before `time`.
-    virtual void decide_before(double time, std::span<ThreadCandidates> found) = 0;
+    // collision before `time`, on up to `threads` threads (1 when called from
+    // a thread that searches beside others). One call at a time.
+    virtual void decide_before(double time, std::span<ThreadCandidates> found, int threads) = 0;
+
+    // Whether particle i's collision is decided. Threads that search read it
+    // while another decides: an atomic read, as the decisions write it.
+    [[nodiscard]] bool decided(std::uint32_t i) const {
+        return std::atomic_ref<std::uint32_t>(partner_[i]).load(std::memory_order_relaxed) != no_collision;
+    }
 
 protected:
-    SliceDecisions() = default;
+    // `partner`: by particle, no_collision until its collision is decided.
+    explicit SliceDecisions(std::span<std::uint32_t> partner) : partner_(partner) {}
     SliceDecisions(const SliceDecisions&) = default;
     SliceDecisions& operator=(const SliceDecisions&) = default;
     ~SliceDecisions() = default;
+
+private:
+    std::span<std::uint32_t> partner_;
 };
 
 // What the pair test reads of one particle's motion; searches may keep

@@ -28,21 +28,24 @@ void EarlySelection::gather_ready(double time, std::span<ThreadCandidates> found
     }
 }
 
-void EarlySelection::decide_before(double time, std::span<ThreadCandidates> found) {
+void EarlySelection::decide_before(double time, std::span<ThreadCandidates> found, int threads) {
     gather_ready(time, found);
     if (ready_.empty()) return;
+    if (stage_time_.size() < partner_.size()) stage_time_.resize(partner_.size());
     // Every candidate before `time` is in ready_, and none shares a particle
     // with a collision decided before: the rounds decide them as the greedy
     // pass over all candidates would.
-    accepted_ += select_collisions(ready_, {}, order_, partner_, collision_time_, scratch_, threads_);
+    accepted_ += select_collisions(ready_, {}, order_, partner_, stage_time_, scratch_, threads);
     decided_any_ = true;
 }
 
 StepCounts EarlySelection::decide_rest(std::span<ThreadCandidates> found) {
-    if (decided_any_) {
-        decide_before(std::numeric_limits<double>::infinity(), found);
-    } else {  // no stage ran: the one selection of every candidate
-        accepted_ += select_collisions(candidates_, found, order_, partner_, collision_time_, scratch_, threads_);
+    if (!decided_any_) {  // no stage ran: the one selection of every candidate
+        return select_collisions(candidates_, found, order_, partner_, collision_time_, scratch_, threads_);
+    }
+    decide_before(std::numeric_limits<double>::infinity(), found, threads_);
+    for (std::size_t i = 0; i < partner_.size(); ++i) {
+        if (partner_[i] != no_collision) collision_time_[i] = stage_time_[i];
     }
     return accepted_;
 }

@@ -1,11 +1,11 @@
 #pragma once
 // The selection (rules.md "Select") run in stages while the grid search
 // works through its time slices: each stage decides the collisions before a
-// time that every candidate before it has been found by, and the decided
-// particles drop out of the slices after (SliceDecisions, pair_search.hpp).
-// The same collisions as one selection after the search: a candidate's fate
-// depends only on the candidates before it in the order, and a candidate
-// that shares a particle with a decided collision is ruled out by it.
+// time by which every candidate has been found, and the decided particles
+// drop out of the slices after (SliceDecisions, pair_search.hpp). The same
+// collisions as one selection after the search: a candidate's fate depends
+// only on the candidates before it in the order, and a candidate that shares
+// a particle with a decided collision is ruled out by it.
 
 #include "core/collision.hpp"
 #include "particlesim/engine.hpp"
@@ -20,25 +20,28 @@ namespace particlesim {
 
 class EarlySelection final : public SliceDecisions {
 public:
-    // `candidates` holds the step's wall candidates; `ready` is a buffer
-    // kept between steps. `collision_time` is the array the search reads as
-    // its wall times: a decided particle's entry becomes its collision's
-    // time, which is no later than its wall time.
+    // `candidates` holds the step's wall candidates. `collision_time` gets
+    // the accepted collisions' times once the search is over: it is the
+    // array the search reads its wall times from. `ready` and `stage_time`
+    // are buffers kept between steps (stage_time grows to the particles on
+    // the first stage).
     EarlySelection(std::vector<Collision>& candidates, std::vector<Collision>& ready, const CandidateOrder& order,
-                   std::span<std::uint32_t> partner, std::span<double> collision_time, SelectionScratch& scratch,
-                   int threads)
-        : candidates_(candidates),
+                   std::span<std::uint32_t> partner, std::span<double> collision_time, std::vector<double>& stage_time,
+                   SelectionScratch& scratch, int threads)
+        : SliceDecisions(partner),
+          candidates_(candidates),
           ready_(ready),
           order_(order),
           partner_(partner),
           collision_time_(collision_time),
+          stage_time_(stage_time),
           scratch_(scratch),
           threads_(threads) {}
 
-    void decide_before(double time, std::span<ThreadCandidates> found) override;
+    void decide_before(double time, std::span<ThreadCandidates> found, int threads) override;
 
-    // Decides every collision left, with what the search found since the
-    // last stage; returns the step's accepted collisions.
+    // Decides every collision left, with what the search left in `found`;
+    // returns the step's accepted collisions.
     StepCounts decide_rest(std::span<ThreadCandidates> found);
 
 private:
@@ -51,6 +54,8 @@ private:
     const CandidateOrder& order_;
     std::span<std::uint32_t> partner_;
     std::span<double> collision_time_;
+    // The stages' collision times, while the search still reads collision_time_ as wall times.
+    std::vector<double>& stage_time_;
     SelectionScratch& scratch_;
     int threads_;
     bool decided_any_ = false;

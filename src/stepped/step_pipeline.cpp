@@ -91,7 +91,9 @@ public:
     }
 
     // Accepts every candidate that all its particles claimed. Accepted
-    // collisions share no particle: each thread writes its own.
+    // collisions share no particle: each thread writes its own. Partners
+    // are written atomically: the grid search may read them meanwhile on
+    // another thread (SliceDecisions::decided()).
     StepCounts accept_claimed() {
         scratch_.block_counts.resize(static_cast<std::size_t>(blocks_));
         for_each_block([&](std::int64_t block, std::uint32_t first, std::uint32_t last) {
@@ -102,14 +104,14 @@ public:
                 if (earliest_[c.i] != k) continue;
                 if (c.kind == CollisionKind::wall) {
                     PARTICLESIM_ASSERT(partner_[c.i] == no_collision, "no particle has two collisions selected");
-                    partner_[c.i] = wall_collision;
+                    set_partner(c.i, wall_collision);
                     collision_time_[c.i] = c.time;
                     ++accepted.wall_collisions;
                 } else if (earliest_[c.j] == k) {
                     PARTICLESIM_ASSERT(partner_[c.i] == no_collision && partner_[c.j] == no_collision,
                                        "no particle has two collisions selected");
-                    partner_[c.i] = c.j;
-                    partner_[c.j] = c.i;
+                    set_partner(c.i, c.j);
+                    set_partner(c.j, c.i);
                     collision_time_[c.i] = c.time;
                     collision_time_[c.j] = c.time;
                     ++accepted.particle_collisions;
@@ -161,6 +163,10 @@ public:
     }
 
 private:
+    void set_partner(std::uint32_t particle, std::uint32_t partner) {
+        std::atomic_ref<std::uint32_t>(partner_[particle]).store(partner, std::memory_order_relaxed);
+    }
+
     // A pair found twice is two equal candidates: the first in place counts,
     // so that every thread count picks the same one.
     bool comes_first(std::uint32_t k, std::uint32_t other) const {

@@ -56,10 +56,8 @@ private:
     std::span<const std::uint32_t> user_index_;
 };
 
-// What select_collisions leaves in `partner` for each particle: the other
-// particle's stored index, or one of these.
-inline constexpr std::uint32_t no_collision = 0xffffffffU;
-inline constexpr std::uint32_t wall_collision = 0xfffffffeU;
+// select_collisions leaves in `partner` for each particle the other
+// particle's stored index, or no_collision / wall_collision (collision.hpp).
 
 // select_collisions' buffers, kept between steps so that a step allocates
 // nothing.

@@ -64,6 +64,8 @@ public:
         // Room for a busy step from the start, so that steps rarely need to grow it.
         candidates_.reserve(2 * count + 64);
         ready_.reserve(count + 64);
+        // Reserved, not touched: only scenes whose grid runs stages fill it.
+        if (search_ == PairSearch::grid) stage_time_.reserve(count);
         thread_candidates_.resize(static_cast<std::size_t>(threads_));
         for (ThreadCandidates& thread : thread_candidates_) {
             thread.found.reserve(count / static_cast<std::size_t>(threads_) + 64);
@@ -168,10 +170,12 @@ private:
             particles_, wall_time, box_, duration,
             start_.with_motion ? std::span<const BlockStart>(start_.blocks) : std::span<const BlockStart>()};
         // ... then, from the selection on (which the grid search may run in
-        // stages between its slices), the time of its accepted collision ...
+        // stages between its slices, keeping their times aside until it is
+        // over), the time of its accepted collision ...
         const std::span<double> collision_time = particle_time_;
         const CandidateOrder order(storage_order_.user_index());
-        EarlySelection selection(candidates_, ready_, order, partner_, collision_time, selection_, threads);
+        EarlySelection selection(candidates_, ready_, order, partner_, collision_time, stage_time_, selection_,
+                                 threads);
         if (search_ == PairSearch::brute_force) {
             find_pairs_brute_force(input, found);
         } else if (search_ == PairSearch::paths) {
@@ -207,7 +211,8 @@ private:
     std::vector<std::uint32_t> partner_;  // by particle: its partner, no_collision or wall_collision
     SelectionScratch selection_;
     std::vector<Collision> candidates_;
-    std::vector<Collision> ready_;  // EarlySelection's
+    std::vector<Collision> ready_;    // EarlySelection's
+    std::vector<double> stage_time_;  // EarlySelection's: sized on its first stage
     std::vector<ThreadCandidates> thread_candidates_;
     GridSearch grid_;
     PathSearch paths_;
