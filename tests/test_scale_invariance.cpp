@@ -10,6 +10,7 @@
 #include "random_scenes.hpp"
 
 #include "particlesim/exact_simulation.hpp"
+#include "particlesim/random_scene.hpp"
 #include "particlesim/stepped_simulation.hpp"
 
 #include <algorithm>
@@ -36,6 +37,11 @@ std::vector<NamedScene> scenes() {
         NamedScene scene = random_scenes::make(k);
         all.push_back({"random " + std::to_string(k), scene.world, 20, std::move(scene.particles)});
     }
+    // Sparse and fast: the grid cuts about 6 slices and decides collisions
+    // between them (EarlySelection).
+    const World sparse{5000.0, 3.0};
+    all.push_back({"sparse, slices decided in stages", sparse, 5,
+                   make_random_particles(1500, sparse, {7, SpeedRange{625.0, 2500.0}})});
     return all;
 }
 
