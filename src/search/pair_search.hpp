@@ -64,8 +64,7 @@ protected:
     SliceDecisions& operator=(const SliceDecisions&) = default;
     ~SliceDecisions() = default;
 
-private:
-    std::span<std::uint32_t> partner_;
+    std::span<std::uint32_t> partner_;  // what the decisions write
 };
 
 // What the pair test reads of one particle's motion; searches may keep

@@ -9,9 +9,7 @@ void EarlySelection::gather_ready(double time, std::span<ThreadCandidates> found
     // Kept in place: the later ones close up at the front of candidates_.
     auto kept_end = candidates_.begin();
     const auto sort_out = [&](const Collision& c, bool kept) {
-        const bool undecided =
-            partner_[c.i] == no_collision && (c.kind == CollisionKind::wall || partner_[c.j] == no_collision);
-        if (!undecided) return;
+        if (!undecided(c, partner_)) return;
         if (c.time < time) {
             ready_.push_back(c);
         } else if (kept) {

@@ -32,7 +32,6 @@ public:
           candidates_(candidates),
           ready_(ready),
           order_(order),
-          partner_(partner),
           collision_time_(collision_time),
           stage_time_(stage_time),
           scratch_(scratch),
@@ -52,7 +51,6 @@ private:
     std::vector<Collision>& candidates_;  // undecided, possibly later than the stages so far
     std::vector<Collision>& ready_;
     const CandidateOrder& order_;
-    std::span<std::uint32_t> partner_;
     std::span<double> collision_time_;
     // The stages' collision times, while the search still reads collision_time_ as wall times.
     std::vector<double>& stage_time_;

@@ -139,14 +139,11 @@ public:
     // Accepted candidates and those they rule out leave; the rest go on, in
     // their order: each block keeps its own, then they close up.
     void keep_undecided() {
-        const auto is_free = [&](const Collision& c) {
-            return partner_[c.i] == no_collision && (c.kind == CollisionKind::wall || partner_[c.j] == no_collision);
-        };
         scratch_.block_kept.resize(static_cast<std::size_t>(blocks_));
         for_each_block([&](std::int64_t block, std::uint32_t first, std::uint32_t last) {
             const auto begin = candidates_.begin() + first;
-            const auto kept =
-                std::remove_if(begin, candidates_.begin() + last, [&](const Collision& c) { return !is_free(c); });
+            const auto kept = std::remove_if(begin, candidates_.begin() + last,
+                                             [&](const Collision& c) { return !undecided(c, partner_); });
             scratch_.block_kept[block] = static_cast<std::uint32_t>(kept - begin);
         });
         auto end = candidates_.begin();

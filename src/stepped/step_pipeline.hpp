@@ -56,6 +56,12 @@ private:
     std::span<const std::uint32_t> user_index_;
 };
 
+// Whether no collision is decided yet for any particle of candidate c:
+// otherwise c is ruled out (`partner` as select_collisions leaves it).
+inline bool undecided(const Collision& c, std::span<const std::uint32_t> partner) {
+    return partner[c.i] == no_collision && (c.kind == CollisionKind::wall || partner[c.j] == no_collision);
+}
+
 // select_collisions leaves in `partner` for each particle the other
 // particle's stored index, or no_collision / wall_collision (collision.hpp).
 
