@@ -157,8 +157,10 @@ void an_interrupted_run_keeps_whole_blocks_and_goes_on() {
     const std::string checkpoint = (work_dir() / "long.checkpoint").string();
     const std::string output = (work_dir() / "long.out").string();
     std::filesystem::remove(checkpoint);
+    // Interrupted once the first checkpoint (step 40 of 4000) is there: mid-run on any machine.
     const run_process::Result got =
-        on_ranks(3, {"--checkpoint", checkpoint, "-o", output, scene}, run_process::Signal{SIGINT, 1500});
+        on_ranks(3, {"--checkpoint", checkpoint, "--checkpoint-every", "40", "-o", output, scene},
+                 run_process::Signal{SIGINT, 0, checkpoint});
     // mpirun answers the signal with a status of its own; the ranks stop as one process does.
     CHECK(got.status != 0);
     CHECK_EQ(lines_starting(got.err, "simcli: interrupted after step "), 1L);

@@ -12,6 +12,7 @@
 #include <fstream>
 #include <sstream>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace run_process {
@@ -29,11 +30,29 @@ inline std::string slurp(const std::string& path) {
     return text.str();
 }
 
-// A signal sent to the child `after_ms` milliseconds after its start (none when 0).
+// A signal sent to the child `after_ms` milliseconds after its start (none
+// when `number` is 0), or after `once_exists` appears, if named: a file the
+// child writes once it has made progress, so that the signal lands mid-run
+// however fast the machine runs it (not sent if the child ends first).
 struct Signal {
+    Signal() = default;
+    Signal(int signal_number, int delay_ms, std::string file = {})
+        : number(signal_number), after_ms(delay_ms), once_exists(std::move(file)) {}
+
     int number = 0;
     int after_ms = 0;
+    std::string once_exists;
 };
+
+// Waits until `path` exists (true) or child `pid` has ended (false; its
+// status is then in *status).
+inline bool wait_for_file(pid_t pid, const std::string& path, int* status) {
+    while (access(path.c_str(), F_OK) != 0) {
+        if (waitpid(pid, status, WNOHANG) == pid) return false;
+        usleep(2000);
+    }
+    return true;
+}
 
 // `stdout_path` empty: captured; otherwise the child's stdout goes there
 // (e.g. /dev/full). `close_stdout_pipe`: stdout is a pipe nobody reads.
@@ -69,12 +88,16 @@ inline Result run(const std::string& program, const std::vector<std::string>& ar
             close(pipe_fds[0]);  // nobody will read: the child's writes fail with EPIPE
             close(pipe_fds[1]);
         }
-        if (signal.number != 0) {
-            usleep(static_cast<useconds_t>(signal.after_ms) * 1000);
-            kill(pid, signal.number);
-        }
         int status = 0;
-        waitpid(pid, &status, 0);
+        bool running = true;
+        if (signal.number != 0) {
+            if (!signal.once_exists.empty()) running = wait_for_file(pid, signal.once_exists, &status);
+            if (running) {
+                usleep(static_cast<useconds_t>(signal.after_ms) * 1000);
+                kill(pid, signal.number);
+            }
+        }
+        if (running) waitpid(pid, &status, 0);
         result.status = WIFEXITED(status) ? WEXITSTATUS(status) : 128 + WTERMSIG(status);
     }
     posix_spawn_file_actions_destroy(&actions);
