@@ -8,7 +8,7 @@ set logscale xy
 set format x "10^{%L}"
 set format y "10^{%L}"
 set xlabel "particles N"
-set ylabel "seconds per particle-step (median)"
+set ylabel "seconds per particle-step after the first step (median)"
 set key top left
 set grid
 file = results."/sizes.csv"
