@@ -62,9 +62,6 @@ inline bool undecided(const Collision& c, std::span<const std::uint32_t> partner
     return partner[c.i] == no_collision && (c.kind == CollisionKind::wall || partner[c.j] == no_collision);
 }
 
-// select_collisions leaves in `partner` for each particle the other
-// particle's stored index, or no_collision / wall_collision (collision.hpp).
-
 // select_collisions' buffers, kept between steps so that a step allocates
 // nothing.
 struct SelectionScratch {
@@ -88,8 +85,9 @@ struct SelectionScratch {
 //
 // `candidates` holds the wall candidates on entry; each thread's pair
 // candidates are appended (duplicates are harmless: equal candidates keep
-// the first). Each particle gets its partner (or no_collision /
-// wall_collision) and, for an accepted collision, its time in
+// the first). Each particle gets its partner's stored index (or
+// no_collision / wall_collision, collision.hpp) and, for an accepted
+// collision, its time in
 // `collision_time`. Returns the accepted collisions counted by kind.
 StepCounts select_collisions(std::vector<Collision>& candidates, std::span<const ThreadCandidates> found,
                              const CandidateOrder& order, std::span<std::uint32_t> partner,
