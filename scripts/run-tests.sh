@@ -5,7 +5,7 @@
 # checks compiled in (any report fails the run). The Release pass also
 # cross-checks the bytes on aarch64 under qemu, runs the parallel stages under
 # ThreadSanitizer (clang's OpenMP) and fuzzes for 10 seconds.
-# 8 min 45 s to 9 min 38 s (four runs) from a clean clone on the project's 2-core machine with the tools already installed
+# 6 min 50 s to 9 min 38 s (five runs) from a clean clone on the project's 2-core machine with the tools already installed
 # (OpenMPI's tests included; the machine's speed varies by a third through a day); installing them on a fresh machine
 # comes on top.
 set -euo pipefail
