@@ -6,9 +6,9 @@
 
 #include <cstdint>
 #include <cstdio>
+#include <memory>
 #include <span>
 #include <stdexcept>
-#include <vector>
 
 namespace particlesim {
 
@@ -41,7 +41,10 @@ private:
 
     std::FILE* out_;
     NumberFormat format_;
-    std::vector<char> buffer_;
+    // Left uninitialised: a page is touched only when output reaches it (a
+    // first touch of a page is slow in a virtual machine, and most runs
+    // write far less than the buffer holds).
+    std::unique_ptr<char[]> buffer_;
     std::size_t used_ = 0;
 };
 

@@ -17,7 +17,8 @@ constexpr std::size_t longest_state_line = 4 * 21 + 4 * (max_fixed8_length + 1) 
 
 }  // namespace
 
-StateWriter::StateWriter(std::FILE* out, NumberFormat format) : out_(out), format_(format), buffer_(buffer_size) {}
+StateWriter::StateWriter(std::FILE* out, NumberFormat format)
+    : out_(out), format_(format), buffer_(std::make_unique_for_overwrite<char[]>(buffer_size)) {}
 
 void StateWriter::write_state(std::int64_t step, std::span<const Particle> particles, std::size_t first_index) {
     write_block(step, particles, first_index, false);
@@ -33,8 +34,8 @@ void StateWriter::write_block(std::int64_t step, std::span<const Particle> parti
     const std::size_t step_length =
         static_cast<std::size_t>(std::to_chars(step_text, step_text + 24, step).ptr - step_text);
     for (std::size_t i = 0; i < particles.size(); ++i) {
-        if (buffer_.size() - used_ < longest_state_line) drain();
-        char* out = buffer_.data() + used_;
+        if (buffer_size - used_ < longest_state_line) drain();
+        char* out = buffer_.get() + used_;
         std::memcpy(out, step_text, step_length);
         out += step_length;
         *out++ = ' ';
@@ -51,13 +52,13 @@ void StateWriter::write_block(std::int64_t step, std::span<const Particle> parti
             out = std::to_chars(out, out + 21, p.wall_collisions).ptr;
         }
         *out++ = '\n';
-        used_ = static_cast<std::size_t>(out - buffer_.data());
+        used_ = static_cast<std::size_t>(out - buffer_.get());
     }
 }
 
 void StateWriter::drain() {
     if (used_ == 0) return;
-    if (std::fwrite(buffer_.data(), 1, used_, out_) != used_) {
+    if (std::fwrite(buffer_.get(), 1, used_, out_) != used_) {
         throw OutputError(std::string("cannot write the output: ") + std::strerror(errno));
     }
     used_ = 0;
