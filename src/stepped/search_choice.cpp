@@ -1,6 +1,7 @@
 #include "stepped/search_choice.hpp"
 
 #include "search/grid_search.hpp"
+#include "search/path_lines.hpp"
 #include "stepped/stepped_tuning.hpp"
 
 #include <algorithm>
@@ -34,7 +35,8 @@ SearchCosts estimate_search_costs(const World& world, std::span<const Particle> 
     costs.slices = time_slices(speeds / count * micro, slice_sweep_in_spacings * spacing);
     // Each new line is tested against every line; the lines that pass (about
     // 4r / L of them, more in a small box) get the exact interval.
-    const double per_line_test = paths_line_test_ns + paths_near_line_ns * std::min(1.0, 4.0 * r / box);
+    const double line_test_ns = PathLines::supports_lanes(16) ? paths_line_test_sixteen_lanes_ns : paths_line_test_ns;
+    const double per_line_test = line_test_ns + paths_near_line_ns * std::min(1.0, 4.0 * r / box);
     costs.paths_ns = costs.new_lines * (paths_new_line_ns + count * per_line_test);
     costs.grid_ns = count * (grid_particle_ns + grid_particle_slice_ns * costs.slices);
     return costs;

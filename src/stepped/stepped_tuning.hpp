@@ -23,8 +23,14 @@ inline constexpr std::size_t brute_force_below = 48;
 // nanoseconds of the benchmark machine (AVX2: eight float lanes), so only
 // their ratios matter. The paths search: each new line ...
 inline constexpr double paths_new_line_ns = 180.0;
-// ... plus this for each line it is tested against ...
+// ... plus this for each line it is tested against (eight lanes) ...
 inline constexpr double paths_line_test_ns = 0.16;
+// ... or this where the processor tests sixteen lines at a time (AVX-512):
+// fitted to both searches forced on the same scenes on a processor with
+// AVX-512, where the paths search was the faster at 8000 disks in L =
+// 20000 (1.33 times) and at 16384 at the default density (1.23 times); each
+// scene's measured ratio asks for 0.05 to 0.09.
+inline constexpr double paths_line_test_sixteen_lanes_ns = 0.06;
 // ... plus this times the fraction that pass (about 4r / L): their intervals.
 inline constexpr double paths_near_line_ns = 100.0;
 // The grid: each particle, plus this for each time slice it is binned in.
