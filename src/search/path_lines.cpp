@@ -86,18 +86,28 @@ template <typename Floats>
     std::memcpy(&group.vy, vy + at, sizeof(Floats));
 }
 
-// The line test, lane by lane: |dp x dv|^2 <= reach_term |dv|^2 +
-// margin_term. Written once, so that a line passes the same way alone and in
-// a block.
-template <typename Floats, typename Mask>
-[[gnu::always_inline]] inline void lines_close(const LineGroup<Floats>& group, const LineQuery& q, Mask& close) {
+// The two sides of the line test, lane by lane: |dp x dv|^2 and
+// reach_term |dv|^2 + margin_term. Written once, so that a line passes the
+// same way alone, in a block and in every lane width.
+template <typename Floats>
+[[gnu::always_inline]] inline void line_test_sides(const LineGroup<Floats>& group, const LineQuery& q, Floats& cross_sq,
+                                                   Floats& bound) {
     const Floats dx = group.x - q.x;
     const Floats dy = group.y - q.y;
     const Floats dvx = group.vx - q.vx;
     const Floats dvy = group.vy - q.vy;
     const Floats cross = dx * dvy - dy * dvx;
     const Floats speed_sq = dvx * dvx + dvy * dvy;
-    close = cross * cross <= q.reach_term * speed_sq + q.margin_term;
+    cross_sq = cross * cross;
+    bound = q.reach_term * speed_sq + q.margin_term;
+}
+
+// The line test: |dp x dv|^2 <= reach_term |dv|^2 + margin_term.
+template <typename Floats, typename Mask>
+[[gnu::always_inline]] inline void lines_close(const LineGroup<Floats>& group, const LineQuery& q, Mask& close) {
+    Floats cross_sq, bound;
+    line_test_sides(group, q, cross_sq, bound);
+    close = cross_sq <= bound;
 }
 
 // Appends first + k to `near` for every bit k set, lowest first.
@@ -177,19 +187,13 @@ template <int queries>
 
 // AVX-512 compares into mask registers, and GCC's vector extension takes a
 // sixteen-lane comparison lane by lane to make a vector of it (3.6 times
-// the eight lanes' time on the default scene). The sixteen-lane tests take
-// their bits from the mask register instead: the same arithmetic as
-// lines_close(), then one comparison.
+// the eight lanes' time on the default scene). The sixteen-lane test takes
+// its bits from the mask register instead.
 [[gnu::target("avx512f,fma"), gnu::always_inline]] inline std::uint32_t close_bits_sixteen(
     const LineGroup<SixteenFloats>& group, const LineQuery& q) {
-    const SixteenFloats dx = group.x - q.x;
-    const SixteenFloats dy = group.y - q.y;
-    const SixteenFloats dvx = group.vx - q.vx;
-    const SixteenFloats dvy = group.vy - q.vy;
-    const SixteenFloats cross = dx * dvy - dy * dvx;
-    const SixteenFloats speed_sq = dvx * dvx + dvy * dvy;
-    const SixteenFloats bound = q.reach_term * speed_sq + q.margin_term;
-    return _mm512_cmp_ps_mask(static_cast<__m512>(cross * cross), static_cast<__m512>(bound), _CMP_LE_OQ);
+    SixteenFloats cross_sq, bound;
+    line_test_sides(group, q, cross_sq, bound);
+    return _mm512_cmp_ps_mask(static_cast<__m512>(cross_sq), static_cast<__m512>(bound), _CMP_LE_OQ);
 }
 
 // gather_lanes() in sixteen lanes.
