@@ -188,7 +188,9 @@ template <int queries>
 // AVX-512 compares into mask registers, and GCC's vector extension takes a
 // sixteen-lane comparison lane by lane to make a vector of it (3.6 times
 // the eight lanes' time on the default scene). The sixteen-lane test takes
-// its bits from the mask register instead.
+// its bits from the mask register instead. Its two loops below repeat
+// gather_lanes() and gather_lanes_block(): a function compiled for AVX-512
+// cannot be inlined into those generic templates (GCC and clang both refuse).
 [[gnu::target("avx512f,fma"), gnu::always_inline]] inline std::uint32_t close_bits_sixteen(
     const LineGroup<SixteenFloats>& group, const LineQuery& q) {
     SixteenFloats cross_sq, bound;
