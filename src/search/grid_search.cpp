@@ -169,10 +169,12 @@ void GridSearch::find_pairs(const PairSearchInput& in, std::optional<int> forced
     layout_ = choose_layout(in, forced_cells, threads);
 
     const std::size_t count = in.particles.size();
-    // Small scenes: one thread a slice, each with buffers of its own (fixed by
-    // the scene, so they are allocated once). Large scenes: all threads share
-    // each slice, and one set of buffers keeps the memory per particle low.
-    const bool parallel_slices = threads >= 2 && count < slice_parallel_below;
+    // Small scenes cut into a slice a thread or more: one thread a slice,
+    // each with buffers of its own (fixed by the scene, so they are allocated
+    // once). Large scenes, and scenes of fewer slices than threads (a slow
+    // gas has one): all threads share each slice, and one set of buffers
+    // keeps the memory per particle low.
+    const bool parallel_slices = threads >= 2 && count < slice_parallel_below && layout_.slices >= threads;
     const int workers = worker_count(buffers.size(), static_cast<std::int64_t>(count), min_particles_per_thread);
     // Grown, never shrunk: a step may use fewer threads than the one before.
     const std::size_t workspaces = parallel_slices ? static_cast<std::size_t>(threads) : 1;

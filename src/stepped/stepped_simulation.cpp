@@ -50,12 +50,19 @@ public:
         : world_(world), box_(Box::of(world)), options_(checked(options)), particles_(std::move(particles)) {
         require_valid_scene("particlesim::SteppedSimulation", world_, particles_);
         const std::size_t count = particles_.size();
-        sort_every_ = options_.sort_by_position_every.value_or(count >= sort_by_position_from ? sort_every_steps : 0);
-        if (sort_every_ > 0) storage_order_.reserve(count);
         threads_ = options_.threads.value_or(default_thread_count());
         thread_choice_ = ThreadChoice(threads_, !options_.threads && count <= threads_by_trials_up_to);
         search_ = options_.pair_search;
         if (search_ == PairSearch::automatic) search_ = automatic_search(world_, particles_, options_.substeps);
+        const bool threads_share_grid = search_ == PairSearch::grid && threads_ >= 2;
+        const bool sorted =
+            count >= sort_by_position_from || (threads_share_grid && count >= sort_by_position_shared_from);
+        sort_every_ = options_.sort_by_position_every.value_or(sorted ? sort_every_steps : 0);
+        // Where the sort pays for the threads alone, a state read back in the
+        // user's order (print mode reads every step) waits for the next
+        // sort: sorting every step would cost more than the threads gain.
+        sort_after_reads_ = options_.sort_by_position_every.has_value() || count >= sort_by_position_from;
+        if (sort_every_ > 0) storage_order_.reserve(count);
         particle_time_.resize(count);
         partner_.assign(count, no_collision);
         start_.resize(count);
@@ -80,7 +87,8 @@ public:
 
     void step() {
         last_step_ = {};
-        if (sort_every_ > 0 && (storage_order_.is_user_order() || steps_done_ % sort_every_ == 0)) {
+        const bool read_back = sort_after_reads_ && storage_order_.is_user_order();
+        if (sort_every_ > 0 && (read_back || steps_done_ % sort_every_ == 0)) {
             storage_order_.sort_by_position(particles_, box_);
             particles_reordered();
             PARTICLESIM_ASSERT(storage_order_.is_permutation(), "the storage order is a permutation of the particles");
@@ -199,7 +207,8 @@ private:
     PairSearch search_ = PairSearch::grid;  // never automatic
     int threads_ = 1;                       // the most a step uses
     ThreadChoice thread_choice_{1, false};
-    int sort_every_ = 0;  // steps; 0: never
+    int sort_every_ = 0;             // steps; 0: never
+    bool sort_after_reads_ = false;  // sort again at the first step after particles() (else on schedule only)
     std::vector<Particle> particles_;
     StorageOrder storage_order_;
 

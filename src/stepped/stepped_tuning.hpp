@@ -48,8 +48,16 @@ inline constexpr std::int64_t paths_line_tests_per_thread = std::int64_t{1} << 2
 // --- Storage sorted by position (stepped/storage_order.*)
 
 // Particles from which the storage is sorted by position: below, the state
-// stays in the caches in any order.
+// stays in the caches in any order ...
 inline constexpr std::size_t sort_by_position_from = 65536;
+// ... unless threads share the grid search's binning and the stages after
+// it from here on: each takes a block of the storage, and in the scene's
+// own order every block has particles in every cell, so that the threads
+// write the same cache lines (the gas at 16384 particles: two threads took
+// 1.06 to 1.12 times one thread's time unsorted, 0.86 sorted). The paths
+// search keeps its lines by stored index, and would make them all afresh
+// at every sort.
+inline constexpr std::size_t sort_by_position_shared_from = 4096;
 // Steps between sorts: faster particles scramble the order sooner, and each
 // sort costs a pass over the particles (16 and 32 measured no different).
 inline constexpr int sort_every_steps = 8;
@@ -108,8 +116,9 @@ inline constexpr int decide_from_slices = 4;
 // boxes instead of joining the large boxes, which meet each other in a
 // quadratic loop. Longer paths stay large.
 inline constexpr int max_pieces = 8;
-// Particles below which threads take whole slices each; from here on a
-// step has one slice, which the threads share.
+// Particles below which threads take whole slices each, where a step has
+// a slice a thread or more; from here on a step has one slice, which the
+// threads share.
 inline constexpr std::size_t slice_parallel_below = 50000;
 // Ranges of cells each worker sums when the threads share a slice's binning.
 inline constexpr std::size_t cell_ranges_per_worker = 8;
