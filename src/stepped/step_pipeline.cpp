@@ -302,6 +302,11 @@ void resolve_four_pairs(std::span<PairAtContact, 4> pairs, const Box& box, doubl
 
 }  // namespace
 
+int resolution_threads(int threads, const StepCounts& accepted) {
+    const auto collided = static_cast<std::int64_t>(2 * accepted.particle_collisions + accepted.wall_collisions);
+    return worker_count(static_cast<std::size_t>(threads), collided, resolution_collided_per_thread);
+}
+
 void resolve_collisions(std::span<Particle> particles, std::span<const std::uint32_t> partner,
                         std::span<const double> collision_time, const Box& box, double duration, int threads) {
     const auto count = static_cast<std::int64_t>(particles.size());

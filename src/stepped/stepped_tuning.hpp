@@ -95,6 +95,10 @@ inline constexpr std::int64_t selection_block = 4096;
 // pairs ahead their partners are fetched.
 inline constexpr std::int64_t resolution_block = 1024;
 inline constexpr std::size_t resolution_fetch_ahead = 16;
+// Collided particles (two a pair, one a wall hit) a thread must have before
+// the resolution takes a second one: its pass over the particles is light,
+// and below this a second thread cost more than it saved.
+inline constexpr std::int64_t resolution_collided_per_thread = 1024;
 
 // --- The grid search (search/grid_search.cpp)
 
