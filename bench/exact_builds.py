@@ -9,23 +9,19 @@ process (sh -c 'while :; do :; done') runs beside them throughout.
 
     bench/exact_builds.py NEW_SIMCLI OLD_SIMCLI SIMGEN [ROUNDS] [--busy] > bench/results/<machine>/<name>.csv
 """
-import subprocess
 import sys
 import tempfile
 
-from simcli_runs import alternate, cases, median, write_gas
+from simcli_runs import alternate, beside_busy_process, cases, command_line, load_name, median, write_gas
 
-arguments = [a for a in sys.argv[1:] if a != "--busy"]
-busy = "--busy" in sys.argv[1:]
-if len(arguments) < 3:
-    sys.exit(__doc__)
+arguments, options = command_line(__doc__, 3)
+busy = "--busy" in options
 new_simcli, old_simcli, simgen = arguments[:3]
 rounds = int(arguments[3]) if len(arguments) > 3 else 7
 
 print("particles,steps,rounds,load,new_median_s,old_median_s,collisions,new_collisions_per_s,"
       "old_collisions_per_s,ratio_median,ratio_min,ratio_max")
-load = subprocess.Popen(["sh", "-c", "while :; do :; done"]) if busy else None
-try:
+with beside_busy_process(busy):
     with tempfile.TemporaryDirectory() as directory:
         for particles, steps in cases:
             scene = write_gas(simgen, directory, particles, steps)
@@ -37,10 +33,7 @@ try:
                 sys.exit(f"the builds disagree at {particles} disks: {collisions['new']} and {collisions['old']} collisions")
             new_median = median(times["new"])
             old_median = median(times["old"])
-            print(f"{particles},{steps},{rounds},{'one busy process' if busy else 'quiet'},{new_median:.4f},"
+            print(f"{particles},{steps},{rounds},{load_name(busy)},{new_median:.4f},"
                   f"{old_median:.4f},{collisions['new']},{collisions['new'] / new_median:.4g},"
                   f"{collisions['old'] / old_median:.4g},{median(ratios):.3f},{min(ratios):.3f},"
                   f"{max(ratios):.3f}", flush=True)
-finally:
-    if load:
-        load.kill()

@@ -1,10 +1,12 @@
 """What the comparison scripts share (exact_boundaries.py, exact_builds.py,
 stepped_builds.py): simcli's step time, two commands run alternately, the
 order flipping every round, and the exact engine's gas scenes."""
+import contextlib
 import os
 import re
 import statistics
 import subprocess
+import sys
 
 cases = [(10000, 200), (100000, 20), (1000000, 4)]  # the gas at area fraction 0.3: about 5e5 to 1e6 collisions each
 
@@ -51,3 +53,26 @@ def quartiles(values):
     """The lower and upper quartiles."""
     cuts = statistics.quantiles(values, n=4)
     return cuts[0], cuts[2]
+
+
+def command_line(usage, at_least):
+    """sys.argv's arguments that are not options (exits with USAGE when fewer than AT_LEAST), and its options."""
+    arguments = [a for a in sys.argv[1:] if not a.startswith("--")]
+    if len(arguments) < at_least:
+        sys.exit(usage)
+    return arguments, {a for a in sys.argv[1:] if a.startswith("--")}
+
+
+def load_name(busy):
+    return "one busy process" if busy else "quiet"
+
+
+@contextlib.contextmanager
+def beside_busy_process(busy):
+    """With BUSY, one busy process (sh -c 'while :; do :; done') runs while inside."""
+    load = subprocess.Popen(["sh", "-c", "while :; do :; done"]) if busy else None
+    try:
+        yield
+    finally:
+        if load:
+            load.kill()

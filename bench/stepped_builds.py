@@ -9,28 +9,20 @@ per-round ratios new / old. With --busy, one busy process
     bench/stepped_builds.py NEW_SIMCLI OLD_SIMCLI SCENE THREADS ROUNDS [--busy] [--header]
 """
 import os
-import subprocess
-import sys
 
-from simcli_runs import alternate, median, quartiles
+from simcli_runs import alternate, beside_busy_process, command_line, load_name, median, quartiles
 
-arguments = [a for a in sys.argv[1:] if not a.startswith("--")]
-if len(arguments) < 5:
-    sys.exit(__doc__)
+arguments, options = command_line(__doc__, 5)
 new_simcli, old_simcli, scene, threads, rounds = arguments[0], arguments[1], arguments[2], arguments[3], int(arguments[4])
-busy = "--busy" in sys.argv[1:]
+busy = "--busy" in options
 
-if "--header" in sys.argv[1:]:
+if "--header" in options:
     print("scene,threads,load,rounds,new_median_s,old_median_s,ratio_median,ratio_lower_quartile,"
           "ratio_upper_quartile,ratio_min,ratio_max")
-load = subprocess.Popen(["sh", "-c", "while :; do :; done"]) if busy else None
-try:
+with beside_busy_process(busy):
     commands = {build: [simcli, "-t", threads, scene] for build, simcli in (("old", old_simcli), ("new", new_simcli))}
     times, _, ratios = alternate(commands, rounds)
     lower, upper = quartiles(ratios)
-    print(f"{os.path.basename(scene)},{threads},{'one busy process' if busy else 'quiet'},{rounds},"
+    print(f"{os.path.basename(scene)},{threads},{load_name(busy)},{rounds},"
           f"{median(times['new']):.4f},{median(times['old']):.4f},"
           f"{median(ratios):.3f},{lower:.3f},{upper:.3f},{min(ratios):.3f},{max(ratios):.3f}", flush=True)
-finally:
-    if load:
-        load.kill()
