@@ -1,6 +1,7 @@
 """What the comparison scripts share (exact_boundaries.py, exact_builds.py,
-stepped_builds.py): simcli's step time, two commands run alternately, the
-order flipping every round, and the exact engine's gas scenes."""
+stepped_builds.py, two_threads.py): simcli's step time, two commands run
+alternately, the order flipping every round, the command line, the busy
+process beside them, and the exact engine's gas scenes."""
 import contextlib
 import os
 import re

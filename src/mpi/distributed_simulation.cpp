@@ -482,8 +482,7 @@ private:
         // Resolve (a shared pair on both its ranks, each keeping its own
         // particle) and advance; the ghosts are then dropped.
         const std::span<std::uint32_t> partner = selection_.partner();
-        resolve_collisions(local_, partner, wall_time_, box_, duration,
-                           resolution_threads(threads_, selection_.accepted()));
+        resolve_collisions(local_, partner, wall_time_, selection_.accepted(), box_, duration, threads_);
         advance_free_particles(std::span(local_).first(owned_), partner.first(owned_), box_, duration,
                                std::span(wall_time_).first(owned_), next_start_, threads_);
         local_.resize(owned_);

@@ -302,15 +302,14 @@ void resolve_four_pairs(std::span<PairAtContact, 4> pairs, const Box& box, doubl
 
 }  // namespace
 
-int resolution_threads(int threads, const StepCounts& accepted) {
-    const auto collided = static_cast<std::int64_t>(2 * accepted.particle_collisions + accepted.wall_collisions);
-    return worker_count(static_cast<std::size_t>(threads), collided, resolution_collided_per_thread);
-}
-
 void resolve_collisions(std::span<Particle> particles, std::span<const std::uint32_t> partner,
-                        std::span<const double> collision_time, const Box& box, double duration, int threads) {
+                        std::span<const double> collision_time, const StepCounts& accepted, const Box& box,
+                        double duration, int threads) {
     const auto count = static_cast<std::int64_t>(particles.size());
-    const int workers = worker_count(static_cast<std::size_t>(threads), count, min_particles_per_thread);
+    const auto collided = static_cast<std::int64_t>(2 * accepted.particle_collisions + accepted.wall_collisions);
+    const int workers =
+        std::min(worker_count(static_cast<std::size_t>(threads), count, min_particles_per_thread),
+                 worker_count(static_cast<std::size_t>(threads), collided, resolution_collided_per_thread));
     // In storage order, block by block, reading only per-particle arrays: a
     // large scene is stored by position, so this walks memory instead of
     // jumping through it. A pair is resolved once, at its lower stored

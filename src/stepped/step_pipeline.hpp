@@ -93,11 +93,11 @@ StepCounts select_collisions(std::vector<Collision>& candidates, std::span<const
                              const CandidateOrder& order, std::span<std::uint32_t> partner,
                              std::span<double> collision_time, SelectionScratch& scratch, int threads);
 
-// Carries out every accepted collision and the rest of the step of its particles.
+// Carries out every accepted collision (`accepted` counts them: a second
+// thread only for enough of them) and the rest of the step of its particles.
 void resolve_collisions(std::span<Particle> particles, std::span<const std::uint32_t> partner,
-                        std::span<const double> collision_time, const Box& box, double duration, int threads);
-// The threads resolve_collisions() should take for the `accepted` collisions, of `threads`.
-int resolution_threads(int threads, const StepCounts& accepted);
+                        std::span<const double> collision_time, const StepCounts& accepted, const Box& box,
+                        double duration, int threads);
 
 // Moves every particle without a collision, sets every partner back to
 // no_collision, and in the same pass measures the start of the next step of

@@ -192,7 +192,7 @@ private:
             grid_.find_pairs(input, options_.grid_cells, found, &selection);
         }
         const StepCounts accepted = selection.decide_rest(found);
-        resolve_collisions(particles_, partner_, collision_time, box_, duration, resolution_threads(threads, accepted));
+        resolve_collisions(particles_, partner_, collision_time, accepted, box_, duration, threads);
         // ... and the next step's first wall time again, measured as the free flight moves the particles.
         advance_free_particles(particles_, partner_, box_, duration, particle_time_, start_, threads);
 
