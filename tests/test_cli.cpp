@@ -193,8 +193,8 @@ void bad_usage() {
     expect_rejected({"--trajectory", "run.xyz", "--trajectory-every", "0"}, scene, "simcli: --trajectory-every",
                     "expected an integer in [1, ");
     expect_rejected({"--trajectory-every", "2"}, scene, "simcli: --trajectory-every K needs --trajectory", "");
-    expect_rejected({"--resume", "state.ckpt", "--trajectory", "run.xyz"}, scene,
-                    "simcli: --animate, --snapshot, --trajectory and --observables need the whole run", "");
+    expect_rejected({"--resume", "state.ckpt", "--snapshot", "run.svg"}, scene,
+                    "simcli: --animate and --snapshot need the whole run", "");
 }
 
 void bad_input() {

@@ -153,6 +153,93 @@ void signals_checkpoint_and_resume() {
     }
 }
 
+// The lines of `text` after its first (a header).
+std::vector<std::string> rows_of(const std::string& text) {
+    std::vector<std::string> rows;
+    std::size_t at = text.find('\n');
+    while (at != std::string::npos && at + 1 < text.size()) {
+        const std::size_t end = text.find('\n', at + 1);
+        rows.push_back(text.substr(at + 1, end - at - 1));
+        at = end;
+    }
+    return rows;
+}
+
+// A row's step (its first field) and its pair collisions (its third).
+std::int64_t row_field(const std::string& row, int field) {
+    std::size_t at = 0;
+    for (int k = 0; k < field; ++k) at = row.find(',', at) + 1;
+    return std::stoll(row.substr(at, row.find(',', at) - at));
+}
+
+// With a checkpoint, an interrupted run keeps its trajectory and its
+// observables, the latter with a last row up to the interrupted step; the
+// resumed run writes their rest. The trajectory's two parts are the
+// uninterrupted run's frames; every observables row but the two around the
+// interruption is the uninterrupted run's, byte for byte, and those two
+// share its row's interval and collisions.
+void observables_and_trajectory_resume() {
+    const ScratchDir dir;
+    const std::int64_t every = 200;
+    const std::string checkpoint = dir / "run.checkpoint";
+    const auto with_files = [&](std::vector<std::string> args, const std::string& name) {
+        for (const std::string& a :
+             {std::string("-o"), std::string("/dev/null"), std::string("--observables"), dir / (name + ".csv"),
+              std::string("--observe-every"), std::to_string(every), std::string("--trajectory"), dir / (name + ".xyz"),
+              std::string("--trajectory-every"), std::to_string(every)})
+            args.push_back(a);
+        return args;
+    };
+    const Result first = simcli_run(with_files({"--engine", "exact", "--checkpoint", checkpoint, "--stats"}, "first"),
+                                    "400 150 1 100000 perf\n", {SIGINT, 700});
+    CHECK_EQ(first.status, 130);
+    CHECK(first.err.find("the output, " + (dir / "first.csv") + " and " + (dir / "first.xyz") + " hold steps up to ") !=
+          std::string::npos);
+    CHECK(first.err.find("stats: pressure beta P (2r)^2 = ") != std::string::npos);  // over the rows kept
+    const std::size_t after = first.err.find("interrupted after step ");
+    CHECK(after != std::string::npos);
+    if (after == std::string::npos) return;
+    const std::int64_t stopped = std::stoll(first.err.substr(after + 23));
+    CHECK(stopped > every);
+
+    // The rest cut short, as in signals_checkpoint_and_resume().
+    const std::int64_t end = stopped + 3 * every + 17;
+    std::string saved = run_process::slurp(checkpoint);
+    const std::size_t steps_at = saved.find(" steps 100000 ");
+    CHECK(steps_at != std::string::npos);
+    if (steps_at == std::string::npos) return;
+    saved.replace(steps_at, 14, " steps " + std::to_string(end) + " ");
+    write_file(checkpoint, saved);
+    CHECK_EQ(simcli_run(with_files({"--resume", checkpoint, "--quiet"}, "rest")).status, 0);
+    CHECK_EQ(
+        simcli_run(with_files({"--engine", "exact"}, "whole"), "400 150 1 " + std::to_string(end) + " perf\n").status,
+        0);
+
+    CHECK(run_process::slurp(dir / "first.xyz") + run_process::slurp(dir / "rest.xyz") ==
+          run_process::slurp(dir / "whole.xyz"));
+    const std::vector<std::string> head_rows = rows_of(run_process::slurp(dir / "first.csv"));
+    const std::vector<std::string> rest_rows = rows_of(run_process::slurp(dir / "rest.csv"));
+    const std::vector<std::string> whole_rows = rows_of(run_process::slurp(dir / "whole.csv"));
+    CHECK(!head_rows.empty() && !rest_rows.empty());
+    if (head_rows.empty() || rest_rows.empty()) return;
+    CHECK_EQ(row_field(head_rows.back(), 0), stopped);
+    const bool on_a_row = stopped % every == 0;  // then no row is split
+    std::vector<std::string> joined(head_rows.begin(), head_rows.end() - (on_a_row ? 0 : 1));
+    joined.insert(joined.end(), rest_rows.begin() + (on_a_row ? 0 : 1), rest_rows.end());
+    CHECK_EQ(joined.size() + (on_a_row ? 0U : 1U), whole_rows.size());
+    if (joined.size() + (on_a_row ? 0U : 1U) != whole_rows.size()) return;
+    const std::size_t split = head_rows.size() - 1;  // the whole run's row that the interruption cut in two
+    for (std::size_t k = 0, w = 0; k < joined.size(); ++k, ++w) {
+        if (!on_a_row && w == split) ++w;
+        check::Context context("row ", k);
+        CHECK(joined[k] == whole_rows[w]);
+    }
+    if (!on_a_row) {
+        CHECK_EQ(row_field(rest_rows.front(), 0), row_field(whole_rows[split], 0));
+        CHECK_EQ(row_field(head_rows.back(), 2) + row_field(rest_rows.front(), 2), row_field(whole_rows[split], 2));
+    }
+}
+
 // Without a checkpoint an interrupted or failed run leaves FILE as it was,
 // and no temporary file behind; a device is written in place.
 void output_file_replaced_only_on_success() {
@@ -235,6 +322,12 @@ void bad_usage() {
     rejected({"--resume", dir / "bad"}, "the saved state is damaged");
     write_file(dir / "other", "something else\n");
     rejected({"--resume", dir / "other"}, "not a checkpoint simcli can resume");
+    // The observables are the exact engine's, after a checkpoint too.
+    const std::string stepped = dir / "stepped.checkpoint";
+    CHECK_EQ(simcli_run({"--checkpoint", stepped, "--checkpoint-every", "2"}, "20 60 1 3 perf\n").status, 0);
+    rejected({"--resume", stepped, "--observables", dir / "rows.csv"},
+             "--observables needs the exact engine; " + stepped + " is a checkpoint of the step engine");
+    rejected({"--resume", stepped, "--animate", dir / "page.html"}, "--animate and --snapshot need the whole run");
 }
 
 }  // namespace
@@ -244,6 +337,7 @@ int main(int argc, char** argv) {
                       {{"checkpoint every K resumes byte for byte", checkpoint_every_k_resumes_byte_for_byte},
                        {"signals, checkpoint and resume", signals_checkpoint_and_resume},
                        {"resumed stats count the resumed steps", resumed_stats_count_the_resumed_steps},
+                       {"observables and trajectory resume", observables_and_trajectory_resume},
                        {"output file replaced only on success", output_file_replaced_only_on_success},
                        {"exact numbers", exact_numbers},
                        {"progress line", progress_line},

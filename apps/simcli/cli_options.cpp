@@ -40,10 +40,12 @@ Simulates N hard disks bouncing elastically in a square box, in discrete steps.
       --exact-numbers              numbers in the shortest form that reads back to the
                                    same double, instead of 8 decimals
       --checkpoint FILE            write the run's exact state to FILE on SIGINT/SIGTERM
-                                   (then exit 130 / 143, keeping the output written so far)
+                                   (then exit 130 / 143, keeping the output, trajectory and
+                                   observables written so far)
       --checkpoint-every K           and after every K steps
       --resume FILE                continue a checkpointed run bit for bit; writes the
-                                   steps after the checkpoint (append them to the first part)
+                                   steps after the checkpoint (append them to the first part),
+                                   and so do --trajectory and --observables
       --progress / --quiet         force / silence the progress line on stderr (default:
                                    on a terminal, for runs longer than about two seconds)
       --animate FILE.html          also write a self-contained page that plays the run
@@ -191,9 +193,8 @@ void check_combinations(CliOptions& options, const Given& given) {
         !options.resume_path) {
         throw BadInput("--boundary periodic needs --engine exact: the step rules are those of a walled box");
     }
-    if (options.resume_path &&
-        (options.animation || options.snapshot_path || options.trajectory_path || options.observables_path)) {
-        throw BadInput("--animate, --snapshot, --trajectory and --observables need the whole run; not with --resume");
+    if (options.resume_path && (options.animation || options.snapshot_path)) {
+        throw BadInput("--animate and --snapshot need the whole run; not with --resume");
     }
     if (options.resume_path) {
         if (options.scene_path != "-") throw BadInput("--resume continues a checkpoint; it takes no scene file");

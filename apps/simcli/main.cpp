@@ -54,8 +54,45 @@ struct Pictures {
     ColourBy colour_by = ColourBy::speed;        // the snapshot's (the page keeps its own)
     Boundary boundary = Boundary::walls;
 
+    // The run's first step: 0, whose state a whole run pictures, or a
+    // checkpoint's (a resumed run writes only what comes after it). The
+    // observables' first interval begins here.
+    template <Engine E>
+    void start(std::int64_t step, const E& engine, const World& world) {
+        if (step == 0) picture_state(0, engine, world);
+        if constexpr (requires { engine.collision_sums(); }) {
+            if (observables) observables->start(step, engine.totals(), engine.collision_sums());
+        }
+    }
+
+    // Every step after the first.
     template <Engine E>
     void observe(std::int64_t step, const E& engine, const World& world) {
+        picture_state(step, engine, world);
+        if constexpr (requires { engine.collision_sums(); }) {
+            if (observables) observables->observe(step, engine.particles(), engine.totals(), engine.collision_sums());
+        }
+    }
+
+    // A run stopped at `step` with a checkpoint: the trajectory and the
+    // observables (with a last row up to `step`) are kept, as the output is,
+    // and a resumed run writes the rest of each.
+    template <Engine E>
+    void keep_at_interruption(std::int64_t step, const E& engine) {
+        if constexpr (requires { engine.collision_sums(); }) {
+            if (observables) observables->end_at(step, engine.particles(), engine.totals(), engine.collision_sums());
+        }
+        commit();
+    }
+
+    void commit() {
+        if (trajectory) trajectory->commit();
+        if (observables) observables->commit();
+    }
+
+private:
+    template <Engine E>
+    void picture_state(std::int64_t step, const E& engine, const World& world) {
         if (animation && animation->per_step() == 1 && animation->wants(step)) {
             if constexpr (requires { engine.collision_sums(); }) {
                 animation->add_frame(static_cast<double>(step), engine.particles(), engine.totals(), 1.0,
@@ -68,16 +105,16 @@ struct Pictures {
             write_snapshot(*snapshot_path, world, engine.particles(), step, colour_by, boundary);
         }
         if (trajectory) trajectory->observe(step, engine.particles());
-        if constexpr (requires { engine.collision_sums(); }) {
-            if (observables) observables->observe(step, engine.particles(), engine.totals(), engine.collision_sums());
-        }
-    }
-
-    void commit() {
-        if (trajectory) trajectory->commit();
-        if (observables) observables->commit();
     }
 };
+
+// The files an interrupted run names beside its output: the trajectory and the observables.
+std::vector<std::string> side_files(const CliOptions& options) {
+    std::vector<std::string> files;
+    if (options.observables_path) files.push_back(*options.observables_path);
+    if (options.trajectory_path) files.push_back(*options.trajectory_path);
+    return files;
+}
 
 // Runs `engine` from its current step to settings.steps, writing the states.
 template <Engine E>
@@ -90,7 +127,7 @@ RunStats write_run(E& engine, const RunSettings& settings, const CliOptions& opt
     StateWriter writer(output.stream(), settings.numbers);
     // A resumed run goes on where the first part of its output ends.
     if (first_step == 0) writer.write_state(0, engine.particles());
-    if (first_step == 0) pictures.observe(0, engine, settings.world);
+    pictures.start(first_step, engine, settings.world);
     const bool print = settings.mode == OutputMode::print;
     const auto start = std::chrono::steady_clock::now();
     {
@@ -111,9 +148,12 @@ RunStats write_run(E& engine, const RunSettings& settings, const CliOptions& opt
             if (signal != 0) {
                 writer.flush();  // whole blocks only: what stdout shows ends at a step
                 // With a checkpoint, the output is the first part of the run; --resume writes the rest.
-                if (options.checkpoint_path) output.commit();
-                throw Interrupted(
-                    signal, interruption_message(step, settings.steps, options.checkpoint_path, options.output_path));
+                if (options.checkpoint_path) {
+                    output.commit();
+                    pictures.keep_at_interruption(step, engine);
+                }
+                throw Interrupted(signal, interruption_message(step, settings.steps, options.checkpoint_path,
+                                                               options.output_path, side_files(options)));
             }
         }
     }
@@ -151,7 +191,14 @@ void print_pressure(const ObservablesFile& observables) {
 
 template <Engine E>
 void run_and_report(E& engine, const RunSettings& settings, const CliOptions& options, Pictures& pictures) {
-    const RunStats stats = write_run(engine, settings, options, pictures);
+    RunStats stats;
+    try {
+        stats = write_run(engine, settings, options, pictures);
+    } catch (const Interrupted&) {
+        // The rows kept (with a checkpoint) still give their pressure.
+        if (options.stats && options.checkpoint_path && pictures.observables) print_pressure(*pictures.observables);
+        throw;
+    }
     if (!options.stats) return;
     print_stats(settings.engine == EngineChoice::exact ? "exact" : "step", stats, settings.steps);
     if (pictures.observables) print_pressure(*pictures.observables);
@@ -277,18 +324,39 @@ void resume_run(const CliOptions& options) {
         throw BadInput(e.what());
     }
     const RunSettings& settings = checkpoint.settings;
-    Pictures no_pictures;  // --animate and --snapshot need the whole run
+    if (options.observables_path && settings.engine != EngineChoice::exact) {
+        throw BadInput("--observables needs the exact engine; " + path + " is a checkpoint of the step engine");
+    }
+    if (options.observables_path && options.measure_from > settings.steps) {
+        throw BadInput("--measure-from " + std::to_string(options.measure_from) + " is beyond the checkpointed run's " +
+                       std::to_string(settings.steps) + " steps");
+    }
+    // The trajectory and the observables go on after the checkpoint's step
+    // (--animate and --snapshot need the whole run).
+    Pictures pictures;
+    try {
+        if (options.trajectory_path) {
+            pictures.trajectory.emplace(*options.trajectory_path, settings.world, settings.boundary,
+                                        options.trajectory_every, settings.steps);
+        }
+        if (options.observables_path) {
+            pictures.observables.emplace(*options.observables_path, settings.world, settings.boundary,
+                                         options.observe_every, settings.steps, options.measure_from);
+        }
+    } catch (const OutputError& e) {
+        throw BadInput(e.what());
+    }
     try {
         if (settings.engine == EngineChoice::exact) {
             ExactOptions exact;
             exact.boundary = settings.boundary;
             ExactSimulation engine = ExactSimulation::restore(settings.world, *checkpoint.engine_state, exact);
-            run_and_report(engine, settings, options, no_pictures);
+            run_and_report(engine, settings, options, pictures);
         } else {
             SteppedOptions stepped = options.stepped;
             stepped.substeps = settings.substeps;
             SteppedSimulation engine = SteppedSimulation::restore(settings.world, *checkpoint.engine_state, stepped);
-            run_and_report(engine, settings, options, no_pictures);
+            run_and_report(engine, settings, options, pictures);
         }
     } catch (const std::invalid_argument& e) {
         throw BadInput(path + ": " + e.what());

@@ -20,14 +20,25 @@ ObservablesFile::ObservablesFile(const std::string& path, const particlesim::Wor
     file_.write(text_, "observables");
 }
 
+void ObservablesFile::start(std::int64_t step, const particlesim::StepCounts& totals,
+                            const particlesim::CollisionSums& sums) {
+    previous_step_ = step;
+    previous_totals_ = totals;
+    previous_sums_ = sums;
+}
+
 void ObservablesFile::observe(std::int64_t step, std::span<const particlesim::Particle> particles,
                               const particlesim::StepCounts& totals, const particlesim::CollisionSums& sums) {
-    if (step == 0) {
-        previous_totals_ = totals;
-        previous_sums_ = sums;
-        return;
-    }
-    if (step % every_ != 0 && step != last_step_) return;
+    if (step % every_ == 0 || step == last_step_) write_row(step, particles, totals, sums);
+}
+
+void ObservablesFile::end_at(std::int64_t step, std::span<const particlesim::Particle> particles,
+                             const particlesim::StepCounts& totals, const particlesim::CollisionSums& sums) {
+    if (step > previous_step_) write_row(step, particles, totals, sums);
+}
+
+void ObservablesFile::write_row(std::int64_t step, std::span<const particlesim::Particle> particles,
+                                const particlesim::StepCounts& totals, const particlesim::CollisionSums& sums) {
     double kinetic = 0.0;
     for (const particlesim::Particle& p : particles) kinetic += 0.5 * p.velocity.squaredNorm();
     const double duration = static_cast<double>(step - previous_step_);

@@ -5,7 +5,8 @@
 // interval by the virial and by the walls (as beta P (2r)^2 and
 // Z = beta P A / N), and the hexatic order |psi6| at the row's step
 // (particlesim/observables.hpp). The rows from --measure-from on feed
-// --stats' pressure with its error bar. Written like -o.
+// --stats' pressure with its error bar. Written like -o; a run resumed
+// from a checkpoint writes the rows after the checkpoint's step.
 
 #include "output_file.hpp"
 
@@ -27,8 +28,15 @@ public:
     ObservablesFile(const std::string& path, const particlesim::World& world, particlesim::Boundary boundary,
                     std::int64_t every, std::int64_t last_step, std::int64_t measure_from);
 
+    // The run's first step (0, or a checkpoint's): the first row's interval
+    // begins here. Every later step: a row at each multiple of K and the last.
+    void start(std::int64_t step, const particlesim::StepCounts& totals, const particlesim::CollisionSums& sums);
     void observe(std::int64_t step, std::span<const particlesim::Particle> particles,
                  const particlesim::StepCounts& totals, const particlesim::CollisionSums& sums);
+    // An interrupted run's last row: the interval since the row before, so
+    // that its rows and a resumed run's cover every step once.
+    void end_at(std::int64_t step, std::span<const particlesim::Particle> particles,
+                const particlesim::StepCounts& totals, const particlesim::CollisionSums& sums);
     // Puts the file in place. Throws particlesim::OutputError.
     void commit();
 
@@ -39,6 +47,9 @@ public:
     [[nodiscard]] std::int64_t measure_from() const { return measure_from_; }
 
 private:
+    void write_row(std::int64_t step, std::span<const particlesim::Particle> particles,
+                   const particlesim::StepCounts& totals, const particlesim::CollisionSums& sums);
+
     OutputFile file_;
     particlesim::World world_;
     particlesim::Boundary boundary_;

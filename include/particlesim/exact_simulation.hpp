@@ -104,8 +104,9 @@ public:
     [[nodiscard]] const StepCounts& last_step() const;
     [[nodiscard]] const StepCounts& totals() const;
     // The pair virial and the walls' impulse summed over every collision
-    // this object processed (not saved: a restored run starts them at 0);
-    // their change over an interval gives its pressure (observables.hpp).
+    // since the run started (saved: a restored run goes on from the saved
+    // sums, or from 0 for a state saved before they were); their change over
+    // an interval gives its pressure (observables.hpp).
     [[nodiscard]] const CollisionSums& collision_sums() const;
     // Particles with more than one collision (wall or particle) in the last
     // step: where the one-collision-per-step rule must differ from this engine.

@@ -155,6 +155,7 @@ public:
     struct SavedRun {
         std::int64_t steps_done = 0;
         StepCounts totals;
+        CollisionSums sums;  // zero in a version 1 state, which had none
         // Both grow with the input, whatever its header says.
         std::vector<Particle> particles;  // each at its own stamp
         std::vector<SavedPredictions> predictions;
@@ -188,6 +189,7 @@ public:
         now_ = static_cast<double>(saved.steps_done);
         steps_done_ = saved.steps_done;
         totals_ = saved.totals;
+        collision_sums_ = saved.sums;
         const std::uint64_t cells = cells_.grid().cell_count();
         const auto fail = [](const std::string& why) {
             throw std::invalid_argument(std::string(restore_refusal) + " (" + why + ")");
@@ -224,13 +226,20 @@ public:
         take_snapshot();
     }
 
-    static SavedRun read_saved(SavedStateReader& in) {
+    // `version` 1 has no collision sums; 2 has them after the counts.
+    static SavedRun read_saved(SavedStateReader& in, int version) {
         SavedRun run;
         const std::uint64_t count = in.count(0xfffffffeU);
         const double now = in.real();
         run.steps_done = static_cast<std::int64_t>(in.count(max_exact_steps));
         if (now != static_cast<double>(run.steps_done)) in.fail("time and step disagree");
         run.totals = read_counts(in);
+        if (version >= 2) {
+            run.sums.pair_virial = in.real();
+            run.sums.wall_impulse = in.real();
+            if (!std::isfinite(run.sums.pair_virial) || !std::isfinite(run.sums.wall_impulse))
+                in.fail("collision sums that are not finite");
+        }
         for (std::uint64_t i = 0; i < count; ++i) {
             run.particles.push_back(read_particle(in));
             SavedPredictions p;
@@ -254,6 +263,8 @@ public:
         save_number(out, now_);
         save_number(out, static_cast<std::uint64_t>(steps_done_));
         save_counts(out, totals_);
+        save_number(out, collision_sums_.pair_virial);
+        save_number(out, collision_sums_.wall_impulse);
         out << '\n';
         for (std::uint32_t i = 0; i < count(); ++i) {
             save_particle(out, bodies_[i].particle);
@@ -874,7 +885,7 @@ private:
     std::int64_t steps_done_ = 0;
     StepCounts last_step_;
     StepCounts totals_;
-    CollisionSums collision_sums_;  // since this object started: not saved
+    CollisionSums collision_sums_;  // since the run started (saved and restored)
     std::uint64_t several_events_ = 0;
     std::uint64_t events_processed_ = 0;  // by this object, not saved: a measure of work
     double predicted_events_;             // per step
@@ -913,15 +924,16 @@ ExactSimulation ExactSimulation::restore(const World& world, std::istream& saved
     check_options(options);
     SavedStateReader reader(saved, restore_refusal);
     reader.expect("exact-engine-state");
-    reader.expect("1");
-    Implementation::SavedRun run = Implementation::read_saved(reader);
+    const std::string version = reader.word();
+    if (version != "1" && version != "2") reader.fail("an unknown version");
+    Implementation::SavedRun run = Implementation::read_saved(reader, version == "1" ? 1 : 2);
     require_valid_scene("particlesim::ExactSimulation::restore", world, run.particles,
                         options.boundary == Boundary::periodic ? CentresIn::periodic_saved : CentresIn::walled_box);
     return ExactSimulation(std::make_unique<Implementation>(world, std::move(run), options));
 }
 
 void ExactSimulation::save(std::ostream& out) const {
-    out << "exact-engine-state 1\n";
+    out << "exact-engine-state 2\n";
     engine_->save(out);
 }
 
