@@ -13,7 +13,11 @@
 #include "particlesim/random_scene.hpp"
 #include "particlesim/stepped_simulation.hpp"
 
+#include "parallel/parallel.hpp"
+
+#include <cmath>
 #include <cstdint>
+#include <numbers>
 #include <optional>
 #include <string>
 #include <vector>
@@ -44,7 +48,7 @@ void two_threads_give_one_threads_bits() {
     // and candidates a step, so the selection's passes are shared too.
     const SpeedRange slow{0.1, 1.0};
     const std::vector<StageScene> scenes{
-        {"grid, a slice per thread", World{250.0, 1.0}, 6000, 4, {.pair_search = PairSearch::grid}, slow},
+        {"grid, one slice shared", World{306.0, 1.0}, 9000, 4, {.pair_search = PairSearch::grid}, slow},
         {"grid, one slice shared, storage sorted every step",
          World{720.0, 1.0},
          50000,
@@ -60,7 +64,7 @@ void two_threads_give_one_threads_bits() {
          3,
          {.pair_search = PairSearch::grid},
          std::nullopt},
-        {"paths search", World{20000.0, 1.0}, 4000, 6, {.pair_search = PairSearch::paths}, std::nullopt},
+        {"paths search", World{20000.0, 1.0}, 6000, 6, {.pair_search = PairSearch::paths}, std::nullopt},
         {"brute force", World{250.0, 1.0}, 3000, 2, {.pair_search = PairSearch::brute_force}, slow},
     };
     for (const StageScene& scene : scenes) {
@@ -68,7 +72,34 @@ void two_threads_give_one_threads_bits() {
         RandomSceneOptions random{.seed = 5};
         random.speeds = scene.speeds;
         const std::vector<Particle> start = make_random_particles(scene.count, scene.world, random);
+        const std::uint64_t regions_before = parallel_regions_opened();
         CHECK_EQ(final_hash(scene, start, 2), final_hash(scene, start, 1));
+        CHECK(parallel_regions_opened() > regions_before);  // each scene shares some stage
+    }
+}
+
+// Below a few thousand particles no stage pays for a second thread, and two
+// threads do one thread's work: the gas at area fraction 0.3 up to 4096
+// disks, and the default scene's density and speeds (the paths search) up
+// to 4096, whose first step tests all N^2 / 2 pairs of lines. From 8192 the
+// gas shares its search.
+void small_scenes_open_no_region() {
+    const SpeedRange slow{0.1, 1.0};
+    for (const std::size_t count : {std::size_t{1024}, std::size_t{4096}, std::size_t{8192}}) {
+        const double n = static_cast<double>(count);
+        const StageScene gas{"gas", World{std::sqrt(n * std::numbers::pi / 0.3), 1.0}, count, 4, {}, slow};
+        const StageScene sparse{"default density",         World{20000.0 * std::sqrt(n / 1000.0), 1.0}, count, 4, {},
+                                SpeedRange{2500.0, 5000.0}};
+        for (const StageScene& scene : {gas, sparse}) {
+            check::Context context(scene.name, ", ", count, " disks");
+            RandomSceneOptions random{.seed = 5};
+            random.speeds = scene.speeds;
+            const std::vector<Particle> start = make_random_particles(scene.count, scene.world, random);
+            const std::uint64_t regions_before = parallel_regions_opened();
+            final_hash(scene, start, 2);
+            const bool shared = parallel_regions_opened() > regions_before;
+            CHECK_EQ(shared, count >= 8192);
+        }
     }
 }
 
@@ -76,5 +107,6 @@ void two_threads_give_one_threads_bits() {
 
 int main(int argc, char** argv) {
     return check::run(argc, argv, "test_parallel_stages",
-                      {{"two threads give one thread's bits", two_threads_give_one_threads_bits}});
+                      {{"two threads give one thread's bits", two_threads_give_one_threads_bits},
+                       {"small scenes open no region", small_scenes_open_no_region}});
 }

@@ -99,12 +99,12 @@ void same_as_unsorted(const char* name, const World& params, std::int64_t steps,
     }
 }
 
-// A gas that two threads share is sorted by default from a few thousand
-// disks (the threads then write apart), on its schedule only while every
-// state is read back: the same states as one thread, never sorted.
+// A gas that two threads share is sorted by default from 8192 disks (the
+// threads then write apart), on its schedule only while every state is
+// read back: the same states as one thread, never sorted.
 void gas_shared_by_two_threads() {
     SceneFamilyOptions options;
-    options.particles = 6000;
+    options.particles = 9000;
     options.steps = 20;
     const Scene scene = make_family_scene(SceneFamily::gas, options);
     const States reference = example_scenes::run(scene, {.threads = 1, .sort_by_position_every = 0});

@@ -30,8 +30,13 @@ int default_thread_count();
 // caller's (the library then runs on the thread it is given instead of
 // oversubscribing the machine), and not in a child forked from this process
 // after it ran a parallel loop (libgomp's threads do not survive a fork, and
-// its next region would wait for them for ever).
+// its next region would wait for them for ever). Called by a loop about to
+// open a region, which it then counts.
 bool loops_may_start_threads();
+
+// The parallel regions the loops have opened in this process: how a test
+// tells that work ran on one thread, whatever the threads asked for.
+std::uint64_t parallel_regions_opened();
 
 inline int worker_count(std::size_t available, std::int64_t work, std::int64_t min_work_per_thread) {
     const std::int64_t useful = std::max<std::int64_t>(1, work / min_work_per_thread);

@@ -3,19 +3,20 @@
 #include <pthread.h>
 
 #include <atomic>
+#include <cstdint>
 
 namespace particlesim {
 
 namespace {
 
-// Whether this process has started a parallel region, and whether it is a
-// child forked after its parent had (its OpenMP threads stayed behind).
-std::atomic<bool> regions_started{false};
+// The parallel regions this process has opened, and whether it is a child
+// forked after its parent had opened one (its OpenMP threads stayed behind).
+std::atomic<std::uint64_t> regions_opened{0};
 std::atomic<bool> forked_after_regions{false};
 
 // Registered once, before the first loop can run.
 const bool fork_watch = [] {
-    pthread_atfork(nullptr, nullptr, [] { forked_after_regions.store(regions_started.load()); });
+    pthread_atfork(nullptr, nullptr, [] { forked_after_regions.store(regions_opened.load() > 0); });
     return true;
 }();
 
@@ -25,8 +26,10 @@ int default_thread_count() { return omp_get_active_level() > 0 ? 1 : std::max(om
 
 bool loops_may_start_threads() {
     if (omp_get_active_level() > 0 || forked_after_regions.load(std::memory_order_relaxed)) return false;
-    if (!regions_started.load(std::memory_order_relaxed)) regions_started.store(true);
+    regions_opened.fetch_add(1, std::memory_order_relaxed);
     return true;
 }
+
+std::uint64_t parallel_regions_opened() { return regions_opened.load(std::memory_order_relaxed); }
 
 }  // namespace particlesim

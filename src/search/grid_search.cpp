@@ -175,7 +175,9 @@ void GridSearch::find_pairs(const PairSearchInput& in, std::optional<int> forced
     // gas has one): all threads share each slice, and one set of buffers
     // keeps the memory per particle low.
     const bool parallel_slices = threads >= 2 && count < slice_parallel_below && layout_.slices >= threads;
-    const int workers = worker_count(buffers.size(), static_cast<std::int64_t>(count), min_particles_per_thread);
+    const int workers = count < grid_shared_from
+                            ? 1
+                            : worker_count(buffers.size(), static_cast<std::int64_t>(count), min_particles_per_thread);
     // Grown, never shrunk: a step may use fewer threads than the one before.
     const std::size_t workspaces = parallel_slices ? static_cast<std::size_t>(threads) : 1;
     if (workspaces_.size() < workspaces) workspaces_.resize(workspaces);

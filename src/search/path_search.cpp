@@ -20,11 +20,23 @@ std::uint64_t collision_count(const Particle& p) { return p.particle_collisions 
 void PathSearch::find_pairs(const PairSearchInput& in, std::span<ThreadCandidates> out) {
     // Grown, never shrunk: a step may use fewer threads than the one before.
     if (thread_watches_.size() < out.size()) thread_watches_.resize(out.size());
-    make_lines(in);
+    const bool afresh = make_lines(in);
     const double reach = contact_reach(in.box);
     const auto new_count = static_cast<std::int64_t>(new_lines_.size());
-    const int workers = worker_count(out.size(), new_count * static_cast<std::int64_t>(in.particles.size()),
-                                     stepped_tuning::paths_line_tests_per_thread);
+    const std::int64_t tests = new_count * static_cast<std::int64_t>(in.particles.size());
+    int workers = worker_count(out.size(), tests, stepped_tuning::paths_line_tests_per_thread);
+    // Lines made afresh (all N^2 / 2 tests) are a region that the steps
+    // around it may not share: its second thread would then spin on beside
+    // them (for milliseconds, libgomp's wait), slowing the first. So they are
+    // shared only as the steps between are; at the start, from a larger
+    // count a thread.
+    if (afresh) {
+        workers = steady_workers_ == 0
+                      ? worker_count(out.size(), tests, stepped_tuning::paths_afresh_line_tests_per_thread)
+                      : std::min(workers, steady_workers_);
+    } else {
+        steady_workers_ = workers;
+    }
     // New lines in blocks: PathLines reads each group of lines once for the block.
     constexpr std::int64_t block = PathLines::max_block;
     parallel_for_dynamic(workers, (new_count + block - 1) / block, 1, [&](std::int64_t b, std::size_t thread) {
@@ -54,7 +66,7 @@ void PathSearch::find_pairs(const PairSearchInput& in, std::span<ThreadCandidate
 // Every line through the particles' positions now; new lines for the
 // particles that collided since theirs was made (their collision count
 // moved), for all at the start and every lines_made_afresh_every micro-steps.
-void PathSearch::make_lines(const PairSearchInput& in) {
+bool PathSearch::make_lines(const PairSearchInput& in) {
     const std::size_t count = in.particles.size();
     for (const std::uint32_t i : new_lines_) new_line_[i] = 0;
     new_lines_.clear();
@@ -93,6 +105,7 @@ void PathSearch::make_lines(const PairSearchInput& in) {
         new_line_[i] = 1;
         if (!afresh) lines_.set(i, in.particles[i].position, in.particles[i].velocity);
     }
+    return afresh;
 }
 
 // The pairs of a block of new lines (at most PathLines::max_block), each

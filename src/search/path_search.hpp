@@ -58,7 +58,8 @@ private:
         std::vector<Watch> found;
     };
 
-    void make_lines(const PairSearchInput& in);
+    // Whether every line was made afresh.
+    bool make_lines(const PairSearchInput& in);
     void watch_near(const PairSearchInput& in, std::span<const std::uint32_t> lines, double reach,
                     ThreadWatches& out) const;
     void watch_pairs(const PairSearchInput& in, std::uint32_t i, std::span<const std::uint32_t> near, double reach,
@@ -68,6 +69,7 @@ private:
     bool lines_made_ = false;
     std::int64_t micro_steps_ = 0;           // searched so far: the current time, in micro-steps
     std::int64_t lines_made_at_ = 0;         // when every line was last made afresh
+    int steady_workers_ = 0;                 // threads of the last micro-step not made afresh; 0 before any
     std::vector<std::uint64_t> collisions_;  // by particle: its collision count when its line was made
     std::vector<std::uint32_t> serial_;      // by particle: counts its lines
     std::vector<std::uint8_t> new_line_;     // by particle: its line was made in this micro-step

@@ -44,6 +44,19 @@ inline constexpr std::size_t paths_up_to = 20000;
 // one's time at 1.1 M tests a micro-step (N = 2000) and 1.25 at 0.25 M (the
 // default scene), and paid from about 5 M (N = 4000: 0.82).
 inline constexpr std::int64_t paths_line_tests_per_thread = std::int64_t{1} << 21;
+// The same for the first micro-step, whose lines are all new (N^2 tests):
+// its region is the run's only shared one where the steps after it share
+// none, and its second thread then spins beside them. Two threads took
+// 1.07 times one thread's time at 4096 disks of the default density (all
+// 16.7 M tests shared), 1.00 without the spinning (GOMP_SPINCOUNT=0).
+inline constexpr std::int64_t paths_afresh_line_tests_per_thread = std::int64_t{1} << 24;
+
+// Particles from which threads share a slice's binning and scan at all:
+// below, the three regions a step gain nothing on a quiet machine (the gas
+// at 4096: two threads 0.999 of one thread's time, the fastest of 31 runs)
+// and lose where neighbours take the other core now and then (1.13, the
+// median of the runs).
+inline constexpr std::size_t grid_shared_from = 8192;
 
 // --- Storage sorted by position (stepped/storage_order.*)
 
@@ -57,7 +70,7 @@ inline constexpr std::size_t sort_by_position_from = 65536;
 // 1.06 to 1.12 times one thread's time unsorted, 0.86 sorted). The paths
 // search keeps its lines by stored index, and would make them all afresh
 // at every sort.
-inline constexpr std::size_t sort_by_position_shared_from = 4096;
+inline constexpr std::size_t sort_by_position_shared_from = grid_shared_from;
 // Steps between sorts: faster particles scramble the order sooner, and each
 // sort costs a pass over the particles (16 and 32 measured no different).
 inline constexpr int sort_every_steps = 8;
