@@ -54,6 +54,22 @@ struct Pictures {
     ColourBy colour_by = ColourBy::speed;        // the snapshot's (the page keeps its own)
     Boundary boundary = Boundary::walls;
 
+    // --trajectory and --observables, before anything runs: a file that
+    // cannot be written is bad input.
+    void open_files(const CliOptions& options, const World& world, Boundary box_boundary, std::int64_t steps) {
+        try {
+            if (options.trajectory_path) {
+                trajectory.emplace(*options.trajectory_path, world, box_boundary, options.trajectory_every, steps);
+            }
+            if (options.observables_path) {
+                observables.emplace(*options.observables_path, world, box_boundary, options.observe_every, steps,
+                                    options.measure_from);
+            }
+        } catch (const OutputError& e) {
+            throw BadInput(e.what());
+        }
+    }
+
     // The run's first step: 0, whose state a whole run pictures, or a
     // checkpoint's (a resumed run writes only what comes after it). The
     // observables' first interval begins here.
@@ -282,18 +298,7 @@ void run_scene(const CliOptions& options) {
         throw BadInput(at_line(name, lines.steps) + "--measure-from " + std::to_string(options.measure_from) +
                        " is beyond the scene's S = " + std::to_string(scene.steps) + " steps");
     }
-    try {
-        if (options.trajectory_path) {
-            pictures.trajectory.emplace(*options.trajectory_path, scene.world, options.boundary,
-                                        options.trajectory_every, scene.steps);
-        }
-        if (options.observables_path) {
-            pictures.observables.emplace(*options.observables_path, scene.world, options.boundary,
-                                         options.observe_every, scene.steps, options.measure_from);
-        }
-    } catch (const OutputError& e) {
-        throw BadInput(e.what());
-    }
+    pictures.open_files(options, scene.world, options.boundary, scene.steps);
     const bool exact = options.engine == EngineChoice::exact;
     if (options.animation) {
         pictures.animation.emplace(*options.animation, scene.world, particles.size(), scene.steps,
@@ -334,18 +339,7 @@ void resume_run(const CliOptions& options) {
     // The trajectory and the observables go on after the checkpoint's step
     // (--animate and --snapshot need the whole run).
     Pictures pictures;
-    try {
-        if (options.trajectory_path) {
-            pictures.trajectory.emplace(*options.trajectory_path, settings.world, settings.boundary,
-                                        options.trajectory_every, settings.steps);
-        }
-        if (options.observables_path) {
-            pictures.observables.emplace(*options.observables_path, settings.world, settings.boundary,
-                                         options.observe_every, settings.steps, options.measure_from);
-        }
-    } catch (const OutputError& e) {
-        throw BadInput(e.what());
-    }
+    pictures.open_files(options, settings.world, settings.boundary, settings.steps);
     try {
         if (settings.engine == EngineChoice::exact) {
             ExactOptions exact;
