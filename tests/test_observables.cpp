@@ -188,6 +188,14 @@ void simcli_observables_file() {
     CHECK((steps == std::vector<long>{10, 20, 30, 40, 50, 60, 70, 80, 90, 95}));
     CHECK(r.err.find("stats: pressure beta P (2r)^2 = ") != std::string::npos);
     CHECK(r.err.find("blocks of the observables rows from step 20") != std::string::npos);
+    CHECK(r.err.find("longer blocks") == std::string::npos);  // 8 rows: 4 blocks, nothing longer to compare
+    // With 16 blocks, the error from 8 longer ones beside it.
+    const run_process::Result many = run_process::run(simcli,
+                                                      {"--engine", "exact", "--observables", csv, "--observe-every",
+                                                       "1", "--measure-from", "20", "--stats", "-o", "/dev/null"},
+                                                      scene);
+    CHECK_EQ(many.status, 0);
+    CHECK(many.err.find("; 16 blocks of the observables rows from step 20 (8 longer blocks: +- ") != std::string::npos);
     // Refused, exit 2, before anything runs.
     for (const std::vector<std::string>& args :
          std::vector<std::vector<std::string>>{{"--observables", csv},

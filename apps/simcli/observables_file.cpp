@@ -75,14 +75,16 @@ void ObservablesFile::commit() { file_.commit(); }
 
 namespace {
 
-// Sixteen blocks where the rows allow, fewer (at least two rows each) where they do not.
-particlesim::MeanWithError blocked(const std::vector<double>& rows) {
-    return particlesim::block_average(rows, std::min<std::size_t>(16, rows.size() / 2));
+// `blocks` blocks where the rows allow, fewer (at least two rows each) where they do not.
+particlesim::MeanWithError blocked(const std::vector<double>& rows, std::size_t blocks) {
+    return particlesim::block_average(rows, std::min<std::size_t>(blocks, rows.size() / 2));
 }
 
 }  // namespace
 
-particlesim::MeanWithError ObservablesFile::virial_pressure() const { return blocked(virial_rows_); }
-particlesim::MeanWithError ObservablesFile::wall_pressure() const { return blocked(wall_rows_); }
+particlesim::MeanWithError ObservablesFile::virial_pressure(std::size_t blocks) const {
+    return blocked(virial_rows_, blocks);
+}
+particlesim::MeanWithError ObservablesFile::wall_pressure() const { return blocked(wall_rows_, 16); }
 
 }  // namespace simcli
