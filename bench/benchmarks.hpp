@@ -8,15 +8,16 @@ namespace bench {
 // The simcli built beside the harness; exits naming `mode` when the apps were not built.
 std::string simcli_path(const char* mode);
 
-void steps_benchmark(bool quick);       // time per step against N, the dense gas
-void sizes_benchmark(bool quick);       // time per particle-step, 4 to 1e7 particles, two densities
-void choice_benchmark(bool quick);      // the paths search and the grid forced, and which auto takes
-void simcli_benchmark(bool quick);      // whole simcli runs of the target scenes
-void accuracy_benchmark(bool quick);    // run time against error, K = 1 ... 64 and the exact engine
-void exact_benchmark(bool quick);       // the exact engine's collisions per second
-void stress_benchmark(bool quick);      // the long stability run: a crowded box for 1e6 steps
-void divergence_benchmark(bool quick);  // two correct programs drifting apart by chaos
-void loaded_benchmark(bool quick);      // simcli on 1 and 2 threads, quiet and beside a busy process
-void programs_benchmark(bool quick);    // simcli beside the original programs and EDMD (programs_benchmark.cpp)
+void steps_benchmark(bool quick);        // time per step against N, the dense gas
+void sizes_benchmark(bool quick);        // time per particle-step, 4 to 1e7 particles, two densities
+void choice_benchmark(bool quick);       // the paths search and the grid forced, and which auto takes
+void simcli_benchmark(bool quick);       // whole simcli runs of the target scenes
+void accuracy_benchmark(bool quick);     // run time against error, K = 1 ... 64 and the exact engine
+void exact_benchmark(bool quick);        // the exact engine's collisions per second
+void exact_queue_benchmark(bool quick);  // the exact engine's two queues forced, around where it switches
+void stress_benchmark(bool quick);       // the long stability run: a crowded box for 1e6 steps
+void divergence_benchmark(bool quick);   // two correct programs drifting apart by chaos
+void loaded_benchmark(bool quick);       // simcli on 1 and 2 threads, quiet and beside a busy process
+void programs_benchmark(bool quick);     // simcli beside the original programs and EDMD (programs_benchmark.cpp)
 
 }  // namespace bench

@@ -9,6 +9,9 @@
 //   particlesim_bench simcli   [--quick]   whole simcli runs of the target scenes
 //   particlesim_bench accuracy [--quick]   run time against error (accuracy_benchmark.cpp)
 //   particlesim_bench exact    [--quick]   the exact engine's speed (accuracy_benchmark.cpp)
+//   particlesim_bench exact_queue [--quick] the exact engine's two queues forced, around the
+//                                          size from which it takes the two-tier one
+//                                          (exact_queue_benchmark.cpp)
 //   particlesim_bench stress   [--quick]   1e6 steps of a crowded box (stress_benchmark.cpp)
 //   particlesim_bench divergence [--quick] two correct programs drifting apart (divergence_benchmark.cpp)
 //   particlesim_bench loaded   [--quick]   1 and 2 threads and the default thread count, quiet and
@@ -384,6 +387,8 @@ int main(int argc, char** argv) {
         bench::accuracy_benchmark(quick);
     } else if (mode == "exact") {
         bench::exact_benchmark(quick);
+    } else if (mode == "exact_queue") {
+        bench::exact_queue_benchmark(quick);
     } else if (mode == "stress") {
         bench::stress_benchmark(quick);
     } else if (mode == "divergence") {
@@ -393,10 +398,10 @@ int main(int argc, char** argv) {
     } else if (mode == "programs") {
         bench::programs_benchmark(quick);
     } else {
-        std::fprintf(
-            stderr,
-            "usage: particlesim_bench steps|sizes|choice|simcli|accuracy|exact|stress|divergence|loaded|programs "
-            "[--quick]\n");
+        std::fprintf(stderr,
+                     "usage: particlesim_bench "
+                     "steps|sizes|choice|simcli|accuracy|exact|exact_queue|stress|divergence|loaded|programs "
+                     "[--quick]\n");
         return 2;
     }
     return 0;

@@ -41,9 +41,11 @@ inline constexpr std::uint32_t lines_up_to = 20000;  // particles: the first pre
 // Particles from which each event prefetches what the next events will
 // read, and the queue is the two-tier calendar: below, the state mostly fits
 // in the caches, and the prefetching's own work, and the two tiers' (stale
-// listings, bins spread into buckets), cost more than they save (the gas of
-// 1e4 disks took 1.18 times as long with both).
-inline constexpr std::uint32_t look_ahead_from = 32768;
+// listings, bins spread into buckets), cost more than they save. On the gas
+// (`particlesim_bench exact_queue`, both forced, 7 rounds): 1.20 times the
+// linked buckets' time at 8192 disks, 1.00 at 20 480, 0.87 at 24 576 and
+// 0.82 at 32 768; beside a busy process 0.92 at 20 480.
+inline constexpr std::uint32_t look_ahead_from = 20480;
 // The four stages' distances in calendar buckets: entries and links, then
 // particles, then partners and cell heads, then the cells' first members
 // ((16, 12, 8, 4) to (4, 3, 2, 1) measured within noise of one another).
