@@ -157,6 +157,34 @@ std::uint64_t run_hash(const NamedScene& scene, const SteppedOptions& options) {
     return h;
 }
 
+// One row of three disks for every time k / S (S = 4 ... 64, 0 < k < S),
+// the edges of every slicing the grid can choose: A at rest; B fast from the
+// left, touching A just after the edge (by 2^-18 of the step); C slow from
+// the right, touching A later (by 2^-17), so close at the edge that their
+// boxes of the slice before it already meet. A stage that decided past the
+// end of the slices searched would take (A, C), found first, for (A, B).
+// The rows are 3.5 apart, more than a contact distance: no row meets another.
+NamedScene slice_edge_contacts() {
+    std::vector<double> edges;
+    for (int slices = 4; slices <= 64; ++slices) {
+        for (int k = 1; k < slices; ++k) edges.push_back(static_cast<double>(k) / slices);
+    }
+    std::sort(edges.begin(), edges.end());
+    edges.erase(std::unique(edges.begin(), edges.end()), edges.end());
+    NamedScene scene{"slice edges", World{5000.0, 1.0}, 2, {}};
+    const double fast = 3000.0;
+    const double slow = 1.0;
+    for (std::size_t row = 0; row < edges.size(); ++row) {
+        const double y = 4.0 + 3.5 * static_cast<double>(row);
+        const double fast_contact = edges[row] + 0x1p-18;
+        const double slow_contact = edges[row] + 0x1p-17;
+        scene.particles.push_back({Vec2(4000.0, y), Vec2(0.0, 0.0), 0, 0});
+        scene.particles.push_back({Vec2(4000.0 - 2.0 - fast * fast_contact, y), Vec2(fast, 0.0), 0, 0});
+        scene.particles.push_back({Vec2(4000.0 + 2.0 + slow * slow_contact, y), Vec2(-slow, 0.0), 0, 0});
+    }
+    return scene;
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -264,6 +292,22 @@ int main(int argc, char** argv) {
               // The stages ran, and the slices after them left particles out.
               CHECK(stages > 24 * 5);
               CHECK(staged_tests < unstaged_tests * 17 / 20);
+          }},
+         // Contacts just after every edge a slicing can have, each beside a
+         // later one that the slice before the edge finds.
+         {"contacts at the slices' edges",
+          [] {
+              const NamedScene scene = slice_edge_contacts();
+              int stages = 0;
+              std::uint64_t staged_tests = 0;
+              std::uint64_t unstaged_tests = 0;
+              for (const int threads : {1, 2}) {
+                  const check::Context context(threads, " threads");
+                  CHECK(same_selection_every_step(scene, threads, stages, staged_tests, unstaged_tests));
+                  CHECK_EQ(run_hash(scene, {.pair_search = PairSearch::grid, .threads = threads}),
+                           run_hash(scene, {.pair_search = PairSearch::brute_force, .threads = 1}));
+              }
+              CHECK(stages > 0);
           }},
          {"clustered scenes", [] {
               for (std::uint64_t k = 0; k < 12; ++k) {

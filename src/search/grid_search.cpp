@@ -58,6 +58,11 @@ constexpr double relative_margin = 1e-8;
 // scaled into [1, 2) first (float spans only 1e-38 to 3e38).
 constexpr int float_safe_exponent = 100;
 
+// How far before the end of the slices searched the decisions stop, in
+// steps: far beyond any rounding of a slice's edge or of a path's position
+// there, and a thousandth of the shortest slice (1 / max_slices of the step).
+constexpr double decision_margin = 0x1p-16;
+
 // A box that fits a cell with this slack keeps its neighbours within one cell
 // even after the rounding of the cell index computation.
 constexpr double cell_fit_slack = 1.0 - 1e-6;
@@ -203,15 +208,16 @@ void GridSearch::find_pairs(const PairSearchInput& in, std::optional<int> forced
 }
 
 // After the first `searched` slices, every candidate before the last one's
-// start has been found: a contact within a slice makes the two paths' boxes
-// overlap in it, and a computed contact time errs by far less than a slice
-// (a slice is at least 1/max_slices of the step). The one slice of margin
-// makes the decisions independent of where rounding puts a contact near a
-// slice's edge. 0 when nothing can be decided yet, or when the caller
-// decides the rest.
+// end has been found: at its computed time a candidate's two disks are a
+// contact distance apart, up to rounding far inside the boxes' margin (the
+// contact time's residual), so their boxes of the slice holding that time
+// overlap. The decisions stop decision_margin of the step short of that end,
+// so that no rounding of a time at a slice's edge can decide a candidate
+// that only a later slice finds. 0 when nothing can be decided yet, or when
+// the caller decides the rest.
 double GridSearch::decided_before(const PairSearchInput& in, int searched) const {
-    if (searched < 2 || searched >= layout_.slices) return 0.0;
-    return slice_span(in, searched - 1, layout_.slices).begin;
+    if (searched < 1 || searched >= layout_.slices) return 0.0;
+    return slice_span(in, searched - 1, layout_.slices).end - decision_margin * in.duration;
 }
 
 // Threads take whole slices as they come free, in time order, as without
