@@ -3,7 +3,8 @@
 # (tests/consumer/CMakeLists.txt with examples/library_usage.cpp as its
 # main.cpp) that finds the package with find_package(particlesim).
 # With the distributed engine built (MPI_BUILT), a second consumer
-# (tests/consumer_mpi) finds its component and runs under mpirun.
+# (tests/consumer_mpi) finds its component and runs under mpirun, and so
+# does the installed simcli (through simcli-mpi beside it).
 # Inputs: BUILD_DIR, WORK_DIR, CONSUMER_DIR, LIBRARY_USAGE_SOURCE, APPS_BUILT, MPI_BUILT, MPIEXEC.
 file(REMOVE_RECURSE "${WORK_DIR}")
 include("${CMAKE_CURRENT_LIST_DIR}/run_step.cmake")
@@ -29,6 +30,9 @@ if(APPS_BUILT)
 endif()
 if(MPI_BUILT)
   list(APPEND required lib/libparticlesim_mpi.a)
+  if(APPS_BUILT)
+    list(APPEND required bin/simcli-mpi)  # what the installed simcli runs under a launcher
+  endif()
 endif()
 foreach(file IN LISTS required)
   if(NOT EXISTS "${prefix}/${file}")
@@ -71,4 +75,16 @@ if(MPI_BUILT)
     message(FATAL_ERROR "unexpected output of the MPI consumer:\n${last_output}")
   endif()
   message(STATUS "MPI consumer ran:\n${last_output}")
+
+  if(APPS_BUILT)
+    # The installed simcli under the launcher finds its sibling: the same bytes as one process.
+    file(WRITE "${WORK_DIR}/scene.in" "300\n2000\n1\n20\nprint\n")
+    run_step("${prefix}/bin/simcli" "${WORK_DIR}/scene.in")
+    set(one_process "${last_output}")
+    run_step(${MPIEXEC} -np 2 "${prefix}/bin/simcli" "${WORK_DIR}/scene.in")
+    if(NOT last_output STREQUAL one_process OR one_process STREQUAL "")
+      message(FATAL_ERROR "the installed simcli under ${MPIEXEC} -np 2 wrote other bytes than in one process")
+    endif()
+    message(STATUS "the installed simcli ran under ${MPIEXEC}, the same bytes as in one process")
+  endif()
 endif()

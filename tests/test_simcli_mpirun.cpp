@@ -2,7 +2,8 @@
 // stdout and in -o files, the same --stats counts, the same refusals (one
 // line, exit 2), a checkpoint written at 3 ranks continued at 5 and in one
 // process, an interrupted run that keeps whole blocks and continues, and an
-// unwritable output that stops every rank with one message.
+// unwritable output that stops every rank with one message; and simcli
+// itself free of MPI, running its sibling simcli-mpi under a launcher.
 
 #include "check.hpp"
 #include "run_process.hpp"
@@ -18,7 +19,9 @@
 namespace {
 
 const std::string simcli = SIMCLI_PATH;
+const std::string simcli_mpi = SIMCLI_MPI_PATH;
 const std::string mpirun = MPIEXEC_PATH;
+const std::string readelf = READELF_PATH;
 const std::string examples = PARTICLESIM_EXAMPLES_DIR;
 
 std::filesystem::path work_dir() {
@@ -187,6 +190,31 @@ void an_unwritable_output_stops_every_rank() {
     CHECK_EQ(got.err, expected.err);
 }
 
+// simcli itself links no MPI (a run outside a launcher loads none of it);
+// under a launcher it runs simcli-mpi beside it, and without that sibling it
+// says so and stops instead of running every rank as a whole run.
+void simcli_loads_no_mpi() {
+    const run_process::Result own = run_process::run(readelf, {"-d", simcli});
+    const run_process::Result sibling = run_process::run(readelf, {"-d", simcli_mpi});
+    CHECK_EQ(own.status, 0);
+    CHECK(own.out.find("(NEEDED)") != std::string::npos);
+    CHECK(own.out.find("libmpi") == std::string::npos);
+    CHECK(sibling.out.find("libmpi") != std::string::npos);
+
+    const std::filesystem::path alone = work_dir() / "alone";
+    std::filesystem::create_directories(alone);
+    const std::filesystem::path copy = alone / "simcli";
+    std::filesystem::copy_file(simcli, copy, std::filesystem::copy_options::overwrite_existing);
+    const std::string scene = write_file("alone.in", "4\n100\n1\n2\nprint\n");
+    const run_process::Result launched =
+        run_process::run("/usr/bin/env", {"OMPI_COMM_WORLD_SIZE=1", copy.string(), scene});
+    CHECK_EQ(launched.status, 1);
+    CHECK_EQ(launched.out, "");
+    CHECK(launched.err.find("started by an MPI launcher, but cannot start") != std::string::npos);
+    CHECK(launched.err.find("simcli-mpi") != std::string::npos);
+    CHECK_EQ(one_process({scene}).status, 0);  // the same simcli outside a launcher runs
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -196,5 +224,6 @@ int main(int argc, char** argv) {
                        {"refusals are one line and exit 2", refusals_are_one_line_and_exit_two},
                        {"a checkpoint at 3 ranks resumed at 5", checkpoint_at_three_ranks_resumed_at_five},
                        {"an interrupted run keeps whole blocks", an_interrupted_run_keeps_whole_blocks_and_goes_on},
-                       {"an unwritable output stops every rank", an_unwritable_output_stops_every_rank}});
+                       {"an unwritable output stops every rank", an_unwritable_output_stops_every_rank},
+                       {"simcli loads no MPI", simcli_loads_no_mpi}});
 }

@@ -392,13 +392,6 @@ int run_ranks(int argc, char** argv, MPI_Comm comm) {
 
 }  // namespace
 
-bool started_by_mpi_launcher() {
-    for (const char* variable : {"OMPI_COMM_WORLD_SIZE", "PMIX_RANK", "PMI_RANK", "PMI_SIZE", "MPI_LOCALNRANKS"}) {
-        if (std::getenv(variable) != nullptr) return true;
-    }
-    return false;
-}
-
 int run_under_mpi(int argc, char** argv, int (*one_process)(int, char**)) {
 #ifdef __GLIBC__
     // Buffers of a megabyte or more are mapped on their own and returned

@@ -3,13 +3,9 @@
 // the distributed engine and writes the bytes one process writes. Rank 0
 // reads the input and writes every file; every message is printed once, by
 // the rank it concerns, and every rank exits with the same status.
-// Built only with PARTICLESIM_MPI.
+// Built only with PARTICLESIM_MPI, into simcli-mpi (mpi_launch.hpp).
 
 namespace simcli {
-
-// Whether an MPI launcher started this process (its environment says so).
-// Started otherwise, simcli never initialises MPI.
-bool started_by_mpi_launcher();
 
 // Initialises MPI and runs simcli as one of its ranks; with one rank, runs
 // `one_process` (simcli as without MPI). Returns the exit status.

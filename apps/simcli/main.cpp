@@ -8,6 +8,7 @@
 #include "cli_options.hpp"
 #include "distributed_run.hpp"
 #include "interrupts.hpp"
+#include "mpi_launch.hpp"
 #include "observables_file.hpp"
 #include "output_file.hpp"
 #include "progress_line.hpp"
@@ -394,8 +395,14 @@ int run_one_process(int argc, char** argv) {
 
 int main(int argc, char** argv) {
     std::signal(SIGPIPE, SIG_IGN);  // a closed pipe is a write error (exit 1), not a signal
-#ifdef SIMCLI_WITH_MPI
-    if (started_by_mpi_launcher()) return run_under_mpi(argc, argv, run_one_process);
+#if defined(SIMCLI_WITH_MPI)
+    // simcli-mpi: started otherwise, it never initialises MPI.
+    if (simcli::started_by_mpi_launcher()) return run_under_mpi(argc, argv, run_one_process);
+#elif defined(SIMCLI_DISTRIBUTED_SIBLING)
+    if (simcli::started_by_mpi_launcher()) {
+        simcli::become_sibling(SIMCLI_DISTRIBUTED_SIBLING, argv);
+        return exit_failure;
+    }
 #endif
     return run_one_process(argc, argv);
 }

@@ -1,0 +1,20 @@
+#pragma once
+// simcli under an MPI launcher (mpirun, srun). simcli links no MPI, so that
+// a run outside a launcher never loads it: OpenMPI and its libraries took
+// about 4 ms of CPU at every start, some 7 % of the default scene's run.
+// A build with the distributed engine puts simcli-mpi beside simcli: the
+// same program, linked with MPI (distributed_run.*). simcli started by a
+// launcher replaces itself with it, in the same process, so the launcher
+// sees no difference.
+
+namespace simcli {
+
+// Whether an MPI launcher started this process (its environment says so).
+bool started_by_mpi_launcher();
+
+// Replaces this process by the program `name` in simcli's own directory,
+// with the same arguments and environment. Returns only if it is not there
+// or cannot be started, having printed why.
+void become_sibling(const char* name, char** argv);
+
+}  // namespace simcli
