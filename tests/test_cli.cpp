@@ -360,16 +360,49 @@ void write_failures() {
     CHECK(one_line(bad_path.err));
 }
 
+#ifdef SIMCLI_WITHOUT_MPI
+// A simcli built without MPI, started by a launcher on several ranks (its
+// environment as Open MPI or MPICH sets it), refuses: each rank would run
+// the whole scene. The first rank says so in one line, the others say
+// nothing; on one rank it runs. (A build with MPI: test_simcli_mpirun.)
+void several_ranks_without_mpi() {
+    const std::string scene = examples + "/head_on.in";
+    const auto launched = [&](const std::vector<std::string>& environment) {
+        std::vector<std::string> args = environment;
+        args.push_back(simcli);
+        args.push_back(scene);
+        return run_process::run("/usr/bin/env", args);
+    };
+    const Result first = launched({"OMPI_COMM_WORLD_SIZE=3", "OMPI_COMM_WORLD_RANK=0"});
+    CHECK_EQ(first.status, 2);
+    CHECK(first.out.empty());
+    CHECK(one_line(first.err));
+    CHECK(first.err.find("started on 3 ranks, but built without the distributed engine") != std::string::npos);
+    const Result other = launched({"PMI_SIZE=2", "PMI_RANK=1"});
+    CHECK_EQ(other.status, 2);
+    CHECK(other.out.empty());
+    CHECK(other.err.empty());
+    const Result one_rank = launched({"OMPI_COMM_WORLD_SIZE=1", "OMPI_COMM_WORLD_RANK=0"});
+    CHECK_EQ(one_rank.status, 0);
+    CHECK_EQ(one_rank.out, simcli_run({scene}).out);
+}
+#endif
+
 }  // namespace
 
 int main(int argc, char** argv) {
     return check::run(argc, argv, "test_cli",
-                      {{"examples byte for byte", examples_byte_for_byte},
-                       {"random scenes and options", random_scenes_and_options},
-                       {"help and version", help_and_version},
-                       {"bad usage", bad_usage},
-                       {"bad input", bad_input},
-                       {"exact engine", exact_engine},
-                       {"stats", stats},
-                       {"write failures", write_failures}});
+                      {
+                          {"examples byte for byte", examples_byte_for_byte},
+                          {"random scenes and options", random_scenes_and_options},
+                          {"help and version", help_and_version},
+                          {"bad usage", bad_usage},
+                          {"bad input", bad_input},
+                          {"exact engine", exact_engine},
+                          {"stats", stats},
+                          {"write failures", write_failures},
+#ifdef SIMCLI_WITHOUT_MPI
+                          {"several ranks without MPI", several_ranks_without_mpi},
+#endif
+                      });
 }

@@ -403,6 +403,17 @@ int main(int argc, char** argv) {
         simcli::become_sibling(SIMCLI_DISTRIBUTED_SIBLING, argv);
         return exit_failure;
     }
+#else
+    // Built without MPI: each rank would run the whole scene and write all of it.
+    if (simcli::started_by_mpi_launcher() && simcli::launched_ranks() > 1) {
+        if (simcli::first_launched_rank()) {
+            std::fprintf(stderr,
+                         "simcli: started on %ld ranks, but built without the distributed engine: run it in one "
+                         "process, or build with -DPARTICLESIM_MPI=ON (docs/distributed.md)\n",
+                         simcli::launched_ranks());
+        }
+        return exit_bad_input;
+    }
 #endif
     return run_one_process(argc, argv);
 }
