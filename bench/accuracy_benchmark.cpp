@@ -13,7 +13,6 @@
 #include <chrono>
 #include <cmath>
 #include <cstdio>
-#include <numbers>
 #include <optional>
 #include <string>
 #include <vector>
@@ -59,8 +58,7 @@ void print_row(const NamedScene& scene, const char* engine, int substeps, int th
 NamedScene crowded_box(std::int64_t steps) {
     // Area fraction 0.3, speeds 0.1 to 1 r per step (the dense gas, smaller).
     const std::size_t count = 2000;
-    const double box = std::sqrt(static_cast<double>(count) * std::numbers::pi / 0.3);
-    NamedScene scene{"crowded box", {box, 1.0}, steps, {}};
+    NamedScene scene{"crowded box", dense_gas_world(count), steps, {}};
     scene.particles = make_random_particles(count, scene.world, {3210, SpeedRange{0.1, 1.0}});
     return scene;
 }
@@ -109,9 +107,8 @@ void exact_benchmark(bool quick) {
     for (const std::size_t n : {10000, 100000, 1000000}) {
         if (quick && n > 100000) break;
         // The dense gas: area fraction 0.3, speeds 0.1 to 1 r per step.
-        const double box = std::sqrt(static_cast<double>(n) * std::numbers::pi / 0.3);
-        cases.push_back(
-            {"dense gas", n, box, static_cast<std::int64_t>(2e6 / static_cast<double>(n)) + 2, SpeedRange{0.1, 1.0}});
+        cases.push_back({"dense gas", n, dense_gas_world(n).box_size,
+                         static_cast<std::int64_t>(2e6 / static_cast<double>(n)) + 2, SpeedRange{0.1, 1.0}});
     }
     for (const ExactCase& c : cases) {
         const World params{c.box, 1.0};

@@ -1,9 +1,19 @@
 #pragma once
 // The benchmark modes of particlesim_bench; each prints CSV on stdout.
 
+#include "particlesim/world.hpp"
+
+#include <cmath>
+#include <cstddef>
+#include <numbers>
 #include <string>
 
 namespace bench {
+
+// The dense gas's box: `count` disks of radius 1 at area fraction 0.3.
+inline particlesim::World dense_gas_world(std::size_t count) {
+    return particlesim::World{std::sqrt(static_cast<double>(count) * std::numbers::pi / 0.3), 1.0};
+}
 
 // The simcli built beside the harness; exits naming `mode` when the apps were not built.
 std::string simcli_path(const char* mode);

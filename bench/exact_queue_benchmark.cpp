@@ -15,10 +15,8 @@
 
 #include <algorithm>
 #include <chrono>
-#include <cmath>
 #include <cstdint>
 #include <cstdio>
-#include <numbers>
 #include <vector>
 
 namespace bench {
@@ -53,8 +51,7 @@ void exact_queue_benchmark(bool quick) {
         quick ? std::vector<std::size_t>{8192, 32768}
               : std::vector<std::size_t>{8192, 12288, 16384, 20480, 24576, 28672, 32768, 49152, 65536};
     for (const std::size_t n : sizes) {
-        const double box = std::sqrt(static_cast<double>(n) * std::numbers::pi / 0.3);
-        const World world{box, 1.0};
+        const World world = dense_gas_world(n);
         const std::vector<Particle> particles = make_random_particles(n, world, {3210, SpeedRange{0.1, 1.0}});
         // About 5e5 collisions a run, as `particlesim_bench exact` has.
         const auto steps = static_cast<std::int64_t>(2e6 / static_cast<double>(n)) + 2;

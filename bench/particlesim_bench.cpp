@@ -40,7 +40,6 @@
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
-#include <numbers>
 #include <optional>
 #include <string>
 #include <vector>
@@ -223,7 +222,7 @@ void steps_benchmark(bool quick) {
     }
     // Dense gas: area fraction 0.3, speeds 0.1 to 1 r per step.
     const std::size_t dense_n = quick ? 100000 : 1000000;
-    const double dense_box = std::sqrt(static_cast<double>(dense_n) * std::numbers::pi / 0.3);
+    const double dense_box = dense_gas_world(dense_n).box_size;
     for (const int threads : {1, 2}) {
         run_step_case({"dense", dense_n, dense_box, 1.0, quick ? 5 : 20, SpeedRange{0.1, 1.0}, PairSearch::grid,
                        threads, quick ? 1 : 3});
@@ -248,7 +247,7 @@ void sizes_benchmark(bool quick) {
         if (n > largest) break;
         const double nd = static_cast<double>(n);
         const double default_box = 20000.0 * std::sqrt(nd / 1000.0);
-        const double gas_box = std::sqrt(nd * std::numbers::pi / 0.3);
+        const double gas_box = dense_gas_world(n).box_size;
         for (const int threads : {1, 2}) {
             // Guesses of the time a step, for about `target` seconds a run.
             // At least 8 steps: the storage order by position is made afresh
@@ -281,7 +280,7 @@ void choice_benchmark(bool quick) {
     for (const std::size_t n : {256, 1024, 4096, 16384}) {
         const double nd = static_cast<double>(n);
         cases.push_back({"default density", n, 20000.0 * std::sqrt(nd / 1000.0), std::nullopt});
-        cases.push_back({"area fraction 0.3", n, std::sqrt(nd * std::numbers::pi / 0.3), SpeedRange{0.1, 1.0}});
+        cases.push_back({"area fraction 0.3", n, dense_gas_world(n).box_size, SpeedRange{0.1, 1.0}});
     }
     for (const std::size_t n : {64, 200, 1000, 2000, 4000, 8000, 16000}) {
         cases.push_back({"L = 20000", n, 20000.0, std::nullopt});

@@ -26,11 +26,9 @@
 #include <unistd.h>
 
 #include <chrono>
-#include <cmath>
 #include <cstdio>
 #include <cstdlib>
 #include <fstream>
-#include <numbers>
 #include <optional>
 #include <string>
 #include <vector>
@@ -148,10 +146,6 @@ void print_row(const Row& row) {
                 ok.size(), m, *std::min_element(ok.begin(), ok.end()), *std::max_element(ok.begin(), ok.end()),
                 row.work, row.work_unit.c_str(), row.work > 0.0 ? row.work / m : 0.0);
     std::fflush(stdout);
-}
-
-World dense_gas_world(std::size_t count) {
-    return World{std::sqrt(static_cast<double>(count) * std::numbers::pi / 0.3), 1.0};
 }
 
 }  // namespace
