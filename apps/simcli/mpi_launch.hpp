@@ -1,8 +1,8 @@
 #pragma once
 // simcli under an MPI launcher (mpirun, srun). simcli links no MPI, so that
-// a run outside a launcher never loads it: OpenMPI and its libraries took
-// about 4 ms of CPU at every start, some 7 % of the default scene's run.
-// A build with the distributed engine puts simcli-mpi beside simcli: the
+// a run outside a launcher never loads it: OpenMPI and its libraries cost
+// about 4 ms of CPU to load at every start, some 6 % of the default scene's
+// run. A build with the distributed engine puts simcli-mpi beside simcli: the
 // same program, linked with MPI (distributed_run.*). simcli started by a
 // launcher replaces itself with it, in the same process, so the launcher
 // sees no difference. A build without MPI refuses to run on several ranks,
