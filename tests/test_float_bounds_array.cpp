@@ -1,6 +1,7 @@
 // The float box array of the grid search: bounds that never shrink a box
-// (even beyond float's range), and range scans that report exactly the boxes
-// a brute force finds, whatever the range's length and alignment.
+// (even beyond float's range), range scans that report exactly the boxes a
+// brute force finds, whatever the range's length and alignment, and scans
+// with the lines' test that keep every pair whose lines pass within reach.
 
 #include "check.hpp"
 
@@ -118,15 +119,114 @@ void touching_boxes_overlap() {
     CHECK(reported == (std::vector<std::uint32_t>{0, 1, 4}));
 }
 
+// Lane widths with their scans: four and eight everywhere (eight as two
+// halves without AVX), sixteen where the processor has AVX-512.
+bool has_sixteen_lanes() {
+#if defined(__x86_64__)
+    return __builtin_cpu_supports("avx512f") != 0 && __builtin_cpu_supports("fma") != 0;
+#else
+    return false;
+#endif
+}
+
+// Every range of an array of boxes with lines, scanned with the line test in
+// every lane width and block size: what is reported is a box overlap, every
+// overlap whose lines pass within reach (in double, before the rounding to
+// float) is reported, and four and eight lanes report the same. Half the
+// lines pass the probe's at reach times (1 - 2^-24): as near the edge of
+// the test as a pair can come.
+void line_scans_keep_every_pair_within_reach(std::uint64_t seed, std::uint32_t count) {
+    SplitMix64 rng(seed);
+    const double reach = 1e-3;
+    const LineTerms terms = line_test_terms(1.0, 1.0, reach);
+    struct Line {
+        double x, y, vx, vy;
+    };
+    const auto random_line = [&] {
+        return Line{rng.uniform(), rng.uniform(), 2.0 * rng.uniform() - 1.0, 2.0 * rng.uniform() - 1.0};
+    };
+    const auto to_float = [](const Line& line) {
+        return FloatLine{static_cast<float>(line.x), static_cast<float>(line.y), static_cast<float>(line.vx),
+                         static_cast<float>(line.vy)};
+    };
+    const auto within_reach = [&](const Line& a, const Line& b) {
+        const double dx = b.x - a.x, dy = b.y - a.y, dvx = b.vx - a.vx, dvy = b.vy - a.vy;
+        return std::abs(dx * dvy - dy * dvx) <= reach * std::sqrt(dvx * dvx + dvy * dvy);
+    };
+    int wrong = 0;
+    int kept_within_reach = 0;
+    for (std::uint32_t first = 0; first <= count; ++first) {
+        for (std::uint32_t last = first; last <= count; ++last) {
+            const Line probe_line = random_line();
+            const FloatBounds probe = random_box(rng, 10.0f);
+            FloatBoundsArray array;
+            array.resize(count);
+            std::vector<FloatBounds> boxes(count);
+            std::vector<Line> lines(count);
+            for (std::uint32_t m = 0; m < count; ++m) {
+                boxes[m] = random_box(rng, 10.0f);
+                lines[m] = random_line();
+                if (m % 2 == 0) {  // through a point at reach (1 - 2^-24) from the probe's line
+                    const double dvx = lines[m].vx - probe_line.vx, dvy = lines[m].vy - probe_line.vy;
+                    const double norm = std::sqrt(dvx * dvx + dvy * dvy);
+                    const double along = 2.0 * rng.uniform() - 1.0;
+                    const double off = reach * (1.0 - 0x1p-24) / norm;
+                    lines[m].x = probe_line.x + along * dvx - off * dvy;
+                    lines[m].y = probe_line.y + along * dvy + off * dvx;
+                }
+                array.set(m, boxes[m]);
+                array.set_line(m, to_float(lines[m]));
+            }
+            const auto scan = [&](auto block_groups, auto group_lanes) {
+                std::vector<std::uint32_t> reported;
+                array.for_each_close<block_groups(), group_lanes(), true>(
+                    first, last, probe, to_float(probe_line), terms, [&](std::uint32_t m) { reported.push_back(m); });
+                for (std::uint32_t m = first; m < last; ++m) {
+                    const bool found = std::find(reported.begin(), reported.end(), m) != reported.end();
+                    const bool boxes_meet = overlap(boxes[m], probe);
+                    if (found && !boxes_meet) ++wrong;
+                    if (boxes_meet && within_reach(lines[m], probe_line) && !found) ++wrong;
+                    kept_within_reach += boxes_meet && within_reach(lines[m], probe_line) ? 1 : 0;
+                }
+                return reported;
+            };
+            const auto scans_in_groups_of = [&](auto group_lanes) {
+                std::vector<std::vector<std::uint32_t>> all;
+                all.push_back(scan(std::integral_constant<std::uint32_t, 1>{}, group_lanes));
+                all.push_back(scan(std::integral_constant<std::uint32_t, 2>{}, group_lanes));
+                all.push_back(
+                    scan(std::integral_constant<std::uint32_t, FloatBoundsArray::max_block_groups>{}, group_lanes));
+                for (const auto& reported : all) wrong += reported == all[0] ? 0 : 1;
+                return all[0];
+            };
+            const auto four = scans_in_groups_of(std::integral_constant<std::uint32_t, FloatBoundsArray::lanes>{});
+            const auto eight =
+                scans_in_groups_of(std::integral_constant<std::uint32_t, FloatBoundsArray::wide_lanes>{});
+            wrong += four == eight ? 0 : 1;
+            if (has_sixteen_lanes())
+                scans_in_groups_of(std::integral_constant<std::uint32_t, FloatBoundsArray::widest_lanes>{});
+        }
+    }
+    CHECK_EQ(wrong, 0);
+    // The pairs at the edge of reach were there to keep.
+    if (count >= 8) CHECK(kept_within_reach > 0);
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
     return check::run(argc, argv, "test_float_bounds_array",
-                      {{"float box scans", [] {
+                      {{"float box scans",
+                        [] {
                             float_bounds_enclose_the_value();
                             touching_boxes_overlap();
                             std::uint64_t seed = 1;
                             for (const std::uint32_t count : {0U, 1U, 3U, 4U, 5U, 9U, 40U, 70U})
                                 scans_report_exactly_the_overlaps(seed++, count);
+                        }},
+                       {"line scans", [] {
+                            std::uint64_t seed = 100;
+                            for (const std::uint32_t count : {0U, 1U, 5U, 17U, 40U})
+                                line_scans_keep_every_pair_within_reach(seed++, count);
                         }}});
 }

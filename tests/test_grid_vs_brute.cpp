@@ -17,6 +17,7 @@
 #include "stepped/step_pipeline.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <optional>
 #include <vector>
 
@@ -34,22 +35,24 @@ std::vector<Collision> merged(const std::vector<ThreadCandidates>& buffers) {
 }
 
 // Candidates of one search on one state, merged and in the total order.
+// The grid scans `lanes` boxes at a time (0: the widest this processor has).
 std::vector<Collision> pair_candidates(const PairSearchInput& in, std::optional<int> grid_cells, bool brute,
-                                       int threads) {
+                                       int threads, int lanes = 0) {
     std::vector<ThreadCandidates> buffers(static_cast<std::size_t>(threads));
     if (brute) {
         find_pairs_brute_force(in, buffers);
     } else {
-        GridSearch grid;
+        GridSearch grid(lanes);
         grid.find_pairs(in, grid_cells, buffers);
     }
     return merged(buffers);
 }
 
 // Runs the scene with the brute force, comparing at every step the grid's
-// candidate set (with `grid_cells`, or sized from the motion) and the paths
-// search's (which keeps its lines from step to step) on the same state.
-bool same_candidates_every_step(const NamedScene& scene, std::optional<int> grid_cells, int threads) {
+// candidate set (with `grid_cells`, or sized from the motion; scanning
+// `lanes` boxes at a time) and the paths search's (which keeps its lines
+// from step to step) on the same state.
+bool same_candidates_every_step(const NamedScene& scene, std::optional<int> grid_cells, int threads, int lanes = 0) {
     SteppedSimulation sim(scene.world, scene.particles, {.pair_search = PairSearch::brute_force, .threads = 1});
     const Box box = Box::of(scene.world);
     std::vector<double> wall_time(scene.particles.size());
@@ -62,7 +65,7 @@ bool same_candidates_every_step(const NamedScene& scene, std::optional<int> grid
         const std::vector<Collision> reference = pair_candidates(in, std::nullopt, true, 1);
         for (ThreadCandidates& buffer : path_buffers) buffer.found.clear();
         paths.find_pairs(in, path_buffers);
-        if (reference != pair_candidates(in, grid_cells, false, threads) || reference != merged(path_buffers)) {
+        if (reference != pair_candidates(in, grid_cells, false, threads, lanes) || reference != merged(path_buffers)) {
             return false;
         }
         sim.step();
@@ -185,6 +188,56 @@ NamedScene slice_edge_contacts() {
     return scene;
 }
 
+// The grid's lane counts this processor has (4 everywhere; 8 and 16 on
+// x86-64 with AVX2 and AVX-512), one for each k in turn.
+int lanes_for(std::uint64_t k) {
+    std::vector<int> supported;
+    for (const int lanes : {4, 8, 16}) {
+        if (GridSearch::supports_lanes(lanes)) supported.push_back(lanes);
+    }
+    return supported[k % supported.size()];
+}
+
+// Fast disks in a box of side L, and pairs built to pass each other at a
+// distance of 2r times (1 -+ 2^-30) at a time t0 within the step: the
+// nearest a pair can pass and still collide, and the nearest it can pass
+// without. Their separation's line is as close to the line test's reach
+// as the pairs a search finds ever come. Returns the scene and, in `built`,
+// how many pairs were built to collide.
+NamedScene passing_pairs(double box_size, std::uint64_t seed, int& built) {
+    SplitMix64 rng(seed);
+    const double r = box_size * 1e-4;
+    NamedScene scene{"passing pairs", World{box_size, r}, 2, {}};
+    scene.particles = make_random_particles(150, scene.world, {seed, SpeedRange{box_size / 8.0, box_size / 4.0}});
+    const auto random_velocity = [&] {
+        const double speed = box_size * (0.125 + 0.125 * rng.uniform());
+        const double angle = 6.283185307179586 * rng.uniform();
+        return Vec2(speed * std::cos(angle), speed * std::sin(angle));
+    };
+    const auto inside = [&](const Vec2& p) {
+        return p.x() >= r && p.x() <= box_size - r && p.y() >= r && p.y() <= box_size - r;
+    };
+    built = 0;
+    for (int pair = 0; pair < 60;) {
+        const Vec2 meeting(box_size * (0.1 + 0.8 * rng.uniform()), box_size * (0.1 + 0.8 * rng.uniform()));
+        const double t0 = 0.05 + 0.9 * rng.uniform();
+        const Vec2 va = random_velocity();
+        const Vec2 vb = random_velocity();
+        const Vec2 dv = vb - va;
+        const Vec2 normal = Vec2(-dv.y(), dv.x()) / dv.norm();
+        const bool collides = pair % 2 == 0;
+        const Vec2 apart = normal * (2.0 * r * (collides ? 1.0 - 0x1p-30 : 1.0 + 0x1p-30));
+        const Vec2 a = meeting - va * t0;
+        const Vec2 b = meeting + apart - vb * t0;
+        if (!inside(a) || !inside(b)) continue;
+        scene.particles.push_back({a, va, 0, 0});
+        scene.particles.push_back({b, vb, 0, 0});
+        built += collides ? 1 : 0;
+        ++pair;
+    }
+    return scene;
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -199,9 +252,10 @@ int main(int argc, char** argv) {
                   const int forced = forced_grids[k % 6];
                   const int threads = thread_counts[(k / 6) % 4];
                   const std::optional<int> grid = k % 2 == 0 ? std::nullopt : std::optional<int>(forced);
+                  const int lanes = lanes_for(k / 2);
                   const check::Context context("random scene ", k, ", grid ", grid.value_or(0),
-                                               " (0: sized from the motion), ", threads, " threads");
-                  CHECK(same_candidates_every_step(scene, grid, threads));
+                                               " (0: sized from the motion), ", threads, " threads, ", lanes, " lanes");
+                  CHECK(same_candidates_every_step(scene, grid, threads, lanes));
                   // Whole runs, hashed after every step: brute on 1 thread against the
                   // grid (auto and forced) and brute on several threads.
                   const std::uint64_t reference =
@@ -308,6 +362,33 @@ int main(int argc, char** argv) {
                            run_hash(scene, {.pair_search = PairSearch::brute_force, .threads = 1}));
               }
               CHECK(stages > 0);
+          }},
+         // Pairs that pass just inside and just outside a contact distance,
+         // at scales from 2^-150 to 2^150 times L = 1000, in every lane width:
+         // the line test in float keeps every pair that collides.
+         {"pairs passing at a contact distance",
+          [] {
+              std::uint64_t seed = 1;
+              for (const int exponent : {-150, -20, 0, 24, 150}) {
+                  int built = 0;
+                  const NamedScene scene = passing_pairs(std::ldexp(1000.0, exponent), seed++, built);
+                  const PairSearchInput first_step{scene.particles, std::vector<double>(scene.particles.size(), never),
+                                                   Box::of(scene.world), 1.0};
+                  // The pairs built to collide are candidates of the brute force (unless a
+                  // wall or another disk comes first), those built to pass are not.
+                  int found = 0;
+                  for (const Collision& c : pair_candidates(first_step, std::nullopt, true, 1)) {
+                      if (c.i >= 150 && (c.i - 150) % 2 == 0 && c.j == c.i + 1)
+                          found += (c.i - 150) % 4 == 0 ? 1 : -1000;
+                  }
+                  for (int lanes = 4; lanes <= 16; lanes *= 2) {
+                      if (!GridSearch::supports_lanes(lanes)) continue;
+                      const check::Context context("L = 1000 x 2^", exponent, ", ", lanes, " lanes");
+                      CHECK(found >= built * 3 / 4);
+                      CHECK(same_candidates_every_step(scene, std::nullopt, 1, lanes));
+                      CHECK(same_candidates_every_step(scene, std::nullopt, 2, lanes));
+                  }
+              }
           }},
          {"clustered scenes", [] {
               for (std::uint64_t k = 0; k < 12; ++k) {

@@ -10,6 +10,13 @@
 //
 // Bounds are rounded outwards to float, so a float overlap is implied by the
 // double one: a few more pairs get the exact pair test, never one fewer.
+//
+// Beside each box, its particle's line in float (line_test.hpp): where paths
+// are long, most boxes that overlap belong to particles that pass far from
+// each other, and a scan that also tests the lines, in the same lanes, hands
+// on about one pair in forty of those (docs/benchmarks.md).
+
+#include "search/line_test.hpp"
 
 #include <algorithm>
 #include <bit>
@@ -19,12 +26,20 @@
 #include <limits>
 #include <type_traits>
 #include <vector>
+#if defined(__x86_64__)
+#include <immintrin.h>
+#endif
 
 namespace particlesim {
 
 // Bounds of a box, rounded outwards to float.
 struct FloatBounds {
     float min_x, min_y, max_x, max_y;
+};
+
+// A particle's line in float: position and velocity, scaled as line_test.hpp says.
+struct FloatLine {
+    float x, y, vx, vy;
 };
 
 // Rounding to float moves a value by at most 2^-24 of itself (or 2^-149 near
@@ -49,19 +64,23 @@ inline float float_at_least(double value) {
 class FloatBoundsArray {
 public:
     // Boxes tested by one comparison: four everywhere, eight where the
-    // caller is compiled for eight-lane registers (AVX).
+    // caller is compiled for eight-lane registers (AVX), sixteen (x86-64)
+    // where the processor has AVX-512.
     static constexpr std::uint32_t lanes = 4;
     static constexpr std::uint32_t wide_lanes = 8;
+    static constexpr std::uint32_t widest_lanes = 16;
 
     static constexpr std::uint32_t max_block_groups = 8;
 
     // Room for `count` boxes, plus padding that block scans may read (and
     // mask off) past the last box.
     void resize(std::size_t count) {
-        for (std::vector<float>& bound : bounds_) bound.resize(count + max_block_groups * wide_lanes, 0.0f);
+        for (std::vector<float>& row : bounds_) row.resize(count + max_block_groups * widest_lanes, 0.0f);
+        for (std::vector<float>& row : lines_) row.resize(count + max_block_groups * widest_lanes, 0.0f);
     }
     void reserve(std::size_t count) {
-        for (std::vector<float>& bound : bounds_) bound.reserve(count + max_block_groups * wide_lanes);
+        for (std::vector<float>& row : bounds_) row.reserve(count + max_block_groups * widest_lanes);
+        for (std::vector<float>& row : lines_) row.reserve(count + max_block_groups * widest_lanes);
     }
 
     void set(std::uint32_t at, const FloatBounds& box) {
@@ -75,6 +94,17 @@ public:
         return {bounds_[min_x][at], bounds_[min_y][at], bounds_[max_x][at], bounds_[max_y][at]};
     }
 
+    // The line of the particle whose box is at `at`; read only by scans with lines.
+    void set_line(std::uint32_t at, const FloatLine& line) {
+        lines_[position_x][at] = line.x;
+        lines_[position_y][at] = line.y;
+        lines_[velocity_x][at] = line.vx;
+        lines_[velocity_y][at] = line.vy;
+    }
+    [[nodiscard]] FloatLine line(std::uint32_t at) const {
+        return {lines_[position_x][at], lines_[position_y][at], lines_[velocity_x][at], lines_[velocity_y][at]};
+    }
+
     // Calls found(m) for every stored box m in [first, last) that overlaps
     // `box`. The range is tested in blocks of `block_groups` groups of
     // `group_lanes` boxes, the first one always: a range that fits one block
@@ -84,14 +114,25 @@ public:
     template <std::uint32_t block_groups, std::uint32_t group_lanes = lanes, typename Found>
     [[gnu::always_inline]] void for_each_overlap(std::uint32_t first, std::uint32_t last, const FloatBounds& box,
                                                  Found&& found) const {
+        for_each_close<block_groups, group_lanes, false>(first, last, box, FloatLine{}, LineTerms{}, found);
+    }
+
+    // The same, for the boxes that overlap `box` and whose lines also pass
+    // the line test against `line` with `terms` (or every overlapping box
+    // when `with_lines` is false). Sixteen lanes need a caller compiled for
+    // AVX-512 on a processor that has it.
+    template <std::uint32_t block_groups, std::uint32_t group_lanes, bool with_lines, typename Found>
+    [[gnu::always_inline]] void for_each_close(std::uint32_t first, std::uint32_t last, const FloatBounds& box,
+                                               const FloatLine& line, const LineTerms& terms, Found&& found) const {
         static_assert(block_groups >= 1 && block_groups <= max_block_groups);
-        static_assert(group_lanes == lanes || group_lanes == wide_lanes);
+        static_assert(group_lanes == lanes || group_lanes == wide_lanes || group_lanes == widest_lanes);
         constexpr std::uint32_t block = block_groups * group_lanes;
         std::uint32_t start = first;
         do {
             std::uint64_t hits = 0;
             for (std::uint32_t group = 0; group < block_groups; ++group) {
-                hits |= std::uint64_t{hit_bits<group_lanes>(start + group * group_lanes, box)} << (group * group_lanes);
+                hits |= std::uint64_t{hit_bits<group_lanes, with_lines>(start + group * group_lanes, box, line, terms)}
+                        << (group * group_lanes);
             }
             const std::uint32_t inside = last > start ? std::min(last - start, block) : 0U;
             hits &= inside == 64 ? ~std::uint64_t{0} : (std::uint64_t{1} << inside) - 1U;
@@ -102,6 +143,41 @@ public:
 
 private:
     enum Bound { min_x, min_y, max_x, max_y, bound_count };
+    enum LineComponent { position_x, position_y, velocity_x, velocity_y, line_component_count };
+
+#if defined(__x86_64__)
+    // hit_bits() in sixteen lanes: the comparisons go into mask registers
+    // (GCC compiles a sixteen-lane comparison of the vector extension lane by
+    // lane). The same tests; a fused multiply-add only rounds less, and the
+    // line test's margin holds either way. Not forced inline: it may only be
+    // inlined into a caller compiled for AVX-512 (GridSearch's scan).
+    template <bool with_lines>
+    [[gnu::target("avx512f,fma")]] unsigned hit_bits_sixteen(std::uint32_t group, const FloatBounds& box,
+                                                             const FloatLine& line, const LineTerms& terms) const {
+        __mmask16 hits =
+            _mm512_cmp_ps_mask(_mm512_loadu_ps(bounds_[min_x].data() + group), _mm512_set1_ps(box.max_x), _CMP_LE_OQ);
+        hits = _mm512_mask_cmp_ps_mask(hits, _mm512_set1_ps(box.min_x), _mm512_loadu_ps(bounds_[max_x].data() + group),
+                                       _CMP_LE_OQ);
+        hits = _mm512_mask_cmp_ps_mask(hits, _mm512_loadu_ps(bounds_[min_y].data() + group), _mm512_set1_ps(box.max_y),
+                                       _CMP_LE_OQ);
+        hits = _mm512_mask_cmp_ps_mask(hits, _mm512_set1_ps(box.min_y), _mm512_loadu_ps(bounds_[max_y].data() + group),
+                                       _CMP_LE_OQ);
+        if constexpr (with_lines) {
+            const __m512 dx = _mm512_sub_ps(_mm512_loadu_ps(lines_[position_x].data() + group), _mm512_set1_ps(line.x));
+            const __m512 dy = _mm512_sub_ps(_mm512_loadu_ps(lines_[position_y].data() + group), _mm512_set1_ps(line.y));
+            const __m512 dvx =
+                _mm512_sub_ps(_mm512_loadu_ps(lines_[velocity_x].data() + group), _mm512_set1_ps(line.vx));
+            const __m512 dvy =
+                _mm512_sub_ps(_mm512_loadu_ps(lines_[velocity_y].data() + group), _mm512_set1_ps(line.vy));
+            const __m512 cross = _mm512_sub_ps(_mm512_mul_ps(dx, dvy), _mm512_mul_ps(dy, dvx));
+            const __m512 speed_sq = _mm512_add_ps(_mm512_mul_ps(dvx, dvx), _mm512_mul_ps(dvy, dvy));
+            const __m512 bound = _mm512_add_ps(_mm512_mul_ps(_mm512_set1_ps(terms.reach_term), speed_sq),
+                                               _mm512_set1_ps(terms.margin_term));
+            hits = _mm512_mask_cmp_ps_mask(hits, _mm512_mul_ps(cross, cross), bound, _CMP_LE_OQ);
+        }
+        return hits;
+    }
+#endif
 
     // (A vector size that depends on a template parameter is ignored by GCC.)
     using FourFloats = float __attribute__((vector_size(16)));
@@ -112,8 +188,14 @@ private:
     // Bit k set: box group + k overlaps `box`. No vector is passed or
     // returned by value: eight-lane ones would change the calling convention
     // of a build without AVX.
-    template <std::uint32_t group_lanes>
-    [[gnu::always_inline]] unsigned hit_bits(std::uint32_t group, const FloatBounds& box) const {
+    template <std::uint32_t group_lanes, bool with_lines>
+    [[gnu::always_inline]] unsigned hit_bits(std::uint32_t group, const FloatBounds& box, const FloatLine& line,
+                                             const LineTerms& terms) const {
+#if defined(__x86_64__)
+        if constexpr (group_lanes == widest_lanes) return hit_bits_sixteen<with_lines>(group, box, line, terms);
+#else
+        static_assert(group_lanes != widest_lanes, "sixteen lanes are x86-64's");
+#endif
         using Lanes = std::conditional_t<group_lanes == lanes, FourFloats, EightFloats>;
         using LaneMask = std::conditional_t<group_lanes == lanes, FourInts, EightInts>;
         Lanes low_x, low_y, high_x, high_y;
@@ -121,8 +203,21 @@ private:
         std::memcpy(&low_y, &bounds_[min_y][group], sizeof(Lanes));
         std::memcpy(&high_x, &bounds_[max_x][group], sizeof(Lanes));
         std::memcpy(&high_y, &bounds_[max_y][group], sizeof(Lanes));
-        const LaneMask hits =
-            (low_x <= box.max_x) & (box.min_x <= high_x) & (low_y <= box.max_y) & (box.min_y <= high_y);
+        LaneMask hits = (low_x <= box.max_x) & (box.min_x <= high_x) & (low_y <= box.max_y) & (box.min_y <= high_y);
+        if constexpr (with_lines) {
+            Lanes line_x, line_y, line_vx, line_vy;
+            std::memcpy(&line_x, &lines_[position_x][group], sizeof(Lanes));
+            std::memcpy(&line_y, &lines_[position_y][group], sizeof(Lanes));
+            std::memcpy(&line_vx, &lines_[velocity_x][group], sizeof(Lanes));
+            std::memcpy(&line_vy, &lines_[velocity_y][group], sizeof(Lanes));
+            const Lanes dx = line_x - line.x;
+            const Lanes dy = line_y - line.y;
+            const Lanes dvx = line_vx - line.vx;
+            const Lanes dvy = line_vy - line.vy;
+            const Lanes cross = dx * dvy - dy * dvx;
+            const Lanes speed_sq = dvx * dvx + dvy * dvy;
+            hits &= cross * cross <= terms.reach_term * speed_sq + terms.margin_term;
+        }
 #if defined(__SSE__)
         // Every lane is all ones or all zeros: its sign bit is its hit bit,
         // taken four lanes at a time.
@@ -140,7 +235,8 @@ private:
 #endif
     }
 
-    std::vector<float> bounds_[bound_count];  // one row per bound
+    std::vector<float> bounds_[bound_count];          // one row per bound
+    std::vector<float> lines_[line_component_count];  // one row per component
 };
 
 }  // namespace particlesim

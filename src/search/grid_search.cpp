@@ -4,7 +4,12 @@
 #include "core/uniform_grid.hpp"
 #include "parallel/parallel.hpp"
 #include "search/float_bounds_array.hpp"
+#include "search/path_lines.hpp"
 #include "stepped/stepped_tuning.hpp"
+
+#if defined(__x86_64__)
+#include <immintrin.h>
+#endif
 
 #include <algorithm>
 #include <atomic>
@@ -12,6 +17,8 @@
 #include <limits>
 #include <mutex>
 #include <numeric>
+#include <stdexcept>
+#include <string>
 #include <utility>
 
 namespace particlesim {
@@ -23,10 +30,13 @@ struct GridSearch::SliceWorkspace {
     std::vector<std::uint32_t> by_cell;    // the particle of each box (or piece), sorted by cell
     FloatBoundsArray boxes_by_cell;        // those boxes, in the same order
     std::vector<PairTestState> states_by_cell;  // their particles' motion, in the same order
-    std::vector<std::uint32_t> large;           // particles whose path fits no cell, even in pieces
-    std::vector<SweptBounds> large_boxes;       // their boxes, in the same order
-    std::vector<std::uint32_t> large_start;     // per worker: its first place in `large`
-    std::vector<std::uint32_t> range_start;     // per range of cells: its first place in by_cell
+    // Whether the slice's scans test the particles' lines as well (then
+    // boxes_by_cell holds them).
+    bool lines = false;
+    std::vector<std::uint32_t> large;        // particles whose path fits no cell, even in pieces
+    std::vector<SweptBounds> large_boxes;    // their boxes, in the same order
+    std::vector<std::uint32_t> large_start;  // per worker: its first place in `large`
+    std::vector<std::uint32_t> range_start;  // per range of cells: its first place in by_cell
 };
 
 using namespace stepped_tuning;
@@ -111,7 +121,18 @@ int time_slices(double mean_sweep, double slice_sweep) {
     return static_cast<int>(std::clamp(std::ceil(mean_sweep / slice_sweep), 1.0, double{max_slices}));
 }
 
-GridSearch::GridSearch() = default;
+GridSearch::GridSearch(int lanes) : lanes_(lanes) {
+    if (lanes == 0) {
+        for (const int widest : {16, 8, 4}) {
+            if (supports_lanes(widest)) {
+                lanes_ = widest;
+                break;
+            }
+        }
+    } else if (!supports_lanes(lanes)) {
+        throw std::invalid_argument("GridSearch: no " + std::to_string(lanes) + "-lane scan on this processor");
+    }
+}
 GridSearch::~GridSearch() = default;
 GridSearch::GridSearch(GridSearch&&) noexcept = default;
 GridSearch& GridSearch::operator=(GridSearch&&) noexcept = default;
@@ -146,6 +167,12 @@ GridLayout GridSearch::choose_layout(const PairSearchInput& in, std::optional<in
     // boxes beyond that are scaled.
     const int exponent = std::ilogb(box_size);
     layout.float_scale = std::abs(exponent) > float_safe_exponent ? std::ldexp(1.0, -exponent) : 1.0;
+    // Lines scaled as PathLines scales them: positions lie in [0, L], and
+    // max_speed bounds every velocity component.
+    layout.line_position_scale = power_of_two_below(box_size);
+    layout.line_velocity_scale = power_of_two_below(max_speed);
+    layout.line_terms = line_test_terms(box_size * layout.line_position_scale, max_speed * layout.line_velocity_scale,
+                                        contact_reach(in.box) * layout.line_position_scale);
     const double mean_sweep = length_sum / static_cast<double>(std::max<std::int64_t>(present, 1));
     const double diameter = 2.0 * layout.reach;
     const auto slices_for = [&](double slice_sweep) { return time_slices(mean_sweep, slice_sweep); };
@@ -374,11 +401,126 @@ void GridSearch::bin_slice(const PairSearchInput& in, int slice, SliceWorkspace&
                           worker_count(static_cast<std::size_t>(threads), cells, min_particles_per_thread)};
     // Pieces that would not fit the buffers (many fast particles): the slice
     // is counted again with the long paths large instead.
-    if (count_boxes(binning, true) > ws.by_cell.size()) count_boxes(binning, false);
+    std::size_t boxes = count_boxes(binning, true);
+    if (boxes > ws.by_cell.size()) boxes = count_boxes(binning, false);
+    ws.lines = static_cast<double>(boxes) >= lines_from_boxes_per_cell * static_cast<double>(cells);
     sum_cell_places(binning);
     place_boxes(binning);
     close_cell_starts(binning);
 }
+
+namespace {
+
+// What the count reads of a slice, for count_paths_eight().
+struct CountInput {
+    const Particle* particles;
+    const double* wall_time;
+    const SliceDecisions* decisions;  // may be null
+    double duration, begin, end;      // the step's, and the slice's span
+    double reach, fit;
+    const UniformGrid* grid;
+};
+
+// What it adds up.
+struct CountTally {
+    std::size_t counted = 0;  // boxes that fit a cell
+    std::uint32_t large = 0;  // paths that do not
+};
+
+#if defined(__x86_64__)
+// AVX-512 operations written with every lane's result defined (GCC 12's
+// unmasked forms start from an undefined vector and warn of it).
+[[gnu::target("avx512f"), gnu::always_inline]] inline __m512d lanes_min(__m512d a, __m512d b) {
+    return _mm512_mask_min_pd(_mm512_setzero_pd(), 0xFF, a, b);  // a < b ? a : b
+}
+[[gnu::target("avx512f"), gnu::always_inline]] inline __m512d lanes_max(__m512d a, __m512d b) {
+    return _mm512_mask_max_pd(_mm512_setzero_pd(), 0xFF, a, b);  // a > b ? a : b
+}
+[[gnu::target("avx512f"), gnu::always_inline]] inline __m256i lanes_truncated(__m512d a) {
+    return _mm512_mask_cvttpd_epi32(_mm256_setzero_si256(), 0xFF, a);
+}
+// The lanes of `lanes` read, the others 0.
+[[gnu::target("avx512f"), gnu::always_inline]] inline __m512d lanes_gathered(__mmask8 lanes, const double* base,
+                                                                             __m512i index) {
+    return _mm512_mask_i64gather_pd(_mm512_setzero_pd(), lanes, index, base, 8);
+}
+
+// The count's loop over particles [first, last), eight at a time in AVX-512
+// lanes (the rest one at a time by `one`): whether each is binned, its
+// path's box, whether that fits a cell, and the cell. Every lane carries out
+// the scalar code's operations on the same doubles (selects where it takes
+// std::min and std::max, the same clamps as UniformGrid::column_of()), so
+// the cells are the ones the placement computes again. Only the particles
+// binned are read (late slices leave most out). The tallies and the marks
+// are written lane by lane.
+template <typename CountOne>
+[[gnu::target("avx512f")]] void count_paths_eight(const CountInput& in, std::int64_t first, std::int64_t last,
+                                                  std::uint32_t* cell_of, std::uint32_t* counts, CountTally& tally,
+                                                  CountOne&& one) {
+    static_assert(sizeof(Particle) == 6 * sizeof(double), "position, velocity, two counters");
+    const __m512i component = _mm512_setr_epi64(0, 6, 12, 18, 24, 30, 36, 42);  // doubles a particle
+    const __m512d duration = _mm512_set1_pd(in.duration);
+    const __m512d begin = _mm512_set1_pd(in.begin);
+    const __m512d end = _mm512_set1_pd(in.end);
+    const __m512d reach = _mm512_set1_pd(in.reach);
+    const __m512d fit = _mm512_set1_pd(in.fit);
+    const __m512d zero = _mm512_setzero_pd();
+    const __m512d inverse_cell = _mm512_set1_pd(1.0 / in.grid->cell_size());
+    const __m512d last_column = _mm512_set1_pd(static_cast<double>(in.grid->per_side() - 1));
+    const __m256i side = _mm256_set1_epi32(in.grid->per_side());
+    std::int64_t i = first;
+    for (; i + 8 <= last; i += 8) {
+        // sweep_end() = std::min(duration, wall time), and SliceSpan's tests.
+        const __m512d sweep_end = lanes_min(_mm512_loadu_pd(in.wall_time + i), duration);
+        unsigned binned =
+            _mm512_cmp_pd_mask(sweep_end, zero, _CMP_GT_OQ) & _mm512_cmp_pd_mask(sweep_end, begin, _CMP_NLT_UQ);
+        if (in.decisions != nullptr) {
+            unsigned decided = 0;
+            for (int lane = 0; lane < 8; ++lane) {
+                decided |= static_cast<unsigned>(in.decisions->decided(static_cast<std::uint32_t>(i + lane))) << lane;
+            }
+            binned &= ~decided;
+        }
+        const __mmask8 read = static_cast<__mmask8>(binned);
+        const double* base = &in.particles[i].position.x();
+        const __m512d x = lanes_gathered(read, base, component);
+        const __m512d y = lanes_gathered(read, base, _mm512_add_epi64(component, _mm512_set1_epi64(1)));
+        const __m512d vx = lanes_gathered(read, base, _mm512_add_epi64(component, _mm512_set1_epi64(2)));
+        const __m512d vy = lanes_gathered(read, base, _mm512_add_epi64(component, _mm512_set1_epi64(3)));
+        // swept_bounds(): the path from `begin` to its end, widened by reach.
+        const __m512d path_end = lanes_min(sweep_end, end);
+        const __m512d from_x = _mm512_add_pd(x, _mm512_mul_pd(vx, begin));
+        const __m512d from_y = _mm512_add_pd(y, _mm512_mul_pd(vy, begin));
+        const __m512d to_x = _mm512_add_pd(x, _mm512_mul_pd(vx, path_end));
+        const __m512d to_y = _mm512_add_pd(y, _mm512_mul_pd(vy, path_end));
+        // std::min(from, to) is (to < from ? to : from), as min_pd(to, from); std::max likewise.
+        const __m512d min_x = _mm512_sub_pd(lanes_min(to_x, from_x), reach);
+        const __m512d min_y = _mm512_sub_pd(lanes_min(to_y, from_y), reach);
+        const __m512d max_x = _mm512_add_pd(lanes_max(to_x, from_x), reach);
+        const __m512d max_y = _mm512_add_pd(lanes_max(to_y, from_y), reach);
+        const __mmask8 fits = _mm512_cmp_pd_mask(_mm512_sub_pd(max_x, min_x), fit, _CMP_LE_OQ) &
+                              _mm512_cmp_pd_mask(_mm512_sub_pd(max_y, min_y), fit, _CMP_LE_OQ);
+        // column_of(): 0 unless above 0, the last column from per_side on, else truncated.
+        const __m256i column =
+            lanes_truncated(lanes_min(lanes_max(_mm512_mul_pd(min_x, inverse_cell), zero), last_column));
+        const __m256i row =
+            lanes_truncated(lanes_min(lanes_max(_mm512_mul_pd(min_y, inverse_cell), zero), last_column));
+        alignas(32) std::uint32_t cells[8];
+        _mm256_store_si256(reinterpret_cast<__m256i*>(cells), _mm256_add_epi32(_mm256_mullo_epi32(row, side), column));
+        for (int lane = 0; lane < 8; ++lane) {
+            const std::uint32_t in_slice = (binned >> lane) & 1U;
+            const std::uint32_t fitting = in_slice & ((fits >> lane) & 1U);
+            cell_of[i + lane] = in_slice == 0 ? absent_marker : fitting != 0 ? cells[lane] : large_marker;
+            counts[cells[lane]] += fitting;
+            tally.counted += fitting;
+            tally.large += in_slice - fitting;
+        }
+    }
+    for (; i < last; ++i) one(i);
+}
+#endif
+
+}  // namespace
 
 // Counts each worker's boxes by cell and its large boxes; returns the boxes to place.
 std::size_t GridSearch::count_boxes(const Binning& binning, bool cut_into_pieces) const {
@@ -403,24 +545,34 @@ std::size_t GridSearch::count_boxes(const Binning& binning, bool cut_into_pieces
         std::uint32_t* counts = binning.counts_of(worker);
         std::fill(counts, counts + binning.cells, 0U);
         const auto [first, last] = binning.block_of(worker);
-        std::size_t counted = 0;
-        std::uint32_t large = 0;
-        for (std::int64_t i = first; i < last; ++i) {
+        CountTally tally;
+        const auto count_one = [&](std::int64_t i) {
             if (!binning.binned(i)) {
                 ws.cell_of[i] = absent_marker;
-                continue;
+                return;
             }
             const SweptBounds box = binning.path_bounds(i);
             const bool fits = fits_cell(box, binning.fit);
             const std::uint32_t cell = binning.cell_of_box(box);
             ws.cell_of[i] = fits ? cell : large_marker;
             counts[cell] += fits ? 1U : 0U;
-            counted += fits ? 1U : 0U;
-            large += fits ? 0U : 1U;
+            tally.counted += fits ? 1U : 0U;
+            tally.large += fits ? 0U : 1U;
+        };
+#if defined(__x86_64__)
+        if (lanes_ == 16) {
+            const CountInput input{in.particles.data(), in.wall_time.data(), binning.decisions,
+                                   in.duration,         span.begin,          span.end,
+                                   layout_.reach,       binning.fit,         &binning.grid};
+            count_paths_eight(input, first, last, ws.cell_of.data(), counts, tally, count_one);
+        } else
+#endif
+        {
+            for (std::int64_t i = first; i < last; ++i) count_one(i);
         }
-        if (cut_into_pieces) count_pieces(first, last, counts, counted, large);
-        boxes += counted;
-        ws.large_start[worker + 1] = large;
+        if (cut_into_pieces) count_pieces(first, last, counts, tally.counted, tally.large);
+        boxes += tally.counted;
+        ws.large_start[worker + 1] = tally.large;
     });
     return boxes.load();
 }
@@ -467,18 +619,21 @@ void GridSearch::sum_cell_places(const Binning& binning) const {
 }
 
 // Places each worker's boxes at its places in cell order (bounds in float,
-// motion states copied beside them), and its large boxes in its share.
+// motion states copied beside them, and the lines where the scans test
+// them), and its large boxes in its share.
 void GridSearch::place_boxes(const Binning& binning) const {
     const PairSearchInput& in = binning.in;
     SliceWorkspace& ws = binning.ws;
     parallel_for(binning.threads, binning.threads, [&](std::int64_t worker, std::size_t) {
         std::uint32_t* next = binning.counts_of(worker);
         const auto [first, last] = binning.block_of(worker);
+        const bool lines = ws.lines;
         const auto place = [&](std::int64_t i, std::uint32_t cell, const SweptBounds& box) {
             const std::uint32_t at = next[cell]++;
             ws.by_cell[at] = static_cast<std::uint32_t>(i);
             ws.boxes_by_cell.set(at, float_bounds(box, layout_.float_scale));
             ws.states_by_cell[at] = pair_test_state(in, static_cast<std::uint32_t>(i));
+            if (lines) ws.boxes_by_cell.set_line(at, float_line(in.particles[i]));  // the same for the whole slice
         };
         // The pieces in a loop of their own: the main loop stays short enough
         // for the processor to overlap the cache misses of many particles.
@@ -526,12 +681,13 @@ namespace {
 
 // Tests particle `a` (box `box`, state `state`) against the boxes stored at
 // positions [first, last) of the cell order whose float bounds meet its own.
-template <std::uint32_t block_groups, std::uint32_t group_lanes = FloatBoundsArray::lanes>
+// With `with_lines`, only those whose lines also pass the line test against `line`.
+template <std::uint32_t block_groups, std::uint32_t group_lanes = FloatBoundsArray::lanes, bool with_lines = false>
 [[gnu::always_inline]] inline void test_against_range(const PairSearchInput& in, const GridSearch::SliceWorkspace& ws,
-                                                      std::uint32_t a, const FloatBounds& box,
-                                                      const PairTestState& state, std::uint32_t first,
-                                                      std::uint32_t last, ThreadCandidates& out) {
-    ws.boxes_by_cell.for_each_overlap<block_groups, group_lanes>(first, last, box, [&](std::uint32_t m) {
+                                                      std::uint32_t a, const FloatBounds& box, const FloatLine& line,
+                                                      const LineTerms& terms, const PairTestState& state,
+                                                      std::uint32_t first, std::uint32_t last, ThreadCandidates& out) {
+    const auto test = [&](std::uint32_t m) {
         const std::uint32_t b = ws.by_cell[m];
         if (b == a) return;  // another piece of the same path
         const PairTestState& other = ws.states_by_cell[m];
@@ -540,7 +696,8 @@ template <std::uint32_t block_groups, std::uint32_t group_lanes = FloatBoundsArr
         } else {
             test_pair(other, state, b, a, in, out);
         }
-    });
+    };
+    ws.boxes_by_cell.for_each_close<block_groups, group_lanes, with_lines>(first, last, box, line, terms, test);
 }
 
 // The row above is first read here, and only at hits, a pattern the
@@ -550,9 +707,9 @@ template <std::uint32_t block_groups, std::uint32_t group_lanes = FloatBoundsArr
 // The half stencil of every cell in row `cy`: the rest of the cell and the
 // cell to the east (adjacent in the cell order, so one range), then the
 // three cells above (one range), scanned in blocks of `block_groups` groups.
-template <std::uint32_t block_groups, std::uint32_t group_lanes = FloatBoundsArray::lanes>
+template <std::uint32_t block_groups, std::uint32_t group_lanes, bool with_lines>
 [[gnu::always_inline]] inline void scan_row(const PairSearchInput& in, const GridSearch::SliceWorkspace& ws, int side,
-                                            std::int64_t cy, ThreadCandidates& found) {
+                                            std::int64_t cy, const LineTerms& terms, ThreadCandidates& found) {
     const std::uint32_t* start = ws.cell_start.data();
     const std::uint32_t* ids = ws.by_cell.data();
     const FloatBoundsArray& boxes = ws.boxes_by_cell;
@@ -577,65 +734,85 @@ template <std::uint32_t block_groups, std::uint32_t group_lanes = FloatBoundsArr
             above_last = start[row + side + std::min(cx + 1, side - 1) + 1];
         }
         for (std::uint32_t k = first; k < last; ++k) {
-            test_against_range<block_groups, group_lanes>(in, ws, ids[k], boxes[k], states[k], k + 1, east_last, found);
-            test_against_range<block_groups, group_lanes>(in, ws, ids[k], boxes[k], states[k], above_first, above_last,
-                                                          found);
+            const FloatLine line = with_lines ? boxes.line(k) : FloatLine{};
+            test_against_range<block_groups, group_lanes, with_lines>(in, ws, ids[k], boxes[k], line, terms, states[k],
+                                                                      k + 1, east_last, found);
+            test_against_range<block_groups, group_lanes, with_lines>(in, ws, ids[k], boxes[k], line, terms, states[k],
+                                                                      above_first, above_last, found);
         }
     }
 }
 
 // One row in blocks of `block_groups` groups of four boxes, or (x86-64) of
-// eight, compiled for AVX2: chosen at run time, so that one build runs on
-// every x86-64 processor. Lanes only filter boxes; every pair test is the
-// same double arithmetic (no fused multiply-add), so results do not change.
-template <std::uint32_t block_groups>
+// eight or sixteen, compiled for AVX2 or AVX-512: chosen at run time, so that
+// one build runs on every x86-64 processor. Lanes only filter boxes; every
+// pair test is the same double arithmetic (no fused multiply-add), so results
+// do not change.
+template <std::uint32_t block_groups, bool with_lines>
 void scan_row_four(const PairSearchInput& in, const GridSearch::SliceWorkspace& ws, int side, std::int64_t cy,
-                   ThreadCandidates& found) {
-    scan_row<block_groups>(in, ws, side, cy, found);
+                   const LineTerms& terms, ThreadCandidates& found) {
+    scan_row<block_groups, FloatBoundsArray::lanes, with_lines>(in, ws, side, cy, terms, found);
 }
 
 #if defined(__x86_64__)
-template <std::uint32_t block_groups>
+template <std::uint32_t block_groups, bool with_lines>
 [[gnu::target("avx2")]] void scan_row_eight(const PairSearchInput& in, const GridSearch::SliceWorkspace& ws, int side,
-                                            std::int64_t cy, ThreadCandidates& found) {
-    scan_row<block_groups, FloatBoundsArray::wide_lanes>(in, ws, side, cy, found);
+                                            std::int64_t cy, const LineTerms& terms, ThreadCandidates& found) {
+    scan_row<block_groups, FloatBoundsArray::wide_lanes, with_lines>(in, ws, side, cy, terms, found);
 }
 
-bool has_eight_lanes() {
-    static const bool available = [] {
+template <std::uint32_t block_groups, bool with_lines>
+[[gnu::target("avx512f,fma")]] void scan_row_sixteen(const PairSearchInput& in, const GridSearch::SliceWorkspace& ws,
+                                                     int side, std::int64_t cy, const LineTerms& terms,
+                                                     ThreadCandidates& found) {
+    scan_row<block_groups, FloatBoundsArray::widest_lanes, with_lines>(in, ws, side, cy, terms, found);
+}
+
+bool cpu_supports_lanes(int lanes) {
+    static const bool sixteen = [] {
         __builtin_cpu_init();  // in case this first runs before the library's constructors
-        return __builtin_cpu_supports("avx2") != 0;
+        return __builtin_cpu_supports("avx512f") != 0 && __builtin_cpu_supports("fma") != 0;
     }();
-    return available;
+    static const bool eight = __builtin_cpu_supports("avx2") != 0;
+    return lanes == 4 || (lanes == 8 && eight) || (lanes == 16 && sixteen);
 }
 #endif
 
 }  // namespace
 
+bool GridSearch::supports_lanes(int lanes) {
+#if defined(__x86_64__)
+    return cpu_supports_lanes(lanes);
+#else
+    return lanes == 4;
+#endif
+}
+
 void GridSearch::test_small_pairs(const PairSearchInput& in, const SliceWorkspace& ws, std::span<ThreadCandidates> out,
                                   int threads) const {
     const int side = layout_.grid.per_side();
     const auto scan = [&](auto scan_one_row) {
-        parallel_for_dynamic(threads, side, 4,
-                             [&](std::int64_t cy, std::size_t thread) { scan_one_row(in, ws, side, cy, out[thread]); });
+        parallel_for_dynamic(threads, side, 4, [&](std::int64_t cy, std::size_t thread) {
+            scan_one_row(in, ws, side, cy, layout_.line_terms, out[thread]);
+        });
     };
     // A range that fits one block is scanned without a mispredicted exit
     // from a loop over its groups: blocks of two groups suit cells of a few
-    // boxes (sparse scenes), of eight boxes each where AVX2 has the lanes;
-    // one group of four suits cells of about one box (dense scenes), where
-    // more lanes only add work (docs/benchmarks.md).
-    const double boxes_per_cell = static_cast<double>(ws.cell_start.back()) / layout_.grid.cell_count();
-    if (boxes_per_cell < 2.0) {
-        scan(scan_row_four<1>);
+    // boxes (sparse scenes), each group as wide as the processor's lanes,
+    // with the lines tested too; one group of four boxes alone suits cells
+    // of about one box (dense scenes, whose short paths' boxes are filter
+    // enough), where more lanes only add work (docs/benchmarks.md).
+    if (!ws.lines) {
+        scan(scan_row_four<1, false>);
         return;
     }
+    switch (lanes_) {
 #if defined(__x86_64__)
-    if (has_eight_lanes()) {
-        scan(scan_row_eight<2>);
-        return;
-    }
+    case 16: scan(scan_row_sixteen<2, true>); return;
+    case 8: scan(scan_row_eight<2, true>); return;
 #endif
-    scan(scan_row_four<2>);
+    default: scan(scan_row_four<2, true>); return;
+    }
 }
 
 void GridSearch::test_large_pairs(const PairSearchInput& in, const SliceWorkspace& ws, std::span<ThreadCandidates> out,
@@ -650,11 +827,18 @@ void GridSearch::test_large_pairs(const PairSearchInput& in, const SliceWorkspac
         const SweptBounds& box = ws.large_boxes[k];
         const FloatBounds bounds = float_bounds(box, layout_.float_scale);
         const PairTestState state = pair_test_state(in, a);
+        const FloatLine line = float_line(in.particles[a]);
         const CellRegion region = cells_reaching(box, grid);
         for (int cy = region.y_first; cy <= region.y_last; ++cy) {
             const auto row = static_cast<std::size_t>(cy) * side;
-            test_against_range<1>(in, ws, a, bounds, state, ws.cell_start[row + region.x_first],
-                                  ws.cell_start[row + region.x_last + 1], found);
+            const std::uint32_t first = ws.cell_start[row + region.x_first];
+            const std::uint32_t last = ws.cell_start[row + region.x_last + 1];
+            if (ws.lines) {
+                test_against_range<1, FloatBoundsArray::lanes, true>(in, ws, a, bounds, line, layout_.line_terms, state,
+                                                                     first, last, found);
+            } else {
+                test_against_range<1>(in, ws, a, bounds, line, layout_.line_terms, state, first, last, found);
+            }
         }
         for (std::int64_t other = k + 1; other < large_count; ++other) {
             const std::uint32_t b = ws.large[other];

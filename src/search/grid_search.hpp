@@ -8,11 +8,15 @@
 // ranges finds each such pair once, four boxes per comparison. A path too
 // long for a cell is cut into pieces in time; one too long even for that is
 // a large box, scanned against the cells it covers and against every other
-// large box. Every pair whose boxes overlap in some slice gets the shared
-// pair test, a superset of the pairs that can collide, so the result is
-// exactly the brute-force candidate set.
+// large box. Where the cells hold several boxes each (long paths), the scan
+// also tests the particles' lines in the same lanes (line_test.hpp), which
+// rules out most overlapping boxes of particles that pass far apart. Every
+// pair that passes gets the shared pair test, a superset of the pairs that
+// can collide, so the result is exactly the brute-force candidate set.
 
 #include "core/uniform_grid.hpp"
+#include "search/float_bounds_array.hpp"
+#include "search/line_test.hpp"
 #include "search/pair_search.hpp"
 
 #include <algorithm>
@@ -32,6 +36,11 @@ struct GridLayout {
     // float bounds are taken of scaled coordinates, so they keep their
     // precision at every scale of the accepted range.
     double float_scale = 1.0;
+    // The particles' lines in float for the scans of sparse slices (line_test.hpp):
+    // powers of two that bring L and the fastest speed into [0.5, 1), and the test's terms.
+    double line_position_scale = 1.0;
+    double line_velocity_scale = 1.0;
+    LineTerms line_terms{};
 };
 
 // The time slices a step is cut into: enough for a mean path of `mean_sweep`
@@ -50,7 +59,11 @@ struct SweptBounds {
 
 class GridSearch {
 public:
-    GridSearch();
+    // Scans `lanes` boxes at a time: 4 (any processor), 8 (x86-64 with AVX2)
+    // or 16 (AVX-512); 0 picks the widest this processor has. All find the
+    // same pairs.
+    explicit GridSearch(int lanes = 0);
+    [[nodiscard]] static bool supports_lanes(int lanes);
     ~GridSearch();
     GridSearch(GridSearch&&) noexcept;
     GridSearch& operator=(GridSearch&&) noexcept;
@@ -85,6 +98,15 @@ private:
         const double piece_end = piece + 1 == pieces ? end : begin + span * (piece + 1) / pieces;
         return swept_bounds(particle, piece_begin, piece_end);
     }
+    // A particle's line in float, scaled as the layout says. Inline: it runs once per binned box.
+    [[nodiscard]] FloatLine float_line(const Particle& particle) const {
+        const double position_scale = layout_.line_position_scale;
+        const double velocity_scale = layout_.line_velocity_scale;
+        return {static_cast<float>(particle.position.x() * position_scale),
+                static_cast<float>(particle.position.y() * position_scale),
+                static_cast<float>(particle.velocity.x() * velocity_scale),
+                static_cast<float>(particle.velocity.y() * velocity_scale)};
+    }
     // How many pieces a path must be cut into for each to fit a cell; 0 when
     // too many.
     [[nodiscard]] int pieces_to_fit(const Particle& particle, double begin, double end, double fit) const;
@@ -108,6 +130,7 @@ private:
     void test_large_pairs(const PairSearchInput& in, const SliceWorkspace& ws, std::span<ThreadCandidates> out,
                           int threads) const;
 
+    int lanes_ = 4;
     GridLayout layout_;
     std::vector<BlockStart> block_starts_;  // when the step brings none
     std::vector<SliceWorkspace> workspaces_;

@@ -24,13 +24,6 @@ namespace {
 // AVX-512's sixteen); the arrays are padded to a whole number of them.
 constexpr std::size_t widest_lanes = 32;
 
-// 2^-k with value * 2^-k in [0.5, 1); 1 for zero (or anything not finite,
-// which valid scenes never hold).
-double power_of_two_below(double value) {
-    if (!(value > 0.0 && std::isfinite(value))) return 1.0;
-    return std::ldexp(1.0, -(std::ilogb(value) + 1));
-}
-
 using FourFloats = float __attribute__((vector_size(16)));
 using EightFloats = float __attribute__((vector_size(32)));
 using SixteenFloats = float __attribute__((vector_size(64)));
@@ -318,20 +311,8 @@ void PathLines::set(std::uint32_t i, const Vec2& position, const Vec2& velocity)
 }
 
 LineQuery PathLines::query_for(std::uint32_t i, double reach) const {
-    // Rounding each scaled value to float moves it by at most 2^-24 of the
-    // largest coordinate or speed (M, V); the differences, products and sum
-    // of the cross product then err by less than 64 * 2^-24 M V, and the
-    // computed |dv| by less than 6 * 2^-24 V. With (a + b)^2 <= 1.25 a^2 +
-    // 5 b^2, and slack for the three float roundings of the comparison:
-    const double reach_scaled = reach * position_scale_;
-    const double error =
-        128.0 * 0x1p-24 * largest_coordinate_ * largest_speed_ + 12.0 * 0x1p-24 * reach_scaled * largest_speed_;
-    return {x_[i],
-            y_[i],
-            vx_[i],
-            vy_[i],
-            static_cast<float>(1.3 * reach_scaled * reach_scaled),
-            static_cast<float>(6.0 * error * error)};
+    const LineTerms terms = line_test_terms(largest_coordinate_, largest_speed_, reach * position_scale_);
+    return {x_[i], y_[i], vx_[i], vy_[i], terms.reach_term, terms.margin_term};
 }
 
 void PathLines::gather_near_block(std::span<const std::uint32_t> lines, double reach,

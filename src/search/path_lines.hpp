@@ -22,6 +22,7 @@
 
 #include "core/box.hpp"
 #include "particlesim/particle.hpp"
+#include "search/line_test.hpp"
 
 #include <algorithm>
 #include <cmath>

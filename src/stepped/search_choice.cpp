@@ -38,7 +38,9 @@ SearchCosts estimate_search_costs(const World& world, std::span<const Particle> 
     const double line_test_ns = PathLines::supports_lanes(16) ? paths_line_test_sixteen_lanes_ns : paths_line_test_ns;
     const double per_line_test = line_test_ns + paths_near_line_ns * std::min(1.0, 4.0 * r / box);
     costs.paths_ns = costs.new_lines * (paths_new_line_ns + count * per_line_test);
-    costs.grid_ns = count * (grid_particle_ns + grid_particle_slice_ns * costs.slices);
+    const double slice_ns =
+        GridSearch::supports_lanes(16) ? grid_particle_slice_sixteen_lanes_ns : grid_particle_slice_ns;
+    costs.grid_ns = count * (grid_particle_ns + slice_ns * costs.slices);
     return costs;
 }
 

@@ -33,9 +33,17 @@ inline constexpr double paths_line_test_ns = 0.16;
 inline constexpr double paths_line_test_sixteen_lanes_ns = 0.06;
 // ... plus this times the fraction that pass (about 4r / L): their intervals.
 inline constexpr double paths_near_line_ns = 100.0;
-// The grid: each particle, plus this for each time slice it is binned in.
+// The grid: each particle, plus this for each time slice it is binned in ...
 inline constexpr double grid_particle_ns = 30.0;
 inline constexpr double grid_particle_slice_ns = 60.0;
+// ... or this where the grid scans sixteen boxes and lines at a time
+// (AVX-512): fitted to both searches forced on the same scenes on a
+// processor with AVX-512 (search_choice_grid_lines.csv), where the grid was
+// the faster at 8000 disks in L = 20000 (1.15 times) and at 16384 at the
+// default density (1.21 times), and the paths search at 4000 in L = 20000
+// (1.47 times); the model's ratios come within 30 % of the measured ones on
+// every scene of more than one slice.
+inline constexpr double grid_particle_slice_sixteen_lanes_ns = 35.0;
 // Particles up to which the paths search may be chosen: its first
 // micro-step tests all N^2 / 2 pairs.
 inline constexpr std::size_t paths_up_to = 20000;
@@ -139,6 +147,11 @@ inline constexpr int max_pieces = 8;
 inline constexpr std::size_t slice_parallel_below = 50000;
 // Ranges of cells each worker sums when the threads share a slice's binning.
 inline constexpr std::size_t cell_ranges_per_worker = 8;
+// Boxes a cell from which a slice's scans test the particles' lines too:
+// paths long against the spacing, whose boxes overlap far more often than
+// the particles come near (docs/benchmarks.md). Below, boxes of about one
+// a cell are filter enough.
+inline constexpr double lines_from_boxes_per_cell = 2.0;
 // Cells ahead in the row above whose motion states the scan fetches.
 inline constexpr int scan_fetch_cells_ahead = 16;
 

@@ -1,0 +1,44 @@
+#pragma once
+// The line test in float that the paths search and the grid search share:
+// two particles' separation moves along a line, so they come within `reach`
+// of each other only if |dp x dv| <= reach |dv|, whatever the time. In
+// float lanes it reads
+//
+//     |dp x dv|^2 <= reach_term |dv|^2 + margin_term
+//
+// with positions and velocities scaled by powers of two (exactly) so that
+// the largest are about 1, and the two terms below widening the test past
+// every rounding: a pair that the double-precision tests would find always
+// passes; a few more do.
+
+#include <cmath>
+
+namespace particlesim {
+
+// 2^-k with value * 2^-k in [0.5, 1); 1 for zero (or anything not finite,
+// which valid scenes never hold).
+inline double power_of_two_below(double value) {
+    if (!(value > 0.0 && std::isfinite(value))) return 1.0;
+    return std::ldexp(1.0, -(std::ilogb(value) + 1));
+}
+
+struct LineTerms {
+    float reach_term;   // times |dv|^2
+    float margin_term;  // added
+};
+
+// For scaled coordinates of at most `largest_coordinate` (M) and velocity
+// components of at most `largest_speed` (V), and a scaled reach.
+//
+// Rounding each scaled value to float moves it by at most 2^-24 of M or V;
+// the differences, products and sum of the cross product then err by less
+// than 64 * 2^-24 M V, and the computed |dv| by less than 6 * 2^-24 V. With
+// (a + b)^2 <= 1.25 a^2 + 5 b^2, and slack for the three float roundings of
+// the comparison (a fused multiply-add only rounds less):
+inline LineTerms line_test_terms(double largest_coordinate, double largest_speed, double reach_scaled) {
+    const double error =
+        128.0 * 0x1p-24 * largest_coordinate * largest_speed + 12.0 * 0x1p-24 * reach_scaled * largest_speed;
+    return {static_cast<float>(1.3 * reach_scaled * reach_scaled), static_cast<float>(6.0 * error * error)};
+}
+
+}  // namespace particlesim
