@@ -194,8 +194,10 @@ void line_scans_keep_every_pair_within_reach(std::uint64_t seed, std::uint32_t c
                 std::vector<std::vector<std::uint32_t>> all;
                 all.push_back(scan(std::integral_constant<std::uint32_t, 1>{}, group_lanes));
                 all.push_back(scan(std::integral_constant<std::uint32_t, 2>{}, group_lanes));
-                all.push_back(
-                    scan(std::integral_constant<std::uint32_t, FloatBoundsArray::max_block_groups>{}, group_lanes));
+                // The largest block whose hits fit 64 bits.
+                constexpr std::uint32_t largest =
+                    std::min(FloatBoundsArray::max_block_groups, std::uint32_t{64} / decltype(group_lanes)::value);
+                all.push_back(scan(std::integral_constant<std::uint32_t, largest>{}, group_lanes));
                 for (const auto& reported : all) wrong += reported == all[0] ? 0 : 1;
                 return all[0];
             };

@@ -126,6 +126,7 @@ public:
                                                const FloatLine& line, const LineTerms& terms, Found&& found) const {
         static_assert(block_groups >= 1 && block_groups <= max_block_groups);
         static_assert(group_lanes == lanes || group_lanes == wide_lanes || group_lanes == widest_lanes);
+        static_assert(block_groups * group_lanes <= 64, "a block's hits fit one 64-bit word");
         constexpr std::uint32_t block = block_groups * group_lanes;
         std::uint32_t start = first;
         do {

@@ -13,6 +13,7 @@
 
 #include <algorithm>
 #include <atomic>
+#include <bit>
 #include <cmath>
 #include <limits>
 #include <mutex>
@@ -439,10 +440,33 @@ struct CountTally {
 [[gnu::target("avx512f"), gnu::always_inline]] inline __m256i lanes_truncated(__m512d a) {
     return _mm512_mask_cvttpd_epi32(_mm256_setzero_si256(), 0xFF, a);
 }
-// The lanes of `lanes` read, the others 0.
-[[gnu::target("avx512f"), gnu::always_inline]] inline __m512d lanes_gathered(__mmask8 lanes, const double* base,
-                                                                             __m512i index) {
-    return _mm512_mask_i64gather_pd(_mm512_setzero_pd(), lanes, index, base, 8);
+// Eight particles' positions and velocities, from their six 64-byte lines
+// (48 bytes a particle): six contiguous loads, which the processor's
+// prefetchers follow through a large scene (gathers were slower there), and
+// for each component one permutation of each pair of lines and two blends.
+struct EightMotions {
+    __m512d x, y, vx, vy;
+};
+[[gnu::target("avx512f"), gnu::always_inline]] inline __m512d motion_component(const __m512d* lines, long long c) {
+    // Particle k's component c is double 6 k + c: particles 0 to 2 lie in lines 0 and 1, 3 and 4 in lines 2
+    // and 3, 6 and 7 in lines 4 and 5; particle 5 (doubles 30 to 35) straddles lines 3 and 4.
+    const bool fifth_in_second = c < 2;
+    const __m512i index =
+        _mm512_setr_epi64(c, c + 6, c + 12, c + 2, c + 8, fifth_in_second ? c + 14 : c - 2, c + 4, c + 10);
+    const __m512d first = _mm512_permutex2var_pd(lines[0], index, lines[1]);
+    const __m512d second = _mm512_permutex2var_pd(lines[2], index, lines[3]);
+    const __m512d third = _mm512_permutex2var_pd(lines[4], index, lines[5]);
+    const __mmask8 from_second = fifth_in_second ? 0x38 : 0x18;
+    const __mmask8 from_third = fifth_in_second ? 0xC0 : 0xE0;
+    return _mm512_mask_blend_pd(from_third, _mm512_mask_blend_pd(from_second, first, second), third);
+}
+[[gnu::target("avx512f"), gnu::always_inline]] inline EightMotions eight_motions(const Particle* eight) {
+    static_assert(sizeof(Particle) == 6 * sizeof(double), "position, velocity, two counters");
+    const double* at = &eight->position.x();
+    const __m512d lines[6] = {_mm512_loadu_pd(at),      _mm512_loadu_pd(at + 8),  _mm512_loadu_pd(at + 16),
+                              _mm512_loadu_pd(at + 24), _mm512_loadu_pd(at + 32), _mm512_loadu_pd(at + 40)};
+    return {motion_component(lines, 0), motion_component(lines, 1), motion_component(lines, 2),
+            motion_component(lines, 3)};
 }
 
 // The count's loop over particles [first, last), eight at a time in AVX-512
@@ -450,15 +474,13 @@ struct CountTally {
 // path's box, whether that fits a cell, and the cell. Every lane carries out
 // the scalar code's operations on the same doubles (selects where it takes
 // std::min and std::max, the same clamps as UniformGrid::column_of()), so
-// the cells are the ones the placement computes again. Only the particles
-// binned are read (late slices leave most out). The tallies and the marks
-// are written lane by lane.
+// the cells are the ones the placement computes again. The tallies and the
+// marks are written lane by lane.
 template <typename CountOne>
 [[gnu::target("avx512f")]] void count_paths_eight(const CountInput& in, std::int64_t first, std::int64_t last,
                                                   std::uint32_t* cell_of, std::uint32_t* counts, CountTally& tally,
                                                   CountOne&& one) {
     static_assert(sizeof(Particle) == 6 * sizeof(double), "position, velocity, two counters");
-    const __m512i component = _mm512_setr_epi64(0, 6, 12, 18, 24, 30, 36, 42);  // doubles a particle
     const __m512d duration = _mm512_set1_pd(in.duration);
     const __m512d begin = _mm512_set1_pd(in.begin);
     const __m512d end = _mm512_set1_pd(in.end);
@@ -481,12 +503,7 @@ template <typename CountOne>
             }
             binned &= ~decided;
         }
-        const __mmask8 read = static_cast<__mmask8>(binned);
-        const double* base = &in.particles[i].position.x();
-        const __m512d x = lanes_gathered(read, base, component);
-        const __m512d y = lanes_gathered(read, base, _mm512_add_epi64(component, _mm512_set1_epi64(1)));
-        const __m512d vx = lanes_gathered(read, base, _mm512_add_epi64(component, _mm512_set1_epi64(2)));
-        const __m512d vy = lanes_gathered(read, base, _mm512_add_epi64(component, _mm512_set1_epi64(3)));
+        const auto [x, y, vx, vy] = eight_motions(in.particles + i);
         // swept_bounds(): the path from `begin` to its end, widened by reach.
         const __m512d path_end = lanes_min(sweep_end, end);
         const __m512d from_x = _mm512_add_pd(x, _mm512_mul_pd(vx, begin));
@@ -514,6 +531,101 @@ template <typename CountOne>
             counts[cells[lane]] += fitting;
             tally.counted += fitting;
             tally.large += in_slice - fitting;
+        }
+    }
+    for (; i < last; ++i) one(i);
+}
+
+// float_at_most() (or, with `at_least`, float_at_least()) of each lane: the
+// same operations, selects for its branches.
+template <bool at_least>
+[[gnu::target("avx512f"), gnu::always_inline]] inline __m256 lanes_rounded_outwards(__m512d value) {
+    const __m512d largest = _mm512_set1_pd(std::numeric_limits<float>::max());
+    const __m512d step =
+        _mm512_add_pd(_mm512_mul_pd(_mm512_abs_pd(value), _mm512_set1_pd(0x1p-20)), _mm512_set1_pd(1e-37));
+    const __m512d moved = at_least ? _mm512_add_pd(value, step) : _mm512_sub_pd(value, step);
+    const __m512d negative_largest = _mm512_set1_pd(-std::numeric_limits<float>::max());
+    const __m512d clamped = lanes_min(lanes_max(moved, negative_largest), largest);
+    const __mmask8 beyond = at_least ? _mm512_cmp_pd_mask(moved, largest, _CMP_GT_OQ)
+                                     : _mm512_cmp_pd_mask(moved, negative_largest, _CMP_LT_OQ);
+    // Infinity in double converts to infinity in float.
+    const double infinity =
+        at_least ? std::numeric_limits<double>::infinity() : -std::numeric_limits<double>::infinity();
+    return _mm512_mask_cvtpd_ps(_mm256_setzero_ps(), 0xFF,
+                                _mm512_mask_blend_pd(beyond, clamped, _mm512_set1_pd(infinity)));
+}
+
+// What the placement reads of a slice besides CountInput, for place_paths_eight().
+struct PlaceInput {
+    double float_scale;                               // float_bounds()'s
+    double line_position_scale, line_velocity_scale;  // GridLayout's
+    bool lines;                                       // the lines are stored too
+};
+
+// The placement's loop over particles [first, last) whose mark is a cell,
+// eight at a time in AVX-512 lanes: each path's box (as count_paths_eight()
+// computes it), its float bounds and its line, then each stored at its
+// place lane by lane (the last few one at a time by `one`). `box_places` is
+// the worker's next place in each cell.
+template <typename PlaceOne>
+[[gnu::target("avx512f")]] void place_paths_eight(const CountInput& in, const PlaceInput& place, std::int64_t first,
+                                                  std::int64_t last, const std::uint32_t* cell_of,
+                                                  std::uint32_t* box_places, GridSearch::SliceWorkspace& ws,
+                                                  PlaceOne&& one) {
+    const __m512d duration = _mm512_set1_pd(in.duration);
+    const __m512d begin = _mm512_set1_pd(in.begin);
+    const __m512d end = _mm512_set1_pd(in.end);
+    const __m512d reach = _mm512_set1_pd(in.reach);
+    const __m512d float_scale = _mm512_set1_pd(place.float_scale);
+    const __m512d position_scale = _mm512_set1_pd(place.line_position_scale);
+    const __m512d velocity_scale = _mm512_set1_pd(place.line_velocity_scale);
+    std::int64_t i = first;
+    for (; i + 8 <= last; i += 8) {
+        unsigned placed = 0;
+        for (int lane = 0; lane < 8; ++lane) {
+            placed |= static_cast<unsigned>(cell_of[i + lane] < first_piece_marker) << lane;
+        }
+        if (placed == 0) continue;
+        const auto [x, y, vx, vy] = eight_motions(in.particles + i);
+        const __m512d wall_time = _mm512_loadu_pd(in.wall_time + i);
+        const __m512d path_end = lanes_min(lanes_min(wall_time, duration), end);
+        const __m512d from_x = _mm512_add_pd(x, _mm512_mul_pd(vx, begin));
+        const __m512d from_y = _mm512_add_pd(y, _mm512_mul_pd(vy, begin));
+        const __m512d to_x = _mm512_add_pd(x, _mm512_mul_pd(vx, path_end));
+        const __m512d to_y = _mm512_add_pd(y, _mm512_mul_pd(vy, path_end));
+        __m512d min_x = _mm512_sub_pd(lanes_min(to_x, from_x), reach);
+        __m512d min_y = _mm512_sub_pd(lanes_min(to_y, from_y), reach);
+        __m512d max_x = _mm512_add_pd(lanes_max(to_x, from_x), reach);
+        __m512d max_y = _mm512_add_pd(lanes_max(to_y, from_y), reach);
+        if (place.float_scale != 1.0) {  // float_bounds(): the same way for every box of a step
+            min_x = _mm512_mul_pd(min_x, float_scale);
+            min_y = _mm512_mul_pd(min_y, float_scale);
+            max_x = _mm512_mul_pd(max_x, float_scale);
+            max_y = _mm512_mul_pd(max_y, float_scale);
+        }
+        alignas(32) float bounds[4][8];
+        _mm256_store_ps(bounds[0], lanes_rounded_outwards<false>(min_x));
+        _mm256_store_ps(bounds[1], lanes_rounded_outwards<false>(min_y));
+        _mm256_store_ps(bounds[2], lanes_rounded_outwards<true>(max_x));
+        _mm256_store_ps(bounds[3], lanes_rounded_outwards<true>(max_y));
+        alignas(32) float line[4][8];
+        if (place.lines) {  // float_line()
+            _mm256_store_ps(line[0], _mm512_mask_cvtpd_ps(_mm256_setzero_ps(), 0xFF, _mm512_mul_pd(x, position_scale)));
+            _mm256_store_ps(line[1], _mm512_mask_cvtpd_ps(_mm256_setzero_ps(), 0xFF, _mm512_mul_pd(y, position_scale)));
+            _mm256_store_ps(line[2],
+                            _mm512_mask_cvtpd_ps(_mm256_setzero_ps(), 0xFF, _mm512_mul_pd(vx, velocity_scale)));
+            _mm256_store_ps(line[3],
+                            _mm512_mask_cvtpd_ps(_mm256_setzero_ps(), 0xFF, _mm512_mul_pd(vy, velocity_scale)));
+        }
+        for (; placed != 0; placed &= placed - 1) {
+            const int lane = std::countr_zero(placed);
+            const auto particle = static_cast<std::uint32_t>(i + lane);
+            const std::uint32_t at = box_places[cell_of[particle]]++;
+            ws.by_cell[at] = particle;
+            ws.boxes_by_cell.set(at, {bounds[0][lane], bounds[1][lane], bounds[2][lane], bounds[3][lane]});
+            ws.states_by_cell[at] = {in.particles[particle].position, in.particles[particle].velocity};
+            if (place.lines)
+                ws.boxes_by_cell.set_line(at, {line[0][lane], line[1][lane], line[2][lane], line[3][lane]});
         }
     }
     for (; i < last; ++i) one(i);
@@ -637,9 +749,22 @@ void GridSearch::place_boxes(const Binning& binning) const {
         };
         // The pieces in a loop of their own: the main loop stays short enough
         // for the processor to overlap the cache misses of many particles.
-        for (std::int64_t i = first; i < last; ++i) {
+        const auto place_one = [&](std::int64_t i) {
             const std::uint32_t mark = ws.cell_of[i];
             if (mark < first_piece_marker) place(i, mark, binning.path_bounds(i));
+        };
+#if defined(__x86_64__)
+        if (lanes_ == 16) {
+            const CountInput input{in.particles.data(), in.wall_time.data(), binning.decisions,
+                                   in.duration,         binning.span.begin,  binning.span.end,
+                                   layout_.reach,       binning.fit,         &binning.grid};
+            const PlaceInput placing{layout_.float_scale, layout_.line_position_scale, layout_.line_velocity_scale,
+                                     lines};
+            place_paths_eight(input, placing, first, last, ws.cell_of.data(), next, ws, place_one);
+        } else
+#endif
+        {
+            for (std::int64_t i = first; i < last; ++i) place_one(i);
         }
         std::uint32_t next_large = ws.large_start[worker];
         for (std::int64_t i = first; i < last; ++i) {
