@@ -19,6 +19,7 @@
 #include <algorithm>
 #include <cmath>
 #include <optional>
+#include <stdexcept>
 #include <vector>
 
 using namespace particlesim;
@@ -362,6 +363,19 @@ int main(int argc, char** argv) {
                            run_hash(scene, {.pair_search = PairSearch::brute_force, .threads = 1}));
               }
               CHECK(stages > 0);
+          }},
+         // A lane count is the widest the processor has, or one it asks for and has.
+         {"lane counts",
+          [] {
+              CHECK(GridSearch::supports_lanes(4));
+              CHECK(!GridSearch::supports_lanes(5));
+              bool refused = false;
+              try {
+                  GridSearch odd(5);
+              } catch (const std::invalid_argument&) {
+                  refused = true;
+              }
+              CHECK(refused);
           }},
          // Pairs that pass just inside and just outside a contact distance,
          // at scales from 2^-150 to 2^150 times L = 1000, in every lane width:

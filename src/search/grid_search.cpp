@@ -1,5 +1,6 @@
 #include "search/grid_search.hpp"
 
+#include "core/lane_choice.hpp"
 #include "core/prefetch.hpp"
 #include "core/uniform_grid.hpp"
 #include "parallel/parallel.hpp"
@@ -122,18 +123,7 @@ int time_slices(double mean_sweep, double slice_sweep) {
     return static_cast<int>(std::clamp(std::ceil(mean_sweep / slice_sweep), 1.0, double{max_slices}));
 }
 
-GridSearch::GridSearch(int lanes) : lanes_(lanes) {
-    if (lanes == 0) {
-        for (const int widest : {16, 8, 4}) {
-            if (supports_lanes(widest)) {
-                lanes_ = widest;
-                break;
-            }
-        }
-    } else if (!supports_lanes(lanes)) {
-        throw std::invalid_argument("GridSearch: no " + std::to_string(lanes) + "-lane scan on this processor");
-    }
-}
+GridSearch::GridSearch(int lanes) : lanes_(chosen_lanes(lanes, supports_lanes, "GridSearch")) {}
 GridSearch::~GridSearch() = default;
 GridSearch::GridSearch(GridSearch&&) noexcept = default;
 GridSearch& GridSearch::operator=(GridSearch&&) noexcept = default;

@@ -1,5 +1,7 @@
 #include "search/path_lines.hpp"
 
+#include "core/lane_choice.hpp"
+
 #include <algorithm>
 #include <bit>
 #include <cmath>
@@ -273,18 +275,7 @@ bool PathLines::supports_lanes(int lanes) {
 #endif
 }
 
-PathLines::PathLines(int lanes) : lanes_(lanes) {
-    if (lanes == 0) {
-        for (const int widest : {16, 8, 4}) {
-            if (supports_lanes(widest)) {
-                lanes_ = widest;
-                break;
-            }
-        }
-    } else if (!supports_lanes(lanes)) {
-        throw std::invalid_argument("PathLines: no " + std::to_string(lanes) + "-lane test on this processor");
-    }
-}
+PathLines::PathLines(int lanes) : lanes_(chosen_lanes(lanes, supports_lanes, "PathLines")) {}
 
 void PathLines::assign(std::span<const Particle> particles, const Box& box) {
     count_ = particles.size();

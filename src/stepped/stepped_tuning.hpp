@@ -39,10 +39,9 @@ inline constexpr double grid_particle_slice_ns = 60.0;
 // ... or this where the grid scans sixteen boxes and lines at a time
 // (AVX-512): fitted to both searches forced on the same scenes on a
 // processor with AVX-512 (search_choice_grid_lines.csv), where the grid was
-// the faster at 8000 disks in L = 20000 (1.15 times) and at 16384 at the
-// default density (1.21 times), and the paths search at 4000 in L = 20000
-// (1.47 times); the model's ratios come within 30 % of the measured ones on
-// every scene of more than one slice.
+// the faster at 8000 disks in L = 20000 (1.40 times) and at 16384 at the
+// default density (1.51 times), and the paths search at 4000 in L = 20000
+// (1.21 times).
 inline constexpr double grid_particle_slice_sixteen_lanes_ns = 35.0;
 // Particles up to which the paths search may be chosen: its first
 // micro-step tests all N^2 / 2 pairs.
