@@ -161,6 +161,7 @@ void line_scans_keep_every_pair_within_reach(std::uint64_t seed, std::uint32_t c
             const FloatBounds probe = random_box(rng, 10.0f);
             FloatBoundsArray array;
             array.resize(count);
+            array.resize_lines();
             std::vector<FloatBounds> boxes(count);
             std::vector<Line> lines(count);
             for (std::uint32_t m = 0; m < count; ++m) {

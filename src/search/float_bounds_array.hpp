@@ -76,11 +76,16 @@ public:
     // mask off) past the last box.
     void resize(std::size_t count) {
         for (std::vector<float>& row : bounds_) row.resize(count + max_block_groups * widest_lanes, 0.0f);
-        for (std::vector<float>& row : lines_) row.resize(count + max_block_groups * widest_lanes, 0.0f);
     }
     void reserve(std::size_t count) {
         for (std::vector<float>& row : bounds_) row.reserve(count + max_block_groups * widest_lanes);
-        for (std::vector<float>& row : lines_) row.reserve(count + max_block_groups * widest_lanes);
+    }
+    // Room for the lines of as many boxes as resize() made room for: taken
+    // only by slices whose scans test lines (the dense gas's never touch it).
+    void resize_lines() {
+        for (std::vector<float>& row : lines_) {
+            if (row.size() < bounds_[min_x].size()) row.resize(bounds_[min_x].size(), 0.0f);
+        }
     }
 
     void set(std::uint32_t at, const FloatBounds& box) {

@@ -395,6 +395,7 @@ void GridSearch::bin_slice(const PairSearchInput& in, int slice, SliceWorkspace&
     std::size_t boxes = count_boxes(binning, true);
     if (boxes > ws.by_cell.size()) boxes = count_boxes(binning, false);
     ws.lines = static_cast<double>(boxes) >= lines_from_boxes_per_cell * static_cast<double>(cells);
+    if (ws.lines) ws.boxes_by_cell.resize_lines();
     sum_cell_places(binning);
     place_boxes(binning);
     close_cell_starts(binning);
