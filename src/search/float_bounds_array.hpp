@@ -37,11 +37,6 @@ struct FloatBounds {
     float min_x, min_y, max_x, max_y;
 };
 
-// A particle's line in float: position and velocity, scaled as line_test.hpp says.
-struct FloatLine {
-    float x, y, vx, vy;
-};
-
 // Rounding to float moves a value by at most 2^-24 of itself (or 2^-149 near
 // zero); stepping 2^-20 of it (plus 1e-37) away first keeps the result on the
 // safe side. Beyond float's range a bound opens to infinity, or stays at the
@@ -169,26 +164,31 @@ private:
         hits = _mm512_mask_cmp_ps_mask(hits, _mm512_set1_ps(box.min_y), _mm512_loadu_ps(bounds_[max_y].data() + group),
                                        _CMP_LE_OQ);
         if constexpr (with_lines) {
-            const __m512 dx = _mm512_sub_ps(_mm512_loadu_ps(lines_[position_x].data() + group), _mm512_set1_ps(line.x));
-            const __m512 dy = _mm512_sub_ps(_mm512_loadu_ps(lines_[position_y].data() + group), _mm512_set1_ps(line.y));
-            const __m512 dvx =
-                _mm512_sub_ps(_mm512_loadu_ps(lines_[velocity_x].data() + group), _mm512_set1_ps(line.vx));
-            const __m512 dvy =
-                _mm512_sub_ps(_mm512_loadu_ps(lines_[velocity_y].data() + group), _mm512_set1_ps(line.vy));
-            const __m512 cross = _mm512_sub_ps(_mm512_mul_ps(dx, dvy), _mm512_mul_ps(dy, dvx));
-            const __m512 speed_sq = _mm512_add_ps(_mm512_mul_ps(dvx, dvx), _mm512_mul_ps(dvy, dvy));
-            const __m512 bound = _mm512_add_ps(_mm512_mul_ps(_mm512_set1_ps(terms.reach_term), speed_sq),
-                                               _mm512_set1_ps(terms.margin_term));
-            hits = _mm512_mask_cmp_ps_mask(hits, _mm512_mul_ps(cross, cross), bound, _CMP_LE_OQ);
+            SixteenFloats cross_sq, bound;
+            line_sides<SixteenFloats>(group, line, terms, cross_sq, bound);
+            hits = _mm512_mask_cmp_ps_mask(hits, static_cast<__m512>(cross_sq), static_cast<__m512>(bound), _CMP_LE_OQ);
         }
         return hits;
     }
 #endif
 
+    // The line test's two sides (line_test.hpp) for the stored lines of group + 0 ... lanes - 1.
+    template <typename Lanes>
+    [[gnu::always_inline]] void line_sides(std::uint32_t group, const FloatLine& line, const LineTerms& terms,
+                                           Lanes& cross_sq, Lanes& bound) const {
+        Lanes x, y, vx, vy;
+        std::memcpy(&x, &lines_[position_x][group], sizeof(Lanes));
+        std::memcpy(&y, &lines_[position_y][group], sizeof(Lanes));
+        std::memcpy(&vx, &lines_[velocity_x][group], sizeof(Lanes));
+        std::memcpy(&vy, &lines_[velocity_y][group], sizeof(Lanes));
+        line_test_sides(x, y, vx, vy, line, terms, cross_sq, bound);
+    }
+
     // (A vector size that depends on a template parameter is ignored by GCC.)
     using FourFloats = float __attribute__((vector_size(16)));
     using FourInts = std::int32_t __attribute__((vector_size(16)));
     using EightFloats = float __attribute__((vector_size(32)));
+    using SixteenFloats = float __attribute__((vector_size(64)));
     using EightInts = std::int32_t __attribute__((vector_size(32)));
 
     // Bit k set: box group + k overlaps `box`. No vector is passed or
@@ -211,18 +211,9 @@ private:
         std::memcpy(&high_y, &bounds_[max_y][group], sizeof(Lanes));
         LaneMask hits = (low_x <= box.max_x) & (box.min_x <= high_x) & (low_y <= box.max_y) & (box.min_y <= high_y);
         if constexpr (with_lines) {
-            Lanes line_x, line_y, line_vx, line_vy;
-            std::memcpy(&line_x, &lines_[position_x][group], sizeof(Lanes));
-            std::memcpy(&line_y, &lines_[position_y][group], sizeof(Lanes));
-            std::memcpy(&line_vx, &lines_[velocity_x][group], sizeof(Lanes));
-            std::memcpy(&line_vy, &lines_[velocity_y][group], sizeof(Lanes));
-            const Lanes dx = line_x - line.x;
-            const Lanes dy = line_y - line.y;
-            const Lanes dvx = line_vx - line.vx;
-            const Lanes dvy = line_vy - line.vy;
-            const Lanes cross = dx * dvy - dy * dvx;
-            const Lanes speed_sq = dvx * dvx + dvy * dvy;
-            hits &= cross * cross <= terms.reach_term * speed_sq + terms.margin_term;
+            Lanes cross_sq, bound;
+            line_sides<Lanes>(group, line, terms, cross_sq, bound);
+            hits &= cross_sq <= bound;
         }
 #if defined(__SSE__)
         // Every lane is all ones or all zeros: its sign bit is its hit bit,

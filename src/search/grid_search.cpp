@@ -460,6 +460,33 @@ struct EightMotions {
             motion_component(lines, 3)};
 }
 
+// Eight particles' paths in a slice: sweep_end() and swept_bounds() in
+// lanes, the scalar code's operations on the same doubles (std::min(from,
+// to) is (to < from ? to : from), as lanes_min(to, from); std::max likewise).
+struct EightPaths {
+    EightMotions motion;
+    __m512d sweep_end;
+    __m512d min_x, min_y, max_x, max_y;
+};
+[[gnu::target("avx512f"), gnu::always_inline]] inline EightPaths eight_paths(const CountInput& in, std::int64_t i) {
+    EightPaths paths;
+    paths.motion = eight_motions(in.particles + i);
+    const auto& [x, y, vx, vy] = paths.motion;
+    const __m512d begin = _mm512_set1_pd(in.begin);
+    const __m512d reach = _mm512_set1_pd(in.reach);
+    paths.sweep_end = lanes_min(_mm512_loadu_pd(in.wall_time + i), _mm512_set1_pd(in.duration));
+    const __m512d path_end = lanes_min(paths.sweep_end, _mm512_set1_pd(in.end));
+    const __m512d from_x = _mm512_add_pd(x, _mm512_mul_pd(vx, begin));
+    const __m512d from_y = _mm512_add_pd(y, _mm512_mul_pd(vy, begin));
+    const __m512d to_x = _mm512_add_pd(x, _mm512_mul_pd(vx, path_end));
+    const __m512d to_y = _mm512_add_pd(y, _mm512_mul_pd(vy, path_end));
+    paths.min_x = _mm512_sub_pd(lanes_min(to_x, from_x), reach);
+    paths.min_y = _mm512_sub_pd(lanes_min(to_y, from_y), reach);
+    paths.max_x = _mm512_add_pd(lanes_max(to_x, from_x), reach);
+    paths.max_y = _mm512_add_pd(lanes_max(to_y, from_y), reach);
+    return paths;
+}
+
 // The count's loop over particles [first, last), eight at a time in AVX-512
 // lanes (the rest one at a time by `one`): whether each is binned, its
 // path's box, whether that fits a cell, and the cell. Every lane carries out
@@ -471,11 +498,7 @@ template <typename CountOne>
 [[gnu::target("avx512f")]] void count_paths_eight(const CountInput& in, std::int64_t first, std::int64_t last,
                                                   std::uint32_t* cell_of, std::uint32_t* counts, CountTally& tally,
                                                   CountOne&& one) {
-    static_assert(sizeof(Particle) == 6 * sizeof(double), "position, velocity, two counters");
-    const __m512d duration = _mm512_set1_pd(in.duration);
     const __m512d begin = _mm512_set1_pd(in.begin);
-    const __m512d end = _mm512_set1_pd(in.end);
-    const __m512d reach = _mm512_set1_pd(in.reach);
     const __m512d fit = _mm512_set1_pd(in.fit);
     const __m512d zero = _mm512_setzero_pd();
     const __m512d inverse_cell = _mm512_set1_pd(1.0 / in.grid->cell_size());
@@ -483,10 +506,10 @@ template <typename CountOne>
     const __m256i side = _mm256_set1_epi32(in.grid->per_side());
     std::int64_t i = first;
     for (; i + 8 <= last; i += 8) {
-        // sweep_end() = std::min(duration, wall time), and SliceSpan's tests.
-        const __m512d sweep_end = lanes_min(_mm512_loadu_pd(in.wall_time + i), duration);
-        unsigned binned =
-            _mm512_cmp_pd_mask(sweep_end, zero, _CMP_GT_OQ) & _mm512_cmp_pd_mask(sweep_end, begin, _CMP_NLT_UQ);
+        const EightPaths paths = eight_paths(in, i);
+        // SliceSpan::holds_path(), and the decisions.
+        unsigned binned = _mm512_cmp_pd_mask(paths.sweep_end, zero, _CMP_GT_OQ) &
+                          _mm512_cmp_pd_mask(paths.sweep_end, begin, _CMP_NLT_UQ);
         if (in.decisions != nullptr) {
             unsigned decided = 0;
             for (int lane = 0; lane < 8; ++lane) {
@@ -494,25 +517,13 @@ template <typename CountOne>
             }
             binned &= ~decided;
         }
-        const auto [x, y, vx, vy] = eight_motions(in.particles + i);
-        // swept_bounds(): the path from `begin` to its end, widened by reach.
-        const __m512d path_end = lanes_min(sweep_end, end);
-        const __m512d from_x = _mm512_add_pd(x, _mm512_mul_pd(vx, begin));
-        const __m512d from_y = _mm512_add_pd(y, _mm512_mul_pd(vy, begin));
-        const __m512d to_x = _mm512_add_pd(x, _mm512_mul_pd(vx, path_end));
-        const __m512d to_y = _mm512_add_pd(y, _mm512_mul_pd(vy, path_end));
-        // std::min(from, to) is (to < from ? to : from), as min_pd(to, from); std::max likewise.
-        const __m512d min_x = _mm512_sub_pd(lanes_min(to_x, from_x), reach);
-        const __m512d min_y = _mm512_sub_pd(lanes_min(to_y, from_y), reach);
-        const __m512d max_x = _mm512_add_pd(lanes_max(to_x, from_x), reach);
-        const __m512d max_y = _mm512_add_pd(lanes_max(to_y, from_y), reach);
-        const __mmask8 fits = _mm512_cmp_pd_mask(_mm512_sub_pd(max_x, min_x), fit, _CMP_LE_OQ) &
-                              _mm512_cmp_pd_mask(_mm512_sub_pd(max_y, min_y), fit, _CMP_LE_OQ);
+        const __mmask8 fits = _mm512_cmp_pd_mask(_mm512_sub_pd(paths.max_x, paths.min_x), fit, _CMP_LE_OQ) &
+                              _mm512_cmp_pd_mask(_mm512_sub_pd(paths.max_y, paths.min_y), fit, _CMP_LE_OQ);
         // column_of(): 0 unless above 0, the last column from per_side on, else truncated.
         const __m256i column =
-            lanes_truncated(lanes_min(lanes_max(_mm512_mul_pd(min_x, inverse_cell), zero), last_column));
+            lanes_truncated(lanes_min(lanes_max(_mm512_mul_pd(paths.min_x, inverse_cell), zero), last_column));
         const __m256i row =
-            lanes_truncated(lanes_min(lanes_max(_mm512_mul_pd(min_y, inverse_cell), zero), last_column));
+            lanes_truncated(lanes_min(lanes_max(_mm512_mul_pd(paths.min_y, inverse_cell), zero), last_column));
         alignas(32) std::uint32_t cells[8];
         _mm256_store_si256(reinterpret_cast<__m256i*>(cells), _mm256_add_epi32(_mm256_mullo_epi32(row, side), column));
         for (int lane = 0; lane < 8; ++lane) {
@@ -554,8 +565,8 @@ struct PlaceInput {
 };
 
 // The placement's loop over particles [first, last) whose mark is a cell,
-// eight at a time in AVX-512 lanes: each path's box (as count_paths_eight()
-// computes it), its float bounds and its line, then each stored at its
+// eight at a time in AVX-512 lanes: each path's box (eight_paths(), as the
+// count computes it), its float bounds and its line, then each stored at its
 // place lane by lane (the last few one at a time by `one`). `box_places` is
 // the worker's next place in each cell.
 template <typename PlaceOne>
@@ -563,10 +574,6 @@ template <typename PlaceOne>
                                                   std::int64_t last, const std::uint32_t* cell_of,
                                                   std::uint32_t* box_places, GridSearch::SliceWorkspace& ws,
                                                   PlaceOne&& one) {
-    const __m512d duration = _mm512_set1_pd(in.duration);
-    const __m512d begin = _mm512_set1_pd(in.begin);
-    const __m512d end = _mm512_set1_pd(in.end);
-    const __m512d reach = _mm512_set1_pd(in.reach);
     const __m512d float_scale = _mm512_set1_pd(place.float_scale);
     const __m512d position_scale = _mm512_set1_pd(place.line_position_scale);
     const __m512d velocity_scale = _mm512_set1_pd(place.line_velocity_scale);
@@ -577,17 +584,12 @@ template <typename PlaceOne>
             placed |= static_cast<unsigned>(cell_of[i + lane] < first_piece_marker) << lane;
         }
         if (placed == 0) continue;
-        const auto [x, y, vx, vy] = eight_motions(in.particles + i);
-        const __m512d wall_time = _mm512_loadu_pd(in.wall_time + i);
-        const __m512d path_end = lanes_min(lanes_min(wall_time, duration), end);
-        const __m512d from_x = _mm512_add_pd(x, _mm512_mul_pd(vx, begin));
-        const __m512d from_y = _mm512_add_pd(y, _mm512_mul_pd(vy, begin));
-        const __m512d to_x = _mm512_add_pd(x, _mm512_mul_pd(vx, path_end));
-        const __m512d to_y = _mm512_add_pd(y, _mm512_mul_pd(vy, path_end));
-        __m512d min_x = _mm512_sub_pd(lanes_min(to_x, from_x), reach);
-        __m512d min_y = _mm512_sub_pd(lanes_min(to_y, from_y), reach);
-        __m512d max_x = _mm512_add_pd(lanes_max(to_x, from_x), reach);
-        __m512d max_y = _mm512_add_pd(lanes_max(to_y, from_y), reach);
+        const EightPaths paths = eight_paths(in, i);
+        const auto& [x, y, vx, vy] = paths.motion;
+        __m512d min_x = paths.min_x;
+        __m512d min_y = paths.min_y;
+        __m512d max_x = paths.max_x;
+        __m512d max_y = paths.max_y;
         if (place.float_scale != 1.0) {  // float_bounds(): the same way for every box of a step
             min_x = _mm512_mul_pd(min_x, float_scale);
             min_y = _mm512_mul_pd(min_y, float_scale);

@@ -27,6 +27,31 @@ struct LineTerms {
     float margin_term;  // added
 };
 
+// One particle's line in float: position and velocity, scaled.
+struct FloatLine {
+    float x, y, vx, vy;
+};
+
+// The two sides of the test, lane by lane, for `Floats` stored lines (a
+// vector of four, eight or sixteen floats each component) against `line`:
+// |dp x dv|^2 and reach_term |dv|^2 + margin_term. Written once, so that a
+// line passes the same way in every search, block and lane width. Vectors
+// go by reference only: a wider one passed or returned by value would
+// change the calling convention of a build without AVX.
+template <typename Floats>
+[[gnu::always_inline]] inline void line_test_sides(const Floats& x, const Floats& y, const Floats& vx, const Floats& vy,
+                                                   const FloatLine& line, const LineTerms& terms, Floats& cross_sq,
+                                                   Floats& bound) {
+    const Floats dx = x - line.x;
+    const Floats dy = y - line.y;
+    const Floats dvx = vx - line.vx;
+    const Floats dvy = vy - line.vy;
+    const Floats cross = dx * dvy - dy * dvx;
+    const Floats speed_sq = dvx * dvx + dvy * dvy;
+    cross_sq = cross * cross;
+    bound = terms.reach_term * speed_sq + terms.margin_term;
+}
+
 // For scaled coordinates of at most `largest_coordinate` (M) and velocity
 // components of at most `largest_speed` (V), and a scaled reach.
 //

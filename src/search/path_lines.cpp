@@ -15,9 +15,8 @@
 namespace particlesim {
 
 struct LineQuery {
-    float x, y, vx, vy;  // the line tested against all, scaled
-    float reach_term;    // times |dv|^2
-    float margin_term;   // added
+    FloatLine line;  // the line tested against all, scaled
+    LineTerms terms;
 };
 
 namespace {
@@ -81,20 +80,11 @@ template <typename Floats>
     std::memcpy(&group.vy, vy + at, sizeof(Floats));
 }
 
-// The two sides of the line test, lane by lane: |dp x dv|^2 and
-// reach_term |dv|^2 + margin_term. Written once, so that a line passes the
-// same way alone, in a block and in every lane width.
+// The two sides of the line test (line_test.hpp) for one group.
 template <typename Floats>
 [[gnu::always_inline]] inline void line_test_sides(const LineGroup<Floats>& group, const LineQuery& q, Floats& cross_sq,
                                                    Floats& bound) {
-    const Floats dx = group.x - q.x;
-    const Floats dy = group.y - q.y;
-    const Floats dvx = group.vx - q.vx;
-    const Floats dvy = group.vy - q.vy;
-    const Floats cross = dx * dvy - dy * dvx;
-    const Floats speed_sq = dvx * dvx + dvy * dvy;
-    cross_sq = cross * cross;
-    bound = q.reach_term * speed_sq + q.margin_term;
+    line_test_sides(group.x, group.y, group.vx, group.vy, q.line, q.terms, cross_sq, bound);
 }
 
 // The line test: |dp x dv|^2 <= reach_term |dv|^2 + margin_term.
@@ -302,8 +292,8 @@ void PathLines::set(std::uint32_t i, const Vec2& position, const Vec2& velocity)
 }
 
 LineQuery PathLines::query_for(std::uint32_t i, double reach) const {
-    const LineTerms terms = line_test_terms(largest_coordinate_, largest_speed_, reach * position_scale_);
-    return {x_[i], y_[i], vx_[i], vy_[i], terms.reach_term, terms.margin_term};
+    return {{x_[i], y_[i], vx_[i], vy_[i]},
+            line_test_terms(largest_coordinate_, largest_speed_, reach * position_scale_)};
 }
 
 void PathLines::gather_near_block(std::span<const std::uint32_t> lines, double reach,
