@@ -76,12 +76,13 @@ public:
         for (std::vector<float>& row : bounds_) row.reserve(count + max_block_groups * widest_lanes);
     }
     // Room for the lines of as many boxes as resize() made room for: taken
-    // only by slices whose scans test lines (the dense gas's never touch it).
+    // only where scans may test lines (the dense gas's never do).
     void resize_lines() {
         for (std::vector<float>& row : lines_) {
             if (row.size() < bounds_[min_x].size()) row.resize(bounds_[min_x].size(), 0.0f);
         }
     }
+    [[nodiscard]] bool holds_lines() const { return lines_[position_x].size() >= bounds_[min_x].size(); }
 
     void set(std::uint32_t at, const FloatBounds& box) {
         bounds_[min_x][at] = box.min_x;

@@ -1,5 +1,6 @@
 #include "search/grid_search.hpp"
 
+#include "core/assert.hpp"
 #include "core/lane_choice.hpp"
 #include "core/prefetch.hpp"
 #include "core/uniform_grid.hpp"
@@ -296,6 +297,12 @@ void GridSearch::prepare(SliceWorkspace& ws, std::size_t count, int workers) con
     ws.cell_of.resize(count);
     ws.by_cell.resize(boxes);
     ws.boxes_by_cell.resize(boxes);
+    // The lines' rows, where a slice could bin enough boxes to test lines
+    // (bin_slice() counts at most `boxes`): taken here, with the other
+    // buffers, so that no later step allocates them; the dense gas, about a
+    // box a cell, never takes them.
+    if (static_cast<double>(boxes) >= lines_from_boxes_per_cell * static_cast<double>(cells))
+        ws.boxes_by_cell.resize_lines();
     ws.states_by_cell.resize(boxes);
     ws.cell_start.resize(cells + 1);
     ws.cell_fill.resize(cells * static_cast<std::size_t>(workers - 1));  // counts of workers 1, 2, ...
@@ -395,7 +402,7 @@ void GridSearch::bin_slice(const PairSearchInput& in, int slice, SliceWorkspace&
     std::size_t boxes = count_boxes(binning, true);
     if (boxes > ws.by_cell.size()) boxes = count_boxes(binning, false);
     ws.lines = static_cast<double>(boxes) >= lines_from_boxes_per_cell * static_cast<double>(cells);
-    if (ws.lines) ws.boxes_by_cell.resize_lines();
+    PARTICLESIM_ASSERT(!ws.lines || ws.boxes_by_cell.holds_lines(), "prepare() sized the lines' rows");
     sum_cell_places(binning);
     place_boxes(binning);
     close_cell_starts(binning);
