@@ -33,7 +33,8 @@ struct GridSearch::SliceWorkspace {
     std::vector<std::uint32_t> cell_fill;  // per worker after the first: its count, then its next place, in each cell
     std::vector<std::uint32_t> by_cell;    // the particle of each box (or piece), sorted by cell
     FloatBoundsArray boxes_by_cell;        // those boxes, in the same order
-    std::vector<PairTestState> states_by_cell;  // their particles' motion, in the same order
+    std::vector<PairTestState>
+        states_by_cell;  // their particles' motion, in the same order (not where lines are tested)
     // Whether the slice's scans test the particles' lines as well (then
     // boxes_by_cell holds them).
     bool lines = false;
@@ -505,8 +506,9 @@ void GridSearch::sum_cell_places(const Binning& binning) const {
 }
 
 // Places each worker's boxes at its places in cell order (bounds in float,
-// motion states copied beside them, and the lines where the scans test
-// them), and its large boxes in its share.
+// and either the motion states copied beside them or, where the scans test
+// lines, the lines: so few boxes pass the lines' test that those read their
+// particles' states where they are), and its large boxes in its share.
 void GridSearch::place_boxes(const Binning& binning) const {
     const PairSearchInput& in = binning.in;
     SliceWorkspace& ws = binning.ws;
@@ -518,7 +520,7 @@ void GridSearch::place_boxes(const Binning& binning) const {
             const std::uint32_t at = next[cell]++;
             ws.by_cell[at] = static_cast<std::uint32_t>(i);
             ws.boxes_by_cell.set(at, float_bounds(box, layout_.float_scale));
-            ws.states_by_cell[at] = pair_test_state(in, static_cast<std::uint32_t>(i));
+            if (!lines) ws.states_by_cell[at] = pair_test_state(in, static_cast<std::uint32_t>(i));
             if (lines) ws.boxes_by_cell.set_line(at, float_line(in.particles[i]));  // the same for the whole slice
         };
         // The pieces in a loop of their own: the main loop stays short enough
@@ -545,7 +547,7 @@ void GridSearch::place_boxes(const Binning& binning) const {
                 const std::uint32_t at = next[marks[i]]++;
                 by_cell[at] = i;
                 boxes.set(at, bounds);
-                states[at] = {particles[i].position, particles[i].velocity};
+                if (!lines) states[at] = {particles[i].position, particles[i].velocity};
                 if (lines) boxes.set_line(at, line);
             };
             if (lanes_ == 16) {
@@ -598,7 +600,8 @@ namespace {
 
 // Tests particle `a` (box `box`, state `state`) against the boxes stored at
 // positions [first, last) of the cell order whose float bounds meet its own.
-// With `with_lines`, only those whose lines also pass the line test against `line`.
+// With `with_lines`, only those whose lines also pass the line test against
+// `line`, and the states are read from the particles (`state` is not read).
 template <std::uint32_t block_groups, std::uint32_t group_lanes = FloatBoundsArray::lanes, bool with_lines = false>
 [[gnu::always_inline]] inline void test_against_range(const PairSearchInput& in, const GridSearch::SliceWorkspace& ws,
                                                       std::uint32_t a, const FloatBounds& box, const FloatLine& line,
@@ -607,11 +610,15 @@ template <std::uint32_t block_groups, std::uint32_t group_lanes = FloatBoundsArr
     const auto test = [&](std::uint32_t m) {
         const std::uint32_t b = ws.by_cell[m];
         if (b == a) return;  // another piece of the same path
-        const PairTestState& other = ws.states_by_cell[m];
-        if (a < b) {
-            test_pair(state, other, a, b, in, out);
+        if constexpr (with_lines) {
+            test_pair(in, std::min(a, b), std::max(a, b), out);  // the few that pass read the particles
         } else {
-            test_pair(other, state, b, a, in, out);
+            const PairTestState& other = ws.states_by_cell[m];
+            if (a < b) {
+                test_pair(state, other, a, b, in, out);
+            } else {
+                test_pair(other, state, b, a, in, out);
+            }
         }
     };
     ws.boxes_by_cell.for_each_close<block_groups, group_lanes, with_lines>(first, last, box, line, terms, test);
@@ -637,7 +644,7 @@ template <std::uint32_t block_groups, std::uint32_t group_lanes, bool with_lines
         const std::int64_t cell = row + cx;
         const std::uint32_t first = start[cell];
         const std::uint32_t last = start[cell + 1];
-        if (cy + 1 < side) {
+        if (!with_lines && cy + 1 < side) {
             const std::uint32_t ahead = start[row + side + std::min(cx + scan_fetch_cells_ahead, side)];
             prefetch(states + ahead);
             prefetch(states + std::min(ahead + 1, boxes_binned));
@@ -652,9 +659,10 @@ template <std::uint32_t block_groups, std::uint32_t group_lanes, bool with_lines
         }
         for (std::uint32_t k = first; k < last; ++k) {
             const FloatLine line = with_lines ? boxes.line(k) : FloatLine{};
-            test_against_range<block_groups, group_lanes, with_lines>(in, ws, ids[k], boxes[k], line, terms, states[k],
+            const PairTestState state = with_lines ? PairTestState{} : states[k];  // not copied where lines are tested
+            test_against_range<block_groups, group_lanes, with_lines>(in, ws, ids[k], boxes[k], line, terms, state,
                                                                       k + 1, east_last, found);
-            test_against_range<block_groups, group_lanes, with_lines>(in, ws, ids[k], boxes[k], line, terms, states[k],
+            test_against_range<block_groups, group_lanes, with_lines>(in, ws, ids[k], boxes[k], line, terms, state,
                                                                       above_first, above_last, found);
         }
     }
