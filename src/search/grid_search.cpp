@@ -33,8 +33,9 @@ struct GridSearch::SliceWorkspace {
     std::vector<std::uint32_t> cell_fill;  // per worker after the first: its count, then its next place, in each cell
     std::vector<std::uint32_t> by_cell;    // the particle of each box (or piece), sorted by cell
     FloatBoundsArray boxes_by_cell;        // those boxes, in the same order
-    std::vector<PairTestState>
-        states_by_cell;  // their particles' motion, in the same order (not where lines are tested)
+    // Their particles' motion, in the same order; not copied where the scans
+    // test lines (the few pairs that pass read the particles).
+    std::vector<PairTestState> states_by_cell;
     // Whether the slice's scans test the particles' lines as well (then
     // boxes_by_cell holds them).
     bool lines = false;
