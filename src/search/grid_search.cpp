@@ -15,6 +15,7 @@
 #endif
 
 #include <algorithm>
+#include <array>
 #include <atomic>
 #include <bit>
 #include <cmath>
@@ -599,20 +600,59 @@ void GridSearch::close_cell_starts(const Binning& binning) const {
 
 namespace {
 
+// The pairs that pass a scan's line test, each tested a few passes later:
+// their particles are read where they are stored, a miss to memory in a
+// large scene, fetched as the pair passes. (The candidates' order does not
+// change the step: the selection orders them.)
+class DeferredPairTests {
+public:
+    DeferredPairTests(const PairSearchInput& in, ThreadCandidates& out) : in_(in), out_(out) {}
+
+    void add(std::uint32_t i, std::uint32_t j) {
+        for (const std::uint32_t particle : {i, j}) {
+            prefetch(&in_.particles[particle].position);  // with the velocity, 32 bytes that may span two lines
+            prefetch(&in_.particles[particle].velocity);
+        }
+        Pair& slot = waiting_[added_ % depth];
+        if (added_ >= depth) test_pair(in_, slot.i, slot.j, out_);
+        slot = {i, j};
+        ++added_;
+    }
+    // Tests those still waiting.
+    void finish() {
+        for (std::size_t k = added_ > depth ? added_ - depth : 0; k < added_; ++k) {
+            test_pair(in_, waiting_[k % depth].i, waiting_[k % depth].j, out_);
+        }
+        added_ = 0;
+    }
+
+private:
+    static constexpr std::size_t depth = 8;
+    struct Pair {
+        std::uint32_t i, j;
+    };
+    const PairSearchInput& in_;
+    ThreadCandidates& out_;
+    std::array<Pair, depth> waiting_{};
+    std::size_t added_ = 0;
+};
+
 // Tests particle `a` (box `box`, state `state`) against the boxes stored at
 // positions [first, last) of the cell order whose float bounds meet its own.
 // With `with_lines`, only those whose lines also pass the line test against
-// `line`, and the states are read from the particles (`state` is not read).
-template <std::uint32_t block_groups, std::uint32_t group_lanes = FloatBoundsArray::lanes, bool with_lines = false>
+// `line`, handed to `out` (DeferredPairTests: `state` is not read); else
+// tested at once into `out` (ThreadCandidates).
+template <std::uint32_t block_groups, std::uint32_t group_lanes = FloatBoundsArray::lanes, bool with_lines = false,
+          typename Out>
 [[gnu::always_inline]] inline void test_against_range(const PairSearchInput& in, const GridSearch::SliceWorkspace& ws,
                                                       std::uint32_t a, const FloatBounds& box, const FloatLine& line,
                                                       const LineTerms& terms, const PairTestState& state,
-                                                      std::uint32_t first, std::uint32_t last, ThreadCandidates& out) {
+                                                      std::uint32_t first, std::uint32_t last, Out& out) {
     const auto test = [&](std::uint32_t m) {
         const std::uint32_t b = ws.by_cell[m];
         if (b == a) return;  // another piece of the same path
         if constexpr (with_lines) {
-            test_pair(in, std::min(a, b), std::max(a, b), out);  // the few that pass read the particles
+            out.add(std::min(a, b), std::max(a, b));
         } else {
             const PairTestState& other = ws.states_by_cell[m];
             if (a < b) {
@@ -641,6 +681,15 @@ template <std::uint32_t block_groups, std::uint32_t group_lanes, bool with_lines
     const PairTestState* states = ws.states_by_cell.data();
     const std::int64_t row = cy * side;
     const std::uint32_t boxes_binned = start[static_cast<std::int64_t>(side) * side];
+    DeferredPairTests deferred(in, found);  // with lines
+    auto& tests = [&]() -> auto& {
+        if constexpr (with_lines) {
+            return deferred;
+        } else {
+            return found;
+        }
+    }
+    ();
     for (int cx = 0; cx < side; ++cx) {
         const std::int64_t cell = row + cx;
         const std::uint32_t first = start[cell];
@@ -662,11 +711,12 @@ template <std::uint32_t block_groups, std::uint32_t group_lanes, bool with_lines
             const FloatLine line = with_lines ? boxes.line(k) : FloatLine{};
             const PairTestState state = with_lines ? PairTestState{} : states[k];  // not copied where lines are tested
             test_against_range<block_groups, group_lanes, with_lines>(in, ws, ids[k], boxes[k], line, terms, state,
-                                                                      k + 1, east_last, found);
+                                                                      k + 1, east_last, tests);
             test_against_range<block_groups, group_lanes, with_lines>(in, ws, ids[k], boxes[k], line, terms, state,
-                                                                      above_first, above_last, found);
+                                                                      above_first, above_last, tests);
         }
     }
+    if constexpr (with_lines) deferred.finish();
 }
 
 // One row in blocks of `block_groups` groups of four boxes, or (x86-64) of
@@ -755,17 +805,19 @@ void GridSearch::test_large_pairs(const PairSearchInput& in, const SliceWorkspac
         const PairTestState state = pair_test_state(in, a);
         const FloatLine line = float_line(in.particles[a]);
         const CellRegion region = cells_reaching(box, grid);
+        DeferredPairTests deferred(in, found);
         for (int cy = region.y_first; cy <= region.y_last; ++cy) {
             const auto row = static_cast<std::size_t>(cy) * side;
             const std::uint32_t first = ws.cell_start[row + region.x_first];
             const std::uint32_t last = ws.cell_start[row + region.x_last + 1];
             if (ws.lines) {
                 test_against_range<1, FloatBoundsArray::lanes, true>(in, ws, a, bounds, line, layout_.line_terms, state,
-                                                                     first, last, found);
+                                                                     first, last, deferred);
             } else {
                 test_against_range<1>(in, ws, a, bounds, line, layout_.line_terms, state, first, last, found);
             }
         }
+        deferred.finish();
         for (std::int64_t other = k + 1; other < large_count; ++other) {
             const std::uint32_t b = ws.large[other];
             if (box.overlaps(ws.large_boxes[other])) test_pair(in, std::min(a, b), std::max(a, b), found);
