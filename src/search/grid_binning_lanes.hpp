@@ -92,15 +92,16 @@ template <int lanes>
 
 // store(particle, bounds, line) for each placed one of `lanes` particles
 // from i: bounds[b][k] and line[c][k] are particle i + k's bound b and line
-// component c.
+// component c (read only where `with_lines`: a zero line otherwise).
 template <int lanes, typename Store>
-[[gnu::always_inline]] inline void store_lanes(std::int64_t i, unsigned placed, const float (&bounds)[4][lanes],
-                                               const float (&line)[4][lanes], Store&& store) {
+[[gnu::always_inline]] inline void store_lanes(std::int64_t i, unsigned placed, bool with_lines,
+                                               const float (&bounds)[4][lanes], const float (&line)[4][lanes],
+                                               Store&& store) {
     for (; placed != 0; placed &= placed - 1) {
         const int lane = std::countr_zero(placed);
         store(static_cast<std::uint32_t>(i + lane),
               FloatBounds{bounds[0][lane], bounds[1][lane], bounds[2][lane], bounds[3][lane]},
-              FloatLine{line[0][lane], line[1][lane], line[2][lane], line[3][lane]});
+              with_lines ? FloatLine{line[0][lane], line[1][lane], line[2][lane], line[3][lane]} : FloatLine{});
     }
 }
 
@@ -270,7 +271,7 @@ template <typename Store, typename PlaceOne>
             _mm256_store_ps(line[3],
                             _mm512_mask_cvtpd_ps(_mm256_setzero_ps(), 0xFF, _mm512_mul_pd(vy, velocity_scale)));
         }
-        store_lanes<8>(i, placed, bounds, line, store);
+        store_lanes<8>(i, placed, place.lines, bounds, line, store);
     }
     for (; i < last; ++i) one(i);
 }
@@ -401,7 +402,7 @@ template <typename Store, typename PlaceOne>
             _mm_store_ps(line[2], _mm256_cvtpd_ps(_mm256_mul_pd(vx, velocity_scale)));
             _mm_store_ps(line[3], _mm256_cvtpd_ps(_mm256_mul_pd(vy, velocity_scale)));
         }
-        store_lanes<4>(i, placed, bounds, line, store);
+        store_lanes<4>(i, placed, place.lines, bounds, line, store);
     }
     for (; i < last; ++i) one(i);
 }

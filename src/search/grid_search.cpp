@@ -518,17 +518,35 @@ void GridSearch::place_boxes(const Binning& binning) const {
         std::uint32_t* next = binning.counts_of(worker);
         const auto [first, last] = binning.block_of(worker);
         const bool lines = ws.lines;
-        const auto place = [&](std::int64_t i, std::uint32_t cell, const SweptBounds& box) {
+        // Stores particle i's box at the worker's next place in `cell`: its
+        // float bounds, and its line where the scans test lines, else its
+        // motion state. (Through pointers held here: the vectors' would be
+        // read again at every store.)
+        std::uint32_t* by_cell = ws.by_cell.data();
+        PairTestState* states = ws.states_by_cell.data();
+        FloatBoundsArray& boxes = ws.boxes_by_cell;
+        const Particle* particles = in.particles.data();
+        const auto store = [=, &boxes](std::uint32_t i, std::uint32_t cell, const FloatBounds& bounds,
+                                       const FloatLine& line) {
             const std::uint32_t at = next[cell]++;
-            ws.by_cell[at] = static_cast<std::uint32_t>(i);
-            ws.boxes_by_cell.set(at, float_bounds(box, layout_.float_scale));
-            if (!lines) ws.states_by_cell[at] = pair_test_state(in, static_cast<std::uint32_t>(i));
-            if (lines) ws.boxes_by_cell.set_line(at, float_line(in.particles[i]));  // the same for the whole slice
+            by_cell[at] = i;
+            boxes.set(at, bounds);
+            if (lines) {
+                boxes.set_line(at, line);
+            } else {
+                states[at] = {particles[i].position, particles[i].velocity};
+            }
+        };
+        const auto place = [&](std::int64_t i, std::uint32_t cell, const SweptBounds& box) {
+            // The line is the same for the whole slice.
+            store(static_cast<std::uint32_t>(i), cell, float_bounds(box, layout_.float_scale),
+                  lines ? float_line(in.particles[i]) : FloatLine{});
         };
         // The pieces in a loop of their own: the main loop stays short enough
         // for the processor to overlap the cache misses of many particles.
+        const std::uint32_t* marks = ws.cell_of.data();
         const auto place_one = [&](std::int64_t i) {
-            const std::uint32_t mark = ws.cell_of[i];
+            const std::uint32_t mark = marks[i];
             if (mark < first_piece_marker) place(i, mark, binning.path_bounds(i));
         };
 #if defined(__x86_64__)
@@ -538,24 +556,14 @@ void GridSearch::place_boxes(const Binning& binning) const {
                                    layout_.reach,       binning.fit,         &binning.grid};
             const PlaceInput placing{layout_.float_scale, layout_.line_position_scale, layout_.line_velocity_scale,
                                      lines};
-            // The lanes' boxes and lines, stored as place() stores them.
-            // (Through pointers held here: the vectors' would be read again at every store.)
-            const std::uint32_t* marks = ws.cell_of.data();
-            const Particle* particles = in.particles.data();
-            std::uint32_t* by_cell = ws.by_cell.data();
-            PairTestState* states = ws.states_by_cell.data();
-            FloatBoundsArray& boxes = ws.boxes_by_cell;
-            const auto store = [=, &boxes](std::uint32_t i, const FloatBounds& bounds, const FloatLine& line) {
-                const std::uint32_t at = next[marks[i]]++;
-                by_cell[at] = i;
-                boxes.set(at, bounds);
-                if (!lines) states[at] = {particles[i].position, particles[i].velocity};
-                if (lines) boxes.set_line(at, line);
+            // The lanes' boxes (and lines), each in the cell the count marked.
+            const auto store_marked = [&](std::uint32_t i, const FloatBounds& bounds, const FloatLine& line) {
+                store(i, marks[i], bounds, line);
             };
             if (lanes_ == 16) {
-                place_paths_eight(input, placing, first, last, marks, store, place_one);
+                place_paths_eight(input, placing, first, last, marks, store_marked, place_one);
             } else {
-                place_paths_four(input, placing, first, last, marks, store, place_one);
+                place_paths_four(input, placing, first, last, marks, store_marked, place_one);
             }
         } else
 #endif
