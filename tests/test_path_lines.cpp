@@ -105,7 +105,7 @@ void never_drops_a_pair_within_reach(int lanes) {
         lines.assign(t.particles, t.box);
         for (std::uint32_t i = 0; i < t.particles.size(); ++i) {
             near.clear();
-            lines.gather_near(i, t.reach, near);
+            lines.gather_near(i, near);
             CHECK(std::is_sorted(near.begin(), near.end()));
             for (std::uint32_t j = 0; j < t.particles.size(); ++j) {
                 if (j == i) continue;
@@ -130,10 +130,10 @@ void never_drops_a_pair_within_reach(int lanes) {
             for (std::uint32_t k = 0; k < size; ++k) block.push_back(first + k);
             std::array<std::vector<std::uint32_t>, 4> found;
             std::array<std::vector<std::uint32_t>*, 4> nears{&found[0], &found[1], &found[2], &found[3]};
-            lines.gather_near_block(block, t.reach, std::span(nears).first(size));
+            lines.gather_near_block(block, std::span(nears).first(size));
             for (std::uint32_t k = 0; k < size; ++k) {
                 alone.clear();
-                lines.gather_near(block[k], t.reach, alone);
+                lines.gather_near(block[k], alone);
                 CHECK(found[k] == alone);
             }
         }
@@ -172,8 +172,8 @@ void moved_and_set_lines_are_assigned_lines() {
         for (std::uint32_t i = 0; i < t.particles.size(); ++i) {
             near_assigned.clear();
             near_updated.clear();
-            assigned.gather_near(i, t.reach, near_assigned);
-            updated.gather_near(i, t.reach, near_updated);
+            assigned.gather_near(i, near_assigned);
+            updated.gather_near(i, near_updated);
             CHECK(near_assigned == near_updated);
         }
     }

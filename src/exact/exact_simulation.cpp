@@ -351,7 +351,6 @@ private:
           cells_(neighbour_grid(world, particles.size(), options), particles.size()),
           plans_(particles.size()),
           snapshot_(std::move(particles)),
-          reach_(contact_reach(box_)),
           look_ahead_(options.look_ahead.value_or(count() >= exact_tuning::look_ahead_from) && !by_lines()),
           linked_queue_(look_ahead_ ? 0 : count(), Event{never, EventKind::cell_crossing, 0, 0}),
           ladder_queue_(look_ahead_ ? count() : 0, Event{never, EventKind::cell_crossing, 0, 0}),
@@ -639,7 +638,7 @@ private:
             return;
         }
         near_.clear();
-        lines_.gather_near(i, reach_, near_);
+        lines_.gather_near(i, near_);
         consider_pairs(i, [&](auto&& visit) {
             for (const std::uint32_t j : near_) visit(j);
         });
@@ -869,11 +868,9 @@ private:
     static_assert(sizeof(Plans) == 64);
     HugePageVector<Plans> plans_;
     std::vector<Particle> snapshot_;  // the state at the last whole step
-    // With a single cell: every particle's line at lines_epoch_, and the
-    // distance the pair test needs (contact_reach()).
+    // With a single cell: every particle's line at lines_epoch_.
     PathLines lines_;
     double lines_epoch_ = 0.0;
-    double reach_;
     std::vector<std::uint32_t> near_;
     // A state that outgrows the caches: the queue in two tiers, and each
     // event prefetching for the events behind it (prefetch_coming_events());

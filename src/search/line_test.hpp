@@ -6,10 +6,11 @@
 //
 //     |dp x dv|^2 <= reach_term |dv|^2 + margin_term
 //
-// with positions and velocities scaled by powers of two (exactly) so that
-// the largest are about 1, and the two terms below widening the test past
-// every rounding: a pair that the double-precision tests would find always
-// passes; a few more do.
+// with positions and velocities scaled so that nothing overflows in float
+// (the grid's by powers of two, exactly, the largest about 1; the paths
+// search's positions so that the scaled reach is about 1), and the two terms
+// below widening the test past every rounding: a pair that the
+// double-precision tests would find always passes; a few more do.
 
 #include <cmath>
 
@@ -52,10 +53,28 @@ template <typename Floats>
     bound = terms.reach_term * speed_sq + terms.margin_term;
 }
 
+// The same test for lines whose positions are scaled so that reach_term is
+// at most 1 (PathLines): |dp x dv|^2 <= |dv|^2 + margin_term, one
+// multiplication a line fewer. Passing line_test_sides() implies passing
+// this one (a larger factor of |dv|^2), so it keeps every pair that one keeps.
+template <typename Floats>
+[[gnu::always_inline]] inline void unit_reach_line_test_sides(const Floats& x, const Floats& y, const Floats& vx,
+                                                              const Floats& vy, const FloatLine& line,
+                                                              const LineTerms& terms, Floats& cross_sq, Floats& bound) {
+    const Floats dx = x - line.x;
+    const Floats dy = y - line.y;
+    const Floats dvx = vx - line.vx;
+    const Floats dvy = vy - line.vy;
+    const Floats cross = dx * dvy - dy * dvx;
+    cross_sq = cross * cross;
+    bound = dvx * dvx + (dvy * dvy + terms.margin_term);
+}
+
 // For scaled coordinates of at most `largest_coordinate` (M) and velocity
 // components of at most `largest_speed` (V), and a scaled reach.
 //
-// Rounding each scaled value to float moves it by at most 2^-24 of M or V;
+// Rounding each scaled value to float moves it by at most 2^-24 of M or V
+// (2^-52 of M more where the scale is no power of two: within the slack);
 // the differences, products and sum of the cross product then err by less
 // than 64 * 2^-24 M V, and the computed |dv| by less than 6 * 2^-24 V. With
 // (a + b)^2 <= 1.25 a^2 + 5 b^2, and slack for the three float roundings of

@@ -16,9 +16,12 @@
 // The test is conservative: rounding to float, and the float arithmetic,
 // are covered by a margin derived from the largest coordinate and speed
 // stored, so a pair that the double-precision tests would find is never
-// dropped; a few more pass. Positions and velocities are scaled by powers of
-// two (exactly) so that the largest are about 1: nothing overflows in float,
-// and rounding any value (even a tiny one) errs by at most 2^-24 of them.
+// dropped; a few more pass. Velocities are scaled by a power of two so that
+// the largest is about 1, and positions so that the reach is about 1 (at
+// most 2^40 times the box's side): the test's factor of |dv|^2 is then 1,
+// one multiplication a line fewer (line_test.hpp), nothing overflows in
+// float, and rounding any value (even a tiny one) errs by at most 2^-24 of
+// the largest.
 
 #include "core/box.hpp"
 #include "particlesim/particle.hpp"
@@ -51,7 +54,8 @@ public:
     [[nodiscard]] static bool supports_lanes(int lanes);
 
     // Lines through the particles' positions (all at the epoch) along their
-    // velocities; the box sets the position scale.
+    // velocities; the box sets the position scale and the reach,
+    // contact_reach(box).
     void assign(std::span<const Particle> particles, const Box& box);
 
     // Moves every line's point to a new epoch, position_of(i) for each i;
@@ -65,20 +69,22 @@ public:
     // (extrapolated back, if it changed velocity after the epoch).
     void set(std::uint32_t i, const Vec2& position, const Vec2& velocity);
 
-    // Appends to `near` every j != i whose line may come within `reach` of
+    // Appends to `near` every j != i whose line may come within the reach of
     // i's line (see above), in increasing order.
-    void gather_near(std::uint32_t i, double reach, std::vector<std::uint32_t>& near) const;
+    void gather_near(std::uint32_t i, std::vector<std::uint32_t>& near) const;
     // gather_near() for up to max_block lines at once, *nears[k] for
     // lines[k]: each group of lines is read once for all of them (four
     // queries' temporaries still fit AVX2's sixteen registers).
     static constexpr std::size_t max_block = 4;
-    void gather_near_block(std::span<const std::uint32_t> lines, double reach,
+    void gather_near_block(std::span<const std::uint32_t> lines,
                            std::span<std::vector<std::uint32_t>* const> nears) const;
 
     [[nodiscard]] std::size_t size() const { return count_; }
 
 private:
-    [[nodiscard]] LineQuery query_for(std::uint32_t i, double reach) const;
+    // The test's terms for the lines stored now (line_test.hpp).
+    [[nodiscard]] LineTerms terms() const;
+    [[nodiscard]] LineQuery query_for(std::uint32_t i, const LineTerms& terms) const;
     void store_position(std::uint32_t i, const Vec2& position) {
         const double x = position.x() * position_scale_;
         const double y = position.y() * position_scale_;
@@ -89,8 +95,9 @@ private:
 
     int lanes_ = 4;
     std::size_t count_ = 0;
-    double position_scale_ = 1.0;  // powers of two
-    double velocity_scale_ = 1.0;
+    double position_scale_ = 1.0;      // the reach scaled to about 1
+    double velocity_scale_ = 1.0;      // a power of two
+    double reach_scaled_ = 0.0;        // contact_reach(box) times position_scale_
     double largest_coordinate_ = 0.0;  // scaled, of any line stored since assign()
     double largest_speed_ = 0.0;       // scaled, of any component stored since assign()
     // Scaled, one array per component, padded to a whole number of lane groups.

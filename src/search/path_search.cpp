@@ -117,7 +117,7 @@ void PathSearch::watch_near(const PairSearchInput& in, std::span<const std::uint
         nears[k] = &out.near[k];
         nears[k]->clear();
     }
-    lines_.gather_near_block(lines, reach, std::span(nears).first(lines.size()));
+    lines_.gather_near_block(lines, std::span(nears).first(lines.size()));
     for (std::size_t k = 0; k < lines.size(); ++k) watch_pairs(in, lines[k], out.near[k], reach, out);
 }
 
