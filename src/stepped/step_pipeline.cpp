@@ -47,9 +47,14 @@ void gather_wall_candidates(std::span<const double> wall_time, double duration, 
     candidates.resize(before + found);
     parallel_for_blocks(workers, count, motion_block, [&](std::int64_t block, std::int64_t first, std::int64_t last) {
         std::size_t at = before + start.first_candidate[block];
-        for (std::int64_t i = first; i < last; ++i) {
-            if (wall_time[i] <= duration)
-                candidates[at++] = Collision::wall(wall_time[i], static_cast<std::uint32_t>(i));
+        const std::size_t end = at + start.blocks[block].wall_candidates;
+        // Without a branch on which particles hit a wall (a quarter of them
+        // in sparse scenes, at random): every particle is written to the
+        // next free place, which only a hit keeps; the place past the
+        // block's last is never written (another block's, or none).
+        for (std::int64_t i = first; i < last && at < end; ++i) {
+            candidates[at] = Collision::wall(wall_time[i], static_cast<std::uint32_t>(i));
+            at += static_cast<std::size_t>(wall_time[i] <= duration);
         }
     });
 }
@@ -365,22 +370,33 @@ void advance_free_particles(std::span<Particle> particles, std::span<std::uint32
     next.with_or_without_motion([&](auto with_motion) {
         parallel_for_blocks(workers, count, motion_block,
                             [&](std::int64_t block, std::int64_t first, std::int64_t last) {
+                                // In locals: else the compiler must assume that the
+                                // stores below may change the spans and the box, and
+                                // reads them again for every particle.
+                                Particle* const stored = particles.data();
+                                std::uint32_t* const partners = partner.data();
+                                double* const times = wall_time.data();
+                                const Box in = box;
+                                const double step = duration;
                                 BlockStart measured;
                                 for (std::int64_t i = first; i < last; ++i) {
                                     // Without a branch on whether the particle collided
                                     // (no pattern to learn): a collided one is stored back
-                                    // as it is. Measured on the copy: a position read back
-                                    // right after its halves were stored would stall (see
+                                    // as it is, by a select of both coordinates at once.
+                                    // Measured on the copy: a position read back right
+                                    // after its halves were stored would stall (see
                                     // resolve_wall()).
-                                    Particle particle = particles[i];
+                                    Particle particle = stored[i];
                                     Particle moved = particle;
-                                    move_freely(moved, duration, box);
-                                    const bool free = partner[i] == no_collision;
-                                    particle.position.x() = free ? moved.position.x() : particle.position.x();
-                                    particle.position.y() = free ? moved.position.y() : particle.position.y();
-                                    particles[i] = particle;
-                                    partner[i] = no_collision;
-                                    wall_time[i] = measured.measure<with_motion>(particle, box, duration);
+                                    move_freely(moved, step, in);
+                                    const TwoDoubles at{particle.position.x(), particle.position.y()};
+                                    const TwoDoubles moved_at{moved.position.x(), moved.position.y()};
+                                    const std::int64_t free = -static_cast<std::int64_t>(partners[i] == no_collision);
+                                    const TwoDoubles kept = TwoMasks{free, free} ? moved_at : at;
+                                    particle.position = Vec2(kept[0], kept[1]);
+                                    stored[i] = particle;
+                                    partners[i] = no_collision;
+                                    times[i] = measured.measure<with_motion>(particle, in, step);
                                 }
                                 next.blocks[block] = measured;
                             });
