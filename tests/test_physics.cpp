@@ -2,6 +2,7 @@
 
 #include "check.hpp"
 
+#include "core/motion_lanes.hpp"
 #include "core/physics.hpp"
 #include "core/random.hpp"
 
@@ -219,6 +220,72 @@ void bounce_and_stop_at_wall() {
     CHECK(r.position.x() <= box.upper);
 }
 
+// The two lanes' wall time, free flight, bounce and stop at a wall give the
+// scalar functions' bits: on random motions, exact corners, particles
+// resting on a wall, at rest, and a second wall reached exactly at the end
+// of the step.
+void motion_lanes_are_the_scalar_motion() {
+    SplitMix64 rng(23);
+    const auto same = [](const Vec2& a, const Vec2& b) {
+        return std::bit_cast<std::uint64_t>(a.x()) == std::bit_cast<std::uint64_t>(b.x()) &&
+               std::bit_cast<std::uint64_t>(a.y()) == std::bit_cast<std::uint64_t>(b.y());
+    };
+    const auto coordinate = [&] {
+        const std::uint64_t kind = rng.next() % 8;
+        if (kind == 0) return box.lower;
+        if (kind == 1) return box.upper;
+        return box.lower + (box.upper - box.lower) * rng.uniform();
+    };
+    const auto speed = [&] {
+        const std::uint64_t kind = rng.next() % 8;
+        if (kind == 0) return 0.0;
+        if (kind == 1) return rng.next() % 2 == 0 ? 2.0 : -2.0;
+        return 40.0 * (rng.uniform() - 0.5);
+    };
+    int differing = 0;
+    int corners = 0;
+    int stopped = 0;
+    for (int trial = 0; trial < 200000; ++trial) {
+        Particle p;
+        p.position = Vec2(coordinate(), coordinate());
+        p.velocity = Vec2(speed(), speed());
+        if (trial % 50 == 0) {  // an exact corner: both walls at t = 1
+            p.position = Vec2(17, 3);
+            p.velocity = Vec2(2, -2);
+        }
+        const WallHit hit = time_to_wall(p.position, p.velocity, box);
+        corners += hit.on_x && hit.on_y ? 1 : 0;
+        Particle scalar = p;
+        MotionLanes lanes(p, box);
+        CHECK(std::bit_cast<std::uint64_t>(lanes.wall_time()) == std::bit_cast<std::uint64_t>(hit.time));
+        // A free flight, up to past the walls (clamped), and for +0.0.
+        Particle flown = p;
+        MotionLanes flying(p, box);
+        const double flight = trial % 3 == 0 ? 0.0 : 2.0 * rng.uniform();
+        move_freely(flown, flight, box);
+        flying.fly(flight);
+        CHECK(same(flown.position, flying.position()) && same(flown.velocity, flying.velocity()));
+        if (hit.time != never) {
+            bounce_off_wall(scalar, hit, box);
+            lanes.bounce();
+        }
+        // Half the time exactly as long as the next wall is away.
+        const double next = time_to_wall(scalar.position, scalar.velocity, box).time;
+        const double remaining = trial % 2 == 0 && next != never ? next : 2.0 * rng.uniform();
+        stopped += next <= remaining ? 1 : 0;
+        move_stopping_at_wall(scalar, remaining, box);
+        lanes.move_stopping_at_wall(remaining);
+        if (!same(scalar.position, lanes.position()) || !same(scalar.velocity, lanes.velocity())) {
+            ++differing;
+            const check::Context context("trial ", trial);
+            CHECK(same(scalar.position, lanes.position()));
+        }
+    }
+    CHECK_EQ(differing, 0);
+    CHECK(corners > 4000);
+    CHECK(stopped > 100000);
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -229,5 +296,6 @@ int main(int argc, char** argv) {
                        {"contact times in lanes are contact time alone", contact_times_in_lanes_are_contact_time_alone},
                        {"exchange conserves energy and momentum", exchange_conserves_energy_and_momentum},
                        {"exchange in lanes is the exchange alone", exchange_in_lanes_is_exchange_alone},
-                       {"bounce and stop at wall", bounce_and_stop_at_wall}});
+                       {"bounce and stop at wall", bounce_and_stop_at_wall},
+                       {"motion lanes are the scalar motion", motion_lanes_are_the_scalar_motion}});
 }

@@ -28,20 +28,23 @@ using TwoDoubles = double __attribute__((vector_size(16)));
 using TwoMasks = std::int64_t __attribute__((vector_size(16)));  // what comparing two lanes gives
 
 // The time for each coordinate to reach the wall it moves towards (`never`
-// without motion on it), the earlier of the two, and which it was.
-// Both axes at once in two lanes, with selects instead of branches:
-// directions are random, so a branch on a sign is mispredicted half the time.
-// Each lane is the same IEEE arithmetic as a scalar (same bits everywhere).
-inline WallHit time_to_wall(const Vec2& position, const Vec2& velocity, const Box& box) {
-    using Lanes = TwoDoubles;
-    const Lanes where{position.x(), position.y()};
-    const Lanes speed{velocity.x(), velocity.y()};
-    const Lanes lower{box.lower, box.lower};
-    const Lanes upper{box.upper, box.upper};
-    const Lanes wall = speed < 0.0 ? lower : upper;
+// without motion on it), in two lanes (x, y), with selects instead of
+// branches: directions are random, so a branch on a sign is mispredicted
+// half the time. Each lane is the same IEEE arithmetic as a scalar (same
+// bits everywhere).
+inline TwoDoubles times_to_walls(const TwoDoubles& where, const TwoDoubles& speed, const TwoDoubles& lower,
+                                 const TwoDoubles& upper) {
+    const TwoDoubles wall = speed < 0.0 ? lower : upper;
     // "+ 0.0" turns the -0.0 of a particle resting on the wall into +0.0.
-    const Lanes to_wall = (wall - where) / speed + 0.0;
-    const Lanes times = speed != 0.0 ? to_wall : Lanes{never, never};
+    const TwoDoubles to_wall = (wall - where) / speed + 0.0;
+    return speed != 0.0 ? to_wall : TwoDoubles{never, never};
+}
+
+// The earlier of the two wall times, and which it was.
+inline WallHit time_to_wall(const Vec2& position, const Vec2& velocity, const Box& box) {
+    const TwoDoubles times =
+        times_to_walls(TwoDoubles{position.x(), position.y()}, TwoDoubles{velocity.x(), velocity.y()},
+                       TwoDoubles{box.lower, box.lower}, TwoDoubles{box.upper, box.upper});
     const double t = std::min(times[0], times[1]);
     return {t, times[0] == t && t != never, times[1] == t && t != never};
 }

@@ -1,6 +1,7 @@
 #include "stepped/step_pipeline.hpp"
 
 #include "core/assert.hpp"
+#include "core/motion_lanes.hpp"
 #include "core/physics.hpp"
 #include "core/prefetch.hpp"
 #include "parallel/parallel.hpp"
@@ -9,6 +10,7 @@
 #include <algorithm>
 #include <array>
 #include <atomic>
+#include <bit>
 #include <stdexcept>
 
 namespace particlesim {
@@ -240,10 +242,13 @@ namespace {
 
 void resolve_wall(Particle& particle, double time, const Box& box, double duration) {
     Particle moved = particle;
+    MotionLanes motion(moved, box);
     // Recomputed from the unchanged start state, so it equals the candidate.
-    const WallHit hit = time_to_wall(moved.position, moved.velocity, box);
-    bounce_off_wall(moved, hit, box);
-    move_stopping_at_wall(moved, duration - time, box);
+    motion.bounce();
+    motion.move_stopping_at_wall(duration - time);
+    moved.position = motion.position();
+    moved.velocity = motion.velocity();
+    ++moved.wall_collisions;
     particle = moved;
 }
 
@@ -265,7 +270,9 @@ void finish_pair(PairAtContact& pair, const Box& box, double duration) {
     for (Particle& p : pair.moved) {
         ++p.particle_collisions;
         clamp_into_box(p.position, box);
-        move_stopping_at_wall(p, duration - pair.time, box);
+        MotionLanes motion(p, box);
+        motion.move_stopping_at_wall(duration - pair.time);
+        p.position = motion.position();
     }
     *pair.stored[0] = pair.moved[0];
     *pair.stored[1] = pair.moved[1];
@@ -368,38 +375,37 @@ void advance_free_particles(std::span<Particle> particles, std::span<std::uint32
     const int workers = worker_count(static_cast<std::size_t>(threads), count, min_particles_per_thread);
     next.resize(particles.size());
     next.with_or_without_motion([&](auto with_motion) {
-        parallel_for_blocks(workers, count, motion_block,
-                            [&](std::int64_t block, std::int64_t first, std::int64_t last) {
-                                // In locals: else the compiler must assume that the
-                                // stores below may change the spans and the box, and
-                                // reads them again for every particle.
-                                Particle* const stored = particles.data();
-                                std::uint32_t* const partners = partner.data();
-                                double* const times = wall_time.data();
-                                const Box in = box;
-                                const double step = duration;
-                                BlockStart measured;
-                                for (std::int64_t i = first; i < last; ++i) {
-                                    // Without a branch on whether the particle collided
-                                    // (no pattern to learn): a collided one is stored back
-                                    // as it is, by a select of both coordinates at once.
-                                    // Measured on the copy: a position read back right
-                                    // after its halves were stored would stall (see
-                                    // resolve_wall()).
-                                    Particle particle = stored[i];
-                                    Particle moved = particle;
-                                    move_freely(moved, step, in);
-                                    const TwoDoubles at{particle.position.x(), particle.position.y()};
-                                    const TwoDoubles moved_at{moved.position.x(), moved.position.y()};
-                                    const std::int64_t free = -static_cast<std::int64_t>(partners[i] == no_collision);
-                                    const TwoDoubles kept = TwoMasks{free, free} ? moved_at : at;
-                                    particle.position = Vec2(kept[0], kept[1]);
-                                    stored[i] = particle;
-                                    partners[i] = no_collision;
-                                    times[i] = measured.measure<with_motion>(particle, in, step);
-                                }
-                                next.blocks[block] = measured;
-                            });
+        parallel_for_blocks(
+            workers, count, motion_block, [&](std::int64_t block, std::int64_t first, std::int64_t last) {
+                // In locals: else the compiler must assume that the
+                // stores below may change the spans and the box, and
+                // reads them again for every particle.
+                Particle* const stored = particles.data();
+                std::uint32_t* const partners = partner.data();
+                double* const times = wall_time.data();
+                const Box in = box;
+                const double step = duration;
+                BlockStart measured;
+                for (std::int64_t i = first; i < last; ++i) {
+                    // Without a branch on whether the particle collided
+                    // (no pattern to learn; the compiler turned a select,
+                    // and a product by 0 or 1, into one): a collided one,
+                    // resolved already, moves for +0.0, which changes no
+                    // bit of a position inside the box. In two lanes, and
+                    // measured on them: a position read back right after
+                    // its halves were stored would stall (see resolve_wall()).
+                    Particle particle = stored[i];
+                    const std::uint64_t free = -static_cast<std::uint64_t>(partners[i] == no_collision);
+                    const double flight = std::bit_cast<double>(std::bit_cast<std::uint64_t>(step) & free);
+                    MotionLanes motion(particle, in);
+                    motion.fly(flight);
+                    particle.position = motion.position();
+                    stored[i] = particle;
+                    partners[i] = no_collision;
+                    times[i] = measured.count<with_motion>(particle.velocity, motion.wall_time(), step);
+                }
+                next.blocks[block] = measured;
+            });
     });
     next.measured = true;
 }

@@ -56,10 +56,15 @@ struct BlockStart {
     // registers by the caller.
     template <bool with_motion>
     double measure(const Particle& particle, const Box& box, double duration) {
-        const double time = time_to_wall(particle.position, particle.velocity, box).time;
-        wall_candidates += time <= duration ? 1U : 0U;
-        if constexpr (with_motion) motion.add(particle.velocity, time, duration);
-        return time;
+        return count<with_motion>(particle.velocity, time_to_wall(particle.position, particle.velocity, box).time,
+                                  duration);
+    }
+    // The same for a particle whose wall time is known.
+    template <bool with_motion>
+    double count(const Vec2& velocity, double wall_time, double duration) {
+        wall_candidates += wall_time <= duration ? 1U : 0U;
+        if constexpr (with_motion) motion.add(velocity, wall_time, duration);
+        return wall_time;
     }
 };
 
