@@ -35,8 +35,9 @@ struct FloatLine {
 
 // The two sides of the test, lane by lane, for `Floats` stored lines (a
 // vector of four, eight or sixteen floats each component) against `line`:
-// |dp x dv|^2 and reach_term |dv|^2 + margin_term. Written once, so that a
-// line passes the same way in every search, block and lane width. Vectors
+// |dp x dv|^2 and reach_term |dv|^2 + margin_term (the grid search's).
+// Written once, so that a line passes the same way in every block and lane
+// width. Vectors
 // go by reference only: a wider one passed or returned by value would
 // change the calling convention of a build without AVX.
 template <typename Floats>
