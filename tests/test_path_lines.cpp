@@ -179,12 +179,85 @@ void moved_and_set_lines_are_assigned_lines() {
     }
 }
 
+// arrange() and gather_new_block(): every pair gather_near() finds for a
+// new line, with an old line from the new line, with a new line from one
+// side or both; no other pair, no padding, never the line itself; on every
+// lane width, old and new lines mixed at random (all new, as made afresh,
+// included).
+void arranged_new_lines_find_what_each_finds(int lanes) {
+    if (!PathLines::supports_lanes(lanes)) {
+        std::printf("test_path_lines: no %d-lane test on this processor, not run\n", lanes);
+        return;
+    }
+    SplitMix64 rng(17);
+    long found_pairs = 0;
+    for (int trial = 0; trial < 400; ++trial) {
+        Trial t = make_trial(rng, -20 + static_cast<int>(rng.next() % 41), -2, 3.0);
+        // More particles than a group, so that blocks start inside groups.
+        for (int copy = 0; copy < 2; ++copy) {
+            const Trial more = make_trial(rng, 0, -2, 3.0);
+            for (const Particle& p : more.particles) {
+                Particle scaled = p;
+                const double scale = t.box.side / more.box.side;
+                scaled.position = p.position * scale;
+                scaled.velocity = p.velocity * scale;
+                t.particles.push_back(scaled);
+            }
+        }
+        const auto count = static_cast<std::uint32_t>(t.particles.size());
+        PathLines identity(lanes);
+        identity.assign(t.particles, t.box);
+        PathLines arranged(lanes);
+        arranged.assign(t.particles, t.box);
+        std::vector<std::uint32_t> old_lines;
+        std::vector<std::uint32_t> new_lines;
+        const std::uint64_t share = trial % 5 == 0 ? 8 : rng.next() % 8;  // of 8 new
+        for (std::uint32_t i = 0; i < count; ++i) (rng.next() % 8 < share ? new_lines : old_lines).push_back(i);
+        arranged.arrange(t.particles, old_lines, new_lines);
+        std::vector<char> is_new(count, 0);
+        for (const std::uint32_t i : new_lines) is_new[i] = 1;
+        // Every new line's finds, in blocks of 1 to 4.
+        std::vector<std::vector<std::uint32_t>> finds(new_lines.size());
+        for (std::size_t first = 0; first < new_lines.size();) {
+            const std::size_t size = std::min<std::size_t>(1 + rng.next() % 4, new_lines.size() - first);
+            std::array<std::vector<std::uint32_t>*, 4> nears{};
+            for (std::size_t k = 0; k < size; ++k) nears[k] = &finds[first + k];
+            arranged.gather_new_block(first, std::span(nears).first(size));
+            first += size;
+        }
+        const auto finds_of = [&](std::uint32_t i) -> const std::vector<std::uint32_t>& {
+            return finds[static_cast<std::size_t>(std::lower_bound(new_lines.begin(), new_lines.end(), i) -
+                                                  new_lines.begin())];
+        };
+        const auto has = [](const std::vector<std::uint32_t>& list, std::uint32_t j) {
+            return std::find(list.begin(), list.end(), j) != list.end();
+        };
+        std::vector<std::uint32_t> near;
+        for (const std::uint32_t i : new_lines) {
+            near.clear();
+            identity.gather_near(i, near);
+            const std::vector<std::uint32_t>& found = finds_of(i);
+            const check::Context context("trial ", trial, ", line ", i);
+            for (const std::uint32_t j : near) {
+                ++found_pairs;
+                CHECK(has(found, j) || (is_new[j] != 0 && has(finds_of(j), i)));
+            }
+            for (const std::uint32_t j : found) CHECK(j < count && j != i && has(near, j));
+        }
+    }
+    CHECK(found_pairs > 1000);
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
-    return check::run(argc, argv, "test_path_lines",
-                      {{"never drops a pair within reach, 4 lanes", [] { never_drops_a_pair_within_reach(4); }},
-                       {"never drops a pair within reach, 8 lanes", [] { never_drops_a_pair_within_reach(8); }},
-                       {"never drops a pair within reach, 16 lanes", [] { never_drops_a_pair_within_reach(16); }},
-                       {"moved and set lines are assigned lines", moved_and_set_lines_are_assigned_lines}});
+    return check::run(
+        argc, argv, "test_path_lines",
+        {{"never drops a pair within reach, 4 lanes", [] { never_drops_a_pair_within_reach(4); }},
+         {"never drops a pair within reach, 8 lanes", [] { never_drops_a_pair_within_reach(8); }},
+         {"never drops a pair within reach, 16 lanes", [] { never_drops_a_pair_within_reach(16); }},
+         {"moved and set lines are assigned lines", moved_and_set_lines_are_assigned_lines},
+         {"arranged new lines find what each finds, 4 lanes", [] { arranged_new_lines_find_what_each_finds(4); }},
+         {"arranged new lines find what each finds, 8 lanes", [] { arranged_new_lines_find_what_each_finds(8); }},
+         {"arranged new lines find what each finds, 16 lanes", [] { arranged_new_lines_find_what_each_finds(16); }}});
 }

@@ -26,6 +26,9 @@ namespace {
 // AVX-512's sixteen); the arrays are padded to a whole number of them.
 constexpr std::size_t widest_lanes = 32;
 
+// `lines` rounded up to a whole number of the widest groups.
+std::size_t whole_groups(std::size_t lines) { return (lines + widest_lanes - 1) / widest_lanes * widest_lanes; }
+
 using FourFloats = float __attribute__((vector_size(16)));
 using EightFloats = float __attribute__((vector_size(32)));
 using SixteenFloats = float __attribute__((vector_size(64)));
@@ -287,19 +290,50 @@ void PathLines::assign(std::span<const Particle> particles, const Box& box) {
     velocity_scale_ = power_of_two_below(fastest);
     largest_coordinate_ = box.side * position_scale_;
     largest_speed_ = 0.0;
-    const std::size_t padded = (count_ + widest_lanes - 1) / widest_lanes * widest_lanes;
-    for (std::vector<float>* component : {&x_, &y_, &vx_, &vy_}) component->assign(padded, 0.0f);
+    // Room for arrange()'s gap between the old lines and the new.
+    for (std::vector<float>* component : {&x_, &y_, &vx_, &vy_})
+        component->assign(whole_groups(count_) + widest_lanes, 0.0f);
     for (std::size_t i = 0; i < count_; ++i)
         set(static_cast<std::uint32_t>(i), particles[i].position, particles[i].velocity);
+    particle_in_slot_.clear();
 }
 
-void PathLines::set(std::uint32_t i, const Vec2& position, const Vec2& velocity) {
-    store_position(i, position);
+void PathLines::set(std::uint32_t i, const Vec2& position, const Vec2& velocity) { store_line(i, position, velocity); }
+
+void PathLines::store_line(std::uint32_t slot, const Vec2& position, const Vec2& velocity) {
+    store_position(slot, position);
     const double vx = velocity.x() * velocity_scale_;
     const double vy = velocity.y() * velocity_scale_;
     largest_speed_ = std::max({largest_speed_, std::abs(vx), std::abs(vy)});
-    vx_[i] = static_cast<float>(vx);
-    vy_[i] = static_cast<float>(vy);
+    vx_[slot] = static_cast<float>(vx);
+    vy_[slot] = static_cast<float>(vy);
+}
+
+void PathLines::arrange(std::span<const Particle> particles, std::span<const std::uint32_t> old_lines,
+                        std::span<const std::uint32_t> new_lines) {
+    if (old_lines.size() + new_lines.size() != count_ || particles.size() != count_)
+        throw std::invalid_argument("PathLines::arrange: every line once, old or new");
+    first_new_slot_ = whole_groups(old_lines.size());
+    arranged_end_ = whole_groups(first_new_slot_ + new_lines.size());
+    particle_in_slot_.resize(arranged_end_);
+    std::uint32_t slot = 0;
+    // Padding: lines at rest at the origin, no particle's.
+    const auto pad_to = [&](std::size_t end) {
+        for (; slot < end; ++slot) {
+            x_[slot] = y_[slot] = vx_[slot] = vy_[slot] = 0.0f;
+            particle_in_slot_[slot] = no_particle;
+        }
+    };
+    const auto place = [&](std::span<const std::uint32_t> lines) {
+        for (const std::uint32_t i : lines) {
+            store_line(slot, particles[i].position, particles[i].velocity);
+            particle_in_slot_[slot++] = i;
+        }
+    };
+    place(old_lines);
+    pad_to(first_new_slot_);
+    place(new_lines);
+    pad_to(arranged_end_);
 }
 
 LineTerms PathLines::terms() const {
@@ -310,6 +344,70 @@ LineTerms PathLines::terms() const {
 
 LineQuery PathLines::query_for(std::uint32_t i, const LineTerms& terms) const {
     return {{x_[i], y_[i], vx_[i], vy_[i]}, terms};
+}
+
+void PathLines::gather_slots(const LineQuery* queries, std::size_t count, std::size_t begin, std::size_t end,
+                             std::vector<std::uint32_t>* const* nears) const {
+    if (begin >= end) return;
+    const float* x = x_.data() + begin;
+    const float* y = y_.data() + begin;
+    const float* vx = vx_.data() + begin;
+    const float* vy = vy_.data() + begin;
+    const std::size_t length = end - begin;
+    std::size_t first[max_block];
+    for (std::size_t k = 0; k < count; ++k) first[k] = nears[k]->size();
+    static_assert(max_block == 4, "a case below for each block size");
+    switch (count) {
+    case 1:
+        switch (lanes_) {
+#if defined(__x86_64__)
+        case 16: gather_sixteen(x, y, vx, vy, length, queries[0], *nears[0]); break;
+        case 8: gather_eight(x, y, vx, vy, length, queries[0], *nears[0]); break;
+#endif
+        default: gather_four(x, y, vx, vy, length, queries[0], *nears[0]); break;
+        }
+        break;
+    case 2: gather_block<2>(lanes_, x, y, vx, vy, length, queries, nears); break;
+    case 3: gather_block<3>(lanes_, x, y, vx, vy, length, queries, nears); break;
+    case 4: gather_block<4>(lanes_, x, y, vx, vy, length, queries, nears); break;
+    default: return;
+    }
+    if (begin == 0) return;
+    for (std::size_t k = 0; k < count; ++k) {
+        for (auto j = nears[k]->begin() + static_cast<std::ptrdiff_t>(first[k]); j != nears[k]->end(); ++j)
+            *j += static_cast<std::uint32_t>(begin);
+    }
+}
+
+void PathLines::gather_new_block(std::size_t first, std::span<std::vector<std::uint32_t>* const> nears) const {
+    const std::size_t count = nears.size();
+    if (count == 0) return;
+    if (count > max_block) throw std::invalid_argument("PathLines::gather_new_block: at most four lines a block");
+    const std::size_t first_slot = first_new_slot_ + first;
+    if (first_slot + count > arranged_end_ || particle_in_slot_[first_slot + count - 1] == no_particle)
+        throw std::invalid_argument("PathLines::gather_new_block: no such new lines (arrange() first)");
+    LineQuery q[max_block];
+    std::size_t found_from[max_block];
+    const LineTerms block_terms = terms();
+    for (std::size_t k = 0; k < count; ++k) {
+        q[k] = query_for(static_cast<std::uint32_t>(first_slot + k), block_terms);
+        found_from[k] = nears[k]->size();
+    }
+    // The old lines, then the new ones from the block's group on.
+    gather_slots(q, count, 0, first_new_slot_, nears.data());
+    gather_slots(q, count, first_slot / widest_lanes * widest_lanes, arranged_end_, nears.data());
+    // Slots to particles, without the padding and the line itself.
+    for (std::size_t k = 0; k < count; ++k) {
+        std::vector<std::uint32_t>& near = *nears[k];
+        const std::uint32_t own = particle_in_slot_[first_slot + k];
+        std::size_t kept = found_from[k];
+        for (std::size_t n = found_from[k]; n < near.size(); ++n) {
+            const std::uint32_t particle = particle_in_slot_[near[n]];
+            near[kept] = particle;
+            kept += static_cast<std::size_t>(particle != no_particle && particle != own);
+        }
+        near.resize(kept);
+    }
 }
 
 void PathLines::gather_near_block(std::span<const std::uint32_t> lines,
@@ -334,9 +432,9 @@ void PathLines::gather_near_block(std::span<const std::uint32_t> lines,
     std::vector<std::uint32_t>* const* near = nears.data();
     static_assert(max_block == 4, "a case below for each block size");
     switch (lines.size()) {
-    case 2: gather_block<2>(lanes_, x, y, vx, vy, x_.size(), q, near); break;
-    case 3: gather_block<3>(lanes_, x, y, vx, vy, x_.size(), q, near); break;
-    case 4: gather_block<4>(lanes_, x, y, vx, vy, x_.size(), q, near); break;
+    case 2: gather_block<2>(lanes_, x, y, vx, vy, whole_groups(count_), q, near); break;
+    case 3: gather_block<3>(lanes_, x, y, vx, vy, whole_groups(count_), q, near); break;
+    case 4: gather_block<4>(lanes_, x, y, vx, vy, whole_groups(count_), q, near); break;
     default: return;  // no lines
     }
     for (std::size_t k = 0; k < lines.size(); ++k) drop_non_neighbours(lines[k], count_, *nears[k], first[k]);
@@ -347,10 +445,10 @@ void PathLines::gather_near(std::uint32_t i, std::vector<std::uint32_t>& near) c
     const std::size_t first = near.size();
     switch (lanes_) {
 #if defined(__x86_64__)
-    case 16: gather_sixteen(x_.data(), y_.data(), vx_.data(), vy_.data(), x_.size(), q, near); break;
-    case 8: gather_eight(x_.data(), y_.data(), vx_.data(), vy_.data(), x_.size(), q, near); break;
+    case 16: gather_sixteen(x_.data(), y_.data(), vx_.data(), vy_.data(), whole_groups(count_), q, near); break;
+    case 8: gather_eight(x_.data(), y_.data(), vx_.data(), vy_.data(), whole_groups(count_), q, near); break;
 #endif
-    default: gather_four(x_.data(), y_.data(), vx_.data(), vy_.data(), x_.size(), q, near); break;
+    default: gather_four(x_.data(), y_.data(), vx_.data(), vy_.data(), whole_groups(count_), q, near); break;
     }
     drop_non_neighbours(i, count_, near, first);
 }

@@ -79,12 +79,32 @@ public:
     void gather_near_block(std::span<const std::uint32_t> lines,
                            std::span<std::vector<std::uint32_t>* const> nears) const;
 
+    // The paths search's layout, made afresh from the particles at each
+    // micro-step (with the scales assign() chose): the lines of `old_lines`
+    // first, then, from a whole group of the widest lanes on, those of
+    // `new_lines`, so that gather_new_block() tests a new line against the
+    // old lines and only the new ones from its own group on: a pair of new
+    // lines once (twice within a group), instead of twice. Until assign(),
+    // only gather_new_block() reads the lines.
+    void arrange(std::span<const Particle> particles, std::span<const std::uint32_t> old_lines,
+                 std::span<const std::uint32_t> new_lines);
+    // gather_near_block() after arrange(), for the new lines new_lines[first]
+    // to new_lines[first + nears.size() - 1] (at most max_block): appends the
+    // particles whose lines may come near each, in no particular order; a
+    // pair of new lines may be found from either line or both.
+    void gather_new_block(std::size_t first, std::span<std::vector<std::uint32_t>* const> nears) const;
+
     [[nodiscard]] std::size_t size() const { return count_; }
 
 private:
     // The test's terms for the lines stored now (line_test.hpp).
     [[nodiscard]] LineTerms terms() const;
     [[nodiscard]] LineQuery query_for(std::uint32_t i, const LineTerms& terms) const;
+    // Appends, for each of `queries` lines, the slots of [begin, end) whose
+    // lines pass the test, as gather_near_block() does for all slots.
+    void gather_slots(const LineQuery* queries, std::size_t count, std::size_t begin, std::size_t end,
+                      std::vector<std::uint32_t>* const* nears) const;
+    void store_line(std::uint32_t slot, const Vec2& position, const Vec2& velocity);
     void store_position(std::uint32_t i, const Vec2& position) {
         const double x = position.x() * position_scale_;
         const double y = position.y() * position_scale_;
@@ -100,8 +120,15 @@ private:
     double reach_scaled_ = 0.0;        // contact_reach(box) times position_scale_
     double largest_coordinate_ = 0.0;  // scaled, of any line stored since assign()
     double largest_speed_ = 0.0;       // scaled, of any component stored since assign()
-    // Scaled, one array per component, padded to a whole number of lane groups.
+    // Scaled, one array per component, padded to a whole number of lane
+    // groups (with room for arrange()'s gap).
     std::vector<float> x_, y_, vx_, vy_;
+    // After arrange(): the particle in each slot (`no_particle` in the
+    // padding), the first new line's slot, and the end of the slots in use.
+    static constexpr std::uint32_t no_particle = 0xffffffff;
+    std::vector<std::uint32_t> particle_in_slot_;
+    std::size_t first_new_slot_ = 0;
+    std::size_t arranged_end_ = 0;
 };
 
 }  // namespace particlesim

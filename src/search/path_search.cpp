@@ -42,8 +42,7 @@ void PathSearch::find_pairs(const PairSearchInput& in, std::span<ThreadCandidate
     parallel_for_dynamic(workers, (new_count + block - 1) / block, 1, [&](std::int64_t b, std::size_t thread) {
         const auto first = static_cast<std::size_t>(b * block);
         const std::size_t count = std::min<std::size_t>(block, new_lines_.size() - first);
-        watch_near(in, std::span<const std::uint32_t>(new_lines_).subspan(first, count), reach,
-                   thread_watches_[thread]);
+        watch_near(in, first, count, reach, thread_watches_[thread]);
     });
     for (ThreadWatches& thread : thread_watches_) {
         watches_.insert(watches_.end(), thread.found.begin(), thread.found.end());
@@ -85,44 +84,52 @@ bool PathSearch::make_lines(const PairSearchInput& in) {
         }
         lines_made_ = true;
         lines_made_at_ = micro_steps_;
-        lines_.assign(in.particles, in.box);
-    } else {
-        lines_.move_each([&](std::uint32_t i) { return in.particles[i].position; });
+        lines_.assign(in.particles, in.box);  // the scales
     }
     // Written without a branch on whether a particle collided: about one in
     // four did, at random, in the default scene's steps.
     new_lines_.resize(count);
+    old_lines_.resize(count);
     std::size_t changed = 0;
+    std::size_t kept = 0;
     for (std::uint32_t i = 0; i < count; ++i) {
         const std::uint64_t collisions = collision_count(in.particles[i]);
+        const bool is_new = afresh || collisions != collisions_[i];
         new_lines_[changed] = i;
-        changed += static_cast<std::size_t>(afresh || collisions != collisions_[i]);
+        old_lines_[kept] = i;
+        changed += static_cast<std::size_t>(is_new);
+        kept += static_cast<std::size_t>(!is_new);
         collisions_[i] = collisions;
     }
     new_lines_.resize(changed);
+    old_lines_.resize(kept);
     for (const std::uint32_t i : new_lines_) {
         ++serial_[i];
         new_line_[i] = 1;
-        if (!afresh) lines_.set(i, in.particles[i].position, in.particles[i].velocity);
     }
+    // Every line through its particle's position now: the old lines moved
+    // along, the new ones made.
+    lines_.arrange(in.particles, old_lines_, new_lines_);
     return afresh;
 }
 
-// The pairs of a block of new lines (at most PathLines::max_block), each
-// line's near ones found in one pass over the lines.
-void PathSearch::watch_near(const PairSearchInput& in, std::span<const std::uint32_t> lines, double reach,
+// The pairs of a block of new lines, new_lines_[first] on (at most
+// PathLines::max_block), each line's near ones found in one pass over the
+// lines.
+void PathSearch::watch_near(const PairSearchInput& in, std::size_t first, std::size_t count, double reach,
                             ThreadWatches& out) const {
     std::array<std::vector<std::uint32_t>*, PathLines::max_block> nears{};
-    for (std::size_t k = 0; k < lines.size(); ++k) {
+    for (std::size_t k = 0; k < count; ++k) {
         nears[k] = &out.near[k];
         nears[k]->clear();
     }
-    lines_.gather_near_block(lines, std::span(nears).first(lines.size()));
-    for (std::size_t k = 0; k < lines.size(); ++k) watch_pairs(in, lines[k], out.near[k], reach, out);
+    lines_.gather_new_block(first, std::span(nears).first(count));
+    for (std::size_t k = 0; k < count; ++k) watch_pairs(in, new_lines_[first + k], out.near[k], reach, out);
 }
 
 // Watches every pair of i's new line with a line of `near` that comes within
-// `reach` of it from now on; a pair of two new lines once, from the lower index.
+// `reach` of it from now on; a pair of two new lines once: from the lower
+// index where both found it (PathLines::gather_new_block()).
 void PathSearch::watch_pairs(const PairSearchInput& in, std::uint32_t i, std::span<const std::uint32_t> near,
                              double reach, ThreadWatches& out) const {
     const auto now = static_cast<double>(micro_steps_);

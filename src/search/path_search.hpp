@@ -60,7 +60,7 @@ private:
 
     // Whether every line was made afresh.
     bool make_lines(const PairSearchInput& in);
-    void watch_near(const PairSearchInput& in, std::span<const std::uint32_t> lines, double reach,
+    void watch_near(const PairSearchInput& in, std::size_t first, std::size_t count, double reach,
                     ThreadWatches& out) const;
     void watch_pairs(const PairSearchInput& in, std::uint32_t i, std::span<const std::uint32_t> near, double reach,
                      ThreadWatches& out) const;
@@ -73,7 +73,8 @@ private:
     std::vector<std::uint64_t> collisions_;  // by particle: its collision count when its line was made
     std::vector<std::uint32_t> serial_;      // by particle: counts its lines
     std::vector<std::uint8_t> new_line_;     // by particle: its line was made in this micro-step
-    std::vector<std::uint32_t> new_lines_;   // those particles
+    std::vector<std::uint32_t> new_lines_;   // those particles, in increasing order
+    std::vector<std::uint32_t> old_lines_;   // the others
     std::vector<Watch> watches_;
     std::vector<ThreadWatches> thread_watches_;
 };
