@@ -324,16 +324,40 @@ void PathLines::arrange(std::span<const Particle> particles, std::span<const std
             particle_in_slot_[slot] = no_particle;
         }
     };
+    // store_line() written out, on locals: the compiler must otherwise
+    // assume that each float stored may change the scales and the largest
+    // values, and reads them again for every line.
+    const double position_scale = position_scale_;
+    const double velocity_scale = velocity_scale_;
+    double largest_coordinate = largest_coordinate_;
+    double largest_speed = largest_speed_;
+    float* const x = x_.data();
+    float* const y = y_.data();
+    float* const vx = vx_.data();
+    float* const vy = vy_.data();
+    std::uint32_t* const particle_in_slot = particle_in_slot_.data();
     const auto place = [&](std::span<const std::uint32_t> lines) {
         for (const std::uint32_t i : lines) {
-            store_line(slot, particles[i].position, particles[i].velocity);
-            particle_in_slot_[slot++] = i;
+            const Particle& p = particles[i];
+            const double px = p.position.x() * position_scale;
+            const double py = p.position.y() * position_scale;
+            const double pvx = p.velocity.x() * velocity_scale;
+            const double pvy = p.velocity.y() * velocity_scale;
+            largest_coordinate = std::max(largest_coordinate, std::max(std::abs(px), std::abs(py)));
+            largest_speed = std::max({largest_speed, std::abs(pvx), std::abs(pvy)});
+            x[slot] = static_cast<float>(px);
+            y[slot] = static_cast<float>(py);
+            vx[slot] = static_cast<float>(pvx);
+            vy[slot] = static_cast<float>(pvy);
+            particle_in_slot[slot++] = i;
         }
     };
     place(old_lines);
     pad_to(first_new_slot_);
     place(new_lines);
     pad_to(arranged_end_);
+    largest_coordinate_ = largest_coordinate;
+    largest_speed_ = largest_speed;
 }
 
 LineTerms PathLines::terms() const {
