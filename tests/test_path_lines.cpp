@@ -13,6 +13,7 @@
 #include <cmath>
 #include <cstdio>
 #include <span>
+#include <stdexcept>
 #include <vector>
 
 using namespace particlesim;
@@ -246,6 +247,30 @@ void arranged_new_lines_find_what_each_finds(int lanes) {
         }
     }
     CHECK(found_pairs > 1000);
+    // A block past the new lines, or after assign() made the slots
+    // particles again, is refused.
+    SplitMix64 rng_misuse(18);
+    const Trial t = make_trial(rng_misuse, 0, -2, 3.0);
+    PathLines lines(lanes);
+    lines.assign(t.particles, t.box);
+    const std::vector<std::uint32_t> old_lines{0, 1, 2};
+    std::vector<std::uint32_t> new_lines;
+    for (std::uint32_t i = 3; i < t.particles.size(); ++i) new_lines.push_back(i);
+    lines.arrange(t.particles, old_lines, new_lines);
+    std::vector<std::uint32_t> near;
+    std::array<std::vector<std::uint32_t>*, 1> one{&near};
+    const auto refused = [&](std::size_t first) {
+        try {
+            lines.gather_new_block(first, one);
+        } catch (const std::invalid_argument&) {
+            return true;
+        }
+        return false;
+    };
+    CHECK(!refused(new_lines.size() - 1));
+    CHECK(refused(new_lines.size()));
+    lines.assign(t.particles, t.box);
+    CHECK(refused(0));
 }
 
 }  // namespace

@@ -296,6 +296,8 @@ void PathLines::assign(std::span<const Particle> particles, const Box& box) {
     for (std::size_t i = 0; i < count_; ++i)
         set(static_cast<std::uint32_t>(i), particles[i].position, particles[i].velocity);
     particle_in_slot_.clear();
+    first_new_slot_ = 0;
+    arranged_end_ = 0;
 }
 
 void PathLines::set(std::uint32_t i, const Vec2& position, const Vec2& velocity) { store_line(i, position, velocity); }
@@ -442,6 +444,7 @@ void PathLines::gather_near_block(std::span<const std::uint32_t> lines,
     }
     if (lines.size() > max_block)
         throw std::invalid_argument("PathLines::gather_near_block: at most four lines a block");
+    PARTICLESIM_ASSERT(particle_in_slot_.empty(), "lines in slot order: not arranged since assign()");
     LineQuery q[max_block];
     std::size_t first[max_block];
     const LineTerms block_terms = terms();
@@ -465,6 +468,7 @@ void PathLines::gather_near_block(std::span<const std::uint32_t> lines,
 }
 
 void PathLines::gather_near(std::uint32_t i, std::vector<std::uint32_t>& near) const {
+    PARTICLESIM_ASSERT(particle_in_slot_.empty(), "lines in slot order: not arranged since assign()");
     const LineQuery q = query_for(i, terms());
     const std::size_t first = near.size();
     switch (lanes_) {

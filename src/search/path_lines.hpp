@@ -84,8 +84,9 @@ public:
     // first, then, from a whole group of the widest lanes on, those of
     // `new_lines`, so that gather_new_block() tests a new line against the
     // old lines and only the new ones from its own group on: a pair of new
-    // lines once (twice within a group), instead of twice. Until assign(),
-    // only gather_new_block() reads the lines.
+    // lines once (twice within a group), instead of twice. From then until
+    // the next assign(), slots are no longer particles: only arrange() and
+    // gather_new_block() may be called.
     void arrange(std::span<const Particle> particles, std::span<const std::uint32_t> old_lines,
                  std::span<const std::uint32_t> new_lines);
     // gather_near_block() after arrange(), for the new lines new_lines[first]
