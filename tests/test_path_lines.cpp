@@ -192,7 +192,7 @@ void arranged_new_lines_find_what_each_finds(int lanes) {
     }
     SplitMix64 rng(17);
     long found_pairs = 0;
-    for (int trial = 0; trial < 400; ++trial) {
+    for (int trial = 0; trial < 200; ++trial) {
         Trial t = make_trial(rng, -20 + static_cast<int>(rng.next() % 41), -2, 3.0);
         // More particles than a group, so that blocks start inside groups.
         for (int copy = 0; copy < 2; ++copy) {
