@@ -288,8 +288,7 @@ void PathLines::assign(std::span<const Particle> particles, const Box& box) {
     position_scale_ = side_scale * std::min(0x1p40, (1.0 - 0x1p-20) / (std::sqrt(1.3) * reach * side_scale));
     reach_scaled_ = reach * position_scale_;
     velocity_scale_ = power_of_two_below(fastest);
-    largest_coordinate_ = box.side * position_scale_;
-    largest_speed_ = 0.0;
+    largest_ = {box.side * position_scale_, 0.0};
     // Room for arrange()'s gap between the old lines and the new.
     for (std::vector<float>* component : {&x_, &y_, &vx_, &vy_})
         component->assign(whole_groups(count_) + widest_lanes, 0.0f);
@@ -300,15 +299,8 @@ void PathLines::assign(std::span<const Particle> particles, const Box& box) {
     arranged_end_ = 0;
 }
 
-void PathLines::set(std::uint32_t i, const Vec2& position, const Vec2& velocity) { store_line(i, position, velocity); }
-
-void PathLines::store_line(std::uint32_t slot, const Vec2& position, const Vec2& velocity) {
-    store_position(slot, position);
-    const double vx = velocity.x() * velocity_scale_;
-    const double vy = velocity.y() * velocity_scale_;
-    largest_speed_ = std::max({largest_speed_, std::abs(vx), std::abs(vy)});
-    vx_[slot] = static_cast<float>(vx);
-    vy_[slot] = static_cast<float>(vy);
+void PathLines::set(std::uint32_t i, const Vec2& position, const Vec2& velocity) {
+    store_line(i, position, velocity, largest_);
 }
 
 void PathLines::arrange(std::span<const Particle> particles, std::span<const std::uint32_t> old_lines,
@@ -326,44 +318,22 @@ void PathLines::arrange(std::span<const Particle> particles, std::span<const std
             particle_in_slot_[slot] = no_particle;
         }
     };
-    // store_line() written out, on locals: the compiler must otherwise
-    // assume that each float stored may change the scales and the largest
-    // values, and reads them again for every line.
-    const double position_scale = position_scale_;
-    const double velocity_scale = velocity_scale_;
-    double largest_coordinate = largest_coordinate_;
-    double largest_speed = largest_speed_;
-    float* const x = x_.data();
-    float* const y = y_.data();
-    float* const vx = vx_.data();
-    float* const vy = vy_.data();
-    std::uint32_t* const particle_in_slot = particle_in_slot_.data();
+    Largest largest = largest_;
     const auto place = [&](std::span<const std::uint32_t> lines) {
         for (const std::uint32_t i : lines) {
-            const Particle& p = particles[i];
-            const double px = p.position.x() * position_scale;
-            const double py = p.position.y() * position_scale;
-            const double pvx = p.velocity.x() * velocity_scale;
-            const double pvy = p.velocity.y() * velocity_scale;
-            largest_coordinate = std::max(largest_coordinate, std::max(std::abs(px), std::abs(py)));
-            largest_speed = std::max({largest_speed, std::abs(pvx), std::abs(pvy)});
-            x[slot] = static_cast<float>(px);
-            y[slot] = static_cast<float>(py);
-            vx[slot] = static_cast<float>(pvx);
-            vy[slot] = static_cast<float>(pvy);
-            particle_in_slot[slot++] = i;
+            store_line(slot, particles[i].position, particles[i].velocity, largest);
+            particle_in_slot_[slot++] = i;
         }
     };
     place(old_lines);
     pad_to(first_new_slot_);
     place(new_lines);
     pad_to(arranged_end_);
-    largest_coordinate_ = largest_coordinate;
-    largest_speed_ = largest_speed;
+    largest_ = largest;
 }
 
 LineTerms PathLines::terms() const {
-    const LineTerms terms = line_test_terms(largest_coordinate_, largest_speed_, reach_scaled_);
+    const LineTerms terms = line_test_terms(largest_.coordinate, largest_.speed, reach_scaled_);
     PARTICLESIM_ASSERT(terms.reach_term <= 1.0f, "the lines' positions are scaled for a factor of |dv|^2 of 1");
     return terms;
 }
@@ -438,10 +408,6 @@ void PathLines::gather_new_block(std::size_t first, std::span<std::vector<std::u
 
 void PathLines::gather_near_block(std::span<const std::uint32_t> lines,
                                   std::span<std::vector<std::uint32_t>* const> nears) const {
-    if (lines.size() == 1) {
-        gather_near(lines[0], *nears[0]);
-        return;
-    }
     if (lines.size() > max_block)
         throw std::invalid_argument("PathLines::gather_near_block: at most four lines a block");
     PARTICLESIM_ASSERT(particle_in_slot_.empty(), "lines in slot order: not arranged since assign()");
@@ -452,33 +418,13 @@ void PathLines::gather_near_block(std::span<const std::uint32_t> lines,
         q[k] = query_for(lines[k], block_terms);
         first[k] = nears[k]->size();
     }
-    const float* x = x_.data();
-    const float* y = y_.data();
-    const float* vx = vx_.data();
-    const float* vy = vy_.data();
-    std::vector<std::uint32_t>* const* near = nears.data();
-    static_assert(max_block == 4, "a case below for each block size");
-    switch (lines.size()) {
-    case 2: gather_block<2>(lanes_, x, y, vx, vy, whole_groups(count_), q, near); break;
-    case 3: gather_block<3>(lanes_, x, y, vx, vy, whole_groups(count_), q, near); break;
-    case 4: gather_block<4>(lanes_, x, y, vx, vy, whole_groups(count_), q, near); break;
-    default: return;  // no lines
-    }
+    gather_slots(q, lines.size(), 0, whole_groups(count_), nears.data());
     for (std::size_t k = 0; k < lines.size(); ++k) drop_non_neighbours(lines[k], count_, *nears[k], first[k]);
 }
 
 void PathLines::gather_near(std::uint32_t i, std::vector<std::uint32_t>& near) const {
-    PARTICLESIM_ASSERT(particle_in_slot_.empty(), "lines in slot order: not arranged since assign()");
-    const LineQuery q = query_for(i, terms());
-    const std::size_t first = near.size();
-    switch (lanes_) {
-#if defined(__x86_64__)
-    case 16: gather_sixteen(x_.data(), y_.data(), vx_.data(), vy_.data(), whole_groups(count_), q, near); break;
-    case 8: gather_eight(x_.data(), y_.data(), vx_.data(), vy_.data(), whole_groups(count_), q, near); break;
-#endif
-    default: gather_four(x_.data(), y_.data(), vx_.data(), vy_.data(), whole_groups(count_), q, near); break;
-    }
-    drop_non_neighbours(i, count_, near, first);
+    std::vector<std::uint32_t>* const nears[1] = {&near};
+    gather_near_block(std::span(&i, 1), nears);
 }
 
 }  // namespace particlesim

@@ -62,7 +62,9 @@ public:
     // the velocities stay (the particles moved along their lines).
     template <typename PositionOf>
     void move_each(PositionOf&& position_of) {
-        for (std::uint32_t i = 0; i < count_; ++i) store_position(i, position_of(i));
+        Largest largest = largest_;
+        for (std::uint32_t i = 0; i < count_; ++i) store_position(i, position_of(i), largest);
+        largest_ = largest;
     }
 
     // Replaces one line: `position` is the particle's position at the epoch
@@ -105,22 +107,36 @@ private:
     // lines pass the test, as gather_near_block() does for all slots.
     void gather_slots(const LineQuery* queries, std::size_t count, std::size_t begin, std::size_t end,
                       std::vector<std::uint32_t>* const* nears) const;
-    void store_line(std::uint32_t slot, const Vec2& position, const Vec2& velocity);
-    void store_position(std::uint32_t i, const Vec2& position) {
+    // The largest scaled coordinate and velocity component of any line
+    // stored since assign(). The stores below update a copy that loops keep
+    // in registers (held in the object, it was written back at every line).
+    struct Largest {
+        double coordinate = 0.0;
+        double speed = 0.0;
+    };
+    // A line scaled into slot `slot`, or only its point.
+    void store_line(std::uint32_t slot, const Vec2& position, const Vec2& velocity, Largest& largest) {
+        store_position(slot, position, largest);
+        const double vx = velocity.x() * velocity_scale_;
+        const double vy = velocity.y() * velocity_scale_;
+        largest.speed = std::max({largest.speed, std::abs(vx), std::abs(vy)});
+        vx_[slot] = static_cast<float>(vx);
+        vy_[slot] = static_cast<float>(vy);
+    }
+    void store_position(std::uint32_t slot, const Vec2& position, Largest& largest) {
         const double x = position.x() * position_scale_;
         const double y = position.y() * position_scale_;
-        largest_coordinate_ = std::max(largest_coordinate_, std::max(std::abs(x), std::abs(y)));
-        x_[i] = static_cast<float>(x);
-        y_[i] = static_cast<float>(y);
+        largest.coordinate = std::max(largest.coordinate, std::max(std::abs(x), std::abs(y)));
+        x_[slot] = static_cast<float>(x);
+        y_[slot] = static_cast<float>(y);
     }
 
     int lanes_ = 4;
     std::size_t count_ = 0;
-    double position_scale_ = 1.0;      // the reach scaled to about 1
-    double velocity_scale_ = 1.0;      // a power of two
-    double reach_scaled_ = 0.0;        // contact_reach(box) times position_scale_
-    double largest_coordinate_ = 0.0;  // scaled, of any line stored since assign()
-    double largest_speed_ = 0.0;       // scaled, of any component stored since assign()
+    double position_scale_ = 1.0;  // the reach scaled to about 1
+    double velocity_scale_ = 1.0;  // a power of two
+    double reach_scaled_ = 0.0;    // contact_reach(box) times position_scale_
+    Largest largest_;
     // Scaled, one array per component, padded to a whole number of lane
     // groups (with room for arrange()'s gap).
     std::vector<float> x_, y_, vx_, vy_;
