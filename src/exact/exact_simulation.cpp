@@ -448,41 +448,59 @@ private:
     // the particle its cell, the cell its members), so the event rate fell
     // with N. The queue already knows the next events, so each
     // event fetches, in four stages, what those a few buckets behind it will
-    // read: their queue entries; their particles; partners and the
+    // read: their queue entries; their particles and pair partners; the
     // heads of the cells they will search; the first member of each of those
-    // cells. Each stage reads only what the stage before fetched. Prefetches
-    // are hints: a queue that changes meanwhile costs a wasted fetch, never a
-    // different event.
+    // cells. A collision searches around both partners, so a pair event
+    // fetches both neighbourhoods. Each stage reads only what the stage
+    // before fetched. Prefetches are hints: a queue that changes meanwhile
+    // costs a wasted fetch, never a different event.
     void prefetch_coming_events() {
         ladder_queue_.for_each_coming(look_entries_, [&](std::uint32_t o) { ladder_queue_.prefetch_entry(o); });
-        ladder_queue_.for_each_coming(look_particles_, [&](std::uint32_t o) { prefetch_particle(o); });
-        ladder_queue_.for_each_coming(look_heads_, [&](std::uint32_t o) {
-            const Event& event = ladder_queue_.entry(o);
-            if (event.kind == EventKind::pair) {
-                const std::uint32_t partner = event.i ^ event.j ^ o;  // o is one of the two
+        ladder_queue_.for_each_coming(look_particles_, [&](std::uint32_t o) {
+            prefetch_particle(o);
+            if (const std::uint32_t partner = pair_partner(o); partner != BucketLists::none) {
                 ladder_queue_.prefetch_entry(partner);
                 prefetch_particle(partner);
             }
-            cells_.prefetch_heads_around(searched_cell(event, o));
+        });
+        ladder_queue_.for_each_coming(look_heads_, [&](std::uint32_t o) {
+            for_each_searched_cell(o, [&](std::uint32_t cell) { cells_.prefetch_heads_around(cell); });
         });
         ladder_queue_.for_each_coming(look_members_, [&](std::uint32_t o) {
-            cells_.for_each_first_member_around(searched_cell(ladder_queue_.entry(o), o), [&](std::uint32_t first) {
-                const std::uint32_t j = std::min(first, count() - 1);  // no branch: `none` fetches the last
-                prefetch(&bodies_[j]);
-                cells_.prefetch_links(j);
+            for_each_searched_cell(o, [&](std::uint32_t cell) {
+                cells_.for_each_first_member_around(cell, [&](std::uint32_t first) {
+                    const std::uint32_t j = std::min(first, count() - 1);  // no branch: `none` fetches the last
+                    prefetch(&bodies_[j]);
+                    cells_.prefetch_links(j);
+                });
             });
         });
+    }
+
+    // The other particle of the owner's pair event, or none.
+    std::uint32_t pair_partner(std::uint32_t owner) const {
+        const Event& event = ladder_queue_.entry(owner);
+        return event.kind == EventKind::pair ? event.i ^ event.j ^ owner
+                                             : BucketLists::none;  // owner is one of the two
+    }
+
+    // visit(cell) for each cell around which the owner's event will search
+    // for partners: the cell entered, or the owner's, and its pair partner's.
+    template <typename Visit>
+    void for_each_searched_cell(std::uint32_t owner, Visit&& visit) const {
+        const Event& event = ladder_queue_.entry(owner);
+        if (event.kind == EventKind::cell_crossing) {
+            visit(event.j);
+            return;
+        }
+        visit(cells_.cell_of_particle(owner));
+        if (event.kind == EventKind::pair) visit(cells_.cell_of_particle(event.i ^ event.j ^ owner));
     }
 
     void prefetch_particle(std::uint32_t i) const {
         prefetch(&bodies_[i]);
         prefetch(&plans_[i]);
         cells_.prefetch_links(i);
-    }
-
-    // The cell around which the owner's event will search for partners.
-    std::uint32_t searched_cell(const Event& event, std::uint32_t owner) const {
-        return event.kind == EventKind::cell_crossing ? event.j : cells_.cell_of_particle(owner);
     }
 
     // Rounding may put a prediction a hair before the present; time must
@@ -668,13 +686,22 @@ private:
     }
 
     // Puts the first of the particle's three predictions in the queue.
+    // At equal times the kinds decide (walls, then pairs, then crossings),
+    // so three comparisons of times choose, and only the chosen event is
+    // built: building all three on the stack and copying the first had its
+    // loads wait for the stores of the parts.
     template <typename Queue>
     void reschedule(Queue& queue, std::uint32_t i) {
-        Event next{bodies_[i].wall_time, EventKind::wall, i, 0};
-        const Event crossing{plans_[i].crossing.time, EventKind::cell_crossing, i, plans_[i].crossing.cell};
-        if (crossing < next) next = crossing;
-        if (plans_[i].pair.event < next) next = plans_[i].pair.event;
-        queue.replace(i, next);
+        const double wall_time = bodies_[i].wall_time;
+        const Crossing& crossing = plans_[i].crossing;
+        const Event& pair = plans_[i].pair.event;
+        if (pair.time < wall_time && pair.time <= crossing.time) {
+            queue.replace(i, pair);
+        } else if (crossing.time < wall_time) {
+            queue.replace(i, Event{crossing.time, EventKind::cell_crossing, i, crossing.cell});
+        } else {
+            queue.replace(i, Event{wall_time, EventKind::wall, i, 0});
+        }
     }
     // The same, outside the event loop.
     void reschedule(std::uint32_t i) {
