@@ -24,8 +24,9 @@ public:
     [[nodiscard]] std::uint32_t bucket_of(std::uint32_t item) const { return links_[item].bucket; }
     [[nodiscard]] std::uint32_t first(std::uint32_t bucket) const { return head_[bucket]; }
     [[nodiscard]] std::uint32_t next(std::uint32_t item) const { return links_[item].next; }
+    [[nodiscard]] std::uint32_t previous(std::uint32_t item) const { return links_[item].previous; }
 
-    void prefetch_links(std::uint32_t item) const { prefetch(&links_[slot(item)]); }
+    void prefetch_links(std::uint32_t item) const { prefetch(&links_[slot(item)]); }  // `none`: the spare slot
     void prefetch_head(std::uint32_t bucket) const { prefetch(&head_[bucket]); }
 
     // Without branches on whether a neighbour exists (in a queue or a cell

@@ -36,7 +36,25 @@ public:
             for (std::uint32_t c = start; c < start + 3; ++c) visit(members_.first(c));
         });
     }
+    // The same for three cells in a line, `middle` and its neighbours
+    // `stride` away (1 along a row, the side along a column), clamped into
+    // the grid: the cells a crossing searches.
+    void prefetch_heads_of_three(std::int64_t middle, std::int64_t stride) const {
+        for_each_of_three(middle, stride, [&](std::uint32_t cell) { members_.prefetch_head(cell); });
+    }
+    template <typename Visit>
+    void for_each_first_member_of_three(std::int64_t middle, std::int64_t stride, Visit&& visit) const {
+        for_each_of_three(middle, stride, [&](std::uint32_t cell) { visit(members_.first(cell)); });
+    }
+    void prefetch_head(std::uint32_t cell) const { members_.prefetch_head(cell); }
+    [[nodiscard]] std::uint32_t first_member(std::uint32_t cell) const { return members_.first(cell); }
     void prefetch_links(std::uint32_t particle) const { members_.prefetch_links(particle); }
+    // The links of the particles before and after it in its cell's list,
+    // which moving it rewrites (its own links fetched already).
+    void prefetch_list_neighbours(std::uint32_t particle) const {
+        members_.prefetch_links(members_.next(particle));
+        members_.prefetch_links(members_.previous(particle));
+    }
 
     void insert(std::uint32_t particle, std::uint32_t cell) { members_.insert(particle, cell); }
     void move(std::uint32_t particle, std::uint32_t cell) { members_.move(particle, cell); }
@@ -67,6 +85,14 @@ public:
     }
 
 private:
+    template <typename Visit>
+    void for_each_of_three(std::int64_t middle, std::int64_t stride, Visit&& visit) const {
+        const auto last = static_cast<std::int64_t>(grid_.cell_count()) - 1;
+        for (std::int64_t k = -1; k <= 1; ++k) {
+            visit(static_cast<std::uint32_t>(std::clamp(middle + k * stride, std::int64_t{0}, last)));
+        }
+    }
+
     template <typename Visit>
     void for_each_run_around(std::uint32_t cell, Visit&& visit) const {
         const auto side = static_cast<std::int64_t>(grid_.per_side());

@@ -450,10 +450,11 @@ private:
     // event fetches, in four stages, what those a few buckets behind it will
     // read: their queue entries; their particles and pair partners; the
     // heads of the cells they will search; the first member of each of those
-    // cells. A collision searches around both partners, so a pair event
-    // fetches both neighbourhoods. Each stage reads only what the stage
-    // before fetched. Prefetches are hints: a queue that changes meanwhile
-    // costs a wasted fetch, never a different event.
+    // cells. A collision searches around both partners; a crossing in a
+    // walled box only the three cells that become neighbours, and moves the
+    // particle between two cells' lists. Each stage reads only what the
+    // stage before fetched. Prefetches are hints: a queue that changes
+    // meanwhile costs a wasted fetch, never a different event.
     void prefetch_coming_events() {
         ladder_queue_.for_each_coming(look_entries_, [&](std::uint32_t o) { ladder_queue_.prefetch_entry(o); });
         ladder_queue_.for_each_coming(look_particles_, [&](std::uint32_t o) {
@@ -464,17 +465,47 @@ private:
             }
         });
         ladder_queue_.for_each_coming(look_heads_, [&](std::uint32_t o) {
+            const Event& event = ladder_queue_.entry(o);
+            if (const std::optional<CellLine> line = walled_crossing_line(event, o)) {
+                cells_.prefetch_heads_of_three(line->middle, line->stride);
+                cells_.prefetch_head(event.j);
+                cells_.prefetch_head(cells_.cell_of_particle(o));
+                cells_.prefetch_list_neighbours(o);
+                return;
+            }
             for_each_searched_cell(o, [&](std::uint32_t cell) { cells_.prefetch_heads_around(cell); });
         });
         ladder_queue_.for_each_coming(look_members_, [&](std::uint32_t o) {
-            for_each_searched_cell(o, [&](std::uint32_t cell) {
-                cells_.for_each_first_member_around(cell, [&](std::uint32_t first) {
-                    const std::uint32_t j = std::min(first, count() - 1);  // no branch: `none` fetches the last
-                    prefetch(&bodies_[j]);
-                    cells_.prefetch_links(j);
-                });
-            });
+            const auto fetch_member = [&](std::uint32_t first) {
+                const std::uint32_t j = std::min(first, count() - 1);  // no branch: `none` fetches the last
+                prefetch(&bodies_[j]);
+                cells_.prefetch_links(j);
+            };
+            const Event& event = ladder_queue_.entry(o);
+            if (const std::optional<CellLine> line = walled_crossing_line(event, o)) {
+                cells_.for_each_first_member_of_three(line->middle, line->stride, fetch_member);
+                cells_.prefetch_links(cells_.first_member(event.j));
+                return;
+            }
+            for_each_searched_cell(
+                o, [&](std::uint32_t cell) { cells_.for_each_first_member_around(cell, fetch_member); });
         });
+    }
+
+    // Three cells in a line: `middle` and the cells `stride` either side.
+    struct CellLine {
+        std::int64_t middle;
+        std::int64_t stride;
+    };
+    // For a crossing in a walled box, the three cells that become
+    // neighbours (as cross_cell() finds them): one further along the step
+    // from the cell entered, and across it.
+    std::optional<CellLine> walled_crossing_line(const Event& event, std::uint32_t owner) const {
+        if (periodic_ || event.kind != EventKind::cell_crossing) return std::nullopt;
+        const auto entered = static_cast<std::int64_t>(event.j);
+        const std::int64_t step = entered - static_cast<std::int64_t>(cells_.cell_of_particle(owner));
+        const bool along_row = step == 1 || step == -1;
+        return CellLine{entered + step, along_row ? cells_.grid().per_side() : 1};
     }
 
     // The other particle of the owner's pair event, or none.
