@@ -60,6 +60,26 @@ public:
         for (std::uint32_t item = 0; item < items_; ++item) insert(item, bucket_for(item));
     }
 
+    // Writes the bucket's items but `skipped` to out[k], out[k + 1], ...
+    // and returns the k after the last; out needs room for them and one
+    // more. The first two places are written whether or not an item fills
+    // them (each counted only when one does), so that the buckets of a
+    // search, mostly empty or of one item at random, cost no mispredicted
+    // branch; the spare slot's links stand for `none`'s.
+    std::size_t gather(std::uint32_t bucket, std::uint32_t skipped, std::uint32_t* out, std::size_t k) const {
+        std::uint32_t item = head_[bucket];
+        out[k] = item;
+        k += static_cast<std::size_t>((item != none) & (item != skipped));
+        item = next_or_none(item);
+        out[k] = item;
+        k += static_cast<std::size_t>((item != none) & (item != skipped));
+        for (item = next_or_none(item); item != none; item = links_[item].next) {
+            out[k] = item;
+            k += static_cast<std::size_t>(item != skipped);
+        }
+        return k;
+    }
+
     // visit(item) for every item in the bucket.
     template <typename Visit>
     void for_each_in(std::uint32_t bucket, Visit&& visit) const {
@@ -67,6 +87,13 @@ public:
     }
 
 private:
+    // The next item in the item's bucket; none after none (the spare
+    // slot's own links are written over by insert() and remove()).
+    [[nodiscard]] std::uint32_t next_or_none(std::uint32_t item) const {
+        const std::uint32_t missing = item == none ? none : 0U;  // a mask: no branch
+        return links_[slot(item)].next | missing;
+    }
+
     // The item's own slot, or the spare one for `none` (above every item).
     [[nodiscard]] std::size_t slot(std::uint32_t item) const { return std::min<std::size_t>(item, items_); }
 

@@ -68,6 +68,20 @@ public:
         members_.for_each_in(grid_.cell_at(column, row), visit);
     }
 
+    // BucketLists::gather() for the cell at (column, row), if it exists.
+    std::size_t gather_in(int column, int row, std::uint32_t skipped, std::uint32_t* out, std::size_t k) const {
+        const auto side = static_cast<unsigned>(grid_.per_side());
+        if ((static_cast<unsigned>(column) >= side) | (static_cast<unsigned>(row) >= side)) return k;
+        return members_.gather(grid_.cell_at(column, row), skipped, out, k);
+    }
+    // The same in a periodic grid: indices one beyond an edge wrap around.
+    std::size_t gather_in_wrapped(int column, int row, std::uint32_t skipped, std::uint32_t* out, std::size_t k) const {
+        const int side = grid_.per_side();
+        column += column < 0 ? side : column >= side ? -side : 0;
+        row += row < 0 ? side : row >= side ? -side : 0;
+        return members_.gather(grid_.cell_at(column, row), skipped, out, k);
+    }
+
     // The same in a periodic grid: indices one beyond an edge wrap around.
     template <typename Visit>
     void for_each_in_wrapped(int column, int row, Visit&& visit) const {

@@ -351,6 +351,7 @@ private:
           cells_(neighbour_grid(world, particles.size(), options), particles.size()),
           plans_(particles.size()),
           snapshot_(std::move(particles)),
+          gathered_(count() + 1),
           look_ahead_(options.look_ahead.value_or(count() >= exact_tuning::look_ahead_from) && !by_lines()),
           linked_queue_(look_ahead_ ? 0 : count(), Event{never, EventKind::cell_crossing, 0, 0}),
           ladder_queue_(look_ahead_ ? count() : 0, Event{never, EventKind::cell_crossing, 0, 0}),
@@ -392,11 +393,6 @@ private:
                 }
             }
         }
-    }
-
-    template <typename Visit>
-    void for_each_neighbour(std::uint32_t i, Visit&& visit) const {
-        for_each_neighbour(cells_, i, periodic_, visit);
     }
 
     // In a periodic box, a separation made the nearest image's. A particle's
@@ -664,33 +660,37 @@ private:
         if (event < plans_[i].pair.event) plans_[i].pair = {event, j, version(j)};
     }
 
-    // consider_pair(i, j) for every j that for_each_candidate(visit) visits,
-    // two at a time. The prediction kept is the earliest, whatever the order.
-    template <typename ForEachCandidate>
-    void consider_pairs(std::uint32_t i, ForEachCandidate&& for_each_candidate) {
-        std::uint32_t waiting = BucketLists::none;
-        for_each_candidate([&](std::uint32_t j) {
-            if (waiting == BucketLists::none) {
-                waiting = j;
-                return;
-            }
-            consider_two_pairs(i, waiting, j);
-            waiting = BucketLists::none;
-        });
-        if (waiting != BucketLists::none) consider_pair(i, waiting);
+    // consider_pair(i, j) for each of the n candidates j, two at a time. The
+    // prediction kept is the earliest, whatever the order.
+    void consider_pairs(std::uint32_t i, const std::uint32_t* candidates, std::size_t n) {
+        std::size_t k = 0;
+        for (; k + 1 < n; k += 2) consider_two_pairs(i, candidates[k], candidates[k + 1]);
+        if (k < n) consider_pair(i, candidates[k]);
+    }
+
+    // The particles of the cell at (column, row), i excepted, after the n
+    // in gathered_ (CellList::gather_in()); returns the new count.
+    std::size_t gather_cell(int column, int row, std::uint32_t i, std::size_t n) {
+        return periodic_ ? cells_.gather_in_wrapped(column, row, i, gathered_.data(), n)
+                         : cells_.gather_in(column, row, i, gathered_.data(), n);
     }
 
     void predict_pairs(std::uint32_t i) {
         plans_[i].pair = {};
         if (!by_lines()) {
-            consider_pairs(i, [&](auto&& visit) { for_each_neighbour(i, visit); });
+            const std::uint32_t cell = cells_.cell_of_particle(i);
+            const int column = cells_.grid().column(cell);
+            const int row = cells_.grid().row(cell);
+            std::size_t n = 0;
+            for (int dy = -1; dy <= 1; ++dy) {
+                for (int dx = -1; dx <= 1; ++dx) n = gather_cell(column + dx, row + dy, i, n);
+            }
+            consider_pairs(i, gathered_.data(), n);
             return;
         }
         near_.clear();
         lines_.gather_near(i, near_);
-        consider_pairs(i, [&](auto&& visit) {
-            for (const std::uint32_t j : near_) visit(j);
-        });
+        consider_pairs(i, near_.data(), near_.size());
     }
 
     // The lines' common time (the epoch) is the start of the current step,
@@ -840,11 +840,10 @@ private:
         const int across_x = 1 - step_x * step_x;  // 1 when the step is along y
         const int step_y = across_x * (2 * static_cast<int>(cell > old_cell) - 1);
         const int across_y = 1 - across_x;
-        consider_pairs(i, [&](auto&& visit) {
-            for (int k = -1; k <= 1; ++k) {
-                cells_.for_each_in(column + step_x + across_x * k, row + step_y + across_y * k, visit);
-            }
-        });
+        std::size_t n = 0;
+        for (int k = -1; k <= 1; ++k)
+            n = gather_cell(column + step_x + across_x * k, row + step_y + across_y * k, i, n);
+        consider_pairs(i, gathered_.data(), n);
         predict_crossing(i, column, row);
         reschedule(queue, i);
     }
@@ -874,11 +873,10 @@ private:
         if (row - old_row < -1) ++plans_[i].images[1];
         const int across_x = step_x == 0 ? 1 : 0;
         const int across_y = 1 - across_x;
-        consider_pairs(i, [&](auto&& visit) {
-            for (int k = -1; k <= 1; ++k) {
-                cells_.for_each_in_wrapped(column + step_x + across_x * k, row + step_y + across_y * k, visit);
-            }
-        });
+        std::size_t n = 0;
+        for (int k = -1; k <= 1; ++k)
+            n = gather_cell(column + step_x + across_x * k, row + step_y + across_y * k, i, n);
+        consider_pairs(i, gathered_.data(), n);
         predict_crossing(i, column, row);
         reschedule(queue, i);
     }
@@ -930,6 +928,9 @@ private:
     PathLines lines_;
     double lines_epoch_ = 0.0;
     std::vector<std::uint32_t> near_;
+    // The candidates of a search in the cells: room for every particle and
+    // one more (CellList::gather_in()).
+    std::vector<std::uint32_t> gathered_;
     // A state that outgrows the caches: the queue in two tiers, and each
     // event prefetching for the events behind it (prefetch_coming_events());
     // else the linked buckets. The queue not chosen stays empty.
