@@ -8,6 +8,7 @@
 #include "state_hash.hpp"
 
 #include "particlesim/exact_simulation.hpp"
+#include "particlesim/random_scene.hpp"
 #include "particlesim/stepped_simulation.hpp"
 
 #include <sstream>
@@ -120,11 +121,16 @@ std::string saved_text(auto& engine) {
     return out.str();
 }
 
-// Replaces the n-th whitespace-separated token.
-std::string with_token(const std::string& text, std::size_t n, const std::string& token) {
+std::vector<std::string> tokens_of(const std::string& text) {
     std::istringstream in(text);
     std::vector<std::string> tokens;
     for (std::string t; in >> t;) tokens.push_back(t);
+    return tokens;
+}
+
+// Replaces the n-th whitespace-separated token.
+std::string with_token(const std::string& text, std::size_t n, const std::string& token) {
+    std::vector<std::string> tokens = tokens_of(text);
     tokens.at(n) = token;
     std::string result;
     for (const std::string& t : tokens) result += t + " ";
@@ -174,6 +180,32 @@ void damaged_states_are_refused() {
     expect_refused<SteppedSimulation>(World{10.0, 1.0}, good_stepped, "a smaller box");
 }
 
+// The exact engine's pair prediction names a partner and the pair's event;
+// a saved event that does not name the particle and its partner is refused.
+void pair_event_of_other_particles_is_refused() {
+    const World world{60.0, 1.0};  // 300 disks: area fraction 0.26
+    ExactSimulation exact(world, make_random_particles(300, world, {11, SpeedRange{0.1, 1.0}}));
+    exact.step();
+    const std::string good = saved_text(exact);
+    const std::vector<std::string> tokens = tokens_of(good);
+    // After the 10 tokens of the header, 16 a particle; its pair event's time
+    // is the 12th, then i, j, the partner and its version.
+    constexpr std::size_t first_particle = 10;
+    std::size_t damaged = 0;
+    for (std::size_t k = 0; first_particle + 16 * (k + 1) <= tokens.size() && damaged < 5; ++k) {
+        const std::size_t time = first_particle + 16 * k + 11;
+        if (tokens[time] == "inf") continue;  // nothing predicted
+        expect_refused<ExactSimulation>(world, with_token(good, time + 2, tokens[time + 2] == "0" ? "1" : "0"),
+                                        "a pair event of other particles");
+        expect_refused<ExactSimulation>(world, with_token(good, time + 3, std::to_string(k)),
+                                        "the particle as its own partner");
+        ++damaged;
+    }
+    CHECK_EQ(damaged, std::size_t{5});
+    std::istringstream in(good);
+    CHECK_EQ(ExactSimulation::restore(world, in).steps_done(), 1);  // the undamaged state restores
+}
+
 // A state saved before the exact engine saved its collision sums (version
 // 1: the same tokens without them) still restores, to the same run, its
 // sums starting at 0.
@@ -209,5 +241,6 @@ int main(int argc, char** argv) {
                       {{"stepped engine resumes bit for bit", stepped_engine_resumes_bit_for_bit},
                        {"exact engine resumes bit for bit", exact_engine_resumes_bit_for_bit},
                        {"exact state without sums restores", exact_state_without_sums_restores},
-                       {"damaged states are refused", damaged_states_are_refused}});
+                       {"damaged states are refused", damaged_states_are_refused},
+                       {"a pair event of other particles is refused", pair_event_of_other_particles_is_refused}});
 }

@@ -3,30 +3,48 @@
 // doubly linked list threaded through per-item records: O(1) insert, remove
 // and move, no allocation after construction. The exact engine's cell lists
 // (particles by cell) and its linked calendar (particles by time bucket) are
-// both this.
+// both this. An item's record may hold more than its links: the exact
+// engine keeps a particle's state there, so that reading a neighbour found
+// in a cell, and following the cell's list past it, read one cache line.
 
 #include "core/huge_page_allocator.hpp"
 #include "core/prefetch.hpp"
 
 #include <algorithm>
+#include <bit>
 #include <cstdint>
 #include <vector>
 
 namespace particlesim {
 
-class BucketLists {
+// An item's links and bucket together, so that moving it reads one line of
+// them instead of one in each of three arrays (each a miss to memory in a
+// large exact run); 16 bytes, aligned, never across lines.
+struct alignas(16) BucketLinks {
+    std::uint32_t next = 0xffffffffU;  // BucketListsOf::none
+    std::uint32_t previous = 0xffffffffU;
+    std::uint32_t bucket = 0;
+};
+
+// Record: BucketLinks, or a struct with the same three members (which only
+// the lists write) and more.
+template <typename Record>
+class BucketListsOf {
 public:
     static constexpr std::uint32_t none = 0xffffffffU;  // below any particle count the engines accept
 
     // Every item starts in no bucket; insert() places it.
-    BucketLists(std::size_t buckets, std::size_t items) : items_(items), head_(buckets, none), links_(items + 1) {}
+    BucketListsOf(std::size_t buckets, std::size_t items) : items_(items), head_(buckets, none), records_(items + 1) {}
 
-    [[nodiscard]] std::uint32_t bucket_of(std::uint32_t item) const { return links_[item].bucket; }
+    [[nodiscard]] std::uint32_t bucket_of(std::uint32_t item) const { return records_[item].bucket; }
     [[nodiscard]] std::uint32_t first(std::uint32_t bucket) const { return head_[bucket]; }
-    [[nodiscard]] std::uint32_t next(std::uint32_t item) const { return links_[item].next; }
-    [[nodiscard]] std::uint32_t previous(std::uint32_t item) const { return links_[item].previous; }
+    [[nodiscard]] std::uint32_t next(std::uint32_t item) const { return records_[item].next; }
+    [[nodiscard]] std::uint32_t previous(std::uint32_t item) const { return records_[item].previous; }
+    [[nodiscard]] Record& record(std::uint32_t item) { return records_[item]; }
+    [[nodiscard]] const Record& record(std::uint32_t item) const { return records_[item]; }
 
-    void prefetch_links(std::uint32_t item) const { prefetch(&links_[slot(item)]); }  // `none`: the spare slot
+    // The item's record (`none`: the spare slot's).
+    void prefetch_links(std::uint32_t item) const { prefetch(&records_[slot(item)]); }
     void prefetch_head(std::uint32_t bucket) const { prefetch(&head_[bucket]); }
 
     // Without branches on whether a neighbour exists (in a queue or a cell
@@ -35,16 +53,19 @@ public:
     // the head is always written, with its own value when it stays.
     void insert(std::uint32_t item, std::uint32_t bucket) {
         const std::uint32_t first = head_[bucket];
-        links_[item] = {first, none, bucket};
-        links_[slot(first)].previous = item;
+        Record& own = records_[item];
+        own.next = first;
+        own.previous = none;
+        own.bucket = bucket;
+        records_[slot(first)].previous = item;
         head_[bucket] = item;
     }
     void remove(std::uint32_t item) {
-        const Links own = links_[item];
-        links_[slot(own.previous)].next = own.next;
+        const BucketLinks own{records_[item].next, records_[item].previous, records_[item].bucket};
+        records_[slot(own.previous)].next = own.next;
         const std::uint32_t keep_head = own.previous == none ? 0U : ~0U;  // a mask: no branch
         head_[own.bucket] = (head_[own.bucket] & keep_head) | (own.next & ~keep_head);
-        links_[slot(own.next)].previous = own.previous;
+        records_[slot(own.next)].previous = own.previous;
     }
     void move(std::uint32_t item, std::uint32_t bucket) {
         remove(item);
@@ -73,7 +94,7 @@ public:
         item = next_or_none(item);
         out[k] = item;
         k += static_cast<std::size_t>((item != none) & (item != skipped));
-        for (item = next_or_none(item); item != none; item = links_[item].next) {
+        for (item = next_or_none(item); item != none; item = records_[item].next) {
             out[k] = item;
             k += static_cast<std::size_t>(item != skipped);
         }
@@ -83,7 +104,7 @@ public:
     // visit(item) for every item in the bucket.
     template <typename Visit>
     void for_each_in(std::uint32_t bucket, Visit&& visit) const {
-        for (std::uint32_t item = head_[bucket]; item != none; item = links_[item].next) visit(item);
+        for (std::uint32_t item = head_[bucket]; item != none; item = records_[item].next) visit(item);
     }
 
 private:
@@ -91,24 +112,17 @@ private:
     // slot's own links are written over by insert() and remove()).
     [[nodiscard]] std::uint32_t next_or_none(std::uint32_t item) const {
         const std::uint32_t missing = item == none ? none : 0U;  // a mask: no branch
-        return links_[slot(item)].next | missing;
+        return records_[slot(item)].next | missing;
     }
 
     // The item's own slot, or the spare one for `none` (above every item).
     [[nodiscard]] std::size_t slot(std::uint32_t item) const { return std::min<std::size_t>(item, items_); }
 
-    // An item's links and bucket together, so that moving it reads one
-    // line of them instead of one in each of three arrays (each a miss to
-    // memory in a large exact run); 16 bytes, aligned, never across lines.
-    struct alignas(16) Links {
-        std::uint32_t next = none;
-        std::uint32_t previous = none;
-        std::uint32_t bucket = 0;
-    };
-
     std::size_t items_;
     HugePageVector<std::uint32_t> head_;
-    HugePageVector<Links> links_;  // one more than the items: the spare slot
+    HugePageVector<Record> records_;  // one more than the items: the spare slot
 };
+
+using BucketLists = BucketListsOf<BucketLinks>;
 
 }  // namespace particlesim

@@ -1,7 +1,9 @@
 #pragma once
 // A uniform grid of cells, each a linked list of the particles in it (see
 // bucket_lists.hpp), so that a particle moves between cells in O(1). Cells are at least a
-// diameter wide: two disks in contact are in the same or adjacent cells.
+// diameter wide: two disks in contact are in the same or adjacent cells. Each
+// particle's record may hold more than its links (the exact engine's
+// particle state; see BucketListsOf).
 
 #include "core/uniform_grid.hpp"
 #include "exact/bucket_lists.hpp"
@@ -11,10 +13,14 @@
 
 namespace particlesim {
 
-class CellList {
+template <typename Record>
+class CellListOf {
 public:
-    CellList(const UniformGrid& grid, std::size_t particle_count)
+    CellListOf(const UniformGrid& grid, std::size_t particle_count)
         : grid_(grid), members_(grid.cell_count(), particle_count) {}
+
+    [[nodiscard]] Record& record(std::uint32_t particle) { return members_.record(particle); }
+    [[nodiscard]] const Record& record(std::uint32_t particle) const { return members_.record(particle); }
 
     [[nodiscard]] const UniformGrid& grid() const { return grid_; }
     [[nodiscard]] std::uint32_t cell_of_particle(std::uint32_t particle) const { return members_.bucket_of(particle); }
@@ -117,7 +123,9 @@ private:
     }
 
     UniformGrid grid_;
-    BucketLists members_;  // particles by cell
+    BucketListsOf<Record> members_;  // particles by cell
 };
+
+using CellList = CellListOf<BucketLinks>;
 
 }  // namespace particlesim

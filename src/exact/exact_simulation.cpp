@@ -137,8 +137,30 @@ public:
         double time = never;
         std::uint32_t cell = 0;  // the cell entered
     };
+    // What an event reads of a particle first, and of each neighbour it
+    // tests: its position and velocity at its own time stamp (the time of
+    // its last collision, or 0), the stamp, the absolute time of its next
+    // wall event and its version; kept in the cell list's record, with the
+    // links that lead to the next particle of the cell: one 64-byte line.
+    struct alignas(64) Body {
+        Vec2 position = Vec2::Zero();
+        Vec2 velocity = Vec2::Zero();
+        double stamp = 0.0;
+        double wall_time = never;
+        // pc + wc (mod 2^32): changes exactly when the velocity does, at each
+        // of the particle's collisions.
+        std::uint32_t version = 0;
+        // The cell list's links (BucketListsOf), which only it writes.
+        std::uint32_t next = BucketLists::none;
+        std::uint32_t previous = BucketLists::none;
+        std::uint32_t bucket = 0;
+    };
+    static_assert(sizeof(Body) == 64);
+
+    // The earliest pair event found for a particle: its time (`never`: none)
+    // and partner; pair_event() makes the event.
     struct PairPrediction {
-        Event event{never, EventKind::pair, 0, 0};
+        double time = never;
         std::uint32_t partner = 0;
         std::uint32_t partner_version = 0;  // the partner's version when predicted
     };
@@ -151,6 +173,8 @@ public:
         double wall_time = never;
         Crossing crossing;
         PairPrediction pair;
+        std::uint32_t pair_i = 0;  // the pair event's indices, as saved
+        std::uint32_t pair_j = 0;
     };
     struct SavedRun {
         std::int64_t steps_done = 0;
@@ -165,7 +189,7 @@ public:
     Implementation(const World& world, std::vector<Particle> particles, const ExactOptions& options)
         : Implementation(world, std::move(particles), options, Unpredicted{}) {
         for (std::uint32_t i = 0; i < count(); ++i) {
-            cells_.insert(i, cells_.grid().cell_of(bodies_[i].particle.position));
+            cells_.insert(i, cells_.grid().cell_of(body(i).position));
         }
         reject_overlaps();
         make_lines();
@@ -198,11 +222,14 @@ public:
             const SavedPredictions& in = saved.predictions[i];
             if (!(in.stamp >= 0.0 && in.stamp <= now_)) fail("a time stamp outside the run");
             if (in.cell >= cells || in.crossing.cell >= cells) fail("a cell outside the grid");
-            if (in.pair.event.i >= count() || in.pair.event.j >= count() || in.pair.partner >= count())
+            if (in.pair_i >= count() || in.pair_j >= count() || in.pair.partner >= count())
                 fail("a particle index outside the scene");
-            bodies_[i].stamp = in.stamp;
+            if (in.pair.time != never && !(in.pair.partner != i && in.pair_i == std::min(i, in.pair.partner) &&
+                                           in.pair_j == std::max(i, in.pair.partner)))
+                fail("a pair prediction that does not name the particle and its partner");
+            body(i).stamp = in.stamp;
             cells_.insert(i, in.cell);
-            bodies_[i].wall_time = in.wall_time;
+            body(i).wall_time = in.wall_time;
             plans_[i].crossing = in.crossing;
             plans_[i].pair = in.pair;
         }
@@ -248,9 +275,9 @@ public:
             p.wall_time = in.real();
             p.crossing.time = in.real();
             p.crossing.cell = static_cast<std::uint32_t>(in.count(UINT32_MAX));
-            p.pair.event.time = in.real();
-            p.pair.event.i = static_cast<std::uint32_t>(in.count(UINT32_MAX));
-            p.pair.event.j = static_cast<std::uint32_t>(in.count(UINT32_MAX));
+            p.pair.time = in.real();
+            p.pair_i = static_cast<std::uint32_t>(in.count(UINT32_MAX));
+            p.pair_j = static_cast<std::uint32_t>(in.count(UINT32_MAX));
             p.pair.partner = static_cast<std::uint32_t>(in.count(UINT32_MAX));
             p.pair.partner_version = static_cast<std::uint32_t>(in.count(UINT32_MAX));
             run.predictions.push_back(p);
@@ -267,15 +294,16 @@ public:
         save_number(out, collision_sums_.wall_impulse);
         out << '\n';
         for (std::uint32_t i = 0; i < count(); ++i) {
-            save_particle(out, bodies_[i].particle);
-            save_number(out, bodies_[i].stamp);
+            save_particle(out, particle_at_stamp(i));
+            save_number(out, body(i).stamp);
             save_number(out, std::uint64_t{cells_.cell_of_particle(i)});
-            save_number(out, bodies_[i].wall_time);
+            save_number(out, body(i).wall_time);
             save_number(out, plans_[i].crossing.time);
             save_number(out, std::uint64_t{plans_[i].crossing.cell});
-            save_number(out, plans_[i].pair.event.time);
-            save_number(out, std::uint64_t{plans_[i].pair.event.i});
-            save_number(out, std::uint64_t{plans_[i].pair.event.j});
+            const Event pair = pair_event(i);
+            save_number(out, pair.time);
+            save_number(out, std::uint64_t{pair.i});
+            save_number(out, std::uint64_t{pair.j});
             save_number(out, std::uint64_t{plans_[i].pair.partner});
             save_number(out, std::uint64_t{plans_[i].pair.partner_version});
             out << '\n';
@@ -347,7 +375,6 @@ private:
         : world_(world),
           box_(Box::of(world)),
           periodic_(options.boundary == Boundary::periodic),
-          bodies_(particles.begin(), particles.end()),
           cells_(neighbour_grid(world, particles.size(), options), particles.size()),
           plans_(particles.size()),
           snapshot_(std::move(particles)),
@@ -356,28 +383,51 @@ private:
           linked_queue_(look_ahead_ ? 0 : count(), Event{never, EventKind::cell_crossing, 0, 0}),
           ladder_queue_(look_ahead_ ? count() : 0, Event{never, EventKind::cell_crossing, 0, 0}),
           predicted_events_(estimated_events_per_step(world, snapshot_)),
-          event_budget_(event_budget(options, predicted_events_, count())) {}
+          event_budget_(event_budget(options, predicted_events_, count())) {
+        for (std::uint32_t i = 0; i < count(); ++i) {
+            const Particle& p = snapshot_[i];
+            Body& b = body(i);
+            b.position = p.position;
+            b.velocity = p.velocity;
+            b.version = static_cast<std::uint32_t>(p.particle_collisions + p.wall_collisions);
+            plans_[i].particle_collisions = p.particle_collisions;
+            plans_[i].wall_collisions = p.wall_collisions;
+        }
+    }
 
-    std::uint32_t count() const { return static_cast<std::uint32_t>(bodies_.size()); }
+    std::uint32_t count() const { return static_cast<std::uint32_t>(plans_.size()); }
+
+    Body& body(std::uint32_t i) { return cells_.record(i); }
+    const Body& body(std::uint32_t i) const { return cells_.record(i); }
+
+    // The particle as stored: at its own time stamp.
+    Particle particle_at_stamp(std::uint32_t i) const {
+        return Particle{body(i).position, body(i).velocity, plans_[i].particle_collisions, plans_[i].wall_collisions};
+    }
+
+    // The particle's pair prediction as an event, the pair's indices in order
+    // ({never, pair, 0, 0} when there is none).
+    Event pair_event(std::uint32_t i) const {
+        const PairPrediction& pair = plans_[i].pair;
+        if (pair.time == never) return Event{never, EventKind::pair, 0, 0};
+        return Event{pair.time, EventKind::pair, std::min(i, pair.partner), std::max(i, pair.partner)};
+    }
 
     // One cell: neighbours are found by the particles' lines (PathLines).
     bool by_lines() const { return cells_.grid().per_side() == 1; }
 
-    // Changes exactly when the velocity does: at each of the particle's collisions.
-    std::uint32_t version(std::uint32_t i) const {
-        return static_cast<std::uint32_t>(bodies_[i].particle.particle_collisions +
-                                          bodies_[i].particle.wall_collisions);
-    }
+    std::uint32_t version(std::uint32_t i) const { return body(i).version; }
     bool pair_partner_moved(std::uint32_t i) const {
         return plans_[i].pair.partner_version != version(plans_[i].pair.partner);
     }
 
     Vec2 position_at(std::uint32_t i, double time) const {
-        return bodies_[i].particle.position + bodies_[i].particle.velocity * (time - bodies_[i].stamp);
+        const Body& b = body(i);
+        return b.position + b.velocity * (time - b.stamp);
     }
 
-    template <typename Visit>
-    static void for_each_neighbour(const CellList& cells, std::uint32_t i, bool periodic, Visit&& visit) {
+    template <typename Cells, typename Visit>
+    static void for_each_neighbour(const Cells& cells, std::uint32_t i, bool periodic, Visit&& visit) {
         const std::uint32_t cell = cells.cell_of_particle(i);
         const int column = cells.grid().column(cell);
         const int row = cells.grid().row(cell);
@@ -416,13 +466,14 @@ private:
             return;
         }
         CellList cells(UniformGrid(world_.box_size, cells_per_side_for(world_, count())), count());
-        for (std::uint32_t i = 0; i < count(); ++i) cells.insert(i, cells.grid().cell_of(bodies_[i].particle.position));
+        for (std::uint32_t i = 0; i < count(); ++i) cells.insert(i, cells.grid().cell_of(body(i).position));
         reject_overlaps(cells);
     }
 
-    void reject_overlaps(const CellList& cells) const {
+    template <typename Cells>
+    void reject_overlaps(const Cells& cells) const {
         const auto overlaps = [&](std::uint32_t i, std::uint32_t j) {
-            Vec2 separation = bodies_[j].particle.position - bodies_[i].particle.position;
+            Vec2 separation = body(j).position - body(i).position;
             if (periodic_) separation = nearest_image(separation);
             return j > i && disks_overlap(separation, box_.contact_dist_sq);
         };
@@ -473,9 +524,7 @@ private:
         });
         ladder_queue_.for_each_coming(look_members_, [&](std::uint32_t o) {
             const auto fetch_member = [&](std::uint32_t first) {
-                const std::uint32_t j = std::min(first, count() - 1);  // no branch: `none` fetches the last
-                prefetch(&bodies_[j]);
-                cells_.prefetch_links(j);
+                cells_.prefetch_links(first);  // the particle and its links; `none`: the spare slot
             };
             const Event& event = ladder_queue_.entry(o);
             if (const std::optional<CellLine> line = walled_crossing_line(event, o)) {
@@ -525,9 +574,8 @@ private:
     }
 
     void prefetch_particle(std::uint32_t i) const {
-        prefetch(&bodies_[i]);
+        cells_.prefetch_links(i);  // its state and links
         prefetch(&plans_[i]);
-        cells_.prefetch_links(i);
     }
 
     // Rounding may put a prediction a hair before the present; time must
@@ -538,18 +586,19 @@ private:
     // rules' order (a check of O(N)).
     template <typename Queue>
     void require_earliest_in_calendar(const Queue& queue, const Event& earliest) const {
-        for (std::uint32_t owner = 0; owner < bodies_.size(); ++owner) {
+        for (std::uint32_t owner = 0; owner < count(); ++owner) {
             PARTICLESIM_ASSERT(!comes_before(queue.entry(owner), earliest), "the calendar's earliest entry is first");
         }
     }
 
     void predict_wall(std::uint32_t i) {
         if (periodic_) {
-            bodies_[i].wall_time = never;
+            body(i).wall_time = never;
             return;
         }
-        const WallHit hit = time_to_wall(bodies_[i].particle.position, bodies_[i].particle.velocity, box_);
-        bodies_[i].wall_time = hit.time == never ? never : not_before_now(bodies_[i].stamp + hit.time);
+        Body& b = body(i);
+        const WallHit hit = time_to_wall(b.position, b.velocity, box_);
+        b.wall_time = hit.time == never ? never : not_before_now(b.stamp + hit.time);
     }
 
     // The next time the particle leaves its cell, and the cell it enters.
@@ -560,7 +609,7 @@ private:
 
     // The same for a particle in the cell at (column, row).
     void predict_crossing(std::uint32_t i, int column, int row) {
-        const Particle& p = bodies_[i].particle;
+        const Body& p = body(i);
         const UniformGrid& grid = cells_.grid();
         // Both axes at once, each lane the time to the cell edge it moves
         // towards (`never` at the grid's edge or without motion), with
@@ -594,7 +643,7 @@ private:
             column += column < 0 ? side : column >= side ? -side : 0;
             row += row < 0 ? side : row >= side ? -side : 0;
         }
-        plans_[i].crossing = {not_before_now(bodies_[i].stamp + delay), grid.cell_at(column, row)};
+        plans_[i].crossing = {not_before_now(p.stamp + delay), grid.cell_at(column, row)};
     }
 
     // Tests the pair (i, j) at the later of their stamps, and keeps a contact
@@ -603,11 +652,10 @@ private:
     // comes first.
     void consider_pair(std::uint32_t i, std::uint32_t j) {
         ++last_step_.pair_tests;
-        const double reference = std::max(bodies_[i].stamp, bodies_[j].stamp);
+        const double reference = std::max(body(i).stamp, body(j).stamp);
         Vec2 separation = position_at(j, reference) - position_at(i, reference);
         if (periodic_) separation = nearest_image(separation);
-        const double delay =
-            contact_time(separation, bodies_[j].particle.velocity - bodies_[i].particle.velocity, box_.contact_dist_sq);
+        const double delay = contact_time(separation, body(j).velocity - body(i).velocity, box_.contact_dist_sq);
         if (delay != never) keep_contact(i, j, reference + delay);
     }
 
@@ -615,11 +663,11 @@ private:
     // the same operations on the same values, so the same bits.
     void consider_two_pairs(std::uint32_t i, std::uint32_t j, std::uint32_t k) {
         last_step_.pair_tests += 2;
-        const Particle& own = bodies_[i].particle;
-        const Particle& first = bodies_[j].particle;
-        const Particle& second = bodies_[k].particle;
-        const TwoDoubles own_stamp{bodies_[i].stamp, bodies_[i].stamp};
-        const TwoDoubles other_stamp{bodies_[j].stamp, bodies_[k].stamp};
+        const Body& own = body(i);
+        const Body& first = body(j);
+        const Body& second = body(k);
+        const TwoDoubles own_stamp{own.stamp, own.stamp};
+        const TwoDoubles other_stamp{first.stamp, second.stamp};
         const TwoDoubles reference = own_stamp < other_stamp ? other_stamp : own_stamp;  // std::max
         const TwoDoubles own_since = reference - own_stamp;
         const TwoDoubles other_since = reference - other_stamp;
@@ -655,9 +703,9 @@ private:
     // contact that comes in time: most pairs tested never meet.
     void keep_contact(std::uint32_t i, std::uint32_t j, double contact) {
         const double time = not_before_now(contact);
-        if (!(time < bodies_[i].wall_time && time < bodies_[j].wall_time && time <= plans_[i].pair.event.time)) return;
+        if (!(time < body(i).wall_time && time < body(j).wall_time && time <= plans_[i].pair.time)) return;
         const Event event{time, EventKind::pair, std::min(i, j), std::max(i, j)};
-        if (event < plans_[i].pair.event) plans_[i].pair = {event, j, version(j)};
+        if (event < pair_event(i)) plans_[i].pair = {time, j, version(j)};
     }
 
     // consider_pair(i, j) for each of the n candidates j, two at a time. The
@@ -699,7 +747,7 @@ private:
         if (!by_lines()) return;
         std::vector<Particle> at_stamps;
         at_stamps.reserve(count());
-        for (const Body& body : bodies_) at_stamps.push_back(body.particle);
+        for (std::uint32_t i = 0; i < count(); ++i) at_stamps.push_back(particle_at_stamp(i));
         lines_.assign(at_stamps, box_);
         move_lines_to_now();
     }
@@ -713,7 +761,7 @@ private:
     // After a collision: the particle's new line, through where it would
     // have been at the epoch.
     void renew_line(std::uint32_t i) {
-        if (by_lines()) lines_.set(i, position_at(i, lines_epoch_), bodies_[i].particle.velocity);
+        if (by_lines()) lines_.set(i, position_at(i, lines_epoch_), body(i).velocity);
     }
 
     // Puts the first of the particle's three predictions in the queue.
@@ -723,11 +771,11 @@ private:
     // loads wait for the stores of the parts.
     template <typename Queue>
     void reschedule(Queue& queue, std::uint32_t i) {
-        const double wall_time = bodies_[i].wall_time;
+        const double wall_time = body(i).wall_time;
         const Crossing& crossing = plans_[i].crossing;
-        const Event& pair = plans_[i].pair.event;
-        if (pair.time < wall_time && pair.time <= crossing.time) {
-            queue.replace(i, pair);
+        const double pair_time = plans_[i].pair.time;
+        if (pair_time < wall_time && pair_time <= crossing.time) {
+            queue.replace(i, pair_event(i));
         } else if (crossing.time < wall_time) {
             queue.replace(i, Event{crossing.time, EventKind::cell_crossing, i, crossing.cell});
         } else {
@@ -756,13 +804,18 @@ private:
 
     template <typename Queue>
     void collide_with_wall(Queue& queue, std::uint32_t i) {
-        Particle& p = bodies_[i].particle;
+        Particle p = particle_at_stamp(i);
         // The same start state as the prediction, so the same hit.
         const WallHit hit = time_to_wall(p.position, p.velocity, box_);
         collision_sums_.wall_impulse +=
             2.0 * ((hit.on_x ? std::abs(p.velocity.x()) : 0.0) + (hit.on_y ? std::abs(p.velocity.y()) : 0.0));
         bounce_off_wall(p, hit, box_);
-        bodies_[i].stamp = now_;
+        Body& b = body(i);
+        b.position = p.position;
+        b.velocity = p.velocity;
+        b.stamp = now_;
+        ++b.version;
+        plans_[i].wall_collisions = p.wall_collisions;
         renew_line(i);
         ++last_step_.wall_collisions;
         note_event(i);
@@ -774,8 +827,8 @@ private:
 
     template <typename Queue>
     void collide_pair(Queue& queue, std::uint32_t i, std::uint32_t j) {
-        Particle& a = bodies_[i].particle;
-        Particle& b = bodies_[j].particle;
+        Body& a = body(i);
+        Body& b = body(j);
         a.position = position_at(i, now_);
         b.position = position_at(j, now_);
         // In a periodic box, b's image next to a (each keeps its own position).
@@ -784,8 +837,8 @@ private:
             clamp_into_box(b.position, box_);
         }
         const Vec2 b_image = periodic_ ? a.position + nearest_image(b.position - a.position) : b.position;
-        bodies_[i].stamp = now_;
-        bodies_[j].stamp = now_;
+        a.stamp = now_;
+        b.stamp = now_;
         const Vec2 velocity_before = a.velocity;
         exchange_normal_velocities(a.position, b_image, a.velocity, b.velocity);
         collision_sums_.pair_virial += (a.velocity - velocity_before).dot(a.position - b_image);
@@ -793,7 +846,7 @@ private:
             // Stored again in [0, L), measured from the box: the whole boxes
             // crossed since move into Plans::images.
             for (const std::uint32_t k : {i, j}) {
-                Vec2& at = bodies_[k].particle.position;
+                Vec2& at = body(k).position;
                 for (int axis = 0; axis < 2; ++axis) {
                     if (at[axis] >= 0.0 && at[axis] < world_.box_size) continue;  // nearly always
                     const double boxes = std::floor(at[axis] / world_.box_size);
@@ -804,8 +857,10 @@ private:
         }
         renew_line(i);
         renew_line(j);
-        ++a.particle_collisions;
-        ++b.particle_collisions;
+        ++plans_[i].particle_collisions;
+        ++plans_[j].particle_collisions;
+        ++a.version;
+        ++b.version;
         ++last_step_.particle_collisions;
         note_event(i);
         note_event(j);
@@ -884,7 +939,7 @@ private:
     void take_snapshot() {
         for (std::uint32_t i = 0; i < count(); ++i) {
             Particle& out = snapshot_[i];
-            out = bodies_[i].particle;
+            out = particle_at_stamp(i);
             out.position = position_at(i, now_);
             if (periodic_) {
                 out.position = Vec2(wrap_into_periodic_box(out.position.x(), world_.box_size),
@@ -898,28 +953,20 @@ private:
     World world_;
     Box box_;
     bool periodic_;  // the box wraps: no walls, the nearest image meets
-    // What an event reads of a particle first, in one 64-byte line: its
-    // state at its own time stamp (the time of its last collision, or 0),
-    // the stamp, and the absolute time of its next wall event.
-    struct alignas(64) Body {
-        explicit Body(const Particle& at_start) : particle(at_start) {}
-        Particle particle;
-        double stamp = 0.0;
-        double wall_time = never;
-    };
-    HugePageVector<Body> bodies_;
-    CellList cells_;
+    CellListOf<Body> cells_;
     // The rest of what an event reads and writes of its particles, in one
     // 64-byte line: the crossing and pair predictions, the step of the
     // particle's last event (twice it, plus 1 once a second event in that
-    // step was counted by note_event()), and, in a periodic box, the whole
-    // boxes its path has crossed since its stored position, along x and y
-    // (what the cell it is in shows).
+    // step was counted by note_event()), in a periodic box the whole boxes
+    // its path has crossed since its stored position, along x and y (what
+    // the cell it is in shows), and its collision counts.
     struct alignas(64) Plans {
         Crossing crossing;
         PairPrediction pair;
         std::int64_t last_event_mark = -2;
         std::array<std::int32_t, 2> images{0, 0};
+        std::uint64_t particle_collisions = 0;
+        std::uint64_t wall_collisions = 0;
     };
     static_assert(sizeof(Plans) == 64);
     HugePageVector<Plans> plans_;
