@@ -32,6 +32,7 @@
 #include "exact/event.hpp"
 
 #include <algorithm>
+#include <bit>
 #include <cstdint>
 #include <limits>
 #include <vector>
@@ -44,6 +45,7 @@ public:
     LadderCalendar(std::uint32_t owners, const Event& initial)
         : window_(owners),
           epoch_buckets_(std::min(window_.buckets, max_epoch_buckets)),
+          epoch_shift_(std::countr_zero(epoch_buckets_)),
           epochs_(window_.buckets / epoch_buckets_),
           buckets_(epoch_buckets_),
           bins_(epochs_),
@@ -132,10 +134,10 @@ private:
         if (!(offset < static_cast<double>(window_.buckets))) return;  // also `never`
         const std::uint64_t now = std::uint64_t{epoch_} * epoch_buckets_ + current_;
         const std::uint64_t bucket = std::max(now, static_cast<std::uint64_t>(std::max(offset, 0.0)));
-        const auto epoch = static_cast<std::uint32_t>(bucket / epoch_buckets_);
+        const auto epoch = static_cast<std::uint32_t>(bucket >> epoch_shift_);
         const Listing listing{owner, owned.serial};
         if (epoch == epoch_) {
-            buckets_[bucket % epoch_buckets_].push_back(listing);
+            buckets_[in_epoch(bucket)].push_back(listing);
         } else {
             bins_[epoch].push_back(listing);
         }
@@ -197,12 +199,15 @@ private:
         bin.clear();
     }
 
+    // A bucket's place in its epoch.
+    [[nodiscard]] std::size_t in_epoch(std::uint64_t bucket) const { return bucket & (epoch_buckets_ - 1); }
+
     // The same bucket as list() found when it put the listing in the bin
     // (it was beyond the current bucket then, so not moved forward).
     void list_in_epoch(const Listing& listing) {
         const auto bucket = static_cast<std::uint64_t>(std::max(start_.offset(owners_[listing.owner].event.time), 0.0));
-        PARTICLESIM_ASSERT(bucket / epoch_buckets_ == epoch_, "a bin holds its epoch's entries");
-        buckets_[bucket % epoch_buckets_].push_back(listing);
+        PARTICLESIM_ASSERT(bucket >> epoch_shift_ == epoch_, "a bin holds its epoch's entries");
+        buckets_[in_epoch(bucket)].push_back(listing);
     }
 
     // A fresh window from the owners' entries, listed in owner order; false
@@ -225,6 +230,7 @@ private:
 
     CalendarWindow window_;
     std::uint32_t epoch_buckets_;  // buckets an epoch
+    int epoch_shift_;              // its base 2 logarithm: a bucket's epoch is a shift, not a division
     std::uint32_t epochs_;         // epochs a window (both powers of two: epochs_ x epoch_buckets_ = window_.buckets)
     std::vector<std::vector<Listing>> buckets_;  // the current epoch's
     std::vector<std::vector<Listing>> bins_;     // by epoch of the window; the current one's and those before are empty
