@@ -497,8 +497,8 @@ private:
     // event fetches, in four stages, what those a few buckets behind it will
     // read: their queue entries; their particles and pair partners; the
     // heads of the cells they will search; the first member of each of those
-    // cells. A collision searches around both partners; a crossing in a
-    // walled box only the three cells that become neighbours, and moves the
+    // cells. A collision searches around both partners; a crossing only
+    // the three cells that become neighbours, and moves the
     // particle between two cells' lists. Each stage reads only what the
     // stage before fetched. Prefetches are hints: a queue that changes
     // meanwhile costs a wasted fetch, never a different event.
@@ -513,7 +513,7 @@ private:
         });
         ladder_queue_.for_each_coming(look_heads_, [&](std::uint32_t o) {
             const Event& event = ladder_queue_.entry(o);
-            if (const std::optional<CellLine> line = walled_crossing_line(event, o)) {
+            if (const std::optional<CellLine> line = crossing_line(event, o)) {
                 cells_.prefetch_heads_of_three(line->middle, line->stride);
                 cells_.prefetch_head(event.j);
                 cells_.prefetch_head(cells_.cell_of_particle(o));
@@ -527,7 +527,7 @@ private:
                 cells_.prefetch_links(first);  // the particle and its links; `none`: the spare slot
             };
             const Event& event = ladder_queue_.entry(o);
-            if (const std::optional<CellLine> line = walled_crossing_line(event, o)) {
+            if (const std::optional<CellLine> line = crossing_line(event, o)) {
                 cells_.for_each_first_member_of_three(line->middle, line->stride, fetch_member);
                 cells_.prefetch_links(cells_.first_member(event.j));
                 return;
@@ -542,11 +542,12 @@ private:
         std::int64_t middle;
         std::int64_t stride;
     };
-    // For a crossing in a walled box, the three cells that become
-    // neighbours (as cross_cell() finds them): one further along the step
-    // from the cell entered, and across it.
-    std::optional<CellLine> walled_crossing_line(const Event& event, std::uint32_t owner) const {
-        if (periodic_ || event.kind != EventKind::cell_crossing) return std::nullopt;
+    // For a crossing, the three cells that become neighbours (as
+    // cross_cell() finds them): one further along the step from the cell
+    // entered, and across it. In a periodic box a crossing at the grid's
+    // edge, or across it, wraps: there the line misses (a wasted fetch).
+    std::optional<CellLine> crossing_line(const Event& event, std::uint32_t owner) const {
+        if (event.kind != EventKind::cell_crossing) return std::nullopt;
         const auto entered = static_cast<std::int64_t>(event.j);
         const std::int64_t step = entered - static_cast<std::int64_t>(cells_.cell_of_particle(owner));
         const bool along_row = step == 1 || step == -1;
@@ -560,15 +561,11 @@ private:
                                              : BucketLists::none;  // owner is one of the two
     }
 
-    // visit(cell) for each cell around which the owner's event will search
-    // for partners: the cell entered, or the owner's, and its pair partner's.
+    // visit(cell) for each cell around which the owner's wall or pair event
+    // will search for partners: the owner's, and its pair partner's.
     template <typename Visit>
     void for_each_searched_cell(std::uint32_t owner, Visit&& visit) const {
         const Event& event = ladder_queue_.entry(owner);
-        if (event.kind == EventKind::cell_crossing) {
-            visit(event.j);
-            return;
-        }
         visit(cells_.cell_of_particle(owner));
         if (event.kind == EventKind::pair) visit(cells_.cell_of_particle(event.i ^ event.j ^ owner));
     }
