@@ -98,6 +98,7 @@ public:
     void step();
 
     // The state at the last whole step; positions clamped into [r, L - r].
+    // Made on demand, so not to be called from two threads at once.
     [[nodiscard]] std::span<const Particle> particles() const;
     [[nodiscard]] const World& world() const;
     [[nodiscard]] std::int64_t steps_done() const;

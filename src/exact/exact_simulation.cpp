@@ -250,7 +250,7 @@ public:
         }
         for (std::uint32_t i = 0; i < count(); ++i) reschedule(i);
         make_lines();
-        take_snapshot();
+        snapshot_current_ = false;
     }
 
     // `version` 1 has no collision sums; 2 has them after the counts.
@@ -323,7 +323,7 @@ public:
         }
         now_ = end;
         ++steps_done_;
-        take_snapshot();
+        snapshot_current_ = false;
         totals_ += last_step_;
     }
 
@@ -357,7 +357,13 @@ public:
         }
     }
 
-    const std::vector<Particle>& snapshot() const { return snapshot_; }
+    // Made when asked for: a run whose states are read only at its end
+    // (perf mode) does not pay for one at every step.
+    const std::vector<Particle>& snapshot() {
+        if (!snapshot_current_) take_snapshot();
+        snapshot_current_ = true;
+        return snapshot_;
+    }
     const World& world() const { return world_; }
     std::int64_t steps_done() const { return steps_done_; }
     const StepCounts& last_step() const { return last_step_; }
@@ -967,7 +973,8 @@ private:
     };
     static_assert(sizeof(Plans) == 64);
     HugePageVector<Plans> plans_;
-    std::vector<Particle> snapshot_;  // the state at the last whole step
+    std::vector<Particle> snapshot_;  // the state at the last whole step, while snapshot_current_
+    bool snapshot_current_ = true;    // the start's state is the particles given
     // With a single cell: every particle's line at lines_epoch_.
     PathLines lines_;
     double lines_epoch_ = 0.0;
@@ -1042,6 +1049,7 @@ ExactSimulation::ExactSimulation(ExactSimulation&&) noexcept = default;
 ExactSimulation& ExactSimulation::operator=(ExactSimulation&&) noexcept = default;
 
 void ExactSimulation::step() { engine_->step(); }
+// Logically const: the state is made from the particles' records on demand.
 std::span<const Particle> ExactSimulation::particles() const { return engine_->snapshot(); }
 const World& ExactSimulation::world() const { return engine_->world(); }
 std::int64_t ExactSimulation::steps_done() const { return engine_->steps_done(); }
