@@ -42,10 +42,12 @@ inline constexpr std::uint32_t lines_up_to = 20000;  // particles: the first pre
 // read, and the queue is the two-tier calendar: below, the state mostly fits
 // in the caches, and the prefetching's own work, and the two tiers' (stale
 // listings, bins spread into buckets), cost more than they save. On the gas
-// (`particlesim_bench exact_queue`, both forced, 7 rounds): 1.20 times the
-// linked buckets' time at 8192 disks, 1.00 at 20 480, 0.87 at 24 576 and
-// 0.82 at 32 768; beside a busy process 0.92 at 20 480.
-inline constexpr std::uint32_t look_ahead_from = 20480;
+// (`particlesim_bench exact_queue`, both forced, 7 rounds): 1.29 times the
+// linked buckets' time at 8192 disks, 1.07 at 24 576, 0.99 at 28 672, 0.97
+// at 32 768 and 0.70 at 49 152; beside a busy process 1.03 at 28 672 and
+// 0.97 at 32 768. (Since a particle's state shares a line with its cell
+// links, the linked buckets keep up to larger sizes: 20 480 before.)
+inline constexpr std::uint32_t look_ahead_from = 32768;
 // The four stages' distances in calendar buckets: entries and links, then
 // particles, then partners and cell heads, then the cells' first members
 // ((16, 12, 8, 4) to (4, 3, 2, 1) measured within noise of one another).
