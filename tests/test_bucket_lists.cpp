@@ -2,8 +2,9 @@
 // a plain model (a vector per bucket) over random inserts and moves: every
 // bucket holds what the model holds, and gather() lists exactly what
 // for_each_in() visits, in the same order, the skipped item left out, within
-// the room it is given. Moving a bucket's first item writes over the spare
-// slot's links, which gather() must not take for a member's.
+// the room it is given; each bucket's head names its first two items.
+// Moving a bucket's first item writes over the spare slot's links, which
+// gather() must not take for a member's.
 
 #include "check.hpp"
 
@@ -64,6 +65,9 @@ void matches_model(std::uint32_t buckets, std::uint32_t items, std::uint64_t see
         std::vector<std::uint32_t> expected = model[bucket];
         std::sort(expected.begin(), expected.end());
         CHECK(sorted == expected);
+        // The head names the first two.
+        CHECK_EQ(lists.first(bucket), order.empty() ? BucketLists::none : order[0]);
+        CHECK_EQ(lists.second(bucket), order.size() < 2 ? BucketLists::none : order[1]);
 
         // Skipping a member, an item elsewhere, and nothing.
         const std::uint32_t member = order.empty() ? BucketLists::none : order[rng.next() % order.size()];

@@ -34,10 +34,12 @@ public:
     static constexpr std::uint32_t none = 0xffffffffU;  // below any particle count the engines accept
 
     // Every item starts in no bucket; insert() places it.
-    BucketListsOf(std::size_t buckets, std::size_t items) : items_(items), head_(buckets, none), records_(items + 1) {}
+    BucketListsOf(std::size_t buckets, std::size_t items)
+        : items_(items), heads_(buckets, Head{}), records_(items + 1) {}
 
     [[nodiscard]] std::uint32_t bucket_of(std::uint32_t item) const { return records_[item].bucket; }
-    [[nodiscard]] std::uint32_t first(std::uint32_t bucket) const { return head_[bucket]; }
+    [[nodiscard]] std::uint32_t first(std::uint32_t bucket) const { return heads_[bucket].first; }
+    [[nodiscard]] std::uint32_t second(std::uint32_t bucket) const { return heads_[bucket].second; }
     [[nodiscard]] std::uint32_t next(std::uint32_t item) const { return records_[item].next; }
     [[nodiscard]] std::uint32_t previous(std::uint32_t item) const { return records_[item].previous; }
     [[nodiscard]] Record& record(std::uint32_t item) { return records_[item]; }
@@ -45,27 +47,32 @@ public:
 
     // The item's record (`none`: the spare slot's).
     void prefetch_links(std::uint32_t item) const { prefetch(&records_[slot(item)]); }
-    void prefetch_head(std::uint32_t bucket) const { prefetch(&head_[bucket]); }
+    void prefetch_head(std::uint32_t bucket) const { prefetch(&heads_[bucket]); }
 
     // Without branches on whether a neighbour exists (in a queue or a cell
     // list that is random, and was mispredicted half the time): a link of a
     // missing neighbour is written to a spare slot past the last item, and
-    // the head is always written, with its own value when it stays.
+    // the head is always written, with its own values when they stay.
     void insert(std::uint32_t item, std::uint32_t bucket) {
-        const std::uint32_t first = head_[bucket];
+        Head& head = heads_[bucket];
+        const std::uint32_t first = head.first;
         Record& own = records_[item];
         own.next = first;
         own.previous = none;
         own.bucket = bucket;
         records_[slot(first)].previous = item;
-        head_[bucket] = item;
+        head = {item, first};
     }
     void remove(std::uint32_t item) {
         const BucketLinks own{records_[item].next, records_[item].previous, records_[item].bucket};
         records_[slot(own.previous)].next = own.next;
-        const std::uint32_t keep_head = own.previous == none ? 0U : ~0U;  // a mask: no branch
-        head_[own.bucket] = (head_[own.bucket] & keep_head) | (own.next & ~keep_head);
         records_[slot(own.next)].previous = own.previous;
+        Head& head = heads_[own.bucket];
+        const bool was_first = own.previous == none;
+        const bool was_second = head.second == item;
+        const std::uint32_t third = next_or_none(own.next);  // after the item's next, when it was first
+        head.second = was_first ? third : was_second ? own.next : head.second;
+        head.first = was_first ? own.next : head.first;
     }
     void move(std::uint32_t item, std::uint32_t bucket) {
         remove(item);
@@ -77,24 +84,24 @@ public:
     // item in the lists' order (which jumps through memory at random).
     template <typename BucketFor>
     void refill_all(BucketFor&& bucket_for) {
-        std::fill(head_.begin(), head_.end(), none);
+        std::fill(heads_.begin(), heads_.end(), Head{});
         for (std::uint32_t item = 0; item < items_; ++item) insert(item, bucket_for(item));
     }
 
     // Writes the bucket's items but `skipped` to out[k], out[k + 1], ...
     // and returns the k after the last; out needs room for them and one
-    // more. The first two places are written whether or not an item fills
-    // them (each counted only when one does), so that the buckets of a
-    // search, mostly empty or of one item at random, cost no mispredicted
-    // branch; the spare slot's links stand for `none`'s.
+    // more. The first two, from the head, are written whether or not an
+    // item fills their places (each counted only when one does), so that the
+    // buckets of a search, mostly empty or of one item at random, cost no
+    // mispredicted branch and no wait for a record.
     std::size_t gather(std::uint32_t bucket, std::uint32_t skipped, std::uint32_t* out, std::size_t k) const {
-        std::uint32_t item = head_[bucket];
-        out[k] = item;
-        k += static_cast<std::size_t>((item != none) & (item != skipped));
-        item = next_or_none(item);
-        out[k] = item;
-        k += static_cast<std::size_t>((item != none) & (item != skipped));
-        for (item = next_or_none(item); item != none; item = records_[item].next) {
+        const Head head = heads_[bucket];
+        out[k] = head.first;
+        k += static_cast<std::size_t>((head.first != none) & (head.first != skipped));
+        out[k] = head.second;
+        k += static_cast<std::size_t>((head.second != none) & (head.second != skipped));
+        if (head.second == none) return k;  // nearly always
+        for (std::uint32_t item = records_[head.second].next; item != none; item = records_[item].next) {
             out[k] = item;
             k += static_cast<std::size_t>(item != skipped);
         }
@@ -104,7 +111,7 @@ public:
     // visit(item) for every item in the bucket.
     template <typename Visit>
     void for_each_in(std::uint32_t bucket, Visit&& visit) const {
-        for (std::uint32_t item = head_[bucket]; item != none; item = records_[item].next) visit(item);
+        for (std::uint32_t item = heads_[bucket].first; item != none; item = records_[item].next) visit(item);
     }
 
 private:
@@ -118,8 +125,15 @@ private:
     // The item's own slot, or the spare one for `none` (above every item).
     [[nodiscard]] std::size_t slot(std::uint32_t item) const { return std::min<std::size_t>(item, items_); }
 
+    // A bucket's first two items (none where it has fewer): a search reads
+    // both without waiting for the first's record.
+    struct alignas(8) Head {
+        std::uint32_t first = none;
+        std::uint32_t second = none;
+    };
+
     std::size_t items_;
-    HugePageVector<std::uint32_t> head_;
+    HugePageVector<Head> heads_;
     HugePageVector<Record> records_;  // one more than the items: the spare slot
 };
 
