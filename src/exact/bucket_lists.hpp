@@ -11,7 +11,6 @@
 #include "core/prefetch.hpp"
 
 #include <algorithm>
-#include <bit>
 #include <cstdint>
 #include <vector>
 

@@ -502,12 +502,12 @@ private:
     // with N. The queue already knows the next events, so each
     // event fetches, in four stages, what those a few buckets behind it will
     // read: their queue entries; their particles and pair partners; the
-    // heads of the cells they will search; the first member of each of those
-    // cells. A collision searches around both partners; a crossing only
-    // the three cells that become neighbours, and moves the
-    // particle between two cells' lists. Each stage reads only what the
-    // stage before fetched. Prefetches are hints: a queue that changes
-    // meanwhile costs a wasted fetch, never a different event.
+    // heads of the cells they will search; the first member of each of
+    // those cells. A collision searches around both partners; a crossing
+    // only the three cells that become neighbours, and it moves the particle
+    // between two cells' lists. Each stage reads only what the stage before
+    // fetched. Prefetches are hints: a queue that changes meanwhile costs a
+    // wasted fetch, never a different event.
     void prefetch_coming_events() {
         ladder_queue_.for_each_coming(look_entries_, [&](std::uint32_t o) { ladder_queue_.prefetch_entry(o); });
         ladder_queue_.for_each_coming(look_particles_, [&](std::uint32_t o) {
