@@ -2,9 +2,9 @@
 // a plain model (a vector per bucket) over random inserts and moves: every
 // bucket holds what the model holds, and gather() lists exactly what
 // for_each_in() visits, in the same order, the skipped item left out, within
-// the room it is given; each bucket's head names its first two items.
-// Moving a bucket's first item writes over the spare slot's links, which
-// gather() must not take for a member's.
+// the room it is given; each bucket's head names its first two items, also
+// after the first is moved away (the third becomes the second, read through
+// the spare slot when there is none).
 
 #include "check.hpp"
 

@@ -69,7 +69,10 @@ public:
         Head& head = heads_[own.bucket];
         const bool was_first = own.previous == none;
         const bool was_second = head.second == item;
-        const std::uint32_t third = next_or_none(own.next);  // after the item's next, when it was first
+        // The item after the item's next, needed only when the item was
+        // first; then, if it had no next, the first write above set the
+        // spare slot's next to none, and this reads none.
+        const std::uint32_t third = records_[slot(own.next)].next;
         head.second = was_first ? third : was_second ? own.next : head.second;
         head.first = was_first ? own.next : head.first;
     }
@@ -114,13 +117,6 @@ public:
     }
 
 private:
-    // The next item in the item's bucket; none after none (the spare
-    // slot's own links are written over by insert() and remove()).
-    [[nodiscard]] std::uint32_t next_or_none(std::uint32_t item) const {
-        const std::uint32_t missing = item == none ? none : 0U;  // a mask: no branch
-        return records_[slot(item)].next | missing;
-    }
-
     // The item's own slot, or the spare one for `none` (above every item).
     [[nodiscard]] std::size_t slot(std::uint32_t item) const { return std::min<std::size_t>(item, items_); }
 
