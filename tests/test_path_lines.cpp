@@ -85,11 +85,15 @@ Trial make_trial(SplitMix64& rng, int scale, int speed_shift, double speed_decad
     return t;
 }
 
+// Whether this processor runs the `lanes`-lane test; says so when it does not.
+bool lanes_run_here(int lanes) {
+    if (PathLines::supports_lanes(lanes)) return true;
+    std::printf("test_path_lines: no %d-lane test on this processor, not run\n", lanes);
+    return false;
+}
+
 void never_drops_a_pair_within_reach(int lanes) {
-    if (!PathLines::supports_lanes(lanes)) {
-        std::printf("test_path_lines: no %d-lane test on this processor, not run\n", lanes);
-        return;
-    }
+    if (!lanes_run_here(lanes)) return;
     SplitMix64 rng(15);
     long dropped = 0;
     long within = 0;
@@ -186,10 +190,7 @@ void moved_and_set_lines_are_assigned_lines() {
 // lane width, old and new lines mixed at random (all new, as made afresh,
 // included).
 void arranged_new_lines_find_what_each_finds(int lanes) {
-    if (!PathLines::supports_lanes(lanes)) {
-        std::printf("test_path_lines: no %d-lane test on this processor, not run\n", lanes);
-        return;
-    }
+    if (!lanes_run_here(lanes)) return;
     SplitMix64 rng(17);
     long found_pairs = 0;
     for (int trial = 0; trial < 200; ++trial) {
