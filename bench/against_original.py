@@ -4,20 +4,24 @@ whole runs, the programs alternating run by run (the order flips every
 round). The original (ariadn3/DiscreteParticleSimulator, openmp/sequential,
 built with `gcc -O3 -fopenmp -o sim *.c -lm`) reads the scene on stdin.
 Prints CSV: per program the median, lowest and highest time, and the
-original's median over the program's.
+original's median over the program's. With --cpu=K, every run is pinned to
+CPU K (simcli_runs.py), and only the one-thread programs run.
 
-    bench/against_original.py ORIGINAL_SIM BUILD_DIR [SCENE [ROUNDS]] > bench/results/<machine>/against_original.csv
+    bench/against_original.py ORIGINAL_SIM BUILD_DIR [SCENE [ROUNDS]] [--cpu=K] > bench/results/<machine>/against_original.csv
 """
 import os
 import statistics
 import subprocess
-import sys
 import time
 
-original = sys.argv[1]
-build = sys.argv[2]
-scene = sys.argv[3] if len(sys.argv) > 3 else os.path.join(os.path.dirname(__file__), "..", "examples", "default.in")
-rounds = int(sys.argv[4]) if len(sys.argv) > 4 else 7
+from simcli_runs import command_line, cpu_option, on_cpu
+
+arguments, options = command_line(__doc__, 2)
+original = arguments[0]
+build = arguments[1]
+scene = arguments[2] if len(arguments) > 2 else os.path.join(os.path.dirname(__file__), "..", "examples", "default.in")
+rounds = int(arguments[3]) if len(arguments) > 3 else 7
+cpu = cpu_option(options)
 simcli = os.path.join(build, "apps", "simcli")
 programs = {
     "original sequential": ([original], True),
@@ -25,6 +29,8 @@ programs = {
     "simcli -t 2": ([simcli, "-t", "2", scene, "-o", os.devnull], False),
     "simcli": ([simcli, scene, "-o", os.devnull], False),
 }
+if cpu is not None:
+    del programs["simcli -t 2"], programs["simcli"]
 times = {name: [] for name in programs}
 for round_number in range(rounds):
     names = list(programs) if round_number % 2 == 0 else list(reversed(programs))
@@ -33,7 +39,7 @@ for round_number in range(rounds):
         with open(scene) as stdin:
             start = time.perf_counter()
             subprocess.run(command, stdin=stdin if on_stdin else subprocess.DEVNULL, stdout=subprocess.DEVNULL,
-                           stderr=subprocess.DEVNULL, check=True)
+                           stderr=subprocess.DEVNULL, check=True, preexec_fn=on_cpu(cpu))
             times[name].append(time.perf_counter() - start)
 reference = statistics.median(times["original sequential"])
 print("scene,program,rounds,median_s,min_s,max_s,original_over_this")

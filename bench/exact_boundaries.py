@@ -3,18 +3,20 @@
 scene files: the gas at area fraction 0.3 (simgen gas) at 1e4, 1e5 and 1e6
 disks, the two boundaries alternating run by run (the order flips every
 round), the time being simcli --stats' step time. Prints CSV: per size the
-median of the per-round ratios periodic / walls and their range.
+median of the per-round ratios periodic / walls and their range. With
+--cpu=K, every run is pinned to CPU K (simcli_runs.py).
 
-    bench/exact_boundaries.py BUILD_DIR [ROUNDS] > bench/results/<machine>/exact_boundaries.csv
+    bench/exact_boundaries.py BUILD_DIR [ROUNDS] [--cpu=K] > bench/results/<machine>/exact_boundaries.csv
 """
 import os
-import sys
 import tempfile
 
-from simcli_runs import alternate, cases, median, write_gas
+from simcli_runs import alternate, cases, command_line, cpu_option, median, write_gas
 
-build = sys.argv[1] if len(sys.argv) > 1 else "build"
-rounds = int(sys.argv[2]) if len(sys.argv) > 2 else 7
+arguments, options = command_line(__doc__, 0)
+build = arguments[0] if arguments else "build"
+rounds = int(arguments[1]) if len(arguments) > 1 else 7
+cpu = cpu_option(options)
 simgen = os.path.join(build, "apps", "simgen")
 simcli = os.path.join(build, "apps", "simcli")
 
@@ -25,7 +27,7 @@ with tempfile.TemporaryDirectory() as directory:
         scene = write_gas(simgen, directory, particles, steps)
         commands = {boundary: [simcli, "--engine", "exact", "--boundary", boundary, scene]
                     for boundary in ("walls", "periodic")}
-        times, counts, ratios = alternate(commands, rounds)
+        times, counts, ratios = alternate(commands, rounds, cpu)
         print(f"{particles},{steps},{rounds},{median(times['walls']):.4f},"
               f"{median(times['periodic']):.4f},{counts['walls'][0]},{counts['periodic'][0]},"
               f"{median(ratios):.3f},{min(ratios):.3f},{max(ratios):.3f}", flush=True)

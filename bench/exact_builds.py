@@ -5,29 +5,31 @@ binaries alternating run by run (the order flips every round), the time being
 simcli --stats' step time (reading and set-up excluded). Prints CSV: per size
 each build's median time and collisions a second (wall hits counted), and the
 median and range of the per-round ratios new / old. With --busy, one busy
-process (sh -c 'while :; do :; done') runs beside them throughout.
+process (sh -c 'while :; do :; done') runs beside them throughout; with
+--cpu=K, every run is pinned to CPU K (simcli_runs.py).
 
-    bench/exact_builds.py NEW_SIMCLI OLD_SIMCLI SIMGEN [ROUNDS] [--busy] > bench/results/<machine>/<name>.csv
+    bench/exact_builds.py NEW_SIMCLI OLD_SIMCLI SIMGEN [ROUNDS] [--busy] [--cpu=K] > bench/results/<machine>/<name>.csv
 """
 import sys
 import tempfile
 
-from simcli_runs import alternate, beside_busy_process, cases, command_line, load_name, median, write_gas
+from simcli_runs import alternate, beside_busy_process, cases, command_line, cpu_option, load_name, median, write_gas
 
 arguments, options = command_line(__doc__, 3)
 busy = "--busy" in options
+cpu = cpu_option(options)
 new_simcli, old_simcli, simgen = arguments[:3]
 rounds = int(arguments[3]) if len(arguments) > 3 else 7
 
 print("particles,steps,rounds,load,new_median_s,old_median_s,collisions,new_collisions_per_s,"
       "old_collisions_per_s,ratio_median,ratio_min,ratio_max")
-with beside_busy_process(busy):
+with beside_busy_process(busy, cpu):
     with tempfile.TemporaryDirectory() as directory:
         for particles, steps in cases:
             scene = write_gas(simgen, directory, particles, steps)
             commands = {build: [simcli, "--engine", "exact", "-t", "1", scene]
                         for build, simcli in (("old", old_simcli), ("new", new_simcli))}
-            times, counts, ratios = alternate(commands, rounds)
+            times, counts, ratios = alternate(commands, rounds, cpu)
             collisions = {build: sum(counts[build]) for build in counts}
             if collisions["new"] != collisions["old"]:
                 sys.exit(f"the builds disagree at {particles} disks: {collisions['new']} and {collisions['old']} collisions")

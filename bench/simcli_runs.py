@@ -1,7 +1,16 @@
 """What the comparison scripts share (exact_boundaries.py, exact_builds.py,
-stepped_builds.py, two_threads.py): simcli's step time, two commands run
-alternately, the order flipping every round, the command line, the busy
-process beside them, and the exact engine's gas scenes."""
+stepped_builds.py, two_threads.py, against_original.py): simcli's step time,
+two commands run alternately, the order flipping every round, the command
+line, the pinning to one CPU (--cpu=K), the busy process beside them, and the
+exact engine's gas scenes.
+
+Pinning: on a virtual machine whose CPUs are shared with other guests, one
+CPU can run the same program 1.35 times slower than another for minutes,
+and runs left to the scheduler land on either, so a ratio of two runs picks
+that up at random (two runs of one binary on the 2-core benchmark host:
+ratios from 0.62 to 1.47 unpinned, 0.92 to 1.05 on one CPU; benchmarks.md,
+"Measuring on this machine"). With --cpu=K every timed run is pinned to CPU
+K and the busy process to another."""
 import contextlib
 import os
 import re
@@ -21,17 +30,25 @@ def write_gas(simgen, directory, particles, steps):
     return scene
 
 
-def step_time(command):
+def on_cpu(cpu):
+    """A preexec_fn for subprocess that pins the child to CPU (None: leaves it to the scheduler)."""
+    if cpu is None:
+        return None
+    return lambda: os.sched_setaffinity(0, {cpu})
+
+
+def step_time(command, cpu=None):
     """simcli's --stats step time and its collisions (pairs and walls) for COMMAND (a list ending in the scene)."""
-    run = subprocess.run(command + ["--stats", "-o", os.devnull], capture_output=True, text=True, check=True)
+    run = subprocess.run(command + ["--stats", "-o", os.devnull], capture_output=True, text=True, check=True,
+                         preexec_fn=on_cpu(cpu))
     seconds = float(re.search(r"steps in ([0-9.e+-]+) s", run.stderr).group(1))
     counts = re.search(r"stats: (\d+) particle collisions, (\d+) wall collisions", run.stderr)
     return seconds, int(counts.group(1)), int(counts.group(2))
 
 
-def alternate(commands, rounds):
-    """Runs the two commands {name: command} alternately; returns each one's times, its last
-    step_time() counts, and the per-round ratios second / first."""
+def alternate(commands, rounds, cpu=None):
+    """Runs the two commands {name: command} alternately (on CPU, if given); returns each one's
+    times, its last step_time() counts, and the per-round ratios second / first."""
     first, second = commands
     times = {first: [], second: []}
     counts = {}
@@ -40,7 +57,7 @@ def alternate(commands, rounds):
         order = [first, second] if round_number % 2 == 0 else [second, first]
         this_round = {}
         for name in order:
-            this_round[name], *counts[name] = step_time(commands[name])
+            this_round[name], *counts[name] = step_time(commands[name], cpu)
             times[name].append(this_round[name])
         ratios.append(this_round[second] / this_round[first])
     return times, counts, ratios
@@ -64,14 +81,28 @@ def command_line(usage, at_least):
     return arguments, {a for a in sys.argv[1:] if a.startswith("--")}
 
 
+def cpu_option(options):
+    """K of --cpu=K among OPTIONS (exits unless K is a CPU this process may use), or None."""
+    values = [option.partition("=")[2] for option in options if option.startswith("--cpu=")]
+    if not values:
+        return None
+    allowed = os.sched_getaffinity(0)
+    if not values[-1].isdigit() or int(values[-1]) not in allowed:
+        sys.exit(f"--cpu=K: K must be one of the CPUs this process may use: {sorted(allowed)}")
+    return int(values[-1])
+
+
 def load_name(busy):
     return "one busy process" if busy else "quiet"
 
 
 @contextlib.contextmanager
-def beside_busy_process(busy):
-    """With BUSY, one busy process (sh -c 'while :; do :; done') runs while inside."""
-    load = subprocess.Popen(["sh", "-c", "while :; do :; done"]) if busy else None
+def beside_busy_process(busy, cpu=None):
+    """With BUSY, one busy process (sh -c 'while :; do :; done') runs while inside; with CPU,
+    pinned to another CPU than that one, where there is another."""
+    others = sorted(os.sched_getaffinity(0) - {cpu}) if cpu is not None else []
+    pin = on_cpu(others[0]) if others else None
+    load = subprocess.Popen(["sh", "-c", "while :; do :; done"], preexec_fn=pin) if busy else None
     try:
         yield
     finally:

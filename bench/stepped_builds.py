@@ -4,24 +4,29 @@ binaries alternating run by run (the order flips every round), the time
 being simcli --stats' step time (reading and set-up excluded). Prints one CSV
 row: each build's median time, and the median, quartiles and range of the
 per-round ratios new / old. With --busy, one busy process
-(sh -c 'while :; do :; done') runs beside them throughout.
+(sh -c 'while :; do :; done') runs beside them throughout; with --cpu=K,
+every run is pinned to CPU K (simcli_runs.py; one thread then).
 
-    bench/stepped_builds.py NEW_SIMCLI OLD_SIMCLI SCENE THREADS ROUNDS [--busy] [--header]
+    bench/stepped_builds.py NEW_SIMCLI OLD_SIMCLI SCENE THREADS ROUNDS [--busy] [--header] [--cpu=K]
 """
 import os
+import sys
 
-from simcli_runs import alternate, beside_busy_process, command_line, load_name, median, quartiles
+from simcli_runs import alternate, beside_busy_process, command_line, cpu_option, load_name, median, quartiles
 
 arguments, options = command_line(__doc__, 5)
 new_simcli, old_simcli, scene, threads, rounds = arguments[0], arguments[1], arguments[2], arguments[3], int(arguments[4])
 busy = "--busy" in options
+cpu = cpu_option(options)
+if cpu is not None and threads != "1":
+    sys.exit("stepped_builds.py: --cpu=K pins every run to one CPU, so THREADS must be 1")
 
 if "--header" in options:
     print("scene,threads,load,rounds,new_median_s,old_median_s,ratio_median,ratio_lower_quartile,"
           "ratio_upper_quartile,ratio_min,ratio_max")
-with beside_busy_process(busy):
+with beside_busy_process(busy, cpu):
     commands = {build: [simcli, "-t", threads, scene] for build, simcli in (("old", old_simcli), ("new", new_simcli))}
-    times, _, ratios = alternate(commands, rounds)
+    times, _, ratios = alternate(commands, rounds, cpu)
     lower, upper = quartiles(ratios)
     print(f"{os.path.basename(scene)},{threads},{load_name(busy)},{rounds},"
           f"{median(times['new']):.4f},{median(times['old']):.4f},"
