@@ -14,14 +14,14 @@ import statistics
 import subprocess
 import time
 
-from simcli_runs import command_line, cpu_option, on_cpu
+from simcli_runs import command_line, pin_to_cpu_option
 
 arguments, options = command_line(__doc__, 2)
 original = arguments[0]
 build = arguments[1]
 scene = arguments[2] if len(arguments) > 2 else os.path.join(os.path.dirname(__file__), "..", "examples", "default.in")
 rounds = int(arguments[3]) if len(arguments) > 3 else 7
-cpu = cpu_option(options)
+cpu = pin_to_cpu_option(options)
 simcli = os.path.join(build, "apps", "simcli")
 programs = {
     "original sequential": ([original], True),
@@ -39,7 +39,7 @@ for round_number in range(rounds):
         with open(scene) as stdin:
             start = time.perf_counter()
             subprocess.run(command, stdin=stdin if on_stdin else subprocess.DEVNULL, stdout=subprocess.DEVNULL,
-                           stderr=subprocess.DEVNULL, check=True, preexec_fn=on_cpu(cpu))
+                           stderr=subprocess.DEVNULL, check=True)
             times[name].append(time.perf_counter() - start)
 reference = statistics.median(times["original sequential"])
 print("scene,program,rounds,median_s,min_s,max_s,original_over_this")

@@ -11,12 +11,12 @@ median of the per-round ratios periodic / walls and their range. With
 import os
 import tempfile
 
-from simcli_runs import alternate, cases, command_line, cpu_option, median, write_gas
+from simcli_runs import alternate, cases, command_line, pin_to_cpu_option, median, write_gas
 
 arguments, options = command_line(__doc__, 0)
 build = arguments[0] if arguments else "build"
 rounds = int(arguments[1]) if len(arguments) > 1 else 7
-cpu = cpu_option(options)
+cpu = pin_to_cpu_option(options)
 simgen = os.path.join(build, "apps", "simgen")
 simcli = os.path.join(build, "apps", "simcli")
 
@@ -27,7 +27,7 @@ with tempfile.TemporaryDirectory() as directory:
         scene = write_gas(simgen, directory, particles, steps)
         commands = {boundary: [simcli, "--engine", "exact", "--boundary", boundary, scene]
                     for boundary in ("walls", "periodic")}
-        times, counts, ratios = alternate(commands, rounds, cpu)
+        times, counts, ratios = alternate(commands, rounds)
         print(f"{particles},{steps},{rounds},{median(times['walls']):.4f},"
               f"{median(times['periodic']):.4f},{counts['walls'][0]},{counts['periodic'][0]},"
               f"{median(ratios):.3f},{min(ratios):.3f},{max(ratios):.3f}", flush=True)

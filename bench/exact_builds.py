@@ -13,11 +13,11 @@ process (sh -c 'while :; do :; done') runs beside them throughout; with
 import sys
 import tempfile
 
-from simcli_runs import alternate, beside_busy_process, cases, command_line, cpu_option, load_name, median, write_gas
+from simcli_runs import alternate, beside_busy_process, cases, command_line, pin_to_cpu_option, load_name, median, write_gas
 
 arguments, options = command_line(__doc__, 3)
 busy = "--busy" in options
-cpu = cpu_option(options)
+cpu = pin_to_cpu_option(options)
 new_simcli, old_simcli, simgen = arguments[:3]
 rounds = int(arguments[3]) if len(arguments) > 3 else 7
 
@@ -29,7 +29,7 @@ with beside_busy_process(busy, cpu):
             scene = write_gas(simgen, directory, particles, steps)
             commands = {build: [simcli, "--engine", "exact", "-t", "1", scene]
                         for build, simcli in (("old", old_simcli), ("new", new_simcli))}
-            times, counts, ratios = alternate(commands, rounds, cpu)
+            times, counts, ratios = alternate(commands, rounds)
             collisions = {build: sum(counts[build]) for build in counts}
             if collisions["new"] != collisions["old"]:
                 sys.exit(f"the builds disagree at {particles} disks: {collisions['new']} and {collisions['old']} collisions")

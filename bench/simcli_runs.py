@@ -8,9 +8,12 @@ Pinning: on a virtual machine whose CPUs are shared with other guests, one
 CPU can run the same program 1.35 times slower than another for minutes,
 and runs left to the scheduler land on either, so a ratio of two runs picks
 that up at random (two runs of one binary on the 2-core benchmark host:
-ratios from 0.62 to 1.47 unpinned, 0.92 to 1.05 on one CPU; benchmarks.md,
-"Measuring on this machine"). With --cpu=K every timed run is pinned to CPU
-K and the busy process to another."""
+ratios up to 0.74 to 1.33 unpinned, within 0.95 to 1.08 on one CPU;
+benchmarks.md). With --cpu=K the script pins itself to CPU K, so that every
+run it starts stays there, and the busy process to another. (The script
+pins itself rather than each child, so that a child is still started the
+fast way, without a fork of the Python process: whole-run timings such as
+against_original.py's count the start.)"""
 import contextlib
 import os
 import re
@@ -30,25 +33,17 @@ def write_gas(simgen, directory, particles, steps):
     return scene
 
 
-def on_cpu(cpu):
-    """A preexec_fn for subprocess that pins the child to CPU (None: leaves it to the scheduler)."""
-    if cpu is None:
-        return None
-    return lambda: os.sched_setaffinity(0, {cpu})
-
-
-def step_time(command, cpu=None):
+def step_time(command):
     """simcli's --stats step time and its collisions (pairs and walls) for COMMAND (a list ending in the scene)."""
-    run = subprocess.run(command + ["--stats", "-o", os.devnull], capture_output=True, text=True, check=True,
-                         preexec_fn=on_cpu(cpu))
+    run = subprocess.run(command + ["--stats", "-o", os.devnull], capture_output=True, text=True, check=True)
     seconds = float(re.search(r"steps in ([0-9.e+-]+) s", run.stderr).group(1))
     counts = re.search(r"stats: (\d+) particle collisions, (\d+) wall collisions", run.stderr)
     return seconds, int(counts.group(1)), int(counts.group(2))
 
 
-def alternate(commands, rounds, cpu=None):
-    """Runs the two commands {name: command} alternately (on CPU, if given); returns each one's
-    times, its last step_time() counts, and the per-round ratios second / first."""
+def alternate(commands, rounds):
+    """Runs the two commands {name: command} alternately; returns each one's times, its last
+    step_time() counts, and the per-round ratios second / first."""
     first, second = commands
     times = {first: [], second: []}
     counts = {}
@@ -57,7 +52,7 @@ def alternate(commands, rounds, cpu=None):
         order = [first, second] if round_number % 2 == 0 else [second, first]
         this_round = {}
         for name in order:
-            this_round[name], *counts[name] = step_time(commands[name], cpu)
+            this_round[name], *counts[name] = step_time(commands[name])
             times[name].append(this_round[name])
         ratios.append(this_round[second] / this_round[first])
     return times, counts, ratios
@@ -81,15 +76,18 @@ def command_line(usage, at_least):
     return arguments, {a for a in sys.argv[1:] if a.startswith("--")}
 
 
-def cpu_option(options):
-    """K of --cpu=K among OPTIONS (exits unless K is a CPU this process may use), or None."""
+def pin_to_cpu_option(options):
+    """With --cpu=K among OPTIONS, pins this process (and so every child it starts) to CPU K and
+    returns K (exits unless K is a CPU this process may use); else returns None."""
     values = [option.partition("=")[2] for option in options if option.startswith("--cpu=")]
     if not values:
         return None
     allowed = os.sched_getaffinity(0)
     if not values[-1].isdigit() or int(values[-1]) not in allowed:
         sys.exit(f"--cpu=K: K must be one of the CPUs this process may use: {sorted(allowed)}")
-    return int(values[-1])
+    cpu = int(values[-1])
+    os.sched_setaffinity(0, {cpu})
+    return cpu
 
 
 def load_name(busy):
@@ -98,10 +96,10 @@ def load_name(busy):
 
 @contextlib.contextmanager
 def beside_busy_process(busy, cpu=None):
-    """With BUSY, one busy process (sh -c 'while :; do :; done') runs while inside; with CPU,
-    pinned to another CPU than that one, where there is another."""
-    others = sorted(os.sched_getaffinity(0) - {cpu}) if cpu is not None else []
-    pin = on_cpu(others[0]) if others else None
+    """With BUSY, one busy process (sh -c 'while :; do :; done') runs while inside; with CPU (the
+    one this process is pinned to), on another CPU, where there is another."""
+    others = sorted(set(range(os.cpu_count() or 1)) - {cpu}) if cpu is not None else []
+    pin = (lambda: os.sched_setaffinity(0, {others[0]})) if others else None
     load = subprocess.Popen(["sh", "-c", "while :; do :; done"], preexec_fn=pin) if busy else None
     try:
         yield

@@ -12,12 +12,12 @@ every run is pinned to CPU K (simcli_runs.py; one thread then).
 import os
 import sys
 
-from simcli_runs import alternate, beside_busy_process, command_line, cpu_option, load_name, median, quartiles
+from simcli_runs import alternate, beside_busy_process, command_line, pin_to_cpu_option, load_name, median, quartiles
 
 arguments, options = command_line(__doc__, 5)
 new_simcli, old_simcli, scene, threads, rounds = arguments[0], arguments[1], arguments[2], arguments[3], int(arguments[4])
 busy = "--busy" in options
-cpu = cpu_option(options)
+cpu = pin_to_cpu_option(options)
 if cpu is not None and threads != "1":
     sys.exit("stepped_builds.py: --cpu=K pins every run to one CPU, so THREADS must be 1")
 
@@ -26,7 +26,7 @@ if "--header" in options:
           "ratio_upper_quartile,ratio_min,ratio_max")
 with beside_busy_process(busy, cpu):
     commands = {build: [simcli, "-t", threads, scene] for build, simcli in (("old", old_simcli), ("new", new_simcli))}
-    times, _, ratios = alternate(commands, rounds, cpu)
+    times, _, ratios = alternate(commands, rounds)
     lower, upper = quartiles(ratios)
     print(f"{os.path.basename(scene)},{threads},{load_name(busy)},{rounds},"
           f"{median(times['new']):.4f},{median(times['old']):.4f},"
