@@ -11,6 +11,7 @@
 #include "exact/linked_calendar.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <limits>
 #include <vector>
 
@@ -110,6 +111,41 @@ void look_ahead_visits_each_coming_entry_once(std::uint32_t owners, std::uint32_
     CHECK(visited_before_taken > taken / 100 * 99);
 }
 
+// The window's start and width read from a sample of the times: the start is
+// the earliest of all of them, never only the sample's; up to sample_size
+// entries the width is the exact quantile's; beyond, within a few percent.
+void window_from_a_sample() {
+    particlesim::SplitMix64 rng(11);
+    for (const std::size_t owners : {1UL, 3UL, 4096UL, 4097UL, 100000UL, 1000000UL}) {
+        std::vector<double> times(owners);
+        for (double& time : times) time = rng.next() % 5 == 0 ? never : 1.0 + 7.0 * rng.uniform();
+        times[owners - 1] = 0.5;  // the earliest, where a stride-wise sample never looks first
+        const particlesim::CalendarWindow window(static_cast<std::uint32_t>(owners));
+        std::vector<double> sample;
+        const particlesim::CalendarWindow::Times read = particlesim::CalendarWindow::read_times(
+            owners, [&](std::size_t k) { return times[k]; }, sample);
+        std::vector<double> finite;
+        for (const double time : times) {
+            if (time != never) finite.push_back(time);
+        }
+        CHECK_EQ(read.finite, finite.size());
+        CHECK(read.earliest == 0.5);
+        CHECK(sample.size() <= particlesim::CalendarWindow::sample_size);
+        const particlesim::CalendarWindow::Start start = window.start_for(read, sample);
+        CHECK(start.base == 0.5);
+        // The exact width: the earliest filled_by_half-th time's spread over filled_by_half buckets.
+        std::sort(finite.begin(), finite.end());
+        const std::size_t rank = std::min<std::size_t>(finite.size() - 1, window.filled_by_half);
+        const double spread = finite[rank] - 0.5;  // zero with a single time: then a width of 1e-12 of it
+        const double exact_width = spread > 0.0 ? spread / window.filled_by_half : 0.5e-12;
+        if (finite.size() <= particlesim::CalendarWindow::sample_size) {
+            CHECK(start.buckets_per_time == 1.0 / exact_width);
+        } else {
+            CHECK(std::abs(exact_width * start.buckets_per_time - 1.0) < 0.05);
+        }
+    }
+}
+
 template <typename Calendar>
 void all_never() {
     Calendar calendar(5, Event{never, EventKind::wall, 0, 0});
@@ -144,6 +180,7 @@ int main(int argc, char** argv) {
     return check::run(argc, argv, "test_event_calendar",
                       {{"linked calendar against brute-force minimum", [] { against_brute_force<LinkedCalendar>(); }},
                        {"two-tier calendar against brute-force minimum", [] { against_brute_force<LadderCalendar>(); }},
+                       {"the window's start and width from a sample of the times", window_from_a_sample},
                        {"look ahead visits each coming entry once", [] {
                             for (const std::uint32_t owners : {5000U, 40000U}) {
                                 for (const std::uint32_t ahead : {1U, 3U, 8U})

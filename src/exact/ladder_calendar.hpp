@@ -34,7 +34,6 @@
 #include <algorithm>
 #include <bit>
 #include <cstdint>
-#include <limits>
 #include <vector>
 
 namespace particlesim {
@@ -216,12 +215,10 @@ private:
         epoch_ = epochs_;  // used up until the new window is made
         for (std::vector<Listing>& bucket : buckets_) bucket.clear();
         for (std::vector<Listing>& bin : bins_) bin.clear();
-        times_.clear();
-        for (const Owned& owned : owners_) {
-            if (owned.event.time < std::numeric_limits<double>::infinity()) times_.push_back(owned.event.time);
-        }
-        if (times_.empty()) return false;
-        start_ = window_.start_for(times_);
+        const CalendarWindow::Times times = CalendarWindow::read_times(
+            owners_.size(), [&](std::size_t owner) { return owners_[owner].event.time; }, times_);
+        if (times.finite == 0) return false;
+        start_ = window_.start_for(times, times_);
         epoch_ = 0;
         current_ = 0;
         for (std::uint32_t owner = 0; owner < owners_.size(); ++owner) list(owner, owners_[owner]);
@@ -235,7 +232,7 @@ private:
     std::vector<std::vector<Listing>> buckets_;  // the current epoch's
     std::vector<std::vector<Listing>> bins_;     // by epoch of the window; the current one's and those before are empty
     HugePageVector<Owned> owners_;               // by owner
-    std::vector<double> times_;                  // scratch of rebuild_window()
+    std::vector<double> times_;                  // scratch of rebuild_window(): a sample of the times
     CalendarWindow::Start start_;                // where the window's first bucket starts, and the buckets' width
     std::uint32_t epoch_ = 0;                    // the current epoch; epochs_ when the window is used up
     std::uint32_t current_ = 0;                  // the current bucket of the epoch: no entry lies in an earlier one

@@ -15,7 +15,6 @@
 
 #include <algorithm>
 #include <cstdint>
-#include <limits>
 #include <vector>
 
 namespace particlesim {
@@ -77,12 +76,10 @@ private:
     // The window is used up, so every entry is in the overflow: they are
     // read, and put in their new buckets, in owner order.
     void rebuild_window() {
-        times_.clear();
-        for (const Event& event : events_) {
-            if (event.time < std::numeric_limits<double>::infinity()) times_.push_back(event.time);
-        }
-        if (times_.empty()) return;  // nothing will ever happen: earliest is any entry, at `never`
-        start_ = window_.start_for(times_);
+        const CalendarWindow::Times times = CalendarWindow::read_times(
+            events_.size(), [&](std::size_t owner) { return events_[owner].time; }, times_);
+        if (times.finite == 0) return;  // nothing will ever happen: earliest is any entry, at `never`
+        start_ = window_.start_for(times, times_);
         current_ = 0;
         lists_.refill_all([&](std::uint32_t owner) { return bucket_of(events_[owner].time); });
     }
@@ -90,7 +87,7 @@ private:
     CalendarWindow window_;
     BucketLists lists_;              // owners by bucket; the last bucket is the overflow
     HugePageVector<Event> events_;   // by owner
-    std::vector<double> times_;      // scratch of rebuild_window()
+    std::vector<double> times_;      // scratch of rebuild_window(): a sample of the times
     CalendarWindow::Start start_;    // where bucket 0 starts, and the buckets' width
     std::uint32_t current_ = 0;      // no entry lies in an earlier bucket
     std::uint32_t earliest_ = none;  // cached; none when unknown
