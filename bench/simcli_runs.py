@@ -7,9 +7,9 @@ exact engine's gas scenes.
 Pinning: on a virtual machine whose CPUs are shared with other guests, one
 CPU can run the same program 1.35 times slower than another for minutes,
 and runs left to the scheduler land on either, so a ratio of two runs picks
-that up at random (two runs of one binary on the 2-core benchmark host:
-ratios up to 0.74 to 1.33 unpinned, within 0.95 to 1.08 on one CPU;
-benchmarks.md). With --cpu=K the script pins itself to CPU K, so that every
+that up at random (one build against itself on the 2-core benchmark host:
+single rounds from 0.66 to 1.53 unpinned, nearly all within 0.93 to 1.08
+pinned; benchmarks.md). With --cpu=K the script pins itself to CPU K, so that every
 run it starts stays there, and the busy process to another. (The script
 pins itself rather than each child, so that a child is still started the
 fast way, without a fork of the Python process: whole-run timings such as

@@ -119,7 +119,7 @@ void window_from_a_sample() {
     for (const std::size_t owners : {1UL, 3UL, 4096UL, 4097UL, 100000UL, 1000000UL}) {
         std::vector<double> times(owners);
         for (double& time : times) time = rng.next() % 5 == 0 ? never : 1.0 + 7.0 * rng.uniform();
-        times[owners - 1] = 0.5;  // the earliest, where a stride-wise sample never looks first
+        times[owners - 1] = 0.5;  // the earliest, last: the sample need not hold it
         const particlesim::CalendarWindow window(static_cast<std::uint32_t>(owners));
         std::vector<double> sample;
         const particlesim::CalendarWindow::Times read = particlesim::CalendarWindow::read_times(
