@@ -82,19 +82,13 @@ public:
     }
     // The same in a periodic grid: indices one beyond an edge wrap around.
     std::size_t gather_in_wrapped(int column, int row, std::uint32_t skipped, std::uint32_t* out, std::size_t k) const {
-        const int side = grid_.per_side();
-        column += column < 0 ? side : column >= side ? -side : 0;
-        row += row < 0 ? side : row >= side ? -side : 0;
-        return members_.gather(grid_.cell_at(column, row), skipped, out, k);
+        return members_.gather(wrapped_cell(column, row), skipped, out, k);
     }
 
     // The same in a periodic grid: indices one beyond an edge wrap around.
     template <typename Visit>
     void for_each_in_wrapped(int column, int row, Visit&& visit) const {
-        const int side = grid_.per_side();
-        column += column < 0 ? side : column >= side ? -side : 0;
-        row += row < 0 ? side : row >= side ? -side : 0;
-        members_.for_each_in(grid_.cell_at(column, row), visit);
+        members_.for_each_in(wrapped_cell(column, row), visit);
     }
 
     // visit(j) for every particle, cell by cell: neighbours come close
@@ -105,6 +99,15 @@ public:
     }
 
 private:
+    // The cell at (column, row) of a periodic grid, each index at most one
+    // beyond an edge.
+    [[nodiscard]] std::uint32_t wrapped_cell(int column, int row) const {
+        const int side = grid_.per_side();
+        column += column < 0 ? side : column >= side ? -side : 0;
+        row += row < 0 ? side : row >= side ? -side : 0;
+        return grid_.cell_at(column, row);
+    }
+
     template <typename Visit>
     void for_each_of_three(std::int64_t middle, std::int64_t stride, Visit&& visit) const {
         const auto last = static_cast<std::int64_t>(grid_.cell_count()) - 1;

@@ -571,9 +571,9 @@ private:
     // will search for partners: the owner's, and its pair partner's.
     template <typename Visit>
     void for_each_searched_cell(std::uint32_t owner, Visit&& visit) const {
-        const Event& event = ladder_queue_.entry(owner);
         visit(cells_.cell_of_particle(owner));
-        if (event.kind == EventKind::pair) visit(cells_.cell_of_particle(event.i ^ event.j ^ owner));
+        if (const std::uint32_t partner = pair_partner(owner); partner != BucketLists::none)
+            visit(cells_.cell_of_particle(partner));
     }
 
     void prefetch_particle(std::uint32_t i) const {
@@ -895,8 +895,17 @@ private:
         // across the other. All in arithmetic: the axis and the direction
         // are random, and branches on them were mispredicted half the time.
         const int step_x = static_cast<int>(cell == old_cell + 1) - static_cast<int>(cell + 1 == old_cell);
+        const int step_y = (1 - step_x * step_x) * (2 * static_cast<int>(cell > old_cell) - 1);
+        meet_new_neighbours(queue, i, column, row, step_x, step_y);
+    }
+
+    // After a crossing into the cell at (column, row), one step (step_x,
+    // step_y) along an axis: the pairs with the three cells that have become
+    // neighbours, one further along that axis and across the other; the next
+    // crossing; the queue entry.
+    template <typename Queue>
+    void meet_new_neighbours(Queue& queue, std::uint32_t i, int column, int row, int step_x, int step_y) {
         const int across_x = 1 - step_x * step_x;  // 1 when the step is along y
-        const int step_y = across_x * (2 * static_cast<int>(cell > old_cell) - 1);
         const int across_y = 1 - across_x;
         std::size_t n = 0;
         for (int k = -1; k <= 1; ++k)
@@ -929,14 +938,7 @@ private:
         if (column - old_column < -1) ++plans_[i].images[0];
         if (row - old_row > 1) --plans_[i].images[1];
         if (row - old_row < -1) ++plans_[i].images[1];
-        const int across_x = step_x == 0 ? 1 : 0;
-        const int across_y = 1 - across_x;
-        std::size_t n = 0;
-        for (int k = -1; k <= 1; ++k)
-            n = gather_cell(column + step_x + across_x * k, row + step_y + across_y * k, i, n);
-        consider_pairs(i, gathered_.data(), n);
-        predict_crossing(i, column, row);
-        reschedule(queue, i);
+        meet_new_neighbours(queue, i, column, row, step_x, step_y);
     }
 
     void take_snapshot() {
