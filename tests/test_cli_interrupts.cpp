@@ -127,7 +127,7 @@ void signals_checkpoint_and_resume() {
             check::Context context(engine, " engine, signal ", signal);
             const std::string out = dir / "first.out", checkpoint = dir / "run.checkpoint";
             const Result first =
-                simcli_run({"--engine", engine, "-o", out, "--checkpoint", checkpoint}, scene, {signal, 700});
+                simcli_run({"--engine", engine, "-o", out, "--checkpoint", checkpoint}, scene, {signal, 250});
             CHECK_EQ(first.status, 128 + signal);
             CHECK(first.err.find("interrupted after step ") == 0 ||
                   first.err.find("simcli: interrupted after step ") == 0);
