@@ -5,10 +5,9 @@
 # checks compiled in (any report fails the run). The Release pass also
 # cross-checks the bytes on aarch64 under qemu, runs the parallel stages under
 # ThreadSanitizer (clang's OpenMP) and fuzzes for 10 seconds.
-# 6 min 50 s to 9 min 38 s (five runs) from a clean clone on one host of the project's 2-core machine with the tools
-# already installed (OpenMPI's tests included; its speed varies by a third through a day), 10 min 42 s and 11 min 46 s
-# on another, where a first touch of memory is slow (a quarter of the CPU time in the kernel); installing the tools on
-# a fresh machine comes on top.
+# 9 min 24 s from a clean clone on one host of the project's 2-core machine with the tools already installed
+# (OpenMPI's tests included), 17.7 min of CPU time, a quarter of it in the kernel (a first touch of memory is slow
+# there); the host's speed varies by a third through a day; installing the tools on a fresh machine comes on top.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 scripts/ensure-deps.sh clang-format
