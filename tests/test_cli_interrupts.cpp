@@ -328,6 +328,20 @@ void bad_usage() {
     rejected({"--resume", stepped, "--observables", dir / "rows.csv"},
              "--observables needs the exact engine; " + stepped + " is a checkpoint of the step engine");
     rejected({"--resume", stepped, "--animate", dir / "page.html"}, "--animate and --snapshot need the whole run");
+    // A checkpoint whose steps left would take the exact engine more events
+    // than it allows (one disk made a trillion times faster) is refused
+    // before it runs, as such a scene is, instead of running for days.
+    const std::string exact = dir / "exact.checkpoint";
+    CHECK_EQ(
+        simcli_run({"--engine", "exact", "--checkpoint", exact, "--checkpoint-every", "4"}, "20 60 1 6 perf\n").status,
+        0);
+    std::string saved = run_process::slurp(exact);
+    std::size_t at = saved.find("exact-engine-state");
+    for (int line = 0; line < 2; ++line) at = saved.find('\n', at) + 1;    // past the state's header and counts
+    for (int token = 0; token < 2; ++token) at = saved.find(' ', at) + 1;  // to the first disk's vx
+    saved.replace(at, saved.find(' ', at) - at, "1e12");
+    write_file(exact, saved);
+    rejected({"--resume", exact}, "the exact engine would need about");
 }
 
 }  // namespace

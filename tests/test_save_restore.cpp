@@ -170,6 +170,9 @@ void damaged_states_are_refused() {
         if (is_exact) {
             refused(with_token(good, first_particle + 6, "1e9"), "a time stamp in the future");
             refused(with_token(good, first_particle + 7, "99999999"), "a cell outside the grid");
+            // Saved after step 1: every event up to it has happened.
+            refused(with_token(good, first_particle + 8, "0.5"), "a wall hit before the saved step");
+            refused(with_token(good, first_particle + 9, "0.5"), "a crossing before the saved step");
             refused(with_token(good, first_particle + 14, "99999999"), "a partner outside the scene");
             refused(with_token(good, 8, "inf"), "a collision sum that is not finite");
             refused(with_token(good, 9, "nan"), "a NaN collision sum");
@@ -199,6 +202,7 @@ void pair_event_of_other_particles_is_refused() {
                                         "a pair event of other particles");
         expect_refused<ExactSimulation>(world, with_token(good, time + 3, std::to_string(k)),
                                         "the particle as its own partner");
+        expect_refused<ExactSimulation>(world, with_token(good, time, "0.5"), "a pair event before the saved step");
         ++damaged;
     }
     CHECK_EQ(damaged, std::size_t{5});

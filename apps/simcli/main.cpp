@@ -352,6 +352,8 @@ void resume_run(const CliOptions& options) {
             ExactOptions exact;
             exact.boundary = settings.boundary;
             ExactSimulation engine = ExactSimulation::restore(settings.world, *checkpoint.engine_state, exact);
+            // As for a scene: the steps left must be within the engine's reach.
+            require_feasible_exact_run(settings.world, engine.particles(), settings.steps - engine.steps_done());
             run_and_report(engine, settings, options, pictures);
         } else {
             SteppedOptions stepped = options.stepped;

@@ -14,6 +14,12 @@
 
 namespace particlesim {
 
+// A periodic box's neighbour cells (the exact engine's, the compression's) need
+// five a side or more: the 3 x 3 cells around a disk are then nine different
+// cells, and two disks in neighbouring cells are less than half the box apart,
+// so the nearest image is the one that meets.
+inline constexpr int periodic_cells_at_least = 5;
+
 class UniformGrid {
 public:
     // The most cells a side no narrower than `min_cell_size` (with a margin,

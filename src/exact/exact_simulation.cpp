@@ -86,11 +86,6 @@ bool lines_are_cheaper(const World& world, std::size_t particle_count, int cells
     return with_lines < lines_chosen_below * with_cells;
 }
 
-// A periodic box needs five cells a side or more: the 3 x 3 cells around a
-// disk are then nine different cells, and two disks in neighbouring cells are
-// less than half the box apart, so the nearest image is the one that meets.
-constexpr int periodic_cells_at_least = 5;
-
 UniformGrid periodic_neighbour_grid(const World& world, std::size_t particle_count, std::optional<int> cells_per_side) {
     const double reach = contact_reach(Box::of(world));
     const int side =
@@ -221,6 +216,10 @@ public:
         for (std::uint32_t i = 0; i < count(); ++i) {
             const SavedPredictions& in = saved.predictions[i];
             if (!(in.stamp >= 0.0 && in.stamp <= now_)) fail("a time stamp outside the run");
+            // Every event up to the saved step has happened: a prediction
+            // before it would send the clock back.
+            if (!(in.wall_time >= now_ && in.crossing.time >= now_ && in.pair.time >= now_))
+                fail("a predicted event before the saved step");
             if (in.cell >= cells || in.crossing.cell >= cells) fail("a cell outside the grid");
             if (in.pair_i >= count() || in.pair_j >= count() || in.pair.partner >= count())
                 fail("a particle index outside the scene");

@@ -2,6 +2,7 @@
 
 #include "core/physics.hpp"
 #include "core/random.hpp"
+#include "core/uniform_grid.hpp"
 #include "io/number_format.hpp"
 
 #include <algorithm>
@@ -27,10 +28,6 @@ constexpr double clearance = 1e-9;
 constexpr double events_per_disk_in_window = 100.0;
 constexpr double least_growth = 1e-7;
 constexpr double most_events_per_disk = 20000.0;
-
-// A periodic box needs five cells a side: then the nearest image of a
-// neighbour is the one that meets it (as in the exact engine).
-constexpr int periodic_cells_at_least = 5;
 
 class Growth {
 public:
