@@ -284,6 +284,25 @@ void exact_numbers() {
     CHECK_EQ(std::count(exact.out.begin(), exact.out.end(), '\n'), 6L);
 }
 
+// A second signal before the step ends stops simcli at once: a step of
+// millions of events (disks crossing the box several times a step) would
+// otherwise hold the first signal for seconds. It ends by the signal, the
+// output file stays as it was and no temporary file is left.
+void second_signal_stops_at_once() {
+    const ScratchDir dir;
+    const Result scene =
+        run_process::run(SIMGEN_PATH, {"fast", "-n", "20000", "-L", "2000", "-s", "1", "--mode", "perf"});
+    CHECK_EQ(scene.status, 0);
+    const std::string out = dir / "out.txt";
+    write_file(out, "the previous result\n");
+    const Result forced = simcli_run({"--engine", "exact", "-o", out}, scene.out, {SIGINT, 300, "", 300});
+    CHECK_EQ(forced.status, 128 + SIGINT);
+    CHECK(forced.err.find("simcli: stopped at once by a second signal") == 0);
+    CHECK(forced.err.find("interrupted after step") == std::string::npos);  // not the step's end
+    CHECK(run_process::slurp(out) == "the previous result\n");
+    CHECK_EQ(dir.file_count(), 1U);
+}
+
 void progress_line() {
     // About 3 s of work; the line appears after ~2 s, only when forced off a terminal.
     const std::string scene = "4000 800 1 100000 perf\n";
@@ -354,6 +373,7 @@ int main(int argc, char** argv) {
                        {"observables and trajectory resume", observables_and_trajectory_resume},
                        {"output file replaced only on success", output_file_replaced_only_on_success},
                        {"exact numbers", exact_numbers},
+                       {"second signal stops at once", second_signal_stops_at_once},
                        {"progress line", progress_line},
                        {"bad usage", bad_usage}});
 }

@@ -1,14 +1,45 @@
 #include "interrupts.hpp"
 
+#include <unistd.h>
+
 #include <csignal>
+#include <cstring>
 
 namespace simcli {
 
 namespace {
 
 volatile std::sig_atomic_t received = 0;
+volatile std::sig_atomic_t stopping = 0;  // the run has seen the signal and stops in order: let it finish
 
-extern "C" void note_signal(int signal) { received = signal; }
+// The unfinished files a forced stop removes, in storage the signal handler
+// may read: a slot's path is complete whenever its flag is set.
+constexpr int most_temporaries = 8;
+constexpr std::size_t longest_temporary = 4096;
+char temporary_paths[most_temporaries][longest_temporary];
+volatile std::sig_atomic_t temporary_listed[most_temporaries];
+
+constexpr char forced_message[] =
+    "simcli: stopped at once by a second signal; the unfinished output files are removed, "
+    "and the files given with -o, --observables and --trajectory are left as they were\n";
+
+// The first signal is noted for the run to see after its step; a second one
+// before the run has seen it (a step may take minutes) removes the
+// unfinished files and ends the process by the signal, with only
+// async-signal-safe calls.
+extern "C" void note_signal(int signal) {
+    if (received == 0) {
+        received = signal;
+        return;
+    }
+    if (stopping) return;
+    for (int k = 0; k < most_temporaries; ++k) {
+        if (temporary_listed[k]) unlink(temporary_paths[k]);
+    }
+    [[maybe_unused]] const ssize_t written = write(STDERR_FILENO, forced_message, sizeof forced_message - 1);
+    std::signal(signal, SIG_DFL);
+    std::raise(signal);
+}
 
 }  // namespace
 
@@ -17,7 +48,26 @@ void catch_interrupts() {
     std::signal(SIGTERM, note_signal);
 }
 
-int pending_interrupt() { return received; }
+int pending_interrupt() {
+    const int signal = received;
+    if (signal != 0) stopping = 1;
+    return signal;
+}
+
+int list_unfinished_file(const std::string& path) {
+    if (path.size() >= longest_temporary) return -1;
+    for (int k = 0; k < most_temporaries; ++k) {
+        if (temporary_listed[k]) continue;
+        std::memcpy(temporary_paths[k], path.c_str(), path.size() + 1);
+        temporary_listed[k] = 1;
+        return k;
+    }
+    return -1;
+}
+
+void unlist_unfinished_file(int slot) {
+    if (slot >= 0 && slot < most_temporaries) temporary_listed[slot] = 0;
+}
 
 std::string interruption_message(std::int64_t step, std::int64_t steps,
                                  const std::optional<std::string>& checkpoint_path,

@@ -1,7 +1,11 @@
 #pragma once
 // SIGINT and SIGTERM do not kill simcli mid-write: they set a flag that the
 // run checks after every step, so that it can stop cleanly (flush, write a
-// checkpoint, remove an unfinished output) and exit 128 + the signal.
+// checkpoint, remove an unfinished output) and exit 128 + the signal. A
+// second signal before the run has seen the first (a step that takes too
+// long to wait for) stops the process at once: it removes the unfinished files listed here (each
+// output's temporary; the files they would replace stay as they were) and
+// ends by the signal.
 
 #include <cstdint>
 #include <optional>
@@ -11,8 +15,14 @@
 namespace simcli {
 
 void catch_interrupts();
-// The signal received (SIGINT or SIGTERM), or 0.
+// The signal received (SIGINT or SIGTERM), or 0. Once it has returned a
+// signal, the run stops in order and a second signal no longer forces it.
 int pending_interrupt();
+
+// Lists a file for a forced stop to remove; returns its slot, or -1 when the
+// path is too long or eight are listed (then it stays behind).
+int list_unfinished_file(const std::string& path);
+void unlist_unfinished_file(int slot);
 
 // What an interrupted run says: where it stopped, and where the output, the
 // files written beside it (`side_files`: --observables, --trajectory) and

@@ -1,5 +1,7 @@
 #include "output_file.hpp"
 
+#include "interrupts.hpp"
+
 #include "particlesim/state_writer.hpp"
 
 #include <fcntl.h>
@@ -45,16 +47,19 @@ OutputFile::OutputFile(const std::optional<std::string>& path) {
     const int fd =
         open(temporary_.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC, exists ? existing.st_mode & 07777 : 0666);
     if (fd < 0) fail(path_, "create a temporary file beside it");
+    listed_slot_ = list_unfinished_file(temporary_);
     if (exists) fchmod(fd, existing.st_mode & 07777);  // the umask must not narrow what the user had
     stream_ = fdopen(fd, "wb");
     if (stream_ == nullptr) {
         close(fd);
         unlink(temporary_.c_str());
+        unlist_unfinished_file(listed_slot_);
         fail(path_, "open for writing");
     }
 }
 
 OutputFile::~OutputFile() {
+    unlist_unfinished_file(listed_slot_);  // removed below, or renamed by commit()
     if (committed_ || stream_ == stdout || stream_ == nullptr) return;
     std::fclose(stream_);
     if (!temporary_.empty()) unlink(temporary_.c_str());
@@ -88,6 +93,8 @@ void OutputFile::commit() {
         errno = rename_error;
         fail(path_, "replace with the finished output");
     }
+    unlist_unfinished_file(listed_slot_);
+    listed_slot_ = -1;
 }
 
 }  // namespace simcli

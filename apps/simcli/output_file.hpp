@@ -30,6 +30,7 @@ private:
     std::FILE* stream_ = nullptr;
     std::string path_;       // empty for stdout
     std::string temporary_;  // empty when written directly
+    int listed_slot_ = -1;   // the temporary's slot among the files a forced stop removes (interrupts.hpp)
     bool committed_ = false;
 };
 

@@ -36,12 +36,13 @@ inline std::string slurp(const std::string& path) {
 // however fast the machine runs it (not sent if the child ends first).
 struct Signal {
     Signal() = default;
-    Signal(int signal_number, int delay_ms, std::string file = {})
-        : number(signal_number), after_ms(delay_ms), once_exists(std::move(file)) {}
+    Signal(int signal_number, int delay_ms, std::string file = {}, int again_delay_ms = -1)
+        : number(signal_number), after_ms(delay_ms), once_exists(std::move(file)), again_after_ms(again_delay_ms) {}
 
     int number = 0;
     int after_ms = 0;
     std::string once_exists;
+    int again_after_ms = -1;  // when 0 or more: the same signal once more, this long after the first
 };
 
 // Waits until `path` exists (true) or child `pid` has ended (false; its
@@ -95,6 +96,10 @@ inline Result run(const std::string& program, const std::vector<std::string>& ar
             if (running) {
                 usleep(static_cast<useconds_t>(signal.after_ms) * 1000);
                 kill(pid, signal.number);
+                if (signal.again_after_ms >= 0) {
+                    usleep(static_cast<useconds_t>(signal.again_after_ms) * 1000);
+                    kill(pid, signal.number);
+                }
             }
         }
         if (running) waitpid(pid, &status, 0);
