@@ -3,9 +3,9 @@
 // run checks after every step, so that it can stop cleanly (flush, write a
 // checkpoint, remove an unfinished output) and exit 128 + the signal. A
 // second signal before the run has seen the first (a step that takes too
-// long to wait for) stops the process at once: it removes the unfinished files listed here (each
-// output's temporary; the files they would replace stay as they were) and
-// ends by the signal.
+// long to wait for) stops the process at once: it removes the unfinished
+// files listed here (each output's temporary; the files they would replace
+// stay as they were) and ends by the signal.
 
 #include <cstdint>
 #include <optional>
