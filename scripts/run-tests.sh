@@ -5,9 +5,9 @@
 # checks compiled in (any report fails the run). The Release pass also
 # cross-checks the bytes on aarch64 under qemu, runs the parallel stages under
 # ThreadSanitizer (clang's OpenMP) and fuzzes for 10 seconds.
-# 9 min 24 s from a clean clone on one host of the project's 2-core machine with the tools already installed
-# (OpenMPI's tests included), 17.7 min of CPU time, a quarter of it in the kernel (a first touch of memory is slow
-# there); the host's speed varies by a third through a day; installing the tools on a fresh machine comes on top.
+# 9 min 24 s to 11 min 8 s (three runs) from a clean clone on one host of the project's 2-core machine with the
+# tools already installed (OpenMPI's tests included), 17.7 to 20.8 min of CPU time for the same work, a quarter of
+# it in the kernel (a first touch of memory is slow there); installing the tools on a fresh machine comes on top.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 scripts/ensure-deps.sh clang-format
