@@ -29,6 +29,8 @@ namespace {
 constexpr std::size_t max_particles = 48;
 constexpr std::int64_t max_steps = 24;
 constexpr double max_exact_events = 20000.0;
+// The exact engine's runs, from a scene or a saved state, stop within this budget a step.
+const ExactOptions budgeted_exact{.max_events_per_step = static_cast<std::uint64_t>(max_exact_events)};
 
 [[noreturn]] void fail(const char* what) {
     std::fprintf(stderr, "fuzz_scene: %s\n", what);
@@ -122,9 +124,7 @@ void check_save_and_restore(Make&& make, Restore&& restore, std::int64_t first, 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
     const std::string bytes(reinterpret_cast<const char*>(data), size);
     restore_any<SteppedSimulation>(bytes, SteppedOptions{});
-    // A saved state may hold any speed: its step ends within the same budget as a scene's.
-    restore_any<ExactSimulation>(bytes,
-                                 ExactOptions{.max_events_per_step = static_cast<std::uint64_t>(max_exact_events)});
+    restore_any<ExactSimulation>(bytes, budgeted_exact);
     std::istringstream input(bytes);
     Scene scene;
     try {
@@ -169,13 +169,12 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
         half, scene.steps);
 
     if (estimated_events_per_step(scene.world, particles) * static_cast<double>(scene.steps) <= max_exact_events) {
-        const ExactOptions options{.max_events_per_step = static_cast<std::uint64_t>(max_exact_events)};
         try {
-            ExactSimulation exact(scene.world, particles, options);
+            ExactSimulation exact(scene.world, particles, budgeted_exact);
             output_of(exact, scene.steps);
             check_save_and_restore<ExactSimulation>(
-                [&] { return ExactSimulation(scene.world, particles, options); },
-                [&](std::istream& saved) { return ExactSimulation::restore(scene.world, saved, options); }, half,
+                [&] { return ExactSimulation(scene.world, particles, budgeted_exact); },
+                [&](std::istream& saved) { return ExactSimulation::restore(scene.world, saved, budgeted_exact); }, half,
                 scene.steps);
         } catch (const OverlappingStart&) {
         } catch (const TooManyEvents&) {  // the runaway guard: a clear stop, not a hang

@@ -20,8 +20,8 @@ char temporary_paths[most_temporaries][longest_temporary];
 volatile std::sig_atomic_t temporary_listed[most_temporaries];
 
 constexpr char forced_message[] =
-    "simcli: stopped at once by a second signal; the unfinished output files are removed, "
-    "and the files given with -o, --observables and --trajectory are left as they were\n";
+    "simcli: stopped at once by a second signal; every file it was writing is left as it was "
+    "(the unfinished copies are removed)\n";
 
 // The first signal is noted for the run to see after its step; a second one
 // before the run has seen it (a step may take minutes) removes the
