@@ -243,6 +243,104 @@ void observables_and_trajectory_resume() {
     }
 }
 
+// The step a checkpoint's first part is recorded at ("first-part K"), or -1.
+std::int64_t first_part_step(const std::string& checkpoint) {
+    const std::string saved = run_process::slurp(checkpoint);
+    const std::size_t at = saved.find("\nfirst-part ");
+    return at == std::string::npos ? -1 : std::stoll(saved.substr(at + 12));
+}
+
+// Rewrites a checkpoint's S, so that a resumed test run is short.
+void set_checkpoint_steps(const std::string& checkpoint, std::int64_t from, std::int64_t to) {
+    std::string saved = run_process::slurp(checkpoint);
+    const std::string old_steps = " steps " + std::to_string(from) + " ";
+    const std::size_t at = saved.find(old_steps);
+    CHECK(at != std::string::npos);
+    if (at != std::string::npos) saved.replace(at, old_steps.size(), " steps " + std::to_string(to) + " ");
+    write_file(checkpoint, saved);
+}
+
+// A run killed outright (SIGKILL, a lost node) after a periodic checkpoint
+// has written on past it. --resume cuts its output, trajectory and
+// observables back to the checkpoint's step and goes on with the observables'
+// open row: the two parts join as the uninterrupted run's files, byte for
+// byte, the observables' rows too.
+void killed_run_resumes_from_its_last_checkpoint() {
+    const ScratchDir dir;
+    const std::string checkpoint = dir / "run.checkpoint";
+    const auto with_files = [&](std::vector<std::string> args, const std::string& name) {
+        for (const std::string& a :
+             {std::string("-o"), dir / (name + ".out"), std::string("--observables"), dir / (name + ".csv"),
+              std::string("--observe-every"), std::string("5"), std::string("--trajectory"), dir / (name + ".xyz"),
+              std::string("--trajectory-every"), std::string("3")})
+            args.push_back(a);
+        return args;
+    };
+    const Result killed =
+        simcli_run(with_files({"--engine", "exact", "--checkpoint", checkpoint, "--checkpoint-every", "7"}, "first"),
+                   "400 150 1 100000 perf\n", {SIGKILL, 700});
+    CHECK_EQ(killed.status, 128 + SIGKILL);
+    const std::int64_t step = first_part_step(checkpoint);
+    CHECK(step >= 7 && step % 7 == 0);
+    if (step < 7) return;
+    const std::int64_t end = step + 30;
+    set_checkpoint_steps(checkpoint, 100000, end);
+    // What a kill may leave past the checkpoint (the buffers flushed since), made certain.
+    for (const std::string extension : {".out", ".csv", ".xyz"}) {
+        std::ofstream(dir / ("first" + extension), std::ios::app) << "written after the checkpoint\n";
+    }
+    const Result rest = simcli_run(with_files({"--resume", checkpoint, "--quiet"}, "rest"));
+    CHECK_EQ(rest.status, 0);
+    for (const std::string extension : {".out", ".csv", ".xyz"}) {
+        CHECK(rest.err.find("first" + extension + " cut back to the checkpoint's step " + std::to_string(step)) !=
+              std::string::npos);
+    }
+    const Result whole =
+        simcli_run(with_files({"--engine", "exact"}, "whole"), "400 150 1 " + std::to_string(end) + " perf\n");
+    CHECK_EQ(whole.status, 0);
+    for (const std::string extension : {".out", ".xyz"}) {
+        check::Context context(extension);
+        CHECK(run_process::slurp(dir / ("first" + extension)) + run_process::slurp(dir / ("rest" + extension)) ==
+              run_process::slurp(dir / ("whole" + extension)));
+    }
+    const std::string rest_rows = run_process::slurp(dir / "rest.csv");
+    CHECK(run_process::slurp(dir / "first.csv") + rest_rows.substr(rest_rows.find('\n') + 1) ==
+          run_process::slurp(dir / "whole.csv"));
+}
+
+// The same with the step engine's printed states, the run's last periodic
+// checkpoint standing for the kill (the run wrote on to its end past it);
+// a file replaced since the checkpoint is not the one recorded and is left
+// alone, and a checkpoint whose files are recorded at another step than its
+// state's is refused.
+void last_periodic_checkpoint_cuts_the_output_back() {
+    const ScratchDir dir;
+    const std::string checkpoint = dir / "run.checkpoint", first = dir / "first.out";
+    const std::string scene = "300 250 1 130 print\n";
+    CHECK_EQ(simcli_run({"-o", first, "--checkpoint", checkpoint, "--checkpoint-every", "40"}, scene).status, 0);
+    CHECK_EQ(first_part_step(checkpoint), 120);
+    const std::string whole = run_process::slurp(first);
+    const Result rest = simcli_run({"--resume", checkpoint, "-t", "2"});
+    CHECK_EQ(rest.status, 0);
+    CHECK(rest.err.find("first.out cut back to the checkpoint's step 120") != std::string::npos);
+    CHECK(run_process::slurp(first) + rest.out == whole);
+
+    // A new file (made while the old one is there: another inode) put in its place.
+    write_file(dir / "copy.out", whole);
+    std::filesystem::rename(dir / "copy.out", first);
+    const Result again = simcli_run({"--resume", checkpoint});
+    CHECK_EQ(again.status, 0);
+    CHECK(again.err.find("cut back") == std::string::npos);
+    CHECK(run_process::slurp(first) == whole);
+
+    std::string saved = run_process::slurp(checkpoint);
+    saved.replace(saved.find("first-part 120 "), 15, "first-part 80 ");
+    write_file(checkpoint, saved);
+    const Result refused = simcli_run({"--resume", checkpoint});
+    CHECK_EQ(refused.status, 2);
+    CHECK(refused.err.find("its files are recorded at step 80, its state at step 120") != std::string::npos);
+}
+
 // Without a checkpoint an interrupted or failed run leaves FILE as it was,
 // and no temporary file behind; a device is written in place.
 void output_file_replaced_only_on_success() {
@@ -350,6 +448,18 @@ void bad_usage() {
     rejected({"--resume", stepped, "--observables", dir / "rows.csv"},
              "--observables needs the exact engine; " + stepped + " is a checkpoint of the step engine");
     rejected({"--resume", stepped, "--animate", dir / "page.html"}, "--animate and --snapshot need the whole run");
+    // A first part whose file's path is not whole hexadecimal bytes.
+    const std::string with_output = dir / "output.checkpoint";
+    CHECK_EQ(
+        simcli_run({"-o", dir / "o.out", "--checkpoint", with_output, "--checkpoint-every", "2"}, "20 60 1 3 perf\n")
+            .status,
+        0);
+    std::string damaged = run_process::slurp(with_output);
+    const std::size_t line_end = damaged.find(" \nobservables-row");
+    CHECK(line_end != std::string::npos);
+    if (line_end != std::string::npos) damaged.insert(line_end, "f");
+    write_file(with_output, damaged);
+    rejected({"--resume", with_output}, "a bad path");
     // A checkpoint whose steps left would take the exact engine more events
     // than it allows (one disk made a trillion times faster) is refused
     // before it runs, as such a scene is, instead of running for days.
@@ -374,6 +484,8 @@ int main(int argc, char** argv) {
                        {"signals, checkpoint and resume", signals_checkpoint_and_resume},
                        {"resumed stats count the resumed steps", resumed_stats_count_the_resumed_steps},
                        {"observables and trajectory resume", observables_and_trajectory_resume},
+                       {"killed run resumes from its last checkpoint", killed_run_resumes_from_its_last_checkpoint},
+                       {"last periodic checkpoint cuts the output back", last_periodic_checkpoint_cuts_the_output_back},
                        {"output file replaced only on success", output_file_replaced_only_on_success},
                        {"exact numbers", exact_numbers},
                        {"second signal stops at once", second_signal_stops_at_once},

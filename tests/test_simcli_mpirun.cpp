@@ -175,10 +175,35 @@ void an_interrupted_run_keeps_whole_blocks_and_goes_on() {
     const long last_step = std::stol(first.substr(last_line, first.find(' ', last_line) - last_line));
     CHECK(last_step > 0 && last_step < 4000);
     CHECK_EQ(static_cast<long>(std::count(first.begin(), first.end(), '\n')), (last_step + 1) * particles);
-    // Continued at two ranks: the two parts are one process's run.
+    // Continued at two ranks, cut short (a busy core makes every step's
+    // exchange wait): the two parts are one process's run of that length.
+    const long end = last_step + 20;
+    std::string saved = run_process::slurp(checkpoint);
+    const std::size_t steps_at = saved.find(" steps 4000 ");
+    CHECK(steps_at != std::string::npos);
+    if (steps_at == std::string::npos) return;
+    saved.replace(steps_at, 12, " steps " + std::to_string(end) + " ");
+    std::ofstream(checkpoint, std::ios::binary | std::ios::trunc) << saved;
     const run_process::Result rest = on_ranks(2, {"--resume", checkpoint});
     CHECK_EQ(rest.status, 0);
-    CHECK(first + rest.out == one_process({scene}).out);
+    const std::string short_scene = write_file("short.in", "300\n250\n1\n" + std::to_string(end) + "\nprint\n");
+    CHECK(first + rest.out == one_process({short_scene}).out);
+}
+
+// The run's last periodic checkpoint (step 120 of 130) stands for a run
+// killed after it: the output holds steps past it, and --resume on other
+// ranks cuts it back to the checkpoint's step, so the two parts join.
+void the_last_periodic_checkpoint_cuts_the_output_back() {
+    const std::string scene = write_file("killed.in", "300\n250\n1\n130\nprint\n");
+    const std::string checkpoint = (work_dir() / "killed.checkpoint").string();
+    const std::string output = (work_dir() / "killed.out").string();
+    CHECK_EQ(on_ranks(3, {"--checkpoint", checkpoint, "--checkpoint-every", "40", "-o", output, scene}).status, 0);
+    const std::string whole = run_process::slurp(output);
+    const run_process::Result rest = on_ranks(2, {"--resume", checkpoint});
+    CHECK_EQ(rest.status, 0);
+    CHECK(rest.err.find("killed.out cut back to the checkpoint's step 120") != std::string::npos);
+    CHECK(run_process::slurp(output) + rest.out == whole);
+    CHECK(whole == one_process({scene}).out);
 }
 
 void an_unwritable_output_stops_every_rank() {
@@ -218,12 +243,14 @@ void simcli_loads_no_mpi() {
 }  // namespace
 
 int main(int argc, char** argv) {
-    return check::run(argc, argv, "test_simcli_mpirun",
-                      {{"the same bytes as one process", the_same_bytes_as_one_process},
-                       {"an output file and the stats", output_file_and_stats},
-                       {"refusals are one line and exit 2", refusals_are_one_line_and_exit_two},
-                       {"a checkpoint at 3 ranks resumed at 5", checkpoint_at_three_ranks_resumed_at_five},
-                       {"an interrupted run keeps whole blocks", an_interrupted_run_keeps_whole_blocks_and_goes_on},
-                       {"an unwritable output stops every rank", an_unwritable_output_stops_every_rank},
-                       {"simcli loads no MPI", simcli_loads_no_mpi}});
+    return check::run(
+        argc, argv, "test_simcli_mpirun",
+        {{"the same bytes as one process", the_same_bytes_as_one_process},
+         {"an output file and the stats", output_file_and_stats},
+         {"refusals are one line and exit 2", refusals_are_one_line_and_exit_two},
+         {"a checkpoint at 3 ranks resumed at 5", checkpoint_at_three_ranks_resumed_at_five},
+         {"an interrupted run keeps whole blocks", an_interrupted_run_keeps_whole_blocks_and_goes_on},
+         {"the last periodic checkpoint cuts the output back", the_last_periodic_checkpoint_cuts_the_output_back},
+         {"an unwritable output stops every rank", an_unwritable_output_stops_every_rank},
+         {"simcli loads no MPI", simcli_loads_no_mpi}});
 }

@@ -2,6 +2,7 @@
 
 #include "checkpoint.hpp"
 #include "cli_options.hpp"
+#include "first_part.hpp"
 #include "interrupts.hpp"
 #include "output_file.hpp"
 #include "progress_line.hpp"
@@ -121,6 +122,21 @@ public:
             failure_ = e.what();
         }
     }
+    // At a checkpoint at `step`: the output so far on disk, in place (OutputFile::keep_so_far).
+    FirstPart keep_so_far(std::int64_t step) {
+        FirstPart part;
+        part.step = step;
+        flush();
+        if (!failure_.empty()) return part;
+        try {
+            if (const auto extent = file_.keep_so_far()) {
+                part.files.push_back({"output", extent->path, extent->bytes, extent->device, extent->inode});
+            }
+        } catch (const OutputError& e) {
+            failure_ = e.what();
+        }
+        return part;
+    }
     [[nodiscard]] const std::string& failure() const { return failure_; }
 
 private:
@@ -212,10 +228,21 @@ private:
         broadcast_settings(settings);
         SteppedOptions stepped = options_.stepped;
         stepped.substeps = settings.substeps;
-        return engine_or_stop([&] {
+        DistributedSimulation engine = engine_or_stop([&] {
             return DistributedSimulation::restore(comm_, settings.world,
                                                   on_root() ? checkpoint.engine_state.get() : nullptr, stepped);
         });
+        // The first part's files, as simcli in one process does (first_part.hpp).
+        const FirstPart& first_part = checkpoint.first_part;
+        if (on_root() && first_part.recorded && first_part.step != engine.steps_done()) {
+            status = exit_bad_input;
+            message = path + ": not a checkpoint simcli can resume (its files are recorded at step " +
+                      std::to_string(first_part.step) + ", its state at step " + std::to_string(engine.steps_done()) +
+                      ")";
+        }
+        agree(status, message);
+        if (on_root()) cut_back_first_part(first_part);
+        return engine;
     }
 
     // The engine refuses alike on every rank (invalid_argument): rank 0 says why.
@@ -249,14 +276,15 @@ private:
 
     // The checkpoint, written by rank 0 as the parts arrive (never the whole
     // state at once). Returns rank 0's failure, if any.
-    std::string write_checkpoint_file(const DistributedSimulation& engine, const RunSettings& settings) const {
+    std::string write_checkpoint_file(const DistributedSimulation& engine, const RunSettings& settings,
+                                      const FirstPart& first_part) const {
         std::optional<OutputFile> file;
         std::string failure;
         if (on_root()) {
             try {
                 file.emplace(*options_.checkpoint_path);
                 std::ostringstream header;
-                write_settings(header, settings);
+                write_settings(header, settings, first_part);
                 file->write(header.str(), "checkpoint");
             } catch (const OutputError& e) {
                 failure = e.what();
@@ -326,8 +354,10 @@ private:
                 if (signals[1] != 0) agree(failure_status(), failure_message());
                 const bool due = options_.checkpoint_every && step % *options_.checkpoint_every == 0;
                 if (options_.checkpoint_path && (signal != 0 || due)) {
-                    if (output) output->flush();
-                    const std::string failure = write_checkpoint_file(engine, settings);
+                    FirstPart first_part;
+                    first_part.step = step;
+                    if (output) first_part = output->keep_so_far(step);
+                    const std::string failure = write_checkpoint_file(engine, settings, first_part);
                     agree(failure.empty() ? failure_status() : exit_failure,
                           failure.empty() ? failure_message() : failure);
                 }

@@ -19,9 +19,14 @@ constexpr std::size_t longest_temporary = 4096;
 char temporary_paths[most_temporaries][longest_temporary];
 volatile std::sig_atomic_t temporary_listed[most_temporaries];
 
+volatile std::sig_atomic_t some_file_in_place = 0;
+
 constexpr char forced_message[] =
     "simcli: stopped at once by a second signal; every file it was writing is left as it was "
     "(the unfinished copies are removed)\n";
+constexpr char forced_message_after_checkpoint[] =
+    "simcli: stopped at once by a second signal; the files a checkpoint put in place hold every step up to it "
+    "(simcli --resume cuts them back to it), the others are left as they were\n";
 
 // The first signal is noted for the run to see after its step; a second one
 // before the run has seen it (a step may take minutes) removes the
@@ -36,7 +41,10 @@ extern "C" void note_signal(int signal) {
     for (int k = 0; k < most_temporaries; ++k) {
         if (temporary_listed[k]) unlink(temporary_paths[k]);
     }
-    [[maybe_unused]] const ssize_t written = write(STDERR_FILENO, forced_message, sizeof forced_message - 1);
+    [[maybe_unused]] const ssize_t written =
+        some_file_in_place
+            ? write(STDERR_FILENO, forced_message_after_checkpoint, sizeof forced_message_after_checkpoint - 1)
+            : write(STDERR_FILENO, forced_message, sizeof forced_message - 1);
     std::signal(signal, SIG_DFL);
     std::raise(signal);
 }
@@ -68,6 +76,8 @@ int list_unfinished_file(const std::string& path) {
 void unlist_unfinished_file(int slot) {
     if (slot >= 0 && slot < most_temporaries) temporary_listed[slot] = 0;
 }
+
+void note_file_in_place() { some_file_in_place = 1; }
 
 std::string interruption_message(std::int64_t step, std::int64_t steps,
                                  const std::optional<std::string>& checkpoint_path,

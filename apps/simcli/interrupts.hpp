@@ -23,6 +23,9 @@ int pending_interrupt();
 // path is too long or eight are listed (then it stays behind).
 int list_unfinished_file(const std::string& path);
 void unlist_unfinished_file(int slot);
+// An output was put in place early by a periodic checkpoint: a forced stop
+// leaves it, and says so.
+void note_file_in_place();
 
 // What an interrupted run says: where it stopped, and where the output, the
 // files written beside it (`side_files`: --observables, --trajectory) and

@@ -7,6 +7,7 @@
 #include "checkpoint.hpp"
 #include "cli_options.hpp"
 #include "distributed_run.hpp"
+#include "first_part.hpp"
 #include "interrupts.hpp"
 #include "mpi_launch.hpp"
 #include "observables_file.hpp"
@@ -54,6 +55,7 @@ struct Pictures {
     std::optional<ObservablesFile> observables;  // the exact engine's
     ColourBy colour_by = ColourBy::speed;        // the snapshot's (the page keeps its own)
     Boundary boundary = Boundary::walls;
+    std::optional<OpenRow> resumed_row;  // a checkpoint's open observables row, which the run goes on with
 
     // --trajectory and --observables, before anything runs: a file that
     // cannot be written is bad input.
@@ -73,12 +75,17 @@ struct Pictures {
 
     // The run's first step: 0, whose state a whole run pictures, or a
     // checkpoint's (a resumed run writes only what comes after it). The
-    // observables' first interval begins here.
+    // observables' first interval begins here, or where the checkpoint's
+    // open row began.
     template <Engine E>
     void start(std::int64_t step, const E& engine, const World& world) {
         if (step == 0) picture_state(0, engine, world);
         if constexpr (requires { engine.collision_sums(); }) {
-            if (observables) observables->start(step, engine.totals(), engine.collision_sums());
+            if (observables && resumed_row) {
+                observables->start(resumed_row->step, resumed_row->totals, resumed_row->sums);
+            } else if (observables) {
+                observables->start(step, engine.totals(), engine.collision_sums());
+            }
         }
     }
 
@@ -91,15 +98,31 @@ struct Pictures {
         }
     }
 
-    // A run stopped at `step` with a checkpoint: the trajectory and the
-    // observables (with a last row up to `step`) are kept, as the output is,
-    // and a resumed run writes the rest of each.
+    // A run stopped at `step` with a checkpoint: the observables end with a
+    // row up to `step`, so that a resumed run's rows go on from there.
     template <Engine E>
-    void keep_at_interruption(std::int64_t step, const E& engine) {
+    void close_rows_at(std::int64_t step, const E& engine) {
         if constexpr (requires { engine.collision_sums(); }) {
             if (observables) observables->end_at(step, engine.particles(), engine.totals(), engine.collision_sums());
         }
-        commit();
+    }
+
+    // At a checkpoint at `step`: the output, the trajectory and the
+    // observables so far on disk and in place, and where each ends.
+    FirstPart keep_so_far(std::int64_t step, OutputFile& output) {
+        FirstPart part;
+        part.step = step;
+        const auto record = [&](const char* kind, const std::optional<OutputFile::Extent>& extent) {
+            if (extent) part.files.push_back({kind, extent->path, extent->bytes, extent->device, extent->inode});
+        };
+        record("output", output.keep_so_far());
+        if (trajectory) record("trajectory", trajectory->keep_so_far());
+        if (observables) {
+            record("observables", observables->keep_so_far());
+            part.observables_row =
+                OpenRow{observables->open_row_step(), observables->open_row_totals(), observables->open_row_sums()};
+        }
+        return part;
     }
 
     void commit() {
@@ -159,15 +182,18 @@ RunStats write_run(E& engine, const RunSettings& settings, const CliOptions& opt
             const int signal = pending_interrupt();
             const bool due = options.checkpoint_every && step % *options.checkpoint_every == 0;
             if (options.checkpoint_path && (signal != 0 || due)) {
+                if (signal != 0) pictures.close_rows_at(step, engine);
                 writer.flush();  // the output holds every block up to `step`, the checkpoint goes on from there
-                write_checkpoint(*options.checkpoint_path, settings, [&](std::ostream& out) { engine.save(out); });
+                const FirstPart first_part = pictures.keep_so_far(step, output);
+                write_checkpoint(*options.checkpoint_path, settings, first_part,
+                                 [&](std::ostream& out) { engine.save(out); });
             }
             if (signal != 0) {
                 writer.flush();  // whole blocks only: what stdout shows ends at a step
                 // With a checkpoint, the output is the first part of the run; --resume writes the rest.
                 if (options.checkpoint_path) {
                     output.commit();
-                    pictures.keep_at_interruption(step, engine);
+                    pictures.commit();
                 }
                 throw Interrupted(signal, interruption_message(step, settings.steps, options.checkpoint_path,
                                                                options.output_path, side_files(options)));
@@ -327,6 +353,15 @@ void run_scene(const CliOptions& options) {
     if (pictures.animation) pictures.animation->write();
 }
 
+// A checkpoint's first part is recorded at its engine's step (none in the first format).
+void require_first_part_at(const Checkpoint& checkpoint, std::int64_t step, const std::string& path) {
+    if (checkpoint.first_part.recorded && checkpoint.first_part.step != step) {
+        throw BadInput(path + ": not a checkpoint simcli can resume (its files are recorded at step " +
+                       std::to_string(checkpoint.first_part.step) + ", its state at step " + std::to_string(step) +
+                       ")");
+    }
+}
+
 void resume_run(const CliOptions& options) {
     const std::string& path = *options.resume_path;
     Checkpoint checkpoint;
@@ -354,11 +389,16 @@ void resume_run(const CliOptions& options) {
             ExactSimulation engine = ExactSimulation::restore(settings.world, *checkpoint.engine_state, exact);
             // As for a scene: the steps left must be within the engine's reach.
             require_feasible_exact_run(settings.world, engine.particles(), settings.steps - engine.steps_done());
+            require_first_part_at(checkpoint, engine.steps_done(), path);
+            pictures.resumed_row = checkpoint.first_part.observables_row;
+            cut_back_first_part(checkpoint.first_part);
             run_and_report(engine, settings, options, pictures);
         } else {
             SteppedOptions stepped = options.stepped;
             stepped.substeps = settings.substeps;
             SteppedSimulation engine = SteppedSimulation::restore(settings.world, *checkpoint.engine_state, stepped);
+            require_first_part_at(checkpoint, engine.steps_done(), path);
+            cut_back_first_part(checkpoint.first_part);
             run_and_report(engine, settings, options, pictures);
         }
     } catch (const std::invalid_argument& e) {

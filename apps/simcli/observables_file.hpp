@@ -16,6 +16,7 @@
 #include "particlesim/world.hpp"
 
 #include <cstdint>
+#include <optional>
 #include <span>
 #include <string>
 #include <vector>
@@ -39,6 +40,12 @@ public:
                 const particlesim::StepCounts& totals, const particlesim::CollisionSums& sums);
     // Puts the file in place. Throws particlesim::OutputError.
     void commit();
+    // At a checkpoint: the rows so far on disk, in place (OutputFile::keep_so_far).
+    std::optional<OutputFile::Extent> keep_so_far() { return file_.keep_so_far(); }
+    // Where the row that the next one ends began: its step, and the totals and sums then.
+    [[nodiscard]] std::int64_t open_row_step() const { return previous_step_; }
+    [[nodiscard]] const particlesim::StepCounts& open_row_totals() const { return previous_totals_; }
+    [[nodiscard]] const particlesim::CollisionSums& open_row_sums() const { return previous_sums_; }
 
     // Over the rows from measure_from on, in 16 blocks where the rows allow
     // (the walls' route: a walled box only). The virial's in fewer, longer

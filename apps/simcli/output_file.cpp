@@ -9,6 +9,8 @@
 #include <unistd.h>
 
 #include <cerrno>
+#include <climits>
+#include <cstdlib>
 #include <cstring>
 
 namespace simcli {
@@ -79,7 +81,8 @@ void OutputFile::commit() {
     }
     committed_ = true;
     // On disk before the rename, so that a crash cannot leave FILE empty.
-    const bool written = std::fflush(stream_) == 0 && (temporary_.empty() || fsync(fileno(stream_)) == 0);
+    const bool written =
+        std::fflush(stream_) == 0 && ((temporary_.empty() && !in_place_) || fsync(fileno(stream_)) == 0);
     const int write_error = errno;
     const bool closed = std::fclose(stream_) == 0;
     if (!written || !closed) {
@@ -95,6 +98,29 @@ void OutputFile::commit() {
     }
     unlist_unfinished_file(listed_slot_);
     listed_slot_ = -1;
+}
+
+std::optional<OutputFile::Extent> OutputFile::keep_so_far() {
+    if (stream_ == stdout || committed_) return std::nullopt;
+    struct stat file {};
+    if (std::fflush(stream_) != 0 || fstat(fileno(stream_), &file) != 0) fail(path_, "write");
+    if (!S_ISREG(file.st_mode)) return std::nullopt;
+    if (fsync(fileno(stream_)) != 0) fail(path_, "write");
+    if (!temporary_.empty()) {
+        if (std::rename(temporary_.c_str(), path_.c_str()) != 0) fail(path_, "put the output so far in place");
+        temporary_.clear();  // from now on the stream writes into FILE itself
+        in_place_ = true;
+        unlist_unfinished_file(listed_slot_);
+        listed_slot_ = -1;
+        note_file_in_place();
+    }
+    Extent extent;
+    char absolute[PATH_MAX];
+    extent.path = realpath(path_.c_str(), absolute) != nullptr ? std::string(absolute) : path_;
+    extent.bytes = static_cast<std::uint64_t>(file.st_size);
+    extent.device = static_cast<std::uint64_t>(file.st_dev);
+    extent.inode = static_cast<std::uint64_t>(file.st_ino);
+    return extent;
 }
 
 }  // namespace simcli

@@ -4,7 +4,13 @@
 // that fails or is interrupted never leaves a truncated FILE, and an old FILE
 // stays as it was. Anything else (stdout, /dev/null, a pipe, a terminal) is
 // written directly: a rename must never replace a device.
+//
+// With periodic checkpoints, keep_so_far() puts FILE in place early, at the
+// first checkpoint, and writing goes on into it: a run killed outright
+// after a checkpoint (SIGKILL, a lost node) leaves FILE holding at least
+// every step up to that checkpoint, which records where they end.
 
+#include <cstdint>
 #include <cstdio>
 #include <optional>
 #include <string>
@@ -26,11 +32,24 @@ public:
     // Closes the output and puts it in place. Throws particlesim::OutputError.
     void commit();
 
+    // Where a regular file's output ends now, on disk, and which file holds
+    // it (the path made absolute, the device and inode).
+    struct Extent {
+        std::string path;
+        std::uint64_t bytes = 0;
+        std::uint64_t device = 0;
+        std::uint64_t inode = 0;
+    };
+    // Flushes the output to disk and puts FILE in place (once); writing goes
+    // on into it. Nothing for stdout or a device. Throws particlesim::OutputError.
+    std::optional<Extent> keep_so_far();
+
 private:
     std::FILE* stream_ = nullptr;
     std::string path_;       // empty for stdout
     std::string temporary_;  // empty when written directly
     int listed_slot_ = -1;   // the temporary's slot among the files a forced stop removes (interrupts.hpp)
+    bool in_place_ = false;  // put in place by keep_so_far(), written on there
     bool committed_ = false;
 };
 

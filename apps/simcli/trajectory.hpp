@@ -13,6 +13,7 @@
 #include "particlesim/world.hpp"
 
 #include <cstdint>
+#include <optional>
 #include <span>
 #include <string>
 
@@ -27,6 +28,8 @@ public:
     void observe(std::int64_t step, std::span<const particlesim::Particle> particles);
     // Puts the file in place. Throws particlesim::OutputError.
     void commit();
+    // At a checkpoint: the frames so far on disk, in place (OutputFile::keep_so_far).
+    std::optional<OutputFile::Extent> keep_so_far() { return file_.keep_so_far(); }
 
 private:
     OutputFile file_;

@@ -1,0 +1,52 @@
+#include "first_part.hpp"
+
+#include <fcntl.h>
+#include <sys/stat.h>
+#include <unistd.h>
+
+#include <cstdio>
+
+namespace simcli {
+
+namespace {
+
+void cut_back(const KeptFile& file, std::int64_t step) {
+    // Opened without following a link and checked on the descriptor: what is
+    // cut is the file that was checked.
+    const int fd = open(file.path.c_str(), O_RDWR | O_NOFOLLOW | O_CLOEXEC | O_NONBLOCK);
+    if (fd < 0) return;  // moved or removed since: nothing to do
+    struct stat now {};
+    const bool same = fstat(fd, &now) == 0 && S_ISREG(now.st_mode) &&
+                      static_cast<std::uint64_t>(now.st_dev) == file.device &&
+                      static_cast<std::uint64_t>(now.st_ino) == file.inode;
+    const auto size = static_cast<std::uint64_t>(now.st_size);
+    if (same && size < file.bytes) {
+        std::fprintf(stderr,
+                     "simcli: warning: %s is shorter than at the checkpoint's step %lld (%llu bytes, not %llu)\n",
+                     file.path.c_str(), static_cast<long long>(step), static_cast<unsigned long long>(size),
+                     static_cast<unsigned long long>(file.bytes));
+    } else if (same && size > file.bytes) {
+        char last = '\n';
+        const bool at_line_end =
+            file.bytes == 0 || (pread(fd, &last, 1, static_cast<off_t>(file.bytes - 1)) == 1 && last == '\n');
+        if (at_line_end && ftruncate(fd, static_cast<off_t>(file.bytes)) == 0 && fsync(fd) == 0) {
+            std::fprintf(stderr,
+                         "simcli: %s cut back to the checkpoint's step %lld (%llu bytes written after it by a run "
+                         "that did not stop in order)\n",
+                         file.path.c_str(), static_cast<long long>(step),
+                         static_cast<unsigned long long>(size - file.bytes));
+        } else {
+            std::fprintf(stderr, "simcli: warning: could not cut %s back to the checkpoint's step %lld\n",
+                         file.path.c_str(), static_cast<long long>(step));
+        }
+    }
+    close(fd);
+}
+
+}  // namespace
+
+void cut_back_first_part(const FirstPart& part) {
+    for (const KeptFile& file : part.files) cut_back(file, part.step);
+}
+
+}  // namespace simcli

@@ -1,0 +1,18 @@
+#pragma once
+// A resumed run's first part: the files the run before it wrote, as its
+// checkpoint recorded them. A run killed outright after a periodic
+// checkpoint (SIGKILL, a lost node) wrote on past it; these files are cut
+// back to the checkpoint's step, so that the first part and the resumed one
+// join as the uninterrupted run's files.
+
+#include "checkpoint.hpp"
+
+namespace simcli {
+
+// Cuts each recorded file back to its length at the checkpoint, saying so on
+// stderr. Only the very file recorded (the same path, device and inode), only
+// when it is longer and the cut falls after a line's end; a file that was
+// moved, replaced or shortened since is left alone (the last with a warning).
+void cut_back_first_part(const FirstPart& part);
+
+}  // namespace simcli
