@@ -145,6 +145,10 @@ void write_settings(std::ostream& out, const RunSettings& s, const FirstPart& fi
 Checkpoint read_checkpoint(const std::string& path) {
     auto file = std::make_unique<std::ifstream>(path, std::ios::binary);
     if (!*file) throw std::invalid_argument(path + ": cannot open the checkpoint");
+    return read_checkpoint(std::move(file), path);
+}
+
+Checkpoint read_checkpoint(std::unique_ptr<std::istream> file, const std::string& path) {
     particlesim::SavedStateReader in(*file, path + ": not a checkpoint simcli can resume");
     in.expect(magic);
     const std::string version = in.word();

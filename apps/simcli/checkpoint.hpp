@@ -78,6 +78,8 @@ struct Checkpoint {
 
 // Throws std::invalid_argument naming the file and what is wrong.
 Checkpoint read_checkpoint(const std::string& path);
+// The same from a stream, `name` in the messages.
+Checkpoint read_checkpoint(std::unique_ptr<std::istream> stream, const std::string& name);
 
 // The settings' and the first part's lines of a checkpoint (used by write_checkpoint).
 void write_settings(std::ostream& out, const RunSettings& settings, const FirstPart& first_part);
