@@ -190,18 +190,18 @@ void an_interrupted_run_keeps_whole_blocks_and_goes_on() {
     CHECK(first + rest.out == one_process({short_scene}).out);
 }
 
-// The run's last periodic checkpoint (step 120 of 130) stands for a run
+// The run's last periodic checkpoint (step 60 of 70) stands for a run
 // killed after it: the output holds steps past it, and --resume on other
 // ranks cuts it back to the checkpoint's step, so the two parts join.
 void the_last_periodic_checkpoint_cuts_the_output_back() {
-    const std::string scene = write_file("killed.in", "300\n250\n1\n130\nprint\n");
+    const std::string scene = write_file("killed.in", "300\n250\n1\n70\nprint\n");
     const std::string checkpoint = (work_dir() / "killed.checkpoint").string();
     const std::string output = (work_dir() / "killed.out").string();
-    CHECK_EQ(on_ranks(3, {"--checkpoint", checkpoint, "--checkpoint-every", "40", "-o", output, scene}).status, 0);
+    CHECK_EQ(on_ranks(3, {"--checkpoint", checkpoint, "--checkpoint-every", "30", "-o", output, scene}).status, 0);
     const std::string whole = run_process::slurp(output);
     const run_process::Result rest = on_ranks(2, {"--resume", checkpoint});
     CHECK_EQ(rest.status, 0);
-    CHECK(rest.err.find("killed.out cut back to the checkpoint's step 120") != std::string::npos);
+    CHECK(rest.err.find("killed.out cut back to the checkpoint's step 60") != std::string::npos);
     CHECK(run_process::slurp(output) + rest.out == whole);
     CHECK(whole == one_process({scene}).out);
 }
