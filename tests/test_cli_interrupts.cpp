@@ -4,6 +4,7 @@
 // file that is replaced only on success, and the progress line.
 
 #include "check.hpp"
+#include "checkpoint_text.hpp"
 #include "run_process.hpp"
 #include "threads_stats_line.hpp"
 
@@ -137,13 +138,9 @@ void signals_checkpoint_and_resume() {
             CHECK(lines > 1500 && lines % 1500 == 0);  // whole blocks only
             // The whole run up to the interrupted step, then resumed to the end,
             // is too long for a test; S is cut instead: rewrite the checkpoint's S.
-            std::string saved = run_process::slurp(checkpoint);
-            const std::size_t steps_at = saved.find(" steps 100000 ");
-            CHECK(steps_at != std::string::npos);
             const std::int64_t interrupted_at = static_cast<std::int64_t>(lines / 1500) - 1;
             const std::int64_t end = interrupted_at + 5;
-            saved.replace(steps_at, 14, " steps " + std::to_string(end) + " ");
-            write_file(checkpoint, saved);
+            CHECK(checkpoint_text::set_steps(checkpoint, 100000, end));
             const Result rest = simcli_run({"--resume", checkpoint});
             CHECK_EQ(rest.status, 0);
             const std::string short_scene = "1500 250 1 " + std::to_string(end) + " print\n";
@@ -207,12 +204,9 @@ void observables_and_trajectory_resume() {
 
     // The rest cut short, as in signals_checkpoint_and_resume().
     const std::int64_t end = stopped + 3 * every + 17;
-    std::string saved = run_process::slurp(checkpoint);
-    const std::size_t steps_at = saved.find(" steps 100000 ");
-    CHECK(steps_at != std::string::npos);
-    if (steps_at == std::string::npos) return;
-    saved.replace(steps_at, 14, " steps " + std::to_string(end) + " ");
-    write_file(checkpoint, saved);
+    const bool cut_short = checkpoint_text::set_steps(checkpoint, 100000, end);
+    CHECK(cut_short);
+    if (!cut_short) return;
     CHECK_EQ(simcli_run(with_files({"--resume", checkpoint, "--quiet"}, "rest")).status, 0);
     CHECK_EQ(
         simcli_run(with_files({"--engine", "exact"}, "whole"), "400 150 1 " + std::to_string(end) + " perf\n").status,
@@ -243,23 +237,6 @@ void observables_and_trajectory_resume() {
     }
 }
 
-// The step a checkpoint's first part is recorded at ("first-part K"), or -1.
-std::int64_t first_part_step(const std::string& checkpoint) {
-    const std::string saved = run_process::slurp(checkpoint);
-    const std::size_t at = saved.find("\nfirst-part ");
-    return at == std::string::npos ? -1 : std::stoll(saved.substr(at + 12));
-}
-
-// Rewrites a checkpoint's S, so that a resumed test run is short.
-void set_checkpoint_steps(const std::string& checkpoint, std::int64_t from, std::int64_t to) {
-    std::string saved = run_process::slurp(checkpoint);
-    const std::string old_steps = " steps " + std::to_string(from) + " ";
-    const std::size_t at = saved.find(old_steps);
-    CHECK(at != std::string::npos);
-    if (at != std::string::npos) saved.replace(at, old_steps.size(), " steps " + std::to_string(to) + " ");
-    write_file(checkpoint, saved);
-}
-
 // A run killed outright (SIGKILL, a lost node) after a periodic checkpoint
 // has written on past it. --resume cuts its output, trajectory and
 // observables back to the checkpoint's step and goes on with the observables'
@@ -280,11 +257,11 @@ void killed_run_resumes_from_its_last_checkpoint() {
         simcli_run(with_files({"--engine", "exact", "--checkpoint", checkpoint, "--checkpoint-every", "7"}, "first"),
                    "400 150 1 100000 perf\n", {SIGKILL, 700});
     CHECK_EQ(killed.status, 128 + SIGKILL);
-    const std::int64_t step = first_part_step(checkpoint);
+    const std::int64_t step = checkpoint_text::first_part_step(checkpoint);
     CHECK(step >= 7 && step % 7 == 0);
     if (step < 7) return;
     const std::int64_t end = step + 30;
-    set_checkpoint_steps(checkpoint, 100000, end);
+    CHECK(checkpoint_text::set_steps(checkpoint, 100000, end));
     // What a kill may leave past the checkpoint (the buffers flushed since), made certain.
     for (const std::string extension : {".out", ".csv", ".xyz"}) {
         std::ofstream(dir / ("first" + extension), std::ios::app) << "written after the checkpoint\n";
@@ -318,7 +295,7 @@ void last_periodic_checkpoint_cuts_the_output_back() {
     const std::string checkpoint = dir / "run.checkpoint", first = dir / "first.out";
     const std::string scene = "300 250 1 130 print\n";
     CHECK_EQ(simcli_run({"-o", first, "--checkpoint", checkpoint, "--checkpoint-every", "40"}, scene).status, 0);
-    CHECK_EQ(first_part_step(checkpoint), 120);
+    CHECK_EQ(checkpoint_text::first_part_step(checkpoint), 120);
     const std::string whole = run_process::slurp(first);
     const Result rest = simcli_run({"--resume", checkpoint, "-t", "2"});
     CHECK_EQ(rest.status, 0);

@@ -6,6 +6,7 @@
 // itself free of MPI, running its sibling simcli-mpi under a launcher.
 
 #include "check.hpp"
+#include "checkpoint_text.hpp"
 #include "run_process.hpp"
 
 #include <algorithm>
@@ -178,12 +179,9 @@ void an_interrupted_run_keeps_whole_blocks_and_goes_on() {
     // Continued at two ranks, cut short (a busy core makes every step's
     // exchange wait): the two parts are one process's run of that length.
     const long end = last_step + 20;
-    std::string saved = run_process::slurp(checkpoint);
-    const std::size_t steps_at = saved.find(" steps 4000 ");
-    CHECK(steps_at != std::string::npos);
-    if (steps_at == std::string::npos) return;
-    saved.replace(steps_at, 12, " steps " + std::to_string(end) + " ");
-    std::ofstream(checkpoint, std::ios::binary | std::ios::trunc) << saved;
+    const bool cut_short = checkpoint_text::set_steps(checkpoint, 4000, end);
+    CHECK(cut_short);
+    if (!cut_short) return;
     const run_process::Result rest = on_ranks(2, {"--resume", checkpoint});
     CHECK_EQ(rest.status, 0);
     const std::string short_scene = write_file("short.in", "300\n250\n1\n" + std::to_string(end) + "\nprint\n");

@@ -26,7 +26,6 @@ double finite_real(particlesim::SavedStateReader& in) {
 // A path as hexadecimal tokens of at most 64 digits (the reader's longest
 // token): any bytes, spaces and newlines too.
 constexpr std::size_t path_bytes_a_token = 32;
-constexpr std::size_t longest_path = 4096;
 
 void write_path(std::ostream& out, const std::string& path) {
     constexpr char digits[] = "0123456789abcdef";
@@ -40,7 +39,7 @@ void write_path(std::ostream& out, const std::string& path) {
 }
 
 std::string read_path(particlesim::SavedStateReader& in) {
-    const std::size_t size = in.count(longest_path);
+    const std::size_t size = in.count(longest_recorded_path);
     std::string path;
     while (path.size() < size) {
         const std::string token = in.word();
@@ -63,7 +62,8 @@ std::string read_path(particlesim::SavedStateReader& in) {
 void write_first_part(std::ostream& out, const FirstPart& part) {
     std::vector<const KeptFile*> files;  // a path that could not be read back is not recorded
     for (const KeptFile& file : part.files) {
-        if (!file.path.empty() && file.path[0] == '/' && file.path.size() <= longest_path) files.push_back(&file);
+        if (!file.path.empty() && file.path[0] == '/' && file.path.size() <= longest_recorded_path)
+            files.push_back(&file);
     }
     out << "first-part " << part.step << " files " << files.size() << '\n';
     for (const KeptFile* kept : files) {

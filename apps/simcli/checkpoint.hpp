@@ -16,6 +16,7 @@
 #include "particlesim/state_writer.hpp"
 #include "particlesim/world.hpp"
 
+#include <cstddef>
 #include <cstdint>
 #include <istream>
 #include <memory>
@@ -54,6 +55,9 @@ struct OpenRow {
     particlesim::StepCounts totals;
     particlesim::CollisionSums sums;
 };
+
+// The longest path a first part records (a longer one is left out).
+inline constexpr std::size_t longest_recorded_path = 4096;
 
 struct FirstPart {
     bool recorded = false;  // false in a checkpoint of the first format

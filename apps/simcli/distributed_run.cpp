@@ -129,9 +129,7 @@ public:
         flush();
         if (!failure_.empty()) return part;
         try {
-            if (const auto extent = file_.keep_so_far()) {
-                part.files.push_back({"output", extent->path, extent->bytes, extent->device, extent->inode});
-            }
+            record_kept_file(part, "output", file_.keep_so_far());
         } catch (const OutputError& e) {
             failure_ = e.what();
         }
@@ -234,11 +232,13 @@ private:
         });
         // The first part's files, as simcli in one process does (first_part.hpp).
         const FirstPart& first_part = checkpoint.first_part;
-        if (on_root() && first_part.recorded && first_part.step != engine.steps_done()) {
-            status = exit_bad_input;
-            message = path + ": not a checkpoint simcli can resume (its files are recorded at step " +
-                      std::to_string(first_part.step) + ", its state at step " + std::to_string(engine.steps_done()) +
-                      ")";
+        if (on_root()) {
+            try {
+                require_first_part_at(first_part, engine.steps_done());
+            } catch (const std::invalid_argument& e) {
+                status = exit_bad_input;
+                message = path + ": " + e.what();
+            }
         }
         agree(status, message);
         if (on_root()) cut_back_first_part(first_part);

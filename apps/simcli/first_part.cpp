@@ -5,6 +5,8 @@
 #include <unistd.h>
 
 #include <cstdio>
+#include <stdexcept>
+#include <string>
 
 namespace simcli {
 
@@ -44,6 +46,18 @@ void cut_back(const KeptFile& file, std::int64_t step) {
 }
 
 }  // namespace
+
+void record_kept_file(FirstPart& part, const char* kind, const std::optional<OutputFile::Extent>& extent) {
+    if (extent) part.files.push_back({kind, extent->path, extent->bytes, extent->device, extent->inode});
+}
+
+void require_first_part_at(const FirstPart& part, std::int64_t state_step) {
+    if (part.recorded && part.step != state_step) {
+        throw std::invalid_argument("not a checkpoint simcli can resume (its files are recorded at step " +
+                                    std::to_string(part.step) + ", its state at step " + std::to_string(state_step) +
+                                    ")");
+    }
+}
 
 void cut_back_first_part(const FirstPart& part) {
     for (const KeptFile& file : part.files) cut_back(file, part.step);

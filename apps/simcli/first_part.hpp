@@ -6,8 +6,19 @@
 // join as the uninterrupted run's files.
 
 #include "checkpoint.hpp"
+#include "output_file.hpp"
+
+#include <cstdint>
+#include <optional>
 
 namespace simcli {
+
+// Adds a file's extent at the checkpoint to `part` (nothing for stdout or a device).
+void record_kept_file(FirstPart& part, const char* kind, const std::optional<OutputFile::Extent>& extent);
+
+// A checkpoint's first part is recorded at its engine's step (there is none
+// in the first format). Throws std::invalid_argument otherwise.
+void require_first_part_at(const FirstPart& part, std::int64_t state_step);
 
 // Cuts each recorded file back to its length at the checkpoint, saying so on
 // stderr. Only the very file recorded (the same path, device and inode), only

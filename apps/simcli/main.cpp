@@ -112,13 +112,10 @@ struct Pictures {
     FirstPart keep_so_far(std::int64_t step, OutputFile& output) {
         FirstPart part;
         part.step = step;
-        const auto record = [&](const char* kind, const std::optional<OutputFile::Extent>& extent) {
-            if (extent) part.files.push_back({kind, extent->path, extent->bytes, extent->device, extent->inode});
-        };
-        record("output", output.keep_so_far());
-        if (trajectory) record("trajectory", trajectory->keep_so_far());
+        record_kept_file(part, "output", output.keep_so_far());
+        if (trajectory) record_kept_file(part, "trajectory", trajectory->keep_so_far());
         if (observables) {
-            record("observables", observables->keep_so_far());
+            record_kept_file(part, "observables", observables->keep_so_far());
             part.observables_row =
                 OpenRow{observables->open_row_step(), observables->open_row_totals(), observables->open_row_sums()};
         }
@@ -353,15 +350,6 @@ void run_scene(const CliOptions& options) {
     if (pictures.animation) pictures.animation->write();
 }
 
-// A checkpoint's first part is recorded at its engine's step (none in the first format).
-void require_first_part_at(const Checkpoint& checkpoint, std::int64_t step, const std::string& path) {
-    if (checkpoint.first_part.recorded && checkpoint.first_part.step != step) {
-        throw BadInput(path + ": not a checkpoint simcli can resume (its files are recorded at step " +
-                       std::to_string(checkpoint.first_part.step) + ", its state at step " + std::to_string(step) +
-                       ")");
-    }
-}
-
 void resume_run(const CliOptions& options) {
     const std::string& path = *options.resume_path;
     Checkpoint checkpoint;
@@ -389,7 +377,7 @@ void resume_run(const CliOptions& options) {
             ExactSimulation engine = ExactSimulation::restore(settings.world, *checkpoint.engine_state, exact);
             // As for a scene: the steps left must be within the engine's reach.
             require_feasible_exact_run(settings.world, engine.particles(), settings.steps - engine.steps_done());
-            require_first_part_at(checkpoint, engine.steps_done(), path);
+            require_first_part_at(checkpoint.first_part, engine.steps_done());
             pictures.resumed_row = checkpoint.first_part.observables_row;
             cut_back_first_part(checkpoint.first_part);
             run_and_report(engine, settings, options, pictures);
@@ -397,7 +385,7 @@ void resume_run(const CliOptions& options) {
             SteppedOptions stepped = options.stepped;
             stepped.substeps = settings.substeps;
             SteppedSimulation engine = SteppedSimulation::restore(settings.world, *checkpoint.engine_state, stepped);
-            require_first_part_at(checkpoint, engine.steps_done(), path);
+            require_first_part_at(checkpoint.first_part, engine.steps_done());
             cut_back_first_part(checkpoint.first_part);
             run_and_report(engine, settings, options, pictures);
         }
