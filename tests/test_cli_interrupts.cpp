@@ -318,6 +318,35 @@ void last_periodic_checkpoint_cuts_the_output_back() {
     CHECK(refused.err.find("its files are recorded at step 80, its state at step 120") != std::string::npos);
 }
 
+// Standard output redirected to a file of its own is recorded and cut back
+// as -o FILE is: the resumed part appended to it (`>>`) makes the whole
+// run's output. Shared with stderr (`> log 2>&1`), whose lines would be cut
+// with it, it is not recorded.
+void stdout_file_cut_back_too() {
+    const ScratchDir dir;
+    const std::string checkpoint = dir / "run.checkpoint", first = dir / "first.out";
+    const std::string scene = "300 250 1 130 print\n";
+    const std::vector<std::string> checkpointed = {"--checkpoint", checkpoint, "--checkpoint-every", "40"};
+    CHECK_EQ(run_process::run(simcli, checkpointed, scene, first).status, 0);
+    CHECK_EQ(checkpoint_text::first_part_step(checkpoint), 120);
+    CHECK_EQ(checkpoint_text::first_part_files(checkpoint), 1);
+    const std::string whole = run_process::slurp(first);
+    CHECK(whole == simcli_run({}, scene).out);
+    const Result appended =
+        run_process::run("/bin/sh", {"-c", "exec \"$0\" --resume \"$1\" >> \"$2\"", simcli, checkpoint, first});
+    CHECK_EQ(appended.status, 0);
+    CHECK(appended.err.find("first.out cut back to the checkpoint's step 120") != std::string::npos);
+    CHECK(run_process::slurp(first) == whole);
+
+    const std::string shared = dir / "shared.out";
+    const std::vector<std::string> script = {
+        "-c", "exec \"$0\" --checkpoint \"$1\" --checkpoint-every 40 > \"$2\" 2>&1", simcli, checkpoint, shared};
+    CHECK_EQ(run_process::run("/bin/sh", script, scene).status, 0);
+    CHECK_EQ(checkpoint_text::first_part_step(checkpoint), 120);
+    CHECK_EQ(checkpoint_text::first_part_files(checkpoint), 0);
+    CHECK(run_process::slurp(shared) == whole);
+}
+
 // Without a checkpoint an interrupted or failed run leaves FILE as it was,
 // and no temporary file behind; a device is written in place.
 void output_file_replaced_only_on_success() {
@@ -463,6 +492,7 @@ int main(int argc, char** argv) {
                        {"observables and trajectory resume", observables_and_trajectory_resume},
                        {"killed run resumes from its last checkpoint", killed_run_resumes_from_its_last_checkpoint},
                        {"last periodic checkpoint cuts the output back", last_periodic_checkpoint_cuts_the_output_back},
+                       {"stdout to a file is cut back too", stdout_file_cut_back_too},
                        {"output file replaced only on success", output_file_replaced_only_on_success},
                        {"exact numbers", exact_numbers},
                        {"second signal stops at once", second_signal_stops_at_once},

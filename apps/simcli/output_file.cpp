@@ -30,6 +30,23 @@ std::string temporary_beside(const std::string& path) {
     throw OutputError(path + ": cannot " + doing + ": " + std::strerror(errno));
 }
 
+bool same_file(const struct stat& a, const struct stat& b) { return a.st_dev == b.st_dev && a.st_ino == b.st_ino; }
+
+// The absolute path of the file open on `fd`, where the system names it
+// (Linux's /proc); nothing for a file removed since or a system without it.
+std::optional<std::string> path_of_descriptor(int fd) {
+    const std::string link = "/proc/self/fd/" + std::to_string(fd);
+    char target[PATH_MAX];
+    const ssize_t length = readlink(link.c_str(), target, sizeof target);
+    if (length <= 0 || static_cast<std::size_t>(length) >= sizeof target || target[0] != '/') return std::nullopt;
+    std::string path(target, static_cast<std::size_t>(length));
+    struct stat named {};
+    struct stat opened {};
+    // A removed file's link ends in " (deleted)"; whatever it names, the name must lead to this very file.
+    if (stat(path.c_str(), &named) != 0 || fstat(fd, &opened) != 0 || !same_file(named, opened)) return std::nullopt;
+    return path;
+}
+
 }  // namespace
 
 OutputFile::OutputFile(const std::optional<std::string>& path) {
@@ -101,7 +118,8 @@ void OutputFile::commit() {
 }
 
 std::optional<OutputFile::Extent> OutputFile::keep_so_far() {
-    if (stream_ == stdout || committed_) return std::nullopt;
+    if (committed_) return std::nullopt;
+    if (stream_ == stdout) return keep_stdout_so_far();
     struct stat file {};
     if (std::fflush(stream_) != 0 || fstat(fileno(stream_), &file) != 0) fail(path_, "write");
     if (!S_ISREG(file.st_mode)) return std::nullopt;
@@ -121,6 +139,23 @@ std::optional<OutputFile::Extent> OutputFile::keep_so_far() {
     extent.device = static_cast<std::uint64_t>(file.st_dev);
     extent.inode = static_cast<std::uint64_t>(file.st_ino);
     return extent;
+}
+
+// Standard output redirected to a file of its own (`simcli s.in > out.txt`)
+// is kept like FILE: a regular file, not the terminal, a pipe or a device,
+// and not shared with stderr (`> log 2>&1`), whose lines would fall inside
+// the output and be cut with it.
+std::optional<OutputFile::Extent> OutputFile::keep_stdout_so_far() {
+    if (std::fflush(stdout) != 0) fail("the output", "write");
+    struct stat output {};
+    struct stat errors {};
+    if (fstat(STDOUT_FILENO, &output) != 0 || !S_ISREG(output.st_mode)) return std::nullopt;
+    if (fstat(STDERR_FILENO, &errors) == 0 && same_file(output, errors)) return std::nullopt;
+    const std::optional<std::string> path = path_of_descriptor(STDOUT_FILENO);
+    if (!path) return std::nullopt;
+    if (fsync(STDOUT_FILENO) != 0) fail(*path, "write");
+    return Extent{*path, static_cast<std::uint64_t>(output.st_size), static_cast<std::uint64_t>(output.st_dev),
+                  static_cast<std::uint64_t>(output.st_ino)};
 }
 
 }  // namespace simcli

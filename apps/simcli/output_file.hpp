@@ -8,7 +8,9 @@
 // With periodic checkpoints, keep_so_far() puts FILE in place early, at the
 // first checkpoint, and writing goes on into it: a run killed outright
 // after a checkpoint (SIGKILL, a lost node) leaves FILE holding at least
-// every step up to that checkpoint, which records where they end.
+// every step up to that checkpoint, which records where they end. Standard
+// output redirected to a file of its own (`> out.txt`) is recorded the same
+// way; the shell opened it, so it is never renamed.
 
 #include <cstdint>
 #include <cstdio>
@@ -41,10 +43,13 @@ public:
         std::uint64_t inode = 0;
     };
     // Flushes the output to disk and puts FILE in place (once); writing goes
-    // on into it. Nothing for stdout or a device. Throws particlesim::OutputError.
+    // on into it. Nothing for a device, a pipe or the terminal, nor for
+    // stdout shared with stderr. Throws particlesim::OutputError.
     std::optional<Extent> keep_so_far();
 
 private:
+    std::optional<Extent> keep_stdout_so_far();
+
     std::FILE* stream_ = nullptr;
     std::string path_;       // empty for stdout
     std::string temporary_;  // empty when written directly
