@@ -337,6 +337,14 @@ void stdout_file_cut_back_too() {
     CHECK_EQ(appended.status, 0);
     CHECK(appended.err.find("first.out cut back to the checkpoint's step 120") != std::string::npos);
     CHECK(run_process::slurp(first) == whole);
+    // `>` empties the first part before simcli starts: too late to save it, but said.
+    const Result emptied =
+        run_process::run("/bin/sh", {"-c", "exec \"$0\" --resume \"$1\" > \"$2\"", simcli, checkpoint, first});
+    CHECK_EQ(emptied.status, 0);
+    CHECK(emptied.err.find("first.out is shorter than at the checkpoint's step 120 (0 bytes, not ") !=
+          std::string::npos);
+    CHECK(emptied.err.find("): standard output was redirected to it with > (which empties it), not >>\n") !=
+          std::string::npos);
 
     const std::string shared = dir / "shared.out";
     const std::vector<std::string> script = {
@@ -345,6 +353,39 @@ void stdout_file_cut_back_too() {
     CHECK_EQ(checkpoint_text::first_part_step(checkpoint), 120);
     CHECK_EQ(checkpoint_text::first_part_files(checkpoint), 0);
     CHECK(run_process::slurp(shared) == whole);
+}
+
+// A resumed run writes its files anew, so one named like a file of its first
+// part would replace that part with the rest alone: refused before anything
+// runs, the part left as it was. A link to it is not it (the link is what
+// would be replaced).
+void resume_never_writes_over_its_first_part() {
+    const ScratchDir dir;
+    const std::string checkpoint = dir / "run.checkpoint", first = dir / "first.out", frames = dir / "first.xyz";
+    const std::string scene = "120 90 1 50 perf\n";
+    CHECK_EQ(simcli_run({"--engine", "exact", "-o", first, "--trajectory", frames, "--trajectory-every", "5",
+                         "--checkpoint", checkpoint, "--checkpoint-every", "20"},
+                        scene)
+                 .status,
+             0);
+    CHECK_EQ(checkpoint_text::first_part_files(checkpoint), 2);
+    const std::string output = run_process::slurp(first), trajectory = run_process::slurp(frames);
+    const Result over_output = simcli_run({"--resume", checkpoint, "-o", first});
+    CHECK_EQ(over_output.status, 2);
+    CHECK(over_output.err == "simcli: -o " + first +
+                                 " holds the first part of the run, up to step 40, and the resumed run would replace "
+                                 "it with the rest: write the rest to another file and join the two\n");
+    const Result over_frames = simcli_run({"--resume", checkpoint, "--trajectory", frames});
+    CHECK_EQ(over_frames.status, 2);
+    CHECK(over_frames.err.find("--trajectory " + frames + " holds the first part") != std::string::npos);
+    CHECK(run_process::slurp(first) == output);
+    CHECK(run_process::slurp(frames) == trajectory);
+
+    std::filesystem::create_symlink(first, dir / "link.out");
+    const Result through_link = simcli_run({"--resume", checkpoint, "-o", dir / "link.out"});
+    CHECK_EQ(through_link.status, 0);
+    CHECK(!std::filesystem::is_symlink(dir / "link.out"));
+    CHECK(run_process::slurp(first) + run_process::slurp(dir / "link.out") == output);
 }
 
 // Without a checkpoint an interrupted or failed run leaves FILE as it was,
@@ -493,6 +534,7 @@ int main(int argc, char** argv) {
                        {"killed run resumes from its last checkpoint", killed_run_resumes_from_its_last_checkpoint},
                        {"last periodic checkpoint cuts the output back", last_periodic_checkpoint_cuts_the_output_back},
                        {"stdout to a file is cut back too", stdout_file_cut_back_too},
+                       {"resume never writes over its first part", resume_never_writes_over_its_first_part},
                        {"output file replaced only on success", output_file_replaced_only_on_success},
                        {"exact numbers", exact_numbers},
                        {"second signal stops at once", second_signal_stops_at_once},

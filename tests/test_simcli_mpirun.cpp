@@ -197,6 +197,11 @@ void the_last_periodic_checkpoint_cuts_the_output_back() {
     const std::string output = (work_dir() / "killed.out").string();
     CHECK_EQ(on_ranks(3, {"--checkpoint", checkpoint, "--checkpoint-every", "30", "-o", output, scene}).status, 0);
     const std::string whole = run_process::slurp(output);
+    // The rest written over the first part would replace it: refused, as in one process.
+    const run_process::Result over = on_ranks(2, {"--resume", checkpoint, "-o", output});
+    CHECK_EQ(over.status, 2);
+    CHECK(over.err.find("-o " + output + " holds the first part of the run, up to step 60") != std::string::npos);
+    CHECK(run_process::slurp(output) == whole);
     const run_process::Result rest = on_ranks(2, {"--resume", checkpoint});
     CHECK_EQ(rest.status, 0);
     CHECK(rest.err.find("killed.out cut back to the checkpoint's step 60") != std::string::npos);

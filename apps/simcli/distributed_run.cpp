@@ -208,6 +208,7 @@ private:
         if (on_root()) {
             try {
                 checkpoint = read_checkpoint(path);
+                refuse_writing_over_first_part(checkpoint.first_part, {{"-o", options_.output_path}});
                 settings = checkpoint.settings;
                 if (settings.engine == EngineChoice::exact) {
                     CliOptions as_saved;

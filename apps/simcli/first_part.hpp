@@ -9,7 +9,9 @@
 #include "output_file.hpp"
 
 #include <cstdint>
+#include <initializer_list>
 #include <optional>
+#include <string>
 
 namespace simcli {
 
@@ -19,6 +21,17 @@ void record_kept_file(FirstPart& part, const char* kind, const std::optional<Out
 // A checkpoint's first part is recorded at its engine's step (there is none
 // in the first format). Throws std::invalid_argument otherwise.
 void require_first_part_at(const FirstPart& part, std::int64_t state_step);
+
+// An output the resumed run would write, named by its option.
+struct ResumedOutput {
+    const char* option;  // "-o", "--trajectory" or "--observables"
+    const std::optional<std::string>& path;
+};
+
+// A resumed run writes its files anew (renamed into place at the end), so
+// one that names a file of the first part would replace that part with the
+// rest alone. Throws std::invalid_argument naming it.
+void refuse_writing_over_first_part(const FirstPart& part, std::initializer_list<ResumedOutput> outputs);
 
 // Cuts each recorded file back to its length at the checkpoint, saying so on
 // stderr. Only the very file recorded (the same path, device and inode), only

@@ -355,6 +355,9 @@ void resume_run(const CliOptions& options) {
     Checkpoint checkpoint;
     try {
         checkpoint = read_checkpoint(path);
+        refuse_writing_over_first_part(checkpoint.first_part, {{"-o", options.output_path},
+                                                               {"--trajectory", options.trajectory_path},
+                                                               {"--observables", options.observables_path}});
     } catch (const std::invalid_argument& e) {
         throw BadInput(e.what());
     }
