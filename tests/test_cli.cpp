@@ -12,6 +12,9 @@
 #include <algorithm>
 #include <cctype>
 #include <cstdio>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
 #include <string>
 #include <vector>
 
@@ -195,6 +198,42 @@ void bad_usage() {
     expect_rejected({"--trajectory-every", "2"}, scene, "simcli: --trajectory-every K needs --trajectory", "");
     expect_rejected({"--resume", "state.ckpt", "--snapshot", "run.svg"}, scene,
                     "simcli: --animate and --snapshot need the whole run", "");
+}
+
+// Each output a file of its own, none the scene or checkpoint read: two
+// writers into one file would leave neither's content, and an output over
+// its input would replace it. Refused before anything is written, whatever
+// the names (a hard link is the same file); devices may be shared.
+void outputs_are_files_of_their_own() {
+    char name[] = "/tmp/particlesim-cli-XXXXXX";
+    const std::string dir = mkdtemp(name);
+    const std::string scene = "20 60 1 3 perf\n", scene_path = dir + "/s.in", a = dir + "/a.out", b = dir + "/b.out";
+    std::ofstream(scene_path) << scene;
+    expect_rejected({"-o", a, "--checkpoint", a}, scene, "simcli: -o " + a + " and --checkpoint " + a,
+                    "name the same file: each output needs a file of its own");
+    std::ofstream(a) << "kept\n";
+    std::filesystem::create_hard_link(a, b);
+    expect_rejected({"--engine", "exact", "--trajectory", a, "--observables", b}, scene,
+                    "simcli: --trajectory " + a + " and --observables " + b, "name the same file");
+    expect_rejected({"-o", b, "--snapshot", a}, scene, "simcli: -o " + b + " and --snapshot " + a,
+                    "name the same file");
+    expect_rejected({scene_path, "--checkpoint", scene_path}, "",
+                    "simcli: --checkpoint " + scene_path + " names the scene file it reads: it would be replaced", "");
+    expect_rejected({scene_path, "-o", dir + "/./s.in"}, "", "simcli: -o " + dir + "/./s.in names the scene file", "");
+    CHECK(run_process::slurp(a) == "kept\n");
+    CHECK(run_process::slurp(scene_path) == scene);
+    // A resumed run may checkpoint into the checkpoint it read, not write its output there.
+    const std::string checkpoint = dir + "/run.checkpoint";
+    CHECK_EQ(simcli_run({"--checkpoint", checkpoint, "--checkpoint-every", "2", "-o", "/dev/null"}, scene).status, 0);
+    expect_rejected({"--resume", checkpoint, "-o", checkpoint}, "",
+                    "simcli: -o " + checkpoint + " names the checkpoint it resumes: it would be replaced", "");
+    CHECK_EQ(simcli_run({"--resume", checkpoint, "--checkpoint", checkpoint}).status, 0);
+    CHECK_EQ(simcli_run({"--engine", "exact", "-o", "/dev/null", "--trajectory", "/dev/null", "--observables",
+                         "/dev/null", "--checkpoint", "/dev/null"},
+                        scene)
+                 .status,
+             0);
+    std::filesystem::remove_all(dir);
 }
 
 void bad_input() {
@@ -398,6 +437,7 @@ int main(int argc, char** argv) {
                           {"help and version", help_and_version},
                           {"bad usage", bad_usage},
                           {"bad input", bad_input},
+                          {"outputs are files of their own", outputs_are_files_of_their_own},
                           {"exact engine", exact_engine},
                           {"stats", stats},
                           {"write failures", write_failures},

@@ -1,5 +1,7 @@
 #include "cli_options.hpp"
 
+#include "distinct_files.hpp"
+
 #include "particlesim/engine.hpp"
 #include "particlesim/version.hpp"
 
@@ -335,6 +337,7 @@ std::optional<CliOptions> parse_arguments(int argc, char** argv) {
                        " (see simcli --help)");
     if (argc - optind == 1) options.scene_path = argv[optind];
     check_combinations(options, given);
+    require_distinct_files(options);
     return options;
 }
 
