@@ -196,6 +196,12 @@ void bad_usage() {
     expect_rejected({"--trajectory", "run.xyz", "--trajectory-every", "0"}, scene, "simcli: --trajectory-every",
                     "expected an integer in [1, ");
     expect_rejected({"--trajectory-every", "2"}, scene, "simcli: --trajectory-every K needs --trajectory", "");
+    // A checkpoint is written when due or on a signal, perhaps hours in: whether it can be is known before the run.
+    expect_rejected({"--checkpoint", "/nonexistent/run.ckpt", "--checkpoint-every", "2"}, scene,
+                    "simcli: /nonexistent/run.ckpt: cannot create", "");
+    expect_rejected({"--checkpoint", "/nonexistent/run.ckpt"}, scene, "simcli: /nonexistent/run.ckpt: cannot create",
+                    "");
+    expect_rejected({"--checkpoint", "/tmp"}, scene, "simcli: /tmp: cannot open for writing", "Is a directory");
     expect_rejected({"--resume", "state.ckpt", "--snapshot", "run.svg"}, scene,
                     "simcli: --animate and --snapshot need the whole run", "");
 }

@@ -132,6 +132,12 @@ void refusals_are_one_line_and_exit_two() {
     CHECK_EQ(exact.status, 2);
     CHECK_EQ(lines_starting(exact.err, "simcli: --engine exact runs on one process"), 1L);
     CHECK_EQ(lines_starting(exact.err, "simcli: "), 1L);
+    // A checkpoint that could not be written when due is refused before the run.
+    const run_process::Result checkpoint = on_ranks(
+        2, {"--checkpoint", "/nonexistent/run.checkpoint", "--checkpoint-every", "2", examples + "/head_on.in"});
+    CHECK_EQ(checkpoint.status, 2);
+    CHECK_EQ(lines_starting(checkpoint.err, "simcli: /nonexistent/run.checkpoint: cannot create"), 1L);
+    CHECK_EQ(checkpoint.out, std::string());
     // One rank is simcli as without MPI: the exact engine runs.
     const run_process::Result one_rank = on_ranks(1, {"--engine", "exact", examples + "/head_on.in"});
     CHECK_EQ(one_rank.status, 0);

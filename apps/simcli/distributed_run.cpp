@@ -158,6 +158,20 @@ public:
 
     int run() {
         catch_interrupts();
+        // A checkpoint is first written when due or on a signal, perhaps hours in.
+        if (options_.checkpoint_path) {
+            int status = 0;
+            std::string message;
+            if (on_root()) {
+                try {
+                    require_can_create(*options_.checkpoint_path);
+                } catch (const OutputError& e) {
+                    status = exit_bad_input;
+                    message = e.what();
+                }
+            }
+            agree(status, message);
+        }
         std::optional<DistributedSimulation> engine;
         RunSettings settings;
         if (options_.resume_path) {

@@ -57,8 +57,8 @@ struct Pictures {
     Boundary boundary = Boundary::walls;
     std::optional<OpenRow> resumed_row;  // a checkpoint's open observables row, which the run goes on with
 
-    // --trajectory and --observables, before anything runs: a file that
-    // cannot be written is bad input.
+    // --trajectory and --observables opened, and --checkpoint tried, before
+    // anything runs: a file that cannot be written is bad input.
     void open_files(const CliOptions& options, const World& world, Boundary box_boundary, std::int64_t steps) {
         try {
             if (options.trajectory_path) {
@@ -68,6 +68,8 @@ struct Pictures {
                 observables.emplace(*options.observables_path, world, box_boundary, options.observe_every, steps,
                                     options.measure_from);
             }
+            // A checkpoint is first written when due or on a signal, perhaps hours in.
+            if (options.checkpoint_path) require_can_create(*options.checkpoint_path);
         } catch (const OutputError& e) {
             throw BadInput(e.what());
         }

@@ -141,6 +141,10 @@ std::optional<OutputFile::Extent> OutputFile::keep_so_far() {
     return extent;
 }
 
+void require_can_create(const std::string& path) {
+    const OutputFile probe(path);  // never committed: its temporary file is removed
+}
+
 // Standard output redirected to a file of its own (`simcli s.in > out.txt`)
 // is kept like FILE: a regular file, not the terminal, a pipe or a device,
 // and not shared with stderr (`> log 2>&1`), whose lines would fall inside

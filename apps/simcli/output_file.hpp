@@ -58,4 +58,9 @@ private:
     bool committed_ = false;
 };
 
+// Makes and removes what writing FILE would make first (its temporary file
+// beside it), so that a file written late in a run, a checkpoint hours in,
+// fails before the run instead. Throws particlesim::OutputError.
+void require_can_create(const std::string& path);
+
 }  // namespace simcli
