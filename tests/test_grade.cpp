@@ -216,6 +216,39 @@ void a_child_holding_stdout_does_not_hang_the_grader() {
     if (child > 0) CHECK(process_is_gone(child));
 }
 
+// What leaves the program's process group is killed too: a process of its
+// own session (setsid) and a daemon's double fork, one at a time and with
+// runs side by side, the programs' own runs undisturbed.
+void processes_that_leave_the_group_are_killed() {
+    const fs::path pids = work() / "escaped";
+    for (const std::string jobs : {"1", "2"}) {
+        check::Context context("--jobs ", jobs);
+        fs::remove_all(pids);
+        fs::create_directories(pids);
+        // Each run notes both pids, and waits until the double fork is done before it runs simcli.
+        const std::string body = "d='" + pids.string() +
+                                 "'\n"
+                                 "setsid sleep 1000 </dev/null >/dev/null 2>&1 &\n"
+                                 "echo $! > \"$d/$$.first\"\n"
+                                 "(setsid sh -c 'sleep 1000 & echo $! > \"$0\"; exec sleep 1000' \"$d/$$.second\" "
+                                 "</dev/null >/dev/null 2>&1 &)\n"
+                                 "while [ ! -s \"$d/$$.second\" ]; do sleep 0.01; done\n"
+                                 "exec '" +
+                                 simcli + "'\n";
+        const Graded g = grade(small_suite(), {"--jobs", jobs}, {script("escapes.sh", body)});
+        CHECK_EQ(g.result.status, 0);
+        for (std::size_t k = 0; k < scenes(g).items.size(); ++k)
+            CHECK_EQ(scenes(g)[k]["verdict"].text, std::string("conforms"));
+        std::vector<pid_t> escaped;
+        for (const fs::directory_entry& file : fs::directory_iterator(pids)) {
+            pid_t pid = 0;
+            if (std::ifstream(file.path()) >> pid) escaped.push_back(pid);
+        }
+        CHECK_EQ(escaped.size(), std::size_t{8});  // two a scene
+        for (const pid_t pid : escaped) CHECK(process_is_gone(pid));
+    }
+}
+
 void each_run_has_a_fresh_empty_directory() {
     const fs::path seen = work() / "directories.txt";
     fs::remove(seen);
@@ -253,6 +286,7 @@ int main(int argc, char** argv) {
          {"textbook mistakes are wrong at their step", textbook_mistakes_are_wrong_at_their_step},
          {"misbehaving programs get their verdicts", misbehaving_programs_get_their_verdicts},
          {"a child holding stdout does not hang the grader", a_child_holding_stdout_does_not_hang_the_grader},
+         {"processes that leave the group are killed", processes_that_leave_the_group_are_killed},
          {"each run has a fresh empty directory", each_run_has_a_fresh_empty_directory},
          {"bad usage", bad_usage}});
     std::error_code ignored;

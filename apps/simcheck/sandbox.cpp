@@ -4,6 +4,7 @@
 #include <fcntl.h>
 #include <poll.h>
 #include <signal.h>
+#include <sys/prctl.h>
 #include <sys/resource.h>
 #include <sys/stat.h>
 #include <sys/syscall.h>
@@ -13,10 +14,15 @@
 #include <algorithm>
 #include <cerrno>
 #include <chrono>
+#include <cstdio>
 #include <cstdlib>
 #include <cstring>
 #include <filesystem>
+#include <fstream>
+#include <mutex>
+#include <set>
 #include <stdexcept>
+#include <thread>
 
 namespace simcheck {
 
@@ -90,6 +96,75 @@ void set_limit(int resource, rlim_t value) {
 
 double seconds_since(Clock::time_point start) { return std::chrono::duration<double>(Clock::now() - start).count(); }
 
+// A program can leave its process group (setsid, a daemon's double fork),
+// and then the group's SIGKILL misses what it left behind. simcheck is
+// made the subreaper of everything it runs, so that such a process, once
+// its parent is gone, becomes simcheck's child instead of init's and is
+// found and killed when a run ends.
+//
+// The programs running now (--jobs runs several) and their process groups
+// are not touched: their leaders are registered under this lock from the
+// fork on, and a sweep holds it while it reads and kills.
+std::mutex running_mutex;
+std::set<pid_t> running_leaders;
+
+void become_subreaper() {
+    static std::once_flag once;
+    std::call_once(once, [] { prctl(PR_SET_CHILD_SUBREAPER, 1, 0, 0, 0); });
+}
+
+// The parent and process group of `pid`, from /proc/PID/stat (after the
+// command's closing parenthesis, which may itself hold spaces and parentheses).
+bool parent_and_group(const char* pid, pid_t& parent, pid_t& group) {
+    std::ifstream stat(std::string("/proc/") + pid + "/stat");
+    std::string line;
+    if (!std::getline(stat, line)) return false;
+    const std::size_t name_end = line.rfind(')');
+    if (name_end == std::string::npos) return false;
+    char state = 0;
+    long parent_id = 0, group_id = 0;
+    if (std::sscanf(line.c_str() + name_end + 1, " %c %ld %ld", &state, &parent_id, &group_id) != 3) return false;
+    parent = static_cast<pid_t>(parent_id);
+    group = static_cast<pid_t>(group_id);
+    return true;
+}
+
+// Kills every child of this process that is neither a running program nor
+// in a running program's group (adopted orphans, as subreaper); returns them.
+std::vector<pid_t> kill_adopted_orphans() {
+    const pid_t self = getpid();
+    std::vector<pid_t> killed;
+    const std::lock_guard<std::mutex> lock(running_mutex);
+    DIR* proc = opendir("/proc");
+    if (!proc) return killed;
+    while (const dirent* entry = readdir(proc)) {
+        if (entry->d_name[0] < '0' || entry->d_name[0] > '9') continue;
+        pid_t parent = 0, group = 0;
+        if (!parent_and_group(entry->d_name, parent, group) || parent != self) continue;
+        const auto pid = static_cast<pid_t>(std::atol(entry->d_name));
+        if (running_leaders.count(pid) != 0 || running_leaders.count(group) != 0) continue;
+        kill(pid, SIGKILL);
+        killed.push_back(pid);
+    }
+    closedir(proc);
+    return killed;
+}
+
+// After a run: its group's members gone, and whatever left the group found
+// (as it is adopted) and killed, each reaped. Bounded: a process stuck in
+// the kernel is left for a later sweep.
+void sweep_after(pid_t leader) {
+    const Clock::time_point start = Clock::now();
+    while (seconds_since(start) < 2.0) {
+        kill(-leader, SIGKILL);
+        const bool group_gone = kill(-leader, 0) != 0 && errno == ESRCH;
+        const std::vector<pid_t> killed = kill_adopted_orphans();
+        for (const pid_t pid : killed) waitpid(pid, nullptr, 0);
+        if (group_gone && killed.empty()) return;
+        if (killed.empty()) std::this_thread::sleep_for(std::chrono::milliseconds(1));
+    }
+}
+
 }  // namespace
 
 int tasks_of_this_user() {
@@ -135,13 +210,30 @@ SandboxRun run_sandboxed(const std::vector<std::string>& arguments, const std::s
     argv.push_back(nullptr);
     const rlim_t tasks = static_cast<rlim_t>(tasks_of_this_user() + limits.processes);
 
+    become_subreaper();
     const Clock::time_point start = Clock::now();
-    const pid_t pid = fork();
-    if (pid < 0) throw std::runtime_error("cannot fork: " + std::string(std::strerror(errno)));
-    if (pid == 0) {
-        start_child(argv.data(), directory.c_str(), stdin_path.c_str(), out_write.get(), err_write.get(), limits,
-                    tasks);
+    pid_t pid = 0;
+    {
+        // Registered before any sweep can see it as a child.
+        const std::lock_guard<std::mutex> lock(running_mutex);
+        pid = fork();
+        if (pid == 0) {
+            start_child(argv.data(), directory.c_str(), stdin_path.c_str(), out_write.get(), err_write.get(), limits,
+                        tasks);
+        }
+        if (pid > 0) running_leaders.insert(pid);
     }
+    if (pid < 0) throw std::runtime_error("cannot fork: " + std::string(std::strerror(errno)));
+    struct Unregister {
+        pid_t leader;
+        ~Unregister() {
+            {
+                const std::lock_guard<std::mutex> lock(running_mutex);
+                running_leaders.erase(leader);
+            }
+            sweep_after(leader);
+        }
+    } unregister{pid};
     setpgid(pid, pid);  // as the child does: whichever runs first
     out_write.close();
     err_write.close();
