@@ -216,8 +216,8 @@ void a_child_holding_stdout_does_not_hang_the_grader() {
     if (child > 0) CHECK(process_is_gone(child));
 }
 
-// What leaves the program's process group is killed too: a process of its
-// own session (setsid) and a daemon's double fork, one at a time and with
+// What leaves the program's process group is killed too: a process detached
+// by setsid and a daemon's double fork, one at a time and with
 // runs side by side, the programs' own runs undisturbed.
 void processes_that_leave_the_group_are_killed() {
     const fs::path pids = work() / "escaped";
