@@ -436,6 +436,9 @@ void every_family_checks_cleanly() {
         {{"suite", work_dir() + "/never-written", "--only", "cradle,nope"}, "no suite case \"nope\""},
         {{"gas", "--only", "cradle"}, "belongs to simgen suite"},
         {{"suite", "--seed", "3"}, "not the option --seed"},
+        // More disks than any machine holds (32-bit indices): refused before anything is allocated.
+        {{"gas", "-n", "99999999999"}, "particles are more than this machine can hold (at most "},
+        {{"crystal", "-n", "4294967295", "--fraction", "0.5"}, "more than this machine can hold"},
     };
     for (const auto& [arguments, why] : refused) {
         const run_process::Result no = run_process::run(simgen, arguments);

@@ -102,9 +102,12 @@ double seconds_since(Clock::time_point start) { return std::chrono::duration<dou
 // its parent is gone, becomes simcheck's child instead of init's and is
 // found and killed when a run ends.
 //
-// The programs running now (--jobs runs several) and their process groups
-// are not touched: their leaders are registered under this lock from the
-// fork on, and a sweep holds it while it reads and kills.
+// Which run an adopted process came from cannot be told, so with runs side
+// by side (--jobs) it is killed only once no run is going (at the latest
+// when the last one ends): killing it earlier could take a helper from a
+// program still running. The programs running now and their process
+// groups are never touched: their leaders are registered under this lock
+// from the fork on, and a sweep holds it while it reads and kills.
 std::mutex running_mutex;
 std::set<pid_t> running_leaders;
 
@@ -113,36 +116,44 @@ void become_subreaper() {
     std::call_once(once, [] { prctl(PR_SET_CHILD_SUBREAPER, 1, 0, 0, 0); });
 }
 
-// The parent and process group of `pid`, from /proc/PID/stat (after the
-// command's closing parenthesis, which may itself hold spaces and parentheses).
-bool parent_and_group(const char* pid, pid_t& parent, pid_t& group) {
-    std::ifstream stat(std::string("/proc/") + pid + "/stat");
+struct ProcessStat {
+    char state = 0;
+    pid_t parent = 0;
+    pid_t group = 0;
+};
+
+// From /proc/PID/stat, after the command's closing parenthesis (the command
+// may itself hold spaces and parentheses).
+bool read_process_stat(const char* pid, ProcessStat& stat) {
+    std::ifstream file(std::string("/proc/") + pid + "/stat");
     std::string line;
-    if (!std::getline(stat, line)) return false;
+    if (!std::getline(file, line)) return false;
     const std::size_t name_end = line.rfind(')');
     if (name_end == std::string::npos) return false;
-    char state = 0;
-    long parent_id = 0, group_id = 0;
-    if (std::sscanf(line.c_str() + name_end + 1, " %c %ld %ld", &state, &parent_id, &group_id) != 3) return false;
-    parent = static_cast<pid_t>(parent_id);
-    group = static_cast<pid_t>(group_id);
+    long parent = 0, group = 0;
+    if (std::sscanf(line.c_str() + name_end + 1, " %c %ld %ld", &stat.state, &parent, &group) != 3) return false;
+    stat.parent = static_cast<pid_t>(parent);
+    stat.group = static_cast<pid_t>(group);
     return true;
 }
 
-// Kills every child of this process that is neither a running program nor
-// in a running program's group (adopted orphans, as subreaper); returns them.
-std::vector<pid_t> kill_adopted_orphans() {
+// Kills the children of this process that the run of `leader` left behind:
+// those of its group, adopted, and, when no other run is going, every other
+// adopted process (zombies are reaped whenever). Returns them, to be reaped.
+std::vector<pid_t> kill_adopted(pid_t leader) {
     const pid_t self = getpid();
     std::vector<pid_t> killed;
     const std::lock_guard<std::mutex> lock(running_mutex);
+    const bool others_running = !running_leaders.empty();
     DIR* proc = opendir("/proc");
     if (!proc) return killed;
     while (const dirent* entry = readdir(proc)) {
         if (entry->d_name[0] < '0' || entry->d_name[0] > '9') continue;
-        pid_t parent = 0, group = 0;
-        if (!parent_and_group(entry->d_name, parent, group) || parent != self) continue;
+        ProcessStat stat;
+        if (!read_process_stat(entry->d_name, stat) || stat.parent != self) continue;
         const auto pid = static_cast<pid_t>(std::atol(entry->d_name));
-        if (running_leaders.count(pid) != 0 || running_leaders.count(group) != 0) continue;
+        if (running_leaders.count(pid) != 0 || running_leaders.count(stat.group) != 0) continue;
+        if (others_running && stat.group != leader && stat.state != 'Z') continue;
         kill(pid, SIGKILL);
         killed.push_back(pid);
     }
@@ -150,15 +161,15 @@ std::vector<pid_t> kill_adopted_orphans() {
     return killed;
 }
 
-// After a run: its group's members gone, and whatever left the group found
-// (as it is adopted) and killed, each reaped. Bounded: a process stuck in
-// the kernel is left for a later sweep.
+// After a run: its group's members gone, and what left a group killed as
+// kill_adopted() allows, each reaped. Bounded: a process stuck in the kernel
+// is left for a later sweep.
 void sweep_after(pid_t leader) {
     const Clock::time_point start = Clock::now();
     while (seconds_since(start) < 2.0) {
         kill(-leader, SIGKILL);
         const bool group_gone = kill(-leader, 0) != 0 && errno == ESRCH;
-        const std::vector<pid_t> killed = kill_adopted_orphans();
+        const std::vector<pid_t> killed = kill_adopted(leader);
         for (const pid_t pid : killed) waitpid(pid, nullptr, 0);
         if (group_gone && killed.empty()) return;
         if (killed.empty()) std::this_thread::sleep_for(std::chrono::milliseconds(1));

@@ -12,6 +12,7 @@
 #include <cmath>
 #include <cstdio>
 #include <iostream>
+#include <new>
 #include <optional>
 #include <stdexcept>
 #include <string>
@@ -201,6 +202,9 @@ int main(int argc, char** argv) {
     } catch (const BadUsage& e) {
         std::fprintf(stderr, "simgen: %s\n", e.what());
         return exit_bad_usage;
+    } catch (const std::bad_alloc&) {
+        std::fprintf(stderr, "simgen: not enough memory for the scene asked for\n");
+        return exit_failure;
     } catch (const std::exception& e) {
         std::fprintf(stderr, "simgen: %s\n", e.what());
         return exit_failure;

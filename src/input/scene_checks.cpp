@@ -1,10 +1,25 @@
 #include "input/scene_checks.hpp"
 
+#include <unistd.h>
+
+#include <algorithm>
 #include <cmath>
 #include <stdexcept>
 #include <string>
 
 namespace particlesim {
+
+std::size_t max_particle_count() {
+    // Everything a run keeps per particle (state, step and grid buffers) stays
+    // well below this (docs/benchmarks.md gives the peak).
+    constexpr std::size_t bytes_per_particle = 256;
+    const long pages = sysconf(_SC_PHYS_PAGES);
+    const long page_size = sysconf(_SC_PAGE_SIZE);
+    const std::size_t by_memory = pages > 0 && page_size > 0 ? static_cast<std::size_t>(pages) / bytes_per_particle *
+                                                                   static_cast<std::size_t>(page_size)
+                                                             : std::size_t{1} << 24;
+    return std::min<std::size_t>(by_memory, 0xfffffffeU);
+}
 
 void require_valid_scene(const char* engine, const World& world, std::span<const Particle> particles,
                          CentresIn centres) {

@@ -1,13 +1,20 @@
 #pragma once
-// The check every engine makes of the scene it is given (rules.md "World").
+// The check every engine makes of the scene it is given (rules.md "World"),
+// and the most particles a scene may have on this machine.
 
 #include "particlesim/particle.hpp"
 #include "particlesim/world.hpp"
 
+#include <cstddef>
 #include <cstdint>
 #include <span>
 
 namespace particlesim {
+
+// The most particles this machine can hold (bounded by memory and by the
+// 32-bit particle indices), so that a scene's N is refused, read or made,
+// before anything is allocated for it.
+std::size_t max_particle_count();
 
 // Throws std::invalid_argument, its message starting with `engine`, for a
 // scene that breaks the rules or leaves the accepted range (world.hpp): L or r

@@ -1,9 +1,8 @@
 #include "particlesim/scene.hpp"
 
+#include "input/scene_checks.hpp"
 #include "io/number_format.hpp"
 #include "particlesim/random_scene.hpp"
-
-#include <unistd.h>
 
 #include <algorithm>
 #include <charconv>
@@ -17,21 +16,6 @@
 namespace particlesim {
 
 namespace {
-
-// The most particles this machine can hold (bounded by memory and by the
-// 32-bit particle indices), so that a header's N is refused before anything
-// is allocated for it.
-std::size_t max_particle_count() {
-    // Everything a run keeps per particle (state, step and grid buffers) stays
-    // well below this (docs/benchmarks.md gives the peak).
-    constexpr std::size_t bytes_per_particle = 256;
-    const long pages = sysconf(_SC_PHYS_PAGES);
-    const long page_size = sysconf(_SC_PAGE_SIZE);
-    const std::size_t by_memory = pages > 0 && page_size > 0 ? static_cast<std::size_t>(pages) / bytes_per_particle *
-                                                                   static_cast<std::size_t>(page_size)
-                                                             : std::size_t{1} << 24;
-    return std::min<std::size_t>(by_memory, 0xfffffffeU);
-}
 
 using Text = std::string;
 

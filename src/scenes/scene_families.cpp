@@ -464,6 +464,11 @@ std::optional<SceneFamily> scene_family_named(std::string_view name) {
 
 Scene make_family_scene(SceneFamily family, const SceneFamilyOptions& options) {
     if (options.steps < 0) throw std::invalid_argument("particlesim::make_family_scene: steps must be >= 0");
+    if (options.particles && *options.particles > max_particle_count()) {
+        throw std::invalid_argument("particlesim::make_family_scene: " + std::to_string(*options.particles) +
+                                    " particles are more than this machine can hold (at most " +
+                                    std::to_string(max_particle_count()) + ")");
+    }
     switch (family) {
     case SceneFamily::random: return random_scene(options);
     case SceneFamily::gas: return gas(options);
