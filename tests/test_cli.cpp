@@ -234,6 +234,16 @@ void outputs_are_files_of_their_own() {
     expect_rejected({"--resume", checkpoint, "-o", checkpoint}, "",
                     "simcli: -o " + checkpoint + " names the checkpoint it resumes: it would be replaced", "");
     CHECK_EQ(simcli_run({"--resume", checkpoint, "--checkpoint", checkpoint}).status, 0);
+    // Standard output is one of them (here a file, as the test's runs capture it): -o /dev/stdout writes
+    // into that file, never renaming anything over /dev/stdout; a second output there is refused.
+    const Result to_stdout = simcli_run({"-o", "/dev/stdout"}, scene);
+    CHECK_EQ(to_stdout.status, 0);
+    CHECK(to_stdout.out == simcli_run({}, scene).out);
+    CHECK(std::filesystem::is_symlink("/dev/stdout"));
+    expect_rejected({"--checkpoint", "/dev/stdout"}, scene,
+                    "simcli: standard output and --checkpoint /dev/stdout name the same file", "");
+    expect_rejected({"-o", "/dev/stdout", "--snapshot", "/dev/stdout"}, scene,
+                    "simcli: -o /dev/stdout and --snapshot /dev/stdout name the same file", "");
     CHECK_EQ(simcli_run({"--engine", "exact", "-o", "/dev/null", "--trajectory", "/dev/null", "--observables",
                          "/dev/null", "--checkpoint", "/dev/null"},
                         scene)

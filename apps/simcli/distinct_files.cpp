@@ -1,6 +1,7 @@
 #include "distinct_files.hpp"
 
 #include <sys/stat.h>
+#include <unistd.h>
 
 #include <filesystem>
 #include <optional>
@@ -27,8 +28,10 @@ struct FileIdentity {
 
 struct NamedFile {
     std::string option;  // as the message names it
-    std::string path;
+    std::string path;    // empty for standard output
     FileIdentity identity;
+
+    [[nodiscard]] std::string named() const { return path.empty() ? option : option + " " + path; }
 };
 
 // Nothing for a device, a pipe or a directory: not a file one run could spoil.
@@ -53,6 +56,10 @@ void add(std::vector<NamedFile>& files, const std::string& option, const std::op
 void require_distinct_files(const CliOptions& options) {
     std::vector<NamedFile> written;
     add(written, "-o", options.output_path);
+    struct stat output {};
+    // Without -o the states go to standard output: a file the shell opened is one of the outputs too.
+    if (!options.output_path && fstat(STDOUT_FILENO, &output) == 0 && S_ISREG(output.st_mode))
+        written.push_back({"standard output", "", FileIdentity{true, output.st_dev, output.st_ino, {}}});
     add(written, "--checkpoint", options.checkpoint_path);
     add(written, "--trajectory", options.trajectory_path);
     add(written, "--observables", options.observables_path);
@@ -61,8 +68,8 @@ void require_distinct_files(const CliOptions& options) {
     for (std::size_t a = 0; a < written.size(); ++a) {
         for (std::size_t b = a + 1; b < written.size(); ++b) {
             if (written[a].identity == written[b].identity) {
-                throw BadInput(written[a].option + " " + written[a].path + " and " + written[b].option + " " +
-                               written[b].path + " name the same file: each output needs a file of its own");
+                throw BadInput(written[a].named() + " and " + written[b].named() +
+                               " name the same file: each output needs a file of its own");
             }
         }
     }
@@ -73,7 +80,7 @@ void require_distinct_files(const CliOptions& options) {
         for (const NamedFile& output : written) {
             const bool checkpoint_again = output.option == "--checkpoint" && options.resume_path;
             if (output.identity == input.identity && !checkpoint_again) {
-                throw BadInput(output.option + " " + output.path + " names " + input.option + ": it would be replaced");
+                throw BadInput(output.named() + " names " + input.option + ": it would be replaced");
             }
         }
     }

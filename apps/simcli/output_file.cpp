@@ -32,6 +32,15 @@ std::string temporary_beside(const std::string& path) {
 
 bool same_file(const struct stat& a, const struct stat& b) { return a.st_dev == b.st_dev && a.st_ino == b.st_ino; }
 
+// The file that standard output or standard error is redirected to.
+bool is_standard_output_or_error(const struct stat& file) {
+    for (const int fd : {STDOUT_FILENO, STDERR_FILENO}) {
+        struct stat standard {};
+        if (fstat(fd, &standard) == 0 && same_file(standard, file)) return true;
+    }
+    return false;
+}
+
 // The absolute path of the file open on `fd`, where the system names it
 // (Linux's /proc); nothing for a file removed since or a system without it.
 std::optional<std::string> path_of_descriptor(int fd) {
@@ -59,6 +68,14 @@ OutputFile::OutputFile(const std::optional<std::string>& path) {
     const bool exists = stat(path_.c_str(), &existing) == 0;
     if (exists && !S_ISREG(existing.st_mode)) {
         stream_ = std::fopen(path_.c_str(), "wb");  // a device, a pipe, a terminal: in place
+        if (stream_ == nullptr) fail(path_, "open for writing");
+        return;
+    }
+    if (exists && is_standard_output_or_error(existing)) {
+        // `-o /dev/stdout > out.txt`: the file the shell opened, written on
+        // where it ends (as `>>` leaves it), never renamed over (that would
+        // replace /dev/stdout itself, or a file the shell holds).
+        stream_ = std::fopen(path_.c_str(), "ab");
         if (stream_ == nullptr) fail(path_, "open for writing");
         return;
     }
@@ -132,9 +149,13 @@ std::optional<OutputFile::Extent> OutputFile::keep_so_far() {
         listed_slot_ = -1;
         note_file_in_place();
     }
-    Extent extent;
+    struct stat errors {};
+    // As for stdout: lines of stderr in the same file (`-o /dev/stdout > log 2>&1`) would be cut with the output.
+    if (fstat(STDERR_FILENO, &errors) == 0 && same_file(file, errors)) return std::nullopt;
     char absolute[PATH_MAX];
-    extent.path = realpath(path_.c_str(), absolute) != nullptr ? std::string(absolute) : path_;
+    if (realpath(path_.c_str(), absolute) == nullptr) return std::nullopt;  // moved or removed since: not to be found
+    Extent extent;
+    extent.path = absolute;
     extent.bytes = static_cast<std::uint64_t>(file.st_size);
     extent.device = static_cast<std::uint64_t>(file.st_dev);
     extent.inode = static_cast<std::uint64_t>(file.st_ino);
