@@ -5,6 +5,7 @@
 #include "particlesim/output_reader.hpp"
 
 #include <stdexcept>
+#include <utility>
 
 namespace simcheck {
 
@@ -52,8 +53,7 @@ Judgement judge_output(const particlesim::Scene& scene, std::FILE* output, const
     Judgement judgement;
     std::string text;
     if (read_all(output, text)) {
-        const ShapedOutput shaped = read_shape(text, scene);
-        text = std::string();
+        const ShapedOutput shaped = read_shape(std::move(text), scene);
         if (shaped.unreadable.empty() && !shaped.deviations.empty()) {
             ShapedLines lines(shaped);
             try {

@@ -35,34 +35,27 @@ double half_unit_of_last_digit(std::string_view token) {
     return 0.5 * std::pow(10.0, exponent - decimals);
 }
 
-struct Block {
-    std::size_t first = 0;  // lines [first, last) of the parsed output
-    std::size_t last = 0;
-    std::int64_t step = 0;
-    bool all_counters = true;
-    bool no_counters = true;
-};
-
-std::string line_range(const std::vector<OutputLine>& lines, const Block& b) {
-    return "lines " + std::to_string(lines[b.first].line) + "-" + std::to_string(lines[b.last - 1].line);
-}
-
-bool complete(const std::vector<OutputLine>& lines, const Block& b, std::size_t count) {
-    if (b.last - b.first != count) return false;
-    for (std::size_t k = b.first; k < b.last; ++k) {
-        if (lines[k].index != k - b.first) return false;
+// The lines of `text` from `at` up to `end` that are not blank (spaces and
+// tabs only), one at a time, with a CR at a line's end removed; `number`
+// counts every line passed, blank ones too.
+bool next_line(std::string_view text, std::size_t end, std::size_t& at, long& number, std::string_view& line) {
+    while (at < end) {
+        std::size_t stop = text.find('\n', at);
+        if (stop == std::string_view::npos || stop > end) stop = end;
+        line = text.substr(at, stop - at);
+        at = stop + 1;
+        ++number;
+        if (!line.empty() && line.back() == '\r') line.remove_suffix(1);  // CR LF line ends are fine
+        if (line.find_first_not_of(" \t") != std::string_view::npos) return true;
     }
-    return true;
+    return false;
 }
 
-bool same_states(const std::vector<OutputLine>& lines, const Block& a, const Block& b) {
-    for (std::size_t k = 0; k < a.last - a.first; ++k) {
-        const Particle& p = lines[a.first + k].particle;
-        const Particle& q = lines[b.first + k].particle;
-        if (p.position != q.position || p.velocity != q.velocity) return false;
-    }
-    return true;
+std::string line_range(const ShapedBlock& b) {
+    return "lines " + std::to_string(b.first_line) + "-" + std::to_string(b.last_line);
 }
+
+bool complete(const ShapedBlock& b, std::size_t count) { return b.lines == count && b.in_order; }
 
 // Parses one line loosely; empty optional and `why` set when it is no output line at all.
 std::optional<OutputLine> parse_line(std::string_view text, long number, std::vector<std::string_view>& tokens,
@@ -98,6 +91,22 @@ std::optional<OutputLine> parse_line(std::string_view text, long number, std::ve
     line.particle.position = particlesim::Vec2(values[0], values[1]);
     line.particle.velocity = particlesim::Vec2(values[2], values[3]);
     return line;
+}
+
+// Two complete blocks of the same particles: the same positions and velocities, line by line.
+bool same_states(std::string_view text, const ShapedBlock& a, const ShapedBlock& b) {
+    std::size_t at_a = a.begin, at_b = b.begin;
+    long number_a = a.first_line - 1, number_b = b.first_line - 1;
+    std::string_view line_a, line_b;
+    std::vector<std::string_view> tokens;
+    std::string why;
+    while (next_line(text, a.end, at_a, number_a, line_a) && next_line(text, b.end, at_b, number_b, line_b)) {
+        const std::optional<OutputLine> p = parse_line(line_a, number_a, tokens, why);
+        const std::optional<OutputLine> q = parse_line(line_b, number_b, tokens, why);
+        if (!p || !q || p->particle.position != q->particle.position || p->particle.velocity != q->particle.velocity)
+            return false;
+    }
+    return true;
 }
 
 // Numbers: all in %.8f, all in the shortest round-trip text, or else a
@@ -139,19 +148,24 @@ private:
 
 }  // namespace
 
-ShapedOutput read_shape(std::string_view text, const particlesim::Scene& scene) {
+ShapedOutput read_shape(std::string text_kept, const particlesim::Scene& scene) {
     ShapedOutput shaped;
+    shaped.text = std::move(text_kept);
+    shaped.scene = &scene;
+    const std::string_view text = shaped.text;
     std::vector<std::string>& deviations = shaped.deviations;
-    std::vector<OutputLine> lines;
+    std::vector<ShapedBlock> blocks;
     std::vector<std::string_view> tokens;
     NumberFormats numbers;
     long blank_line = 0, trailing_space_line = 0, spacing_line = 0;
     long number = 0;
+    std::uint64_t previous_index = 0;
     for (std::size_t at = 0; at < text.size();) {
+        const std::size_t begin = at;
         std::size_t end = text.find('\n', at);
         if (end == std::string_view::npos) end = text.size();
         std::string_view line = text.substr(at, end - at);
-        at = end + 1;
+        at = std::min(end + 1, text.size());
         ++number;
         if (!line.empty() && line.back() == '\r') line.remove_suffix(1);  // CR LF line ends are fine
         if (line.find_first_not_of(" \t") == std::string_view::npos) {
@@ -165,7 +179,7 @@ ShapedOutput read_shape(std::string_view text, const particlesim::Scene& scene) 
              trimmed.find('\t') != std::string_view::npos)) {
             spacing_line = number;
         }
-        std::optional<OutputLine> parsed = parse_line(line, number, tokens, shaped.unreadable);
+        const std::optional<OutputLine> parsed = parse_line(line, number, tokens, shaped.unreadable);
         if (!parsed) return shaped;
         for (std::size_t k = 2; k < 6; ++k) {
             numbers.add(tokens[k],
@@ -173,7 +187,24 @@ ShapedOutput read_shape(std::string_view text, const particlesim::Scene& scene) 
                               : parsed->particle.velocity[static_cast<int>(k - 4)],
                         number);
         }
-        lines.push_back(std::move(*parsed));
+        // Blocks: a new one where the step changes or the index starts again.
+        if (blocks.empty() || parsed->step != blocks.back().step || parsed->index <= previous_index) {
+            // An output of tiny blocks (a line each, a few bytes long) is left to the strict reader,
+            // which reads it as it comes: its blocks would take more memory than its text.
+            if (sizeof(ShapedBlock) * (blocks.size() + 1) > 2 * text.size() + 4096) {
+                shaped.unreadable = "more blocks than an output of its size is read for its shape";
+                return shaped;
+            }
+            blocks.push_back({begin, at, number, number, parsed->step, 0, true, true, true});
+        }
+        ShapedBlock& b = blocks.back();
+        b.in_order = b.in_order && parsed->index == b.lines;
+        ++b.lines;
+        b.end = at;
+        b.last_line = number;
+        b.all_counters = b.all_counters && parsed->has_counters;
+        b.no_counters = b.no_counters && !parsed->has_counters;
+        previous_index = parsed->index;
     }
     const auto at_line = [](long line) { return " (first: line " + std::to_string(line) + ")"; };
     if (blank_line != 0) deviations.push_back("blank lines" + at_line(blank_line));
@@ -181,44 +212,32 @@ ShapedOutput read_shape(std::string_view text, const particlesim::Scene& scene) 
     if (spacing_line != 0) deviations.push_back("fields not separated by one space" + at_line(spacing_line));
     shaped.uncertainty = numbers.finish(deviations);
 
-    // Blocks: a new one where the step changes or the index starts again.
-    std::vector<Block> blocks;
-    for (std::size_t k = 0; k < lines.size(); ++k) {
-        if (blocks.empty() || lines[k].step != blocks.back().step || lines[k].index <= lines[k - 1].index) {
-            blocks.push_back({k, k, lines[k].step, true, true});
-        }
-        Block& b = blocks.back();
-        b.last = k + 1;
-        b.all_counters = b.all_counters && lines[k].has_counters;
-        b.no_counters = b.no_counters && !lines[k].has_counters;
-    }
     const std::size_t count = scene.particle_count;
     const auto all_complete = [&] {
-        return std::all_of(blocks.begin(), blocks.end(), [&](const Block& b) { return complete(lines, b, count); });
+        return std::all_of(blocks.begin(), blocks.end(), [&](const ShapedBlock& b) { return complete(b, count); });
     };
 
     // A block printed twice in a row: one copy is set aside (the one without counters).
     for (std::size_t k = 0; k + 1 < blocks.size();) {
-        const Block& a = blocks[k];
-        const Block& b = blocks[k + 1];
-        if (a.step != b.step || !complete(lines, a, count) || !complete(lines, b, count)) {
+        const ShapedBlock& a = blocks[k];
+        const ShapedBlock& b = blocks[k + 1];
+        if (a.step != b.step || !complete(a, count) || !complete(b, count)) {
             ++k;
             continue;
         }
-        if (!same_states(lines, a, b)) {
+        if (!same_states(text, a, b)) {
             shaped.unreadable = "step " + std::to_string(a.step) + " is printed twice with different states (" +
-                                line_range(lines, a) + " and " + line_range(lines, b) + ")";
+                                line_range(a) + " and " + line_range(b) + ")";
             return shaped;
         }
         const bool drop_first = !(a.all_counters && b.no_counters);
-        deviations.push_back("step " + std::to_string(a.step) + " is printed twice (" + line_range(lines, a) + " and " +
-                             line_range(lines, b) + "); the copy" +
+        deviations.push_back("step " + std::to_string(a.step) + " is printed twice (" + line_range(a) + " and " +
+                             line_range(b) + "); the copy" +
                              ((drop_first ? a : b).no_counters ? " without counters" : "") + " was set aside");
         blocks.erase(blocks.begin() + static_cast<std::ptrdiff_t>(drop_first ? k : k + 1));
     }
 
     // No step-0 block: the scene's own particles, where it lists them.
-    std::vector<OutputLine> initial;
     if (!blocks.empty() && blocks.front().step > 0 && all_complete()) {
         if (scene.is_random()) {
             shaped.unreadable =
@@ -227,62 +246,67 @@ ShapedOutput read_shape(std::string_view text, const particlesim::Scene& scene) 
             return shaped;
         }
         deviations.push_back("no step-0 block (the initial state); the scene's particles stand in for it");
-        for (std::size_t i = 0; i < count; ++i) {
-            OutputLine line;
-            line.step = 0;
-            line.index = i;
-            line.particle = scene.particles[i];
-            line.particle.particle_collisions = 0;
-            line.particle.wall_collisions = 0;
-            line.text = "(the scene's particle " + std::to_string(i) + ")";
-            initial.push_back(std::move(line));
-        }
+        shaped.scene_for_step_zero = true;
     }
 
     // A perf-mode run that prints every step: the first and the final block are kept.
-    const bool step_zero = !blocks.empty() && (blocks.front().step == 0 || !initial.empty());
-    const std::size_t blocks_expected = initial.empty() ? 2 : 1;
+    const bool step_zero = !blocks.empty() && (blocks.front().step == 0 || shaped.scene_for_step_zero);
+    const std::size_t blocks_expected = shaped.scene_for_step_zero ? 1 : 2;
     if (scene.mode == particlesim::OutputMode::perf && step_zero && blocks.size() > blocks_expected && all_complete() &&
         blocks.back().step == scene.steps) {
         deviations.push_back("every step printed, in a perf-mode scene (only the first and the final block belong)");
-        blocks.erase(blocks.begin() + (initial.empty() ? 1 : 0), blocks.end() - 1);
+        blocks.erase(blocks.begin() + (shaped.scene_for_step_zero ? 0 : 1), blocks.end() - 1);
     }
 
     // Counters: missing from the final block, or printed on every block.
-    if (!blocks.empty() && complete(lines, blocks.back(), count)) {
+    if (!blocks.empty() && complete(blocks.back(), count)) {
         if (blocks.back().no_counters && count > 0) {
             deviations.push_back("the final block has no counters (pc wc); they are not judged");
             shaped.allowance.final_block_without_counters = true;
         }
         const bool every_block = blocks.size() > 1 && std::all_of(blocks.begin(), blocks.end(),
-                                                                  [](const Block& b) { return b.all_counters; });
+                                                                  [](const ShapedBlock& b) { return b.all_counters; });
         if (every_block && count > 0) {
             deviations.push_back(
                 "counters (pc wc) on every block, not only on the final one; the others were set aside");
-            for (std::size_t k = 0; k + 1 < blocks.size(); ++k) {
-                for (std::size_t l = blocks[k].first; l < blocks[k].last; ++l) lines[l].has_counters = false;
-            }
+            shaped.counters_on_final_only = true;
         }
     }
-
-    shaped.lines = std::move(initial);
-    for (const Block& b : blocks) {
-        for (std::size_t k = b.first; k < b.last; ++k) shaped.lines.push_back(std::move(lines[k]));
-    }
+    shaped.blocks = std::move(blocks);
     return shaped;
 }
 
 bool ShapedLines::next(OutputLine& out) {
-    if (next_ >= shaped_.lines.size()) return false;
-    out = shaped_.lines[next_++];
-    return true;
-}
-
-long ShapedLines::lines_read() const {
-    for (std::size_t k = next_; k > 0; --k) {
-        if (shaped_.lines[k - 1].line > 0) return shaped_.lines[k - 1].line;
+    const particlesim::Scene& scene = *shaped_.scene;
+    if (shaped_.scene_for_step_zero && scene_particle_ < scene.particle_count) {
+        const std::size_t i = scene_particle_++;
+        out = OutputLine{};
+        out.step = 0;
+        out.index = i;
+        out.particle = scene.particles[i];
+        out.particle.particle_collisions = 0;
+        out.particle.wall_collisions = 0;
+        out.text = "(the scene's particle " + std::to_string(i) + ")";
+        return true;
     }
-    return 0;
+    std::string why;
+    for (; block_ < shaped_.blocks.size(); ++block_, started_ = false) {
+        const ShapedBlock& b = shaped_.blocks[block_];
+        if (!started_) {
+            at_ = b.begin;
+            line_ = b.first_line - 1;
+            started_ = true;
+        }
+        std::string_view line;
+        if (!next_line(shaped_.text, b.end, at_, line_, line)) continue;
+        std::optional<OutputLine> parsed = parse_line(line, line_, tokens_, why);
+        if (!parsed) throw particlesim::InputError(line_, why);  // read once already: cannot happen
+        out = std::move(*parsed);
+        if (shaped_.counters_on_final_only && block_ + 1 < shaped_.blocks.size()) out.has_counters = false;
+        last_line_ = line_;
+        return true;
+    }
+    return false;
 }
 
 }  // namespace simcheck
