@@ -193,6 +193,17 @@ void memory_follows_the_files() {
     CHECK_EQ(WEXITSTATUS(status), 1);  // line 2 repeats particle 0 of step 0
 }
 
+// An output on stdin longer than the shape reader's reach is judged as it
+// comes, not stored whole first: an endless stream wrong at its second line
+// ends at once (before, it was copied for ever).
+void an_endless_stream_on_stdin_ends() {
+    const std::string scene = write_file("endless.in", pair_scene);
+    const run_process::Result r = run_process::run(
+        "/bin/sh", {"-c", "timeout 60 sh -c 'yes \"0 0 1 1 1 1\" | \"$0\" \"$1\" -' \"$0\" \"$1\"", simcheck, scene});
+    CHECK_EQ(r.status, 1);
+    CHECK(r.out.rfind("step 0: line 2 reads \"0 0 1 1 1 1\" where particle 1 of step 0 belongs", 0) == 0);
+}
+
 void bad_usage() {
     CHECK_EQ(run_process::run(simcheck, {}).status, 2);
     CHECK_EQ(run_process::run(simcheck, {"-", "-"}).status, 2);
@@ -214,6 +225,7 @@ int main(int argc, char** argv) {
                        {"negative zero is a deviation of shape", negative_zero_is_a_deviation_of_shape},
                        {"shape errors name their step", shape_errors_name_their_step},
                        {"deviations of shape are named", deviations_of_shape_are_named},
+                       {"an endless stream on stdin ends", an_endless_stream_on_stdin_ends},
                        {"memory follows the files", memory_follows_the_files},
                        {"bad usage", bad_usage}});
 }

@@ -34,7 +34,8 @@ struct Judgement {
 // strictly (and its deviations are not named).
 inline constexpr std::int64_t largest_shaped_output = std::int64_t{64} << 20;
 
-// `output`: an open file at its start, which can be read again (seekable).
+// `output`: an open file at its start. One that cannot be read again (not
+// seekable: a long output on stdin) is read once, strictly.
 Judgement judge_output(const particlesim::Scene& scene, std::FILE* output, const std::string& output_name,
                        const particlesim::StepCheckOptions& options);
 

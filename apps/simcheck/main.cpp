@@ -15,6 +15,7 @@
 #include "particlesim/version.hpp"
 
 #include <charconv>
+#include <cstdint>
 #include <cstdio>
 #include <cstring>
 #include <fstream>
@@ -122,7 +123,36 @@ std::string rules_name(const StepCheckOptions& options) {
     return "the step rules with " + std::to_string(options.substeps) + " substeps";
 }
 
-// The output as a file that can be read twice: stdin is copied first.
+// Standard input read on from where a copy of its first bytes ends: the
+// copy first, then the rest as it comes. A stream that can be read once.
+struct CopyThenRest {
+    std::FILE* copy;
+    bool copy_done = false;
+};
+
+ssize_t read_copy_then_rest(void* cookie, char* buffer, std::size_t size) {
+    auto* source = static_cast<CopyThenRest*>(cookie);
+    if (!source->copy_done) {
+        const std::size_t got = std::fread(buffer, 1, size, source->copy);
+        if (got > 0) return static_cast<ssize_t>(got);
+        source->copy_done = true;
+    }
+    const std::size_t got = std::fread(buffer, 1, size, stdin);
+    return got > 0 || !std::ferror(stdin) ? static_cast<ssize_t>(got) : -1;
+}
+
+int close_copy_then_rest(void* cookie) {
+    auto* source = static_cast<CopyThenRest*>(cookie);
+    std::fclose(source->copy);
+    delete source;
+    return 0;
+}
+
+// The output as a file. From stdin, what fits the shape reader's reach is
+// copied first, so that it can be read twice (for its shape, then
+// strictly); a longer output is read once, strictly, as it comes, so that
+// an endless or huge stream is judged from its first lines instead of being
+// stored whole first.
 std::FILE* open_output(const std::string& path, const std::string& name) {
     if (path != "-") {
         std::FILE* file = std::fopen(path.c_str(), "rb");
@@ -132,14 +162,24 @@ std::FILE* open_output(const std::string& path, const std::string& name) {
     std::FILE* copy = std::tmpfile();
     if (!copy) throw BadUsage(name + ": cannot keep a copy: " + std::strerror(errno));
     char buffer[1 << 16];
-    for (std::size_t got; (got = std::fread(buffer, 1, sizeof buffer, stdin)) > 0;) {
+    std::int64_t copied = 0;
+    for (std::size_t got; copied <= largest_shaped_output && (got = std::fread(buffer, 1, sizeof buffer, stdin)) > 0;) {
         if (std::fwrite(buffer, 1, got, copy) != got) {
             std::fclose(copy);
             throw BadUsage(name + ": cannot keep a copy: " + std::strerror(errno));
         }
+        copied += static_cast<std::int64_t>(got);
     }
     std::rewind(copy);
-    return copy;
+    if (copied <= largest_shaped_output) return copy;
+    auto* source = new CopyThenRest{copy};
+    std::FILE* stream =
+        fopencookie(source, "rb", cookie_io_functions_t{read_copy_then_rest, nullptr, nullptr, close_copy_then_rest});
+    if (!stream) {
+        close_copy_then_rest(source);
+        throw BadUsage(name + ": cannot read on: " + std::strerror(errno));
+    }
+    return stream;
 }
 
 int run(const Arguments& args) {
