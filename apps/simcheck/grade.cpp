@@ -251,6 +251,7 @@ struct Row {
     std::optional<double> reference_seconds;
     std::optional<int> exit_status;
     std::optional<int> signal;
+    int left_running = 0;  // processes found running after the program ended (killed)
 };
 
 std::string signal_name(int number) {
@@ -321,6 +322,7 @@ Row grade_scene(const SceneCase& c, const Options& o, const std::optional<std::s
     SandboxLimits limits;
     limits.memory_bytes = o.memory_mb << 20;
     limits.processes = o.processes;
+    limits.runs_alone = o.jobs == 1;
     const double expected_bytes = c.expected_path ? static_cast<double>(fs::file_size(*c.expected_path))
                                                   : static_cast<double>(estimated_output_bytes(c.scene));
     limits.output_bytes = static_cast<std::int64_t>(std::min(o.output_factor * expected_bytes + 1048576.0, 1e17));
@@ -379,6 +381,12 @@ Row grade_scene(const SceneCase& c, const Options& o, const std::optional<std::s
             row.verdict = "exit-status";
         }
         break;
+    }
+    row.left_running = run.left_running;
+    if (run.left_running > 0) {
+        const std::string left = "it left " + std::to_string(run.left_running) + " process" +
+                                 (run.left_running == 1 ? "" : "es") + " running after it ended (killed)";
+        row.message = row.message.empty() ? left : row.message + "; " + left;
     }
     if (!o.outputs_dir.empty()) {
         std::error_code ignored;
@@ -497,6 +505,7 @@ void write_json(std::FILE* out, const Options& o, const std::vector<SceneCase>& 
         json += ", \"message\": " + json_string(r.message) + ", \"seconds\": " + seconds_json(r.seconds);
         json += ", \"reference_seconds\": " + (r.reference_seconds ? seconds_json(*r.reference_seconds) : "null");
         json += ", \"exit_status\": " + optional_number(r.exit_status) + ", \"signal\": " + optional_number(r.signal);
+        json += ", \"left_running\": " + std::to_string(r.left_running);
         json += ", \"deviations\": [";
         for (std::size_t d = 0; d < r.deviations.size(); ++d)
             json += (d > 0 ? ", " : "") + json_string(r.deviations[d]);

@@ -137,12 +137,31 @@ bool read_process_stat(const char* pid, ProcessStat& stat) {
     return true;
 }
 
+// The processes of process group `group` that are not yet zombies.
+int live_members(pid_t group) {
+    int members = 0;
+    DIR* proc = opendir("/proc");
+    if (!proc) return 0;
+    while (const dirent* entry = readdir(proc)) {
+        if (entry->d_name[0] < '0' || entry->d_name[0] > '9') continue;
+        ProcessStat stat;
+        if (read_process_stat(entry->d_name, stat) && stat.group == group && stat.state != 'Z') ++members;
+    }
+    closedir(proc);
+    return members;
+}
+
+struct Killed {
+    std::vector<pid_t> pids;  // to be reaped
+    int escaped = 0;          // of them, live ones outside the run's group
+};
+
 // Kills the children of this process that the run of `leader` left behind:
 // those of its group, adopted, and, when no other run is going, every other
-// adopted process (zombies are reaped whenever). Returns them, to be reaped.
-std::vector<pid_t> kill_adopted(pid_t leader) {
+// adopted process (zombies are reaped whenever).
+Killed kill_adopted(pid_t leader) {
     const pid_t self = getpid();
-    std::vector<pid_t> killed;
+    Killed killed;
     const std::lock_guard<std::mutex> lock(running_mutex);
     const bool others_running = !running_leaders.empty();
     DIR* proc = opendir("/proc");
@@ -155,25 +174,30 @@ std::vector<pid_t> kill_adopted(pid_t leader) {
         if (running_leaders.count(pid) != 0 || running_leaders.count(stat.group) != 0) continue;
         if (others_running && stat.group != leader && stat.state != 'Z') continue;
         kill(pid, SIGKILL);
-        killed.push_back(pid);
+        killed.pids.push_back(pid);
+        killed.escaped += stat.group != leader && stat.state != 'Z' ? 1 : 0;
     }
     closedir(proc);
     return killed;
 }
 
 // After a run: its group's members gone, and what left a group killed as
-// kill_adopted() allows, each reaped. Bounded: a process stuck in the kernel
-// is left for a later sweep.
-void sweep_after(pid_t leader) {
+// kill_adopted() allows, each reaped; returns how many live processes outside
+// the group were killed. Bounded: a process stuck in the kernel is left for a
+// later sweep.
+int sweep_after(pid_t leader) {
+    int escaped = 0;
     const Clock::time_point start = Clock::now();
     while (seconds_since(start) < 2.0) {
         kill(-leader, SIGKILL);
         const bool group_gone = kill(-leader, 0) != 0 && errno == ESRCH;
-        const std::vector<pid_t> killed = kill_adopted(leader);
-        for (const pid_t pid : killed) waitpid(pid, nullptr, 0);
-        if (group_gone && killed.empty()) return;
-        if (killed.empty()) std::this_thread::sleep_for(std::chrono::milliseconds(1));
+        const Killed killed = kill_adopted(leader);
+        escaped += killed.escaped;
+        for (const pid_t pid : killed.pids) waitpid(pid, nullptr, 0);
+        if (group_gone && killed.pids.empty()) break;
+        if (killed.pids.empty()) std::this_thread::sleep_for(std::chrono::milliseconds(1));
     }
+    return escaped;
 }
 
 }  // namespace
@@ -235,14 +259,20 @@ SandboxRun run_sandboxed(const std::vector<std::string>& arguments, const std::s
         if (pid > 0) running_leaders.insert(pid);
     }
     if (pid < 0) throw std::runtime_error("cannot fork: " + std::string(std::strerror(errno)));
+    // The run ends with its leader unregistered and a sweep, also when it throws.
     struct Unregister {
         pid_t leader;
-        ~Unregister() {
+        bool done = false;
+        int finish() {
+            done = true;
             {
                 const std::lock_guard<std::mutex> lock(running_mutex);
                 running_leaders.erase(leader);
             }
-            sweep_after(leader);
+            return sweep_after(leader);
+        }
+        ~Unregister() {
+            if (!done) finish();
         }
     } unregister{pid};
     setpgid(pid, pid);  // as the child does: whichever runs first
@@ -253,6 +283,7 @@ SandboxRun run_sandboxed(const std::vector<std::string>& arguments, const std::s
 
     SandboxRun run;
     bool reaped = false;
+    bool stopped = false;  // by a limit: nothing it leaves then counts as left running
     int status = 0;
     Clock::time_point drain_until{};
     const auto reap = [&](bool wait) {
@@ -260,12 +291,14 @@ SandboxRun run_sandboxed(const std::vector<std::string>& arguments, const std::s
         if (waitpid(pid, &status, wait ? 0 : WNOHANG) == pid) {
             reaped = true;
             run.seconds = seconds_since(start);
+            if (!stopped) run.left_running += live_members(pid);
             kill(-pid, SIGKILL);  // whatever it left behind, holding stdout open or not
             drain_until = Clock::now() +
                           std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double>(drain_seconds));
         }
     };
     const auto stop = [&](SandboxRun::End end) {
+        stopped = true;
         kill(-pid, SIGKILL);
         kill(pid, SIGKILL);
         const bool was_reaped = reaped;
@@ -329,6 +362,8 @@ SandboxRun run_sandboxed(const std::vector<std::string>& arguments, const std::s
         }
     }
     kill(-pid, SIGKILL);
+    const int escaped = unregister.finish();
+    if (!stopped && limits.runs_alone) run.left_running += escaped;
     return run;
 }
 

@@ -19,6 +19,9 @@ struct SandboxLimits {
     std::int64_t output_bytes = std::int64_t{1} << 30;  // stdout, and any file it writes
     std::int64_t memory_bytes = std::int64_t{4} << 30;  // address space (RLIMIT_AS); 0: none
     int processes = 256;                                // tasks beyond what its user runs already (RLIMIT_NPROC)
+    // No other program runs beside it (grade --jobs 1): what left its group
+    // is then known to be its own, and counted in left_running.
+    bool runs_alone = true;
 };
 
 struct SandboxRun {
@@ -29,6 +32,9 @@ struct SandboxRun {
     double seconds = 0.0;
     std::int64_t output_bytes = 0;
     std::string stderr_head;  // the first few kilobytes of its standard error
+    // Processes of the program still running when it had ended by itself,
+    // all killed: its group's, and, run alone, what had left the group.
+    int left_running = 0;
 };
 
 // Runs argv[0] (looked up in PATH) with stdin from `stdin_path` and stdout
