@@ -136,11 +136,11 @@ void OutputFile::commit() {
 
 std::optional<OutputFile::Extent> OutputFile::keep_so_far() {
     if (committed_) return std::nullopt;
-    if (stream_ == stdout) return keep_stdout_so_far();
+    const std::string name = path_.empty() ? "the output" : path_;
     struct stat file {};
-    if (std::fflush(stream_) != 0 || fstat(fileno(stream_), &file) != 0) fail(path_, "write");
-    if (!S_ISREG(file.st_mode)) return std::nullopt;
-    if (fsync(fileno(stream_)) != 0) fail(path_, "write");
+    if (std::fflush(stream_) != 0 || fstat(fileno(stream_), &file) != 0) fail(name, "write");
+    if (!S_ISREG(file.st_mode)) return std::nullopt;  // a device, a pipe, the terminal
+    if (fsync(fileno(stream_)) != 0) fail(name, "write");
     if (!temporary_.empty()) {
         if (std::rename(temporary_.c_str(), path_.c_str()) != 0) fail(path_, "put the output so far in place");
         temporary_.clear();  // from now on the stream writes into FILE itself
@@ -150,37 +150,23 @@ std::optional<OutputFile::Extent> OutputFile::keep_so_far() {
         note_file_in_place();
     }
     struct stat errors {};
-    // As for stdout: lines of stderr in the same file (`-o /dev/stdout > log 2>&1`) would be cut with the output.
+    // Lines of stderr in the same file (`> log 2>&1`, `-o /dev/stdout > log 2>&1`) would be cut with the output.
     if (fstat(STDERR_FILENO, &errors) == 0 && same_file(file, errors)) return std::nullopt;
-    char absolute[PATH_MAX];
-    if (realpath(path_.c_str(), absolute) == nullptr) return std::nullopt;  // moved or removed since: not to be found
-    Extent extent;
-    extent.path = absolute;
-    extent.bytes = static_cast<std::uint64_t>(file.st_size);
-    extent.device = static_cast<std::uint64_t>(file.st_dev);
-    extent.inode = static_cast<std::uint64_t>(file.st_ino);
-    return extent;
+    // Where the file is now; nothing when it was moved or removed since (it could not be found again). Standard
+    // output redirected to a file (`> out.txt`) is found through its descriptor: the shell opened it.
+    std::optional<std::string> where;
+    if (path_.empty()) {
+        where = path_of_descriptor(fileno(stream_));
+    } else if (char absolute[PATH_MAX]; realpath(path_.c_str(), absolute) != nullptr) {
+        where = absolute;
+    }
+    if (!where) return std::nullopt;
+    return Extent{*where, static_cast<std::uint64_t>(file.st_size), static_cast<std::uint64_t>(file.st_dev),
+                  static_cast<std::uint64_t>(file.st_ino)};
 }
 
 void require_can_create(const std::string& path) {
     const OutputFile probe(path);  // never committed: its temporary file is removed
-}
-
-// Standard output redirected to a file of its own (`simcli s.in > out.txt`)
-// is kept like FILE: a regular file, not the terminal, a pipe or a device,
-// and not shared with stderr (`> log 2>&1`), whose lines would fall inside
-// the output and be cut with it.
-std::optional<OutputFile::Extent> OutputFile::keep_stdout_so_far() {
-    if (std::fflush(stdout) != 0) fail("the output", "write");
-    struct stat output {};
-    struct stat errors {};
-    if (fstat(STDOUT_FILENO, &output) != 0 || !S_ISREG(output.st_mode)) return std::nullopt;
-    if (fstat(STDERR_FILENO, &errors) == 0 && same_file(output, errors)) return std::nullopt;
-    const std::optional<std::string> path = path_of_descriptor(STDOUT_FILENO);
-    if (!path) return std::nullopt;
-    if (fsync(STDOUT_FILENO) != 0) fail(*path, "write");
-    return Extent{*path, static_cast<std::uint64_t>(output.st_size), static_cast<std::uint64_t>(output.st_dev),
-                  static_cast<std::uint64_t>(output.st_ino)};
 }
 
 }  // namespace simcli

@@ -48,8 +48,6 @@ public:
     std::optional<Extent> keep_so_far();
 
 private:
-    std::optional<Extent> keep_stdout_so_far();
-
     std::FILE* stream_ = nullptr;
     std::string path_;       // empty for stdout
     std::string temporary_;  // empty when written directly
