@@ -96,6 +96,17 @@ void set_limit(int resource, rlim_t value) {
 
 double seconds_since(Clock::time_point start) { return std::chrono::duration<double>(Clock::now() - start).count(); }
 
+// visit(pid) for each process, `pid` its directory's name in /proc.
+template <typename Visit>
+void for_each_process(Visit&& visit) {
+    DIR* proc = opendir("/proc");
+    if (!proc) return;
+    while (const dirent* entry = readdir(proc)) {
+        if (entry->d_name[0] >= '0' && entry->d_name[0] <= '9') visit(entry->d_name);
+    }
+    closedir(proc);
+}
+
 // A program can leave its process group (setsid, a daemon's double fork),
 // and then the group's SIGKILL misses what it left behind. simcheck is
 // made the subreaper of everything it runs, so that such a process, once
@@ -140,14 +151,10 @@ bool read_process_stat(const char* pid, ProcessStat& stat) {
 // The processes of process group `group` that are not yet zombies.
 int live_members(pid_t group) {
     int members = 0;
-    DIR* proc = opendir("/proc");
-    if (!proc) return 0;
-    while (const dirent* entry = readdir(proc)) {
-        if (entry->d_name[0] < '0' || entry->d_name[0] > '9') continue;
+    for_each_process([&](const char* pid) {
         ProcessStat stat;
-        if (read_process_stat(entry->d_name, stat) && stat.group == group && stat.state != 'Z') ++members;
-    }
-    closedir(proc);
+        if (read_process_stat(pid, stat) && stat.group == group && stat.state != 'Z') ++members;
+    });
     return members;
 }
 
@@ -164,20 +171,16 @@ Killed kill_adopted(pid_t leader) {
     Killed killed;
     const std::lock_guard<std::mutex> lock(running_mutex);
     const bool others_running = !running_leaders.empty();
-    DIR* proc = opendir("/proc");
-    if (!proc) return killed;
-    while (const dirent* entry = readdir(proc)) {
-        if (entry->d_name[0] < '0' || entry->d_name[0] > '9') continue;
+    for_each_process([&](const char* name) {
         ProcessStat stat;
-        if (!read_process_stat(entry->d_name, stat) || stat.parent != self) continue;
-        const auto pid = static_cast<pid_t>(std::atol(entry->d_name));
-        if (running_leaders.count(pid) != 0 || running_leaders.count(stat.group) != 0) continue;
-        if (others_running && stat.group != leader && stat.state != 'Z') continue;
+        if (!read_process_stat(name, stat) || stat.parent != self) return;
+        const auto pid = static_cast<pid_t>(std::atol(name));
+        if (running_leaders.count(pid) != 0 || running_leaders.count(stat.group) != 0) return;
+        if (others_running && stat.group != leader && stat.state != 'Z') return;
         kill(pid, SIGKILL);
         killed.pids.push_back(pid);
         killed.escaped += stat.group != leader && stat.state != 'Z' ? 1 : 0;
-    }
-    closedir(proc);
+    });
     return killed;
 }
 
@@ -205,19 +208,15 @@ int sweep_after(pid_t leader) {
 int tasks_of_this_user() {
     const uid_t user = getuid();
     int tasks = 0;
-    DIR* proc = opendir("/proc");
-    if (!proc) return 0;
-    while (const dirent* entry = readdir(proc)) {
-        if (entry->d_name[0] < '0' || entry->d_name[0] > '9') continue;
-        const std::string task_dir = std::string("/proc/") + entry->d_name + "/task";
+    for_each_process([&](const char* pid) {
+        const std::string task_dir = std::string("/proc/") + pid + "/task";
         struct stat info {};
-        if (stat(task_dir.c_str(), &info) != 0 || info.st_uid != user) continue;
+        if (stat(task_dir.c_str(), &info) != 0 || info.st_uid != user) return;
         if (DIR* threads = opendir(task_dir.c_str())) {
             while (const dirent* thread = readdir(threads)) tasks += thread->d_name[0] != '.' ? 1 : 0;
             closedir(threads);
         }
-    }
-    closedir(proc);
+    });
     return tasks;
 }
 
