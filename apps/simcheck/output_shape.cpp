@@ -158,20 +158,14 @@ ShapedOutput read_shape(std::string text_kept, const particlesim::Scene& scene) 
     std::vector<std::string_view> tokens;
     NumberFormats numbers;
     long blank_line = 0, trailing_space_line = 0, spacing_line = 0;
-    long number = 0;
+    long number = 0;           // the line read last
+    long previous_number = 0;  // the last line before it that is not blank
     std::uint64_t previous_index = 0;
-    for (std::size_t at = 0; at < text.size();) {
-        const std::size_t begin = at;
-        std::size_t end = text.find('\n', at);
-        if (end == std::string_view::npos) end = text.size();
-        std::string_view line = text.substr(at, end - at);
-        at = std::min(end + 1, text.size());
-        ++number;
-        if (!line.empty() && line.back() == '\r') line.remove_suffix(1);  // CR LF line ends are fine
-        if (line.find_first_not_of(" \t") == std::string_view::npos) {
-            if (blank_line == 0) blank_line = number;
-            continue;
-        }
+    std::string_view line;
+    for (std::size_t at = 0; next_line(text, text.size(), at, number, line); previous_number = number) {
+        if (number > previous_number + 1 && blank_line == 0) blank_line = previous_number + 1;
+        const auto begin = static_cast<std::size_t>(line.data() - text.data());
+        const std::size_t end = std::min(at, text.size());  // past the line's end
         if ((line.back() == ' ' || line.back() == '\t') && trailing_space_line == 0) trailing_space_line = number;
         const std::string_view trimmed = line.substr(0, line.find_last_not_of(" \t") + 1);
         if (spacing_line == 0 &&
@@ -195,17 +189,18 @@ ShapedOutput read_shape(std::string text_kept, const particlesim::Scene& scene) 
                 shaped.unreadable = "more blocks than an output of its size is read for its shape";
                 return shaped;
             }
-            blocks.push_back({begin, at, number, number, parsed->step, 0, true, true, true});
+            blocks.push_back({begin, end, number, number, parsed->step, 0, true, true, true});
         }
         ShapedBlock& b = blocks.back();
         b.in_order = b.in_order && parsed->index == b.lines;
         ++b.lines;
-        b.end = at;
+        b.end = end;
         b.last_line = number;
         b.all_counters = b.all_counters && parsed->has_counters;
         b.no_counters = b.no_counters && !parsed->has_counters;
         previous_index = parsed->index;
     }
+    if (number > previous_number && blank_line == 0) blank_line = previous_number + 1;  // blank lines at the end
     const auto at_line = [](long line) { return " (first: line " + std::to_string(line) + ")"; };
     if (blank_line != 0) deviations.push_back("blank lines" + at_line(blank_line));
     if (trailing_space_line != 0) deviations.push_back("trailing spaces" + at_line(trailing_space_line));
