@@ -35,6 +35,8 @@ const fs::path& work() {
     static const fs::path dir = [] {
         std::string path = (fs::temp_directory_path() / "particlesim-grade-XXXXXX").string();
         if (!mkdtemp(path.data())) std::abort();
+        // Run by root, the graded programs are users of their own: they note what they saw here.
+        chmod(path.c_str(), 01777);
         return fs::path(path);
     }();
     return dir;
@@ -229,6 +231,7 @@ void processes_that_leave_the_group_are_killed() {
         check::Context context("--jobs ", jobs);
         fs::remove_all(pids);
         fs::create_directories(pids);
+        chmod(pids.c_str(), 01777);
         // Each run notes both pids, and waits until the double fork is done before it runs simcli.
         const std::string body = "d='" + pids.string() +
                                  "'\n"
@@ -244,8 +247,10 @@ void processes_that_leave_the_group_are_killed() {
         for (std::size_t k = 0; k < scenes(g).items.size(); ++k) {
             CHECK_EQ(scenes(g)[k]["verdict"].text, std::string("conforms"));
             // Run alone, each left three (the two noted and the double fork's own sleep), all counted; side by
-            // side, what left the group cannot be told apart by run, and is not counted.
-            CHECK_EQ(scenes(g)[k]["left_running"].number, jobs == "1" ? 3.0 : 0.0);
+            // side, what left the group cannot be told apart by run, and is not counted, unless each run is
+            // a user of its own.
+            const bool counted = jobs == "1" || g.json["own_users"].number == 1.0;
+            CHECK_EQ(scenes(g)[k]["left_running"].number, counted ? 3.0 : 0.0);
         }
         std::vector<pid_t> escaped;
         for (const fs::directory_entry& file : fs::directory_iterator(pids)) {
@@ -254,6 +259,87 @@ void processes_that_leave_the_group_are_killed() {
         }
         CHECK_EQ(escaped.size(), std::size_t{8});  // two a scene
         for (const pid_t pid : escaped) CHECK(process_is_gone(pid));
+    }
+}
+
+std::string first_line(const fs::path& file) {
+    std::string line;
+    std::getline(std::ifstream(file), line);
+    return line;
+}
+
+// Run by root, each program is a user of its own: the process limit holds
+// (root is exempt from RLIMIT_NPROC), it cannot signal the grader, it
+// still reads a file only root may read (its own files under /root, say),
+// and it cannot write where only root may. Run by another user, the
+// process limit holds as RLIMIT_NPROC over that user's tasks.
+void programs_run_by_root_are_users_of_their_own() {
+    const bool root = geteuid() == 0;
+    if (!root) std::printf("not run by root: checking the process limit only, the programs running as this user\n");
+    const fs::path notes = work() / "own-users";
+    const fs::path private_dir = notes / "root-only";
+    fs::remove_all(notes);
+    fs::create_directories(private_dir);
+    chmod(notes.c_str(), 01777);
+    chmod(private_dir.c_str(), 0700);
+    std::ofstream(private_dir / "secret") << "42\n";
+    chmod((private_dir / "secret").c_str(), 0600);
+    // Each run notes, by its pid: its user, whether it may signal its parent (the grader), what it read of the
+    // secret, and the pids of the sleeps it started before fork failed (at most 40).
+    const std::string body = "n='" + notes.string() + "'/$$\n" +
+                             "id -u > \"$n.user\"\n"
+                             "if kill -0 $PPID 2>/dev/null; then echo yes; else echo no; fi > \"$n.signal\"\n"
+                             "cat '" +
+                             (private_dir / "secret").string() +
+                             "' > \"$n.read\" 2>/dev/null\n"
+                             "(echo x > '" +
+                             (private_dir / "written").string() +
+                             "') 2>/dev/null\n"
+                             "sh -c 'i=0; while [ $i -lt 40 ]; do sleep 30 & echo $! >> \"$0\"; i=$((i+1)); done' "
+                             "\"$n.started\" 2>/dev/null\n"
+                             "exit 4\n";
+    // Side by side only as users of their own: one user's runs share the limit.
+    const Graded g =
+        grade(small_suite(), {"--jobs", root ? "2" : "1", "--processes", "6"}, {script("own-user.sh", body)});
+    CHECK_EQ(g.result.status, 1);
+    CHECK(g.seconds < 30.0);
+    CHECK_EQ(g.json["own_users"].number, root ? 1.0 : 0.0);
+    std::size_t runs = 0;
+    double sleeps_started = 0;
+    for (const fs::directory_entry& file : fs::directory_iterator(notes)) {
+        if (file.path().extension() != ".user") continue;
+        ++runs;
+        const fs::path base = file.path().parent_path() / file.path().stem();
+        check::Context context("run ", base.filename().string());
+        std::vector<pid_t> started;
+        {
+            std::ifstream in(base.string() + ".started");
+            for (pid_t pid = 0; in >> pid;) started.push_back(pid);
+        }
+        // The script and its inner shell count too: 6 tasks added at most.
+        CHECK(!started.empty());
+        CHECK(started.size() <= 5);
+        for (const pid_t pid : started) CHECK(process_is_gone(pid));
+        sleeps_started += static_cast<double>(started.size());
+        if (root) {
+            CHECK(first_line(file.path()) != "0");
+            CHECK_EQ(first_line(base.string() + ".signal"), std::string("no"));
+            CHECK_EQ(first_line(base.string() + ".read"), std::string("42"));
+        }
+    }
+    CHECK_EQ(runs, std::size_t{4});
+    // The sleeps stayed in the program's group: each is counted as left running.
+    double left_running = 0;
+    for (const mini_json::Value& scene : scenes(g).items) left_running += scene["left_running"].number;
+    CHECK_EQ(left_running, sleeps_started);
+    if (root) {
+        CHECK(!fs::exists(private_dir / "written"));
+        // A program only root may run is refused before any run, with what to do.
+        const std::string closed = script("closed.sh", "exit 0\n");
+        chmod(closed.c_str(), 0744);
+        const run_process::Result refused = run_process::run(simcheck, {"grade", small_suite().string(), "--", closed});
+        CHECK_EQ(refused.status, 2);
+        CHECK(refused.err.find("chmod o+x") != std::string::npos);
     }
 }
 
@@ -295,6 +381,7 @@ int main(int argc, char** argv) {
          {"misbehaving programs get their verdicts", misbehaving_programs_get_their_verdicts},
          {"a child holding stdout does not hang the grader", a_child_holding_stdout_does_not_hang_the_grader},
          {"processes that leave the group are killed", processes_that_leave_the_group_are_killed},
+         {"programs run by root are users of their own", programs_run_by_root_are_users_of_their_own},
          {"each run has a fresh empty directory", each_run_has_a_fresh_empty_directory},
          {"bad usage", bad_usage}});
     std::error_code ignored;

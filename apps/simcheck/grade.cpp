@@ -9,6 +9,7 @@
 #include "particlesim/scene.hpp"
 #include "particlesim/step_check.hpp"
 
+#include <sys/stat.h>
 #include <unistd.h>
 
 #include <algorithm>
@@ -53,6 +54,8 @@ as a whole when it ends), and limits:
       --memory MB        address space (default 4096; 0: no limit, for programs
                          built with AddressSanitizer, which reserves terabytes)
       --processes N      processes and threads it may add (default 256)
+Run by root, each program runs as a user of its own (an unused user id that
+may read every file but write only in its directory and where anyone may).
 Reports:
       --json FILE        {"program", "scenes": [{"scene", "verdict", "step", ...}]}
       --markdown FILE    a table and the details, for pasting
@@ -496,7 +499,7 @@ void write_json(std::FILE* out, const Options& o, const std::vector<SceneCase>& 
     };
     std::string json = "{\"program\": " + json_string(o.program_text) +
                        ", \"suite\": " + json_string(o.suite.string()) + ", \"jobs\": " + std::to_string(o.jobs) +
-                       ", \"scenes\": [";
+                       ", \"own_users\": " + (runs_programs_as_own_users() ? "true" : "false") + ", \"scenes\": [";
     for (std::size_t k = 0; k < rows.size(); ++k) {
         const Row& r = rows[k];
         json += k > 0 ? ",\n  " : "\n  ";
@@ -534,6 +537,19 @@ int grade_main(int argc, char** argv) {
         // It runs in a directory of its own: a relative path would not reach it there.
         o.program_text = program_text(o);
         o.program.front() = fs::absolute(*program).lexically_normal().string();
+        if (runs_programs_as_own_users()) {
+            // It runs as a user of its own, for whom only the bits for others hold.
+            struct stat info {};
+            if (stat(o.program.front().c_str(), &info) != 0 || (info.st_mode & S_IXOTH) == 0)
+                throw BadUsage(o.program.front() +
+                               ": not executable by other users, and run by root simcheck grade runs each program "
+                               "as a user of its own (chmod o+x it)");
+        } else if (geteuid() == 0) {
+            std::fprintf(stderr,
+                         "simcheck grade: warning: run by root but unable to run programs as users of their own "
+                         "(no CAP_SETUID, CAP_SETGID, CAP_CHOWN or CAP_DAC_READ_SEARCH, or no unused user ids "
+                         "mapped): --processes does not hold, and the programs run as root\n");
+        }
         if (!o.outputs_dir.empty()) fs::create_directories(o.outputs_dir);
         const std::vector<SceneCase> cases = read_suite(o.suite, o.check.boundary);
         const std::optional<std::string> reference = find_reference(o);

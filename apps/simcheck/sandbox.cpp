@@ -1,5 +1,8 @@
 #include "sandbox.hpp"
 
+#include "own_user.hpp"
+#include "process_list.hpp"
+
 #include <dirent.h>
 #include <fcntl.h>
 #include <poll.h>
@@ -20,6 +23,7 @@
 #include <filesystem>
 #include <fstream>
 #include <mutex>
+#include <optional>
 #include <set>
 #include <stdexcept>
 #include <thread>
@@ -65,8 +69,9 @@ void set_limit(int resource, rlim_t value) {
 }
 
 // In the child, between fork and exec: async-signal-safe calls only.
+// `user`: the user of its own it runs as, or 0 to stay this process's.
 [[noreturn]] void start_child(char* const* argv, const char* directory, const char* stdin_path, int out, int err,
-                              const SandboxLimits& limits, rlim_t tasks) {
+                              const SandboxLimits& limits, rlim_t tasks, uid_t user) {
     setpgid(0, 0);
     dup2(err, 2);
     dup2(out, 1);
@@ -88,6 +93,11 @@ void set_limit(int resource, rlim_t value) {
     set_limit(RLIMIT_FSIZE, static_cast<rlim_t>(limits.output_bytes));
     set_limit(RLIMIT_NPROC, tasks);
     set_limit(RLIMIT_CPU, static_cast<rlim_t>(limits.seconds) + 2);
+    if (user != 0 && !become_own_user(user)) {
+        constexpr char message[] = "simcheck grade: cannot run the program as a user of its own\n";
+        [[maybe_unused]] const auto written = write(2, message, sizeof message - 1);
+        _exit(127);
+    }
     execvp(argv[0], argv);
     constexpr char message[] = "simcheck grade: cannot run the program\n";
     [[maybe_unused]] const auto written = write(2, message, sizeof message - 1);
@@ -96,29 +106,19 @@ void set_limit(int resource, rlim_t value) {
 
 double seconds_since(Clock::time_point start) { return std::chrono::duration<double>(Clock::now() - start).count(); }
 
-// visit(pid) for each process, `pid` its directory's name in /proc.
-template <typename Visit>
-void for_each_process(Visit&& visit) {
-    DIR* proc = opendir("/proc");
-    if (!proc) return;
-    while (const dirent* entry = readdir(proc)) {
-        if (entry->d_name[0] >= '0' && entry->d_name[0] <= '9') visit(entry->d_name);
-    }
-    closedir(proc);
-}
-
 // A program can leave its process group (setsid, a daemon's double fork),
 // and then the group's SIGKILL misses what it left behind. simcheck is
 // made the subreaper of everything it runs, so that such a process, once
 // its parent is gone, becomes simcheck's child instead of init's and is
 // found and killed when a run ends.
 //
-// Which run an adopted process came from cannot be told, so with runs side
-// by side (--jobs) it is killed only once no run is going (at the latest
-// when the last one ends): killing it earlier could take a helper from a
-// program still running. The programs running now and their process
-// groups are never touched: their leaders are registered under this lock
-// from the fork on, and a sweep holds it while it reads and kills.
+// Which run an adopted process came from cannot be told (unless each runs
+// as a user of its own), so with runs side by side (--jobs) it is killed
+// only once no run is going (at the latest when the last one ends): killing
+// it earlier could take a helper from a program still running. The
+// programs running now and their process groups are never touched: their
+// leaders are registered under this lock from the fork on, and a sweep
+// holds it while it reads and kills.
 std::mutex running_mutex;
 std::set<pid_t> running_leaders;
 
@@ -159,27 +159,35 @@ int live_members(pid_t group) {
 }
 
 struct Killed {
-    std::vector<pid_t> pids;  // to be reaped
-    int escaped = 0;          // of them, live ones outside the run's group
+    std::vector<pid_t> pids;     // to be reaped
+    std::vector<pid_t> escaped;  // of those killed, live ones outside the run's group
+    bool any = false;            // whether anything was killed
 };
 
-// Kills the children of this process that the run of `leader` left behind:
-// those of its group, adopted, and, when no other run is going, every other
-// adopted process (zombies are reaped whenever).
-Killed kill_adopted(pid_t leader) {
+// Kills what the run of `leader` left behind: its user's processes, when
+// it ran as a user of its own (`user`, else 0), and the children of this
+// process that were adopted from its group and, when no other run is
+// going, every other adopted process (zombies are reaped whenever).
+Killed kill_adopted(pid_t leader, uid_t user) {
     const pid_t self = getpid();
     Killed killed;
     const std::lock_guard<std::mutex> lock(running_mutex);
     const bool others_running = !running_leaders.empty();
     for_each_process([&](const char* name) {
         ProcessStat stat;
-        if (!read_process_stat(name, stat) || stat.parent != self) return;
+        if (!read_process_stat(name, stat)) return;
         const auto pid = static_cast<pid_t>(std::atol(name));
-        if (running_leaders.count(pid) != 0 || running_leaders.count(stat.group) != 0) return;
-        if (others_running && stat.group != leader && stat.state != 'Z') return;
+        const bool its_user = user != 0 && process_runs_as(name, user);
+        if (!its_user) {
+            if (stat.parent != self) return;
+            if (running_leaders.count(pid) != 0 || running_leaders.count(stat.group) != 0) return;
+            if (others_running && stat.group != leader && stat.state != 'Z') return;
+        }
         kill(pid, SIGKILL);
-        killed.pids.push_back(pid);
-        killed.escaped += stat.group != leader && stat.state != 'Z' ? 1 : 0;
+        if (stat.parent == self) killed.pids.push_back(pid);
+        // With users of their own, another run's adopted process is not this one's.
+        if ((user == 0 || its_user) && stat.group != leader && stat.state != 'Z') killed.escaped.push_back(pid);
+        killed.any = true;
     });
     return killed;
 }
@@ -188,23 +196,24 @@ Killed kill_adopted(pid_t leader) {
 // kill_adopted() allows, each reaped; returns how many live processes outside
 // the group were killed. Bounded: a process stuck in the kernel is left for a
 // later sweep.
-int sweep_after(pid_t leader) {
-    int escaped = 0;
+int sweep_after(pid_t leader, uid_t user) {
+    // By pid: one killed but not yet dead (not this process's child, so not
+    // waited for) is seen again.
+    std::set<pid_t> escaped;
     const Clock::time_point start = Clock::now();
     while (seconds_since(start) < 2.0) {
         kill(-leader, SIGKILL);
         const bool group_gone = kill(-leader, 0) != 0 && errno == ESRCH;
-        const Killed killed = kill_adopted(leader);
-        escaped += killed.escaped;
+        const Killed killed = kill_adopted(leader, user);
+        escaped.insert(killed.escaped.begin(), killed.escaped.end());
         for (const pid_t pid : killed.pids) waitpid(pid, nullptr, 0);
-        if (group_gone && killed.pids.empty()) break;
+        if (group_gone && !killed.any) break;
         if (killed.pids.empty()) std::this_thread::sleep_for(std::chrono::milliseconds(1));
     }
-    return escaped;
+    return static_cast<int>(escaped.size());
 }
 
-}  // namespace
-
+// The tasks (processes and threads) the user of this process runs now.
 int tasks_of_this_user() {
     const uid_t user = getuid();
     int tasks = 0;
@@ -218,6 +227,13 @@ int tasks_of_this_user() {
         }
     });
     return tasks;
+}
+
+}  // namespace
+
+bool runs_programs_as_own_users() {
+    static const bool own_users = can_run_as_own_users();
+    return own_users;
 }
 
 SandboxRun run_sandboxed(const std::vector<std::string>& arguments, const std::string& stdin_path,
@@ -242,7 +258,24 @@ SandboxRun run_sandboxed(const std::vector<std::string>& arguments, const std::s
     std::vector<char*> argv;
     for (const std::string& a : arguments) argv.push_back(const_cast<char*>(a.c_str()));
     argv.push_back(nullptr);
-    const rlim_t tasks = static_cast<rlim_t>(tasks_of_this_user() + limits.processes);
+    // A user of its own runs nothing else: the limit is the program and what it may add.
+    uid_t user = 0;
+    if (runs_programs_as_own_users()) {
+        const std::optional<uid_t> claimed = claim_own_user();
+        if (!claimed) throw std::runtime_error("no unused user id is left to run the program as");
+        user = *claimed;
+    }
+    struct ReleaseUser {
+        uid_t user;
+        ~ReleaseUser() {
+            if (user != 0) release_own_user(user);
+        }
+    } release_user{user};
+    if (user != 0 && chown(directory.c_str(), user, user) != 0)
+        throw std::runtime_error("cannot give the working directory to the program's user: " +
+                                 std::string(std::strerror(errno)));
+    const rlim_t tasks =
+        static_cast<rlim_t>(user != 0 ? 1 + limits.processes : tasks_of_this_user() + limits.processes);
 
     become_subreaper();
     const Clock::time_point start = Clock::now();
@@ -253,7 +286,7 @@ SandboxRun run_sandboxed(const std::vector<std::string>& arguments, const std::s
         pid = fork();
         if (pid == 0) {
             start_child(argv.data(), directory.c_str(), stdin_path.c_str(), out_write.get(), err_write.get(), limits,
-                        tasks);
+                        tasks, user);
         }
         if (pid > 0) running_leaders.insert(pid);
     }
@@ -261,6 +294,7 @@ SandboxRun run_sandboxed(const std::vector<std::string>& arguments, const std::s
     // The run ends with its leader unregistered and a sweep, also when it throws.
     struct Unregister {
         pid_t leader;
+        uid_t user;
         bool done = false;
         int finish() {
             done = true;
@@ -268,12 +302,12 @@ SandboxRun run_sandboxed(const std::vector<std::string>& arguments, const std::s
                 const std::lock_guard<std::mutex> lock(running_mutex);
                 running_leaders.erase(leader);
             }
-            return sweep_after(leader);
+            return sweep_after(leader, user);
         }
         ~Unregister() {
             if (!done) finish();
         }
-    } unregister{pid};
+    } unregister{pid, user};
     setpgid(pid, pid);  // as the child does: whichever runs first
     out_write.close();
     err_write.close();
@@ -362,7 +396,7 @@ SandboxRun run_sandboxed(const std::vector<std::string>& arguments, const std::s
     }
     kill(-pid, SIGKILL);
     const int escaped = unregister.finish();
-    if (!stopped && limits.runs_alone) run.left_running += escaped;
+    if (!stopped && (limits.runs_alone || user != 0)) run.left_running += escaped;
     return run;
 }
 

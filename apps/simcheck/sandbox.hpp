@@ -7,6 +7,14 @@
 // wall-clock limit, a cap on the bytes it writes to stdout, and setrlimit
 // limits on memory, processes, file sizes and core dumps. Standard input is
 // the scene file or /dev/null; nothing else is passed in.
+//
+// Run by root, it runs each program as a user of its own (an unused user
+// id, free again once nothing of the run is left), keeping only the right
+// to read and search every file (CAP_DAC_READ_SEARCH): the process limit
+// then holds (root is exempt from RLIMIT_NPROC), the program can neither
+// signal the grader nor write outside its directory and what any user may
+// write, and whatever it leaves running is found by its user id, also with
+// runs side by side.
 
 #include <cstdint>
 #include <string>
@@ -18,9 +26,10 @@ struct SandboxLimits {
     double seconds = 10.0;                              // wall clock
     std::int64_t output_bytes = std::int64_t{1} << 30;  // stdout, and any file it writes
     std::int64_t memory_bytes = std::int64_t{4} << 30;  // address space (RLIMIT_AS); 0: none
-    int processes = 256;                                // tasks beyond what its user runs already (RLIMIT_NPROC)
+    int processes = 256;                                // tasks it may add (RLIMIT_NPROC)
     // No other program runs beside it (grade --jobs 1): what left its group
-    // is then known to be its own, and counted in left_running.
+    // is then known to be its own, and counted in left_running (as it always
+    // is with users of their own).
     bool runs_alone = true;
 };
 
@@ -33,17 +42,19 @@ struct SandboxRun {
     std::int64_t output_bytes = 0;
     std::string stderr_head;  // the first few kilobytes of its standard error
     // Processes of the program still running when it had ended by itself,
-    // all killed: its group's, and, run alone, what had left the group.
+    // all killed: its group's, and, run alone or as a user of its own, what
+    // had left the group.
     int left_running = 0;
 };
+
+// Whether programs run as users of their own: this process is root, may
+// change users and read every file, and has unused user ids to give.
+bool runs_programs_as_own_users();
 
 // Runs argv[0] (looked up in PATH) with stdin from `stdin_path` and stdout
 // into `stdout_path` (created). Throws std::runtime_error when it cannot be
 // started at all (no working directory, no fork).
 SandboxRun run_sandboxed(const std::vector<std::string>& argv, const std::string& stdin_path,
                          const std::string& stdout_path, const SandboxLimits& limits);
-
-// The tasks (processes and threads) the user of this process runs now.
-int tasks_of_this_user();
 
 }  // namespace simcheck

@@ -1,0 +1,39 @@
+#pragma once
+// Run by root, the grader runs each program as a user of its own: an
+// unused user id that keeps only the right to read and search every file
+// (CAP_DAC_READ_SEARCH, so that a program under /root still runs and reads
+// its own files). Root is exempt from RLIMIT_NPROC; a user of its own is
+// not, and it holds no other process, so the limit counts the program's
+// tasks alone. It cannot signal the grader or any other user's process,
+// nor write outside its directory and what any user may write, and what
+// it leaves running is found by its user id.
+
+#include <sys/types.h>
+
+#include <optional>
+
+namespace simcheck {
+
+// Whether this process can: it is root, may change users and read every
+// file, and the user ids it would give are mapped in its user namespace.
+bool can_run_as_own_users();
+
+// A user id that no process, passwd or group entry uses and no other run
+// holds, or nothing when none is left. Safe from any thread.
+std::optional<uid_t> claim_own_user();
+
+// Gives `user` back for another run, unless a process of it is still
+// there (one stuck in the kernel): it then stays claimed.
+void release_own_user(uid_t user);
+
+// Whether process `pid` (its /proc directory's name) runs as `user`.
+bool process_runs_as(const char* pid, uid_t user);
+
+// In a child between fork and exec (async-signal-safe calls only): becomes
+// `user`, group `user` and no supplementary groups, with
+// CAP_DAC_READ_SEARCH through exec and no way to gain more (no new
+// privileges: a set-user-ID program runs as the user). False if any step
+// fails.
+bool become_own_user(uid_t user);
+
+}  // namespace simcheck
