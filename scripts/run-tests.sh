@@ -16,9 +16,9 @@ scripts/ensure-deps.sh clang-format
 # ThreadSanitizer over OpenMP), chromium (the animation page), python3-ase
 # (simcli's trajectory files as ASE reads them), OpenMPI (the distributed
 # engine: the Release build then has PARTICLESIM_MPI on, and simcli runs
-# under mpirun).
+# under mpirun), pkgconf (the installed pkg-config files).
 scripts/ensure-deps.sh --optional g++-aarch64-linux-gnu qemu-user clang libclang-rt-dev libomp-dev chromium python3-ase \
-  libopenmpi-dev openmpi-bin
+  libopenmpi-dev openmpi-bin pkgconf
 jobs=$(nproc)
 mpi=OFF
 if command -v mpicxx >/dev/null 2>&1 && command -v mpirun >/dev/null 2>&1; then
