@@ -27,14 +27,14 @@ else
   echo "OpenMPI is missing: the distributed engine is not built, and its tests will say SKIPPED"
 fi
 
-echo "== Release build"
+echo "== Release build (at ${SECONDS} s)"
 cmake --preset release -DPARTICLESIM_MPI=$mpi
 cmake --build --preset release -j "$jobs"
 
 # The sanitized build compiles at the lowest priority while the release tests
 # run: it takes only the CPU they leave idle (waiting on mpirun, Chromium,
 # signals), and they keep their timing. Its log is shown once it ends.
-echo "== Sanitized build (address, undefined) beside the release tests, at nice 19"
+echo "== Sanitized build (address, undefined) beside the release tests, at nice 19 (at ${SECONDS} s)"
 cmake --preset sanitize
 sanitize_log=build-sanitize/build.log
 # In a process group of its own (setsid), so that a failing release test stops its compilers too.
@@ -42,10 +42,10 @@ setsid nice -n 19 cmake --build --preset sanitize -j "$jobs" >"$sanitize_log" 2>
 sanitize_build=$!
 trap 'kill -- "-$sanitize_build" 2>/dev/null || true' EXIT
 
-echo "== Release tests"
+echo "== Release tests (at ${SECONDS} s)"
 ctest --preset release -j "$jobs"
 
-echo "== Sanitized build's log"
+echo "== Sanitized build's log (release tests done at ${SECONDS} s)"
 sanitize_status=0
 wait "$sanitize_build" || sanitize_status=$?
 trap - EXIT
@@ -54,5 +54,6 @@ if [ "$sanitize_status" -ne 0 ]; then
   echo "the sanitized build failed (status $sanitize_status)"
   exit "$sanitize_status"
 fi
-echo "== Sanitized tests"
+echo "== Sanitized tests (at ${SECONDS} s)"
 ctest --preset sanitize -j "$jobs"
+echo "== Done (at ${SECONDS} s)"

@@ -77,7 +77,9 @@ struct Graded {
     double seconds = 0.0;
 };
 
-Graded grade(const fs::path& suite, std::vector<std::string> options, const std::vector<std::string>& program) {
+// `launcher`: a command that runs simcheck (none: simcheck itself).
+Graded grade(const fs::path& suite, std::vector<std::string> options, const std::vector<std::string>& program,
+             const std::vector<std::string>& launcher = {}) {
     const fs::path json = work() / "report.json";
     fs::remove(json);
     std::vector<std::string> args{"grade", suite.string(), "--json", json.string()};
@@ -90,7 +92,14 @@ Graded grade(const fs::path& suite, std::vector<std::string> options, const std:
     args.insert(args.end(), program.begin(), program.end());
     const auto start = std::chrono::steady_clock::now();
     Graded g;
-    g.result = run_process::run(simcheck, args);
+    if (launcher.empty()) {
+        g.result = run_process::run(simcheck, args);
+    } else {
+        std::vector<std::string> launched(launcher.begin() + 1, launcher.end());
+        launched.push_back(simcheck);
+        launched.insert(launched.end(), args.begin(), args.end());
+        g.result = run_process::run(launcher.front(), launched);
+    }
     g.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     try {
         g.json = mini_json::Parser(run_process::slurp(json.string())).parse();
@@ -268,14 +277,11 @@ std::string first_line(const fs::path& file) {
     return line;
 }
 
-// Run by root, each program is a user of its own: the process limit holds
-// (root is exempt from RLIMIT_NPROC), it cannot signal the grader, it
-// still reads a file only root may read (its own files under /root, say),
-// and it cannot write where only root may. Run by another user, the
-// process limit holds as RLIMIT_NPROC over that user's tasks.
-void programs_run_by_root_are_users_of_their_own() {
-    const bool root = geteuid() == 0;
-    if (!root) std::printf("not run by root: checking the process limit only, the programs running as this user\n");
+// What the programs of one grade saw, run as users of their own by root
+// (`as_root`) or as the grader's user otherwise. `launcher` runs simcheck
+// (setpriv to take capabilities away); `may_write_anywhere`: the program
+// keeps CAP_DAC_OVERRIDE (no CAP_DAC_READ_SEARCH to keep).
+void check_programs_as_users(const std::vector<std::string>& launcher, bool as_root, bool may_write_anywhere) {
     const fs::path notes = work() / "own-users";
     const fs::path private_dir = notes / "root-only";
     fs::remove_all(notes);
@@ -286,24 +292,27 @@ void programs_run_by_root_are_users_of_their_own() {
     chmod((private_dir / "secret").c_str(), 0600);
     // Each run notes, by its pid: its user, whether it may signal its parent (the grader), what it read of the
     // secret, and the pids of the sleeps it started before fork failed (at most 40).
-    const std::string body = "n='" + notes.string() + "'/$$\n" +
-                             "id -u > \"$n.user\"\n"
-                             "if kill -0 $PPID 2>/dev/null; then echo yes; else echo no; fi > \"$n.signal\"\n"
-                             "cat '" +
-                             (private_dir / "secret").string() +
-                             "' > \"$n.read\" 2>/dev/null\n"
-                             "(echo x > '" +
-                             (private_dir / "written").string() +
-                             "') 2>/dev/null\n"
-                             "sh -c 'i=0; while [ $i -lt 40 ]; do sleep 30 & echo $! >> \"$0\"; i=$((i+1)); done' "
-                             "\"$n.started\" 2>/dev/null\n"
-                             "exit 4\n";
+    const std::string body =
+        "n='" + notes.string() + "'/$$\n" +
+        "id -u > \"$n.user\"\n"
+        "if kill -0 $PPID 2>/dev/null; then echo yes; else echo no; fi > \"$n.signal\"\n"
+        "cat '" +
+        (private_dir / "secret").string() +
+        "' > \"$n.read\" 2>/dev/null\n"
+        "(echo x > '" +
+        (private_dir / "written").string() +
+        "') 2>/dev/null\n"
+        "echo junk > /tmp/particlesim-grade-junk-$$\n"
+        "mkdir /var/tmp/particlesim-grade-junk-$$ && echo junk > /var/tmp/particlesim-grade-junk-$$/f\n"
+        "sh -c 'i=0; while [ $i -lt 40 ]; do sleep 30 & echo $! >> \"$0\"; i=$((i+1)); done' "
+        "\"$n.started\" 2>/dev/null\n"
+        "exit 4\n";
     // Side by side only as users of their own: one user's runs share the limit.
-    const Graded g =
-        grade(small_suite(), {"--jobs", root ? "2" : "1", "--processes", "6"}, {script("own-user.sh", body)});
+    const Graded g = grade(small_suite(), {"--jobs", as_root ? "2" : "1", "--processes", "6"},
+                           {script("own-user.sh", body)}, launcher);
     CHECK_EQ(g.result.status, 1);
     CHECK(g.seconds < 30.0);
-    CHECK_EQ(g.json["own_users"].number, root ? 1.0 : 0.0);
+    CHECK_EQ(g.json["own_users"].number, as_root ? 1.0 : 0.0);
     std::size_t runs = 0;
     double sleeps_started = 0;
     for (const fs::directory_entry& file : fs::directory_iterator(notes)) {
@@ -320,8 +329,13 @@ void programs_run_by_root_are_users_of_their_own() {
         CHECK(!started.empty());
         CHECK(started.size() <= 5);
         for (const pid_t pid : started) CHECK(process_is_gone(pid));
+        const std::string junk = "particlesim-grade-junk-" + base.filename().string();
+        for (const fs::path& left : {fs::path("/tmp") / junk, fs::path("/var/tmp") / junk}) {
+            CHECK_EQ(fs::exists(left), !as_root);
+            fs::remove_all(left);
+        }
         sleeps_started += static_cast<double>(started.size());
-        if (root) {
+        if (as_root) {
             CHECK(first_line(file.path()) != "0");
             CHECK_EQ(first_line(base.string() + ".signal"), std::string("no"));
             CHECK_EQ(first_line(base.string() + ".read"), std::string("42"));
@@ -330,10 +344,27 @@ void programs_run_by_root_are_users_of_their_own() {
     CHECK_EQ(runs, std::size_t{4});
     // The sleeps stayed in the program's group: each is counted as left running.
     double left_running = 0;
-    for (const mini_json::Value& scene : scenes(g).items) left_running += scene["left_running"].number;
+    for (const mini_json::Value& scene : scenes(g).items) {
+        left_running += scene["left_running"].number;
+        // The file and the directory (not the run's own directory), told in the message.
+        CHECK_EQ(scene["left_files"].number, as_root ? 2.0 : 0.0);
+        if (as_root) CHECK(scene["message"].text.find("it left 2 files in /tmp") != std::string::npos);
+    }
     CHECK_EQ(left_running, sleeps_started);
+    if (as_root) CHECK_EQ(fs::exists(private_dir / "written"), may_write_anywhere);
+}
+
+// Run by root, each program is a user of its own: the process limit holds
+// (root is exempt from RLIMIT_NPROC), it cannot signal the grader, it
+// still reads a file only root may read (its own files under /root, say),
+// it cannot write where only root may, and what it leaves in /tmp and
+// /var/tmp is removed. Run by another user, the process limit holds as
+// RLIMIT_NPROC over that user's tasks.
+void programs_run_by_root_are_users_of_their_own() {
+    const bool root = geteuid() == 0;
+    if (!root) std::printf("not run by root: checking the process limit only, the programs running as this user\n");
+    check_programs_as_users({}, root, false);
     if (root) {
-        CHECK(!fs::exists(private_dir / "written"));
         // A program only root may run is refused before any run, with what to do.
         const std::string closed = script("closed.sh", "exit 0\n");
         chmod(closed.c_str(), 0744);
@@ -341,6 +372,21 @@ void programs_run_by_root_are_users_of_their_own() {
         CHECK_EQ(refused.status, 2);
         CHECK(refused.err.find("chmod o+x") != std::string::npos);
     }
+}
+
+// Docker's default capabilities leave out CAP_DAC_READ_SEARCH: root there
+// still runs each program as a user of its own, which keeps
+// CAP_DAC_OVERRIDE instead (it reaches its files, and may write where root
+// may).
+void programs_run_by_root_without_read_search() {
+    if (geteuid() != 0) {
+        std::printf("not run by root: nothing to take away\n");
+        return;
+    }
+    // util-linux's, on every Debian machine.
+    const std::string setpriv = "/usr/bin/setpriv";
+    CHECK(fs::exists(setpriv));
+    check_programs_as_users({setpriv, "--inh-caps", "-all", "--bounding-set", "-dac_read_search", "--"}, true, true);
 }
 
 void each_run_has_a_fresh_empty_directory() {
@@ -382,6 +428,7 @@ int main(int argc, char** argv) {
          {"a child holding stdout does not hang the grader", a_child_holding_stdout_does_not_hang_the_grader},
          {"processes that leave the group are killed", processes_that_leave_the_group_are_killed},
          {"programs run by root are users of their own", programs_run_by_root_are_users_of_their_own},
+         {"programs run by root without CAP_DAC_READ_SEARCH", programs_run_by_root_without_read_search},
          {"each run has a fresh empty directory", each_run_has_a_fresh_empty_directory},
          {"bad usage", bad_usage}});
     std::error_code ignored;

@@ -3,12 +3,14 @@
 #include "command_line.hpp"
 
 #include "judge.hpp"
+#include "own_user.hpp"
 #include "report.hpp"
 #include "sandbox.hpp"
 
 #include "particlesim/scene.hpp"
 #include "particlesim/step_check.hpp"
 
+#include <linux/capability.h>
 #include <sys/stat.h>
 #include <unistd.h>
 
@@ -255,6 +257,7 @@ struct Row {
     std::optional<int> exit_status;
     std::optional<int> signal;
     int left_running = 0;  // processes found running after the program ended (killed)
+    int left_files = 0;    // entries it made in /tmp and the like (removed)
 };
 
 std::string signal_name(int number) {
@@ -386,6 +389,12 @@ Row grade_scene(const SceneCase& c, const Options& o, const std::optional<std::s
         break;
     }
     row.left_running = run.left_running;
+    row.left_files = run.left_files;
+    if (run.left_files > 0) {
+        const std::string left = "it left " + std::to_string(run.left_files) + " file" +
+                                 (run.left_files == 1 ? "" : "s") + " in /tmp, /var/tmp or /dev/shm (removed)";
+        row.message = row.message.empty() ? left : row.message + "; " + left;
+    }
     if (run.left_running > 0) {
         const std::string left = "it left " + std::to_string(run.left_running) + " process" +
                                  (run.left_running == 1 ? "" : "es") + " running after it ended (killed)";
@@ -509,6 +518,7 @@ void write_json(std::FILE* out, const Options& o, const std::vector<SceneCase>& 
         json += ", \"reference_seconds\": " + (r.reference_seconds ? seconds_json(*r.reference_seconds) : "null");
         json += ", \"exit_status\": " + optional_number(r.exit_status) + ", \"signal\": " + optional_number(r.signal);
         json += ", \"left_running\": " + std::to_string(r.left_running);
+        json += ", \"left_files\": " + std::to_string(r.left_files);
         json += ", \"deviations\": [";
         for (std::size_t d = 0; d < r.deviations.size(); ++d)
             json += (d > 0 ? ", " : "") + json_string(r.deviations[d]);
@@ -537,7 +547,7 @@ int grade_main(int argc, char** argv) {
         // It runs in a directory of its own: a relative path would not reach it there.
         o.program_text = program_text(o);
         o.program.front() = fs::absolute(*program).lexically_normal().string();
-        if (runs_programs_as_own_users()) {
+        if (runs_programs_as_own_users() && kept_capability() == CAP_DAC_READ_SEARCH) {
             // It runs as a user of its own, for whom only the bits for others hold.
             struct stat info {};
             if (stat(o.program.front().c_str(), &info) != 0 || (info.st_mode & S_IXOTH) == 0)
@@ -547,8 +557,9 @@ int grade_main(int argc, char** argv) {
         } else if (geteuid() == 0) {
             std::fprintf(stderr,
                          "simcheck grade: warning: run by root but unable to run programs as users of their own "
-                         "(no CAP_SETUID, CAP_SETGID, CAP_CHOWN or CAP_DAC_READ_SEARCH, or no unused user ids "
-                         "mapped): --processes does not hold, and the programs run as root\n");
+                         "(no CAP_SETUID, CAP_SETGID or CAP_CHOWN, neither CAP_DAC_READ_SEARCH nor "
+                         "CAP_DAC_OVERRIDE, or no unused user ids mapped): --processes does not hold, and the "
+                         "programs run as root\n");
         }
         if (!o.outputs_dir.empty()) fs::create_directories(o.outputs_dir);
         const std::vector<SceneCase> cases = read_suite(o.suite, o.check.boundary);

@@ -10,6 +10,8 @@
 #include <sys/syscall.h>
 #include <unistd.h>
 
+#include <cstdlib>
+#include <filesystem>
 #include <fstream>
 #include <mutex>
 #include <set>
@@ -86,10 +88,16 @@ std::set<uid_t> claimed;
 
 }  // namespace
 
+int kept_capability() {
+    static const int capability =
+        has_effective_capabilities({CAP_DAC_READ_SEARCH}) ? CAP_DAC_READ_SEARCH : CAP_DAC_OVERRIDE;
+    return capability;
+}
+
 bool can_run_as_own_users() {
     if (geteuid() != 0 || !first_own_id()) return false;
     if (prctl(PR_CAP_AMBIENT, PR_CAP_AMBIENT_IS_SET, CAP_DAC_READ_SEARCH, 0, 0) < 0) return false;
-    return has_effective_capabilities({CAP_SETUID, CAP_SETGID, CAP_CHOWN, CAP_DAC_READ_SEARCH});
+    return has_effective_capabilities({CAP_SETUID, CAP_SETGID, CAP_CHOWN, kept_capability()});
 }
 
 std::optional<uid_t> claim_own_user() {
@@ -111,12 +119,38 @@ void release_own_user(uid_t user) {
     claimed.erase(user);
 }
 
+int remove_files_of(uid_t user, const std::string& keep) {
+    namespace fs = std::filesystem;
+    std::set<std::string> places{"/tmp", "/var/tmp", "/dev/shm"};
+    if (const char* tmpdir = std::getenv("TMPDIR"); tmpdir && *tmpdir) places.insert(tmpdir);
+    struct stat keep_info {};
+    const bool keeping = stat(keep.c_str(), &keep_info) == 0;
+    int removed = 0;
+    std::set<std::pair<dev_t, ino_t>> seen;  // a place named twice (a link) is visited once
+    for (const std::string& place : places) {
+        struct stat place_info {};
+        if (stat(place.c_str(), &place_info) != 0 || !seen.insert({place_info.st_dev, place_info.st_ino}).second)
+            continue;
+        std::error_code error;
+        for (fs::directory_iterator entry(place, error), end; !error && entry != end; entry.increment(error)) {
+            struct stat info {};
+            // lstat: a link is removed itself, never followed.
+            if (lstat(entry->path().c_str(), &info) != 0 || info.st_uid != user) continue;
+            if (keeping && info.st_dev == keep_info.st_dev && info.st_ino == keep_info.st_ino) continue;
+            std::error_code ignored;
+            fs::remove_all(entry->path(), ignored);
+            ++removed;
+        }
+    }
+    return removed;
+}
+
 bool process_runs_as(const char* pid, uid_t user) {
     struct stat info {};
     return stat((std::string("/proc/") + pid).c_str(), &info) == 0 && info.st_uid == user;
 }
 
-bool become_own_user(uid_t user) {
+bool become_own_user(uid_t user, int capability) {
     // Raw system calls: they change this thread alone, which in a child
     // after fork is the whole process (glibc's wrappers would signal the
     // parent's other threads, which the child does not have).
@@ -127,11 +161,11 @@ bool become_own_user(uid_t user) {
     // The effective set was emptied with the user; permitted kept (KEEPCAPS).
     __user_cap_header_struct header{_LINUX_CAPABILITY_VERSION_3, 0};
     __user_cap_data_struct data[2]{};
-    static_assert(CAP_DAC_READ_SEARCH < 32);
-    const unsigned read_search = 1U << CAP_DAC_READ_SEARCH;
-    data[0].effective = data[0].permitted = data[0].inheritable = read_search;
+    static_assert(CAP_DAC_READ_SEARCH < 32 && CAP_DAC_OVERRIDE < 32);
+    const unsigned kept = 1U << static_cast<unsigned>(capability);
+    data[0].effective = data[0].permitted = data[0].inheritable = kept;
     if (syscall(SYS_capset, &header, data) != 0) return false;
-    if (prctl(PR_CAP_AMBIENT, PR_CAP_AMBIENT_RAISE, CAP_DAC_READ_SEARCH, 0, 0) != 0) return false;
+    if (prctl(PR_CAP_AMBIENT, PR_CAP_AMBIENT_RAISE, capability, 0, 0) != 0) return false;
     return prctl(PR_SET_NO_NEW_PRIVS, 1, 0, 0, 0) == 0;
 }
 

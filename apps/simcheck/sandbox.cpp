@@ -71,7 +71,7 @@ void set_limit(int resource, rlim_t value) {
 // In the child, between fork and exec: async-signal-safe calls only.
 // `user`: the user of its own it runs as, or 0 to stay this process's.
 [[noreturn]] void start_child(char* const* argv, const char* directory, const char* stdin_path, int out, int err,
-                              const SandboxLimits& limits, rlim_t tasks, uid_t user) {
+                              const SandboxLimits& limits, rlim_t tasks, uid_t user, int capability) {
     setpgid(0, 0);
     dup2(err, 2);
     dup2(out, 1);
@@ -93,7 +93,7 @@ void set_limit(int resource, rlim_t value) {
     set_limit(RLIMIT_FSIZE, static_cast<rlim_t>(limits.output_bytes));
     set_limit(RLIMIT_NPROC, tasks);
     set_limit(RLIMIT_CPU, static_cast<rlim_t>(limits.seconds) + 2);
-    if (user != 0 && !become_own_user(user)) {
+    if (user != 0 && !become_own_user(user, capability)) {
         constexpr char message[] = "simcheck grade: cannot run the program as a user of its own\n";
         [[maybe_unused]] const auto written = write(2, message, sizeof message - 1);
         _exit(127);
@@ -276,6 +276,7 @@ SandboxRun run_sandboxed(const std::vector<std::string>& arguments, const std::s
                                  std::string(std::strerror(errno)));
     const rlim_t tasks =
         static_cast<rlim_t>(user != 0 ? 1 + limits.processes : tasks_of_this_user() + limits.processes);
+    const int capability = user != 0 ? kept_capability() : 0;  // found before the fork
 
     become_subreaper();
     const Clock::time_point start = Clock::now();
@@ -286,7 +287,7 @@ SandboxRun run_sandboxed(const std::vector<std::string>& arguments, const std::s
         pid = fork();
         if (pid == 0) {
             start_child(argv.data(), directory.c_str(), stdin_path.c_str(), out_write.get(), err_write.get(), limits,
-                        tasks, user);
+                        tasks, user, capability);
         }
         if (pid > 0) running_leaders.insert(pid);
     }
@@ -397,6 +398,8 @@ SandboxRun run_sandboxed(const std::vector<std::string>& arguments, const std::s
     kill(-pid, SIGKILL);
     const int escaped = unregister.finish();
     if (!stopped && (limits.runs_alone || user != 0)) run.left_running += escaped;
+    // Nothing of its user runs any more: what it wrote outside its directory goes too.
+    if (user != 0) run.left_files = remove_files_of(user, directory);
     return run;
 }
 

@@ -45,6 +45,9 @@ struct SandboxRun {
     // all killed: its group's, and, run alone or as a user of its own, what
     // had left the group.
     int left_running = 0;
+    // Run as a user of its own: the entries it left in /tmp, /var/tmp,
+    // /dev/shm or $TMPDIR, all removed.
+    int left_files = 0;
 };
 
 // Whether programs run as users of their own: this process is root, may
