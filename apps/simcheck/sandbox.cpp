@@ -166,8 +166,9 @@ struct Killed {
 
 // Kills what the run of `leader` left behind: its user's processes, when
 // it ran as a user of its own (`user`, else 0), and the children of this
-// process that were adopted from its group and, when no other run is
-// going, every other adopted process (zombies are reaped whenever).
+// process that were adopted from its group and, when runs have no users of
+// their own and no other run is going, every other adopted process
+// (zombies are reaped whenever).
 Killed kill_adopted(pid_t leader, uid_t user) {
     const pid_t self = getpid();
     Killed killed;
@@ -181,7 +182,9 @@ Killed kill_adopted(pid_t leader, uid_t user) {
         if (!its_user) {
             if (stat.parent != self) return;
             if (running_leaders.count(pid) != 0 || running_leaders.count(stat.group) != 0) return;
-            if (others_running && stat.group != leader && stat.state != 'Z') return;
+            // Another run's live process: with users of their own, that run's sweep finds it (and counts
+            // it); without, it is killed only when no run is going.
+            if (stat.group != leader && stat.state != 'Z' && (user != 0 || others_running)) return;
         }
         kill(pid, SIGKILL);
         if (stat.parent == self) killed.pids.push_back(pid);
