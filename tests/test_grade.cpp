@@ -11,7 +11,10 @@
 #include "mini_json.hpp"
 #include "run_process.hpp"
 
+#include <arpa/inet.h>
+#include <netinet/in.h>
 #include <signal.h>
+#include <sys/socket.h>
 #include <sys/stat.h>
 #include <unistd.h>
 
@@ -51,6 +54,15 @@ const fs::path& small_suite() {
         return small;
     }();
     return dir;
+}
+
+// The cradle's right output, outside the suite: the programs below that
+// print it read it here (the suite's own copy is hidden from them where
+// they run isolated).
+std::string cradle_answer() {
+    const fs::path answer = work() / "cradle-answer.out";
+    if (!fs::exists(answer)) fs::copy_file(small_suite() / "01-cradle.out", answer);
+    return answer.string();
 }
 
 // The first of them alone, without a manifest.
@@ -176,7 +188,7 @@ void textbook_mistakes_are_wrong_at_their_step() {
 
 void misbehaving_programs_get_their_verdicts() {
     const fs::path suite = one_scene_suite();
-    const std::string expected = (suite / "01-cradle.out").string();
+    const std::string expected = cradle_answer();
     struct Case {
         std::string name, body, verdict;
         std::vector<std::string> options;
@@ -216,8 +228,8 @@ bool process_is_gone(pid_t pid) {
 
 void a_child_holding_stdout_does_not_hang_the_grader() {
     const fs::path pid_file = work() / "holder.pid";
-    const std::string expected = (one_scene_suite() / "01-cradle.out").string();
-    const std::string body = "cat '" + expected + "'\nsleep 1000 &\necho $! > '" + pid_file.string() + "'\nexit 0\n";
+    const std::string body =
+        "cat '" + cradle_answer() + "'\nsleep 1000 &\necho $! > '" + pid_file.string() + "'\nexit 0\n";
     const Graded g = grade(one_scene_suite(), {"--timeout", "30"}, {script("holder.sh", body)});
     CHECK_EQ(g.result.status, 0);
     CHECK_EQ(scenes(g)[0]["verdict"].text, std::string("conforms"));
@@ -389,6 +401,91 @@ void programs_run_by_root_without_read_search() {
     check_programs_as_users({setpriv, "--inh-caps", "-all", "--bounding-set", "-dac_read_search", "--"}, true, true);
 }
 
+// Connections made to `listener` so far (it does not block).
+int connections_made(int listener) {
+    int made = 0;
+    for (int client; (client = accept(listener, nullptr, nullptr)) >= 0; ++made) close(client);
+    return made;
+}
+
+// Run by root where namespaces can be made, a program cannot read the
+// answers it is graded against (the suite's expected outputs, the outputs
+// kept with --outputs) and has no network: a TCP listener of this test on
+// 127.0.0.1 gets no connection. Without CAP_SYS_ADMIN (setpriv takes it
+// away) the grader says so, and the program reads them and connects.
+void programs_cannot_read_the_answers() {
+    if (geteuid() != 0) {
+        std::printf("not run by root: the programs run as this user, not isolated\n");
+        return;
+    }
+    const int listener = socket(AF_INET, SOCK_STREAM | SOCK_NONBLOCK | SOCK_CLOEXEC, 0);
+    sockaddr_in address{};
+    address.sin_family = AF_INET;
+    address.sin_addr.s_addr = htonl(INADDR_LOOPBACK);
+    socklen_t length = sizeof address;
+    CHECK(listener >= 0);
+    CHECK_EQ(bind(listener, reinterpret_cast<sockaddr*>(&address), sizeof address), 0);
+    CHECK_EQ(listen(listener, 16), 0);
+    CHECK_EQ(getsockname(listener, reinterpret_cast<sockaddr*>(&address), &length), 0);
+    const std::string port = std::to_string(ntohs(address.sin_port));
+    const fs::path kept = work() / "kept-outputs";
+    const fs::path notes = work() / "answers";
+    // Each run notes, by its pid, how many bytes of the suite's answers and of the kept outputs it read, and
+    // whether it reached the listener; then it runs simcli, and conforms.
+    const std::string body =
+        "n='" + notes.string() + "'/$$\n" + "cat '" + small_suite().string() +
+        "'/*.out 2>/dev/null | wc -c > \"$n.suite\"\n" + "cat '" + kept.string() +
+        "'/*.out 2>/dev/null | wc -c > \"$n.kept\"\n" + "if bash -c 'echo hello > /dev/tcp/127.0.0.1/" + port +
+        "' 2>/dev/null; then echo yes; else echo no; fi > \"$n.network\"\n" + "exec '" + simcli + "'\n";
+    const std::vector<std::string> without_sys_admin{"/usr/bin/setpriv", "--inh-caps", "-all",
+                                                     "--bounding-set",   "-sys_admin", "--"};
+    for (const bool isolated : {true, false}) {
+        check::Context context(isolated ? "isolated" : "without CAP_SYS_ADMIN");
+        fs::remove_all(kept);
+        fs::remove_all(notes);
+        fs::create_directories(notes);
+        chmod(notes.c_str(), 01777);
+        const Graded g = grade(small_suite(), {"--outputs", kept.string()}, {script("answers.sh", body)},
+                               isolated ? std::vector<std::string>{} : without_sys_admin);
+        CHECK_EQ(g.result.status, 0);
+        CHECK_EQ(g.json["isolated"].number, isolated ? 1.0 : 0.0);
+        CHECK_EQ(g.result.err.find("unable to make namespaces") != std::string::npos, !isolated);
+        int runs = 0, read_kept = 0;
+        for (const fs::directory_entry& file : fs::directory_iterator(notes)) {
+            if (file.path().extension() != ".suite") continue;
+            ++runs;
+            const std::string base = (file.path().parent_path() / file.path().stem()).string();
+            const long suite_bytes = std::stol(first_line(file.path()));
+            const long kept_bytes = std::stol(first_line(base + ".kept"));
+            CHECK_EQ(suite_bytes > 0, !isolated);
+            if (isolated) CHECK_EQ(kept_bytes, 0L);
+            read_kept += kept_bytes > 0 ? 1 : 0;
+            CHECK_EQ(first_line(base + ".network"), std::string(isolated ? "no" : "yes"));
+        }
+        CHECK_EQ(runs, 4);
+        // Not isolated, every run after the first reads the outputs kept before it.
+        CHECK_EQ(read_kept, isolated ? 0 : 3);
+        CHECK_EQ(connections_made(listener), isolated ? 0 : 4);
+    }
+    close(listener);
+}
+
+// A program run under mpirun is graded like any other: MPI's runtime makes
+// files of megabytes, whatever the output's size, and runs isolated (its
+// own network namespace, loopback up) and as a user of its own.
+void programs_under_mpirun_are_graded() {
+#if defined(SIMCLI_MPI_PATH) && defined(MPIEXEC_PATH)
+    const Graded g = grade(small_suite(), {"--timeout", "60"}, {MPIEXEC_PATH, "-n", "2", SIMCLI_MPI_PATH});
+    CHECK_EQ(g.result.status, 0);
+    for (const mini_json::Value& scene : scenes(g).items) {
+        check::Context context(scene["scene"].text);
+        CHECK_EQ(scene["verdict"].text, std::string("conforms"));
+    }
+#else
+    std::printf("built without MPI: no program graded under mpirun\n");
+#endif
+}
+
 void each_run_has_a_fresh_empty_directory() {
     const fs::path seen = work() / "directories.txt";
     fs::remove(seen);
@@ -429,6 +526,8 @@ int main(int argc, char** argv) {
          {"processes that leave the group are killed", processes_that_leave_the_group_are_killed},
          {"programs run by root are users of their own", programs_run_by_root_are_users_of_their_own},
          {"programs run by root without CAP_DAC_READ_SEARCH", programs_run_by_root_without_read_search},
+         {"programs cannot read the answers", programs_cannot_read_the_answers},
+         {"programs under mpirun are graded", programs_under_mpirun_are_graded},
          {"each run has a fresh empty directory", each_run_has_a_fresh_empty_directory},
          {"bad usage", bad_usage}});
     std::error_code ignored;

@@ -84,6 +84,8 @@ struct Options {
     int processes = 256;
     int jobs = 1;
     std::string json_path, markdown_path, outputs_dir;
+    // What a program must not read: the expected outputs, the outputs' directories.
+    std::vector<std::string> hidden_paths;
     std::string reference;
     bool no_reference = false;
     std::string program_text;  // as given, for the reports
@@ -329,6 +331,7 @@ Row grade_scene(const SceneCase& c, const Options& o, const std::optional<std::s
     limits.memory_bytes = o.memory_mb << 20;
     limits.processes = o.processes;
     limits.runs_alone = o.jobs == 1;
+    limits.hidden_paths = o.hidden_paths;
     const double expected_bytes = c.expected_path ? static_cast<double>(fs::file_size(*c.expected_path))
                                                   : static_cast<double>(estimated_output_bytes(c.scene));
     limits.output_bytes = static_cast<std::int64_t>(std::min(o.output_factor * expected_bytes + 1048576.0, 1e17));
@@ -508,7 +511,8 @@ void write_json(std::FILE* out, const Options& o, const std::vector<SceneCase>& 
     };
     std::string json = "{\"program\": " + json_string(o.program_text) +
                        ", \"suite\": " + json_string(o.suite.string()) + ", \"jobs\": " + std::to_string(o.jobs) +
-                       ", \"own_users\": " + (runs_programs_as_own_users() ? "true" : "false") + ", \"scenes\": [";
+                       ", \"own_users\": " + (runs_programs_as_own_users() ? "true" : "false") +
+                       ", \"isolated\": " + (runs_programs_isolated() ? "true" : "false") + ", \"scenes\": [";
     for (std::size_t k = 0; k < rows.size(); ++k) {
         const Row& r = rows[k];
         json += k > 0 ? ",\n  " : "\n  ";
@@ -568,6 +572,16 @@ int grade_main(int argc, char** argv) {
         std::string work_template = (fs::temp_directory_path() / "simcheck-outputs-XXXXXX").string();
         if (!mkdtemp(work_template.data())) throw std::runtime_error("cannot make a directory for the outputs");
         const fs::path work = work_template;
+        for (const SceneCase& c : cases) {
+            if (c.expected_path) o.hidden_paths.push_back(c.expected_path->string());
+        }
+        o.hidden_paths.push_back(work.string());
+        if (!o.outputs_dir.empty()) o.hidden_paths.push_back(o.outputs_dir);
+        if (geteuid() == 0 && !runs_programs_isolated()) {
+            std::fprintf(stderr,
+                         "simcheck grade: warning: run by root but unable to make namespaces (no CAP_SYS_ADMIN, "
+                         "or unshare refused): the programs can read the expected outputs and reach the network\n");
+        }
         std::vector<Row> rows(cases.size());
         std::atomic<std::size_t> next{0};
         std::string failure;

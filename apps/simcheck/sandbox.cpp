@@ -1,5 +1,6 @@
 #include "sandbox.hpp"
 
+#include "isolation.hpp"
 #include "own_user.hpp"
 #include "process_list.hpp"
 
@@ -38,6 +39,11 @@ constexpr std::size_t stderr_kept = 4096;
 // After the program exits, how long its output may still take to arrive
 // (from a pipe's buffer, or a child that ignored the group's SIGKILL).
 constexpr double drain_seconds = 1.0;
+// The largest file a program may write is its stdout cap, but never less:
+// MPI's runtime (PMIx, shared memory) makes files of several megabytes in
+// /dev/shm and /tmp whatever the output's size, and an mpirun run under a
+// smaller limit dies of SIGXFSZ.
+constexpr std::int64_t smallest_file_limit = std::int64_t{1} << 30;
 
 class Fd {
 public:
@@ -71,11 +77,17 @@ void set_limit(int resource, rlim_t value) {
 // In the child, between fork and exec: async-signal-safe calls only.
 // `user`: the user of its own it runs as, or 0 to stay this process's.
 [[noreturn]] void start_child(char* const* argv, const char* directory, const char* stdin_path, int out, int err,
-                              const SandboxLimits& limits, rlim_t tasks, uid_t user, int capability) {
+                              const SandboxLimits& limits, rlim_t tasks, uid_t user, int capability,
+                              const HiddenPaths* hidden) {
     setpgid(0, 0);
     dup2(err, 2);
     dup2(out, 1);
     const int in = open(stdin_path, O_RDONLY);
+    if (hidden && !hidden->isolate()) {
+        constexpr char message[] = "simcheck grade: cannot isolate the program (namespaces)\n";
+        [[maybe_unused]] const auto written = write(2, message, sizeof message - 1);
+        _exit(127);
+    }
     if (in < 0 || dup2(in, 0) < 0 || chdir(directory) != 0) {
         constexpr char message[] = "simcheck grade: cannot set up the program's stdin or working directory\n";
         [[maybe_unused]] const auto written = write(2, message, sizeof message - 1);
@@ -90,7 +102,7 @@ void set_limit(int resource, rlim_t value) {
     sigprocmask(SIG_SETMASK, &none, nullptr);
     set_limit(RLIMIT_CORE, 0);
     if (limits.memory_bytes > 0) set_limit(RLIMIT_AS, static_cast<rlim_t>(limits.memory_bytes));
-    set_limit(RLIMIT_FSIZE, static_cast<rlim_t>(limits.output_bytes));
+    set_limit(RLIMIT_FSIZE, static_cast<rlim_t>(std::max(limits.output_bytes, smallest_file_limit)));
     set_limit(RLIMIT_NPROC, tasks);
     set_limit(RLIMIT_CPU, static_cast<rlim_t>(limits.seconds) + 2);
     if (user != 0 && !become_own_user(user, capability)) {
@@ -239,6 +251,8 @@ bool runs_programs_as_own_users() {
     return own_users;
 }
 
+bool runs_programs_isolated() { return can_isolate(); }
+
 SandboxRun run_sandboxed(const std::vector<std::string>& arguments, const std::string& stdin_path,
                          const std::string& stdout_path, const SandboxLimits& limits) {
     const std::string directory = temporary_directory();
@@ -280,6 +294,8 @@ SandboxRun run_sandboxed(const std::vector<std::string>& arguments, const std::s
     const rlim_t tasks =
         static_cast<rlim_t>(user != 0 ? 1 + limits.processes : tasks_of_this_user() + limits.processes);
     const int capability = user != 0 ? kept_capability() : 0;  // found before the fork
+    const std::optional<HiddenPaths> hidden =
+        runs_programs_isolated() ? std::optional<HiddenPaths>(limits.hidden_paths) : std::nullopt;
 
     become_subreaper();
     const Clock::time_point start = Clock::now();
@@ -290,7 +306,7 @@ SandboxRun run_sandboxed(const std::vector<std::string>& arguments, const std::s
         pid = fork();
         if (pid == 0) {
             start_child(argv.data(), directory.c_str(), stdin_path.c_str(), out_write.get(), err_write.get(), limits,
-                        tasks, user, capability);
+                        tasks, user, capability, hidden ? &*hidden : nullptr);
         }
         if (pid > 0) running_leaders.insert(pid);
     }

@@ -24,13 +24,16 @@ namespace simcheck {
 
 struct SandboxLimits {
     double seconds = 10.0;                              // wall clock
-    std::int64_t output_bytes = std::int64_t{1} << 30;  // stdout, and any file it writes
+    std::int64_t output_bytes = std::int64_t{1} << 30;  // stdout, and any file it writes (at least 1 GiB)
     std::int64_t memory_bytes = std::int64_t{4} << 30;  // address space (RLIMIT_AS); 0: none
     int processes = 256;                                // tasks it may add (RLIMIT_NPROC)
     // No other program runs beside it (grade --jobs 1): what left its group
     // is then known to be its own, and counted in left_running (as it always
     // is with users of their own).
     bool runs_alone = true;
+    // Files and directories the program must not read (the answers it is
+    // graded against, other runs' outputs): hidden where it runs isolated.
+    std::vector<std::string> hidden_paths;
 };
 
 struct SandboxRun {
@@ -53,6 +56,10 @@ struct SandboxRun {
 // Whether programs run as users of their own: this process is root, may
 // change users and read every file, and has unused user ids to give.
 bool runs_programs_as_own_users();
+
+// Whether programs run isolated: namespaces of their own, the hidden paths
+// hidden and no network (isolation.hpp).
+bool runs_programs_isolated();
 
 // Runs argv[0] (looked up in PATH) with stdin from `stdin_path` and stdout
 // into `stdout_path` (created). Throws std::runtime_error when it cannot be

@@ -1,0 +1,41 @@
+#pragma once
+// Run by root with CAP_SYS_ADMIN, the grader gives each program a mount
+// namespace and a network namespace of its own. In the first, the
+// grader's files that a program must not read are hidden: each expected
+// output of the suite reads as empty (/dev/null bound over it), and the
+// directories holding other runs' outputs are empty and read-only (a
+// tmpfs over each), so a program cannot copy the answers it is graded
+// against. In the second, only loopback exists (brought up, for programs
+// that talk to themselves, as mpirun does): no network.
+//
+// Where the kernel refuses (a container without CAP_SYS_ADMIN, or whose
+// seccomp filter forbids unshare), programs run without it, and the
+// report says so.
+
+#include <string>
+#include <vector>
+
+namespace simcheck {
+
+// Whether namespaces can be made: this process is root and a trial child
+// could make both (asked once).
+bool can_isolate();
+
+// The paths to hide, made ready before a fork: the child may not allocate.
+class HiddenPaths {
+public:
+    HiddenPaths() = default;
+    // Files and directories; anything else (gone, a device) is left alone.
+    explicit HiddenPaths(const std::vector<std::string>& paths);
+
+    // In a child between fork and exec (async-signal-safe calls only):
+    // enters new mount and network namespaces, hides the paths, and brings
+    // loopback up. False if any step fails.
+    [[nodiscard]] bool isolate() const;
+
+private:
+    std::vector<std::string> files_, directories_;
+    std::vector<const char*> file_names_, directory_names_;
+};
+
+}  // namespace simcheck
