@@ -509,6 +509,11 @@ void bad_usage() {
     CHECK_EQ(run_process::run(simcheck, {"grade", small_suite().string(), "--", "/no/such/program"}).status, 2);
     CHECK_EQ(run_process::run(simcheck, {"grade", (work() / "nowhere").string(), "--", simcli}).status, 2);
     CHECK_EQ(run_process::run(simcheck, {"grade", small_suite().string(), "--timeout", "x", "--", simcli}).status, 2);
+    // The outputs kept in the suite itself would replace its expected outputs.
+    const run_process::Result into_suite = run_process::run(
+        simcheck, {"grade", small_suite().string(), "--outputs", (small_suite() / ".").string(), "--", simcli});
+    CHECK_EQ(into_suite.status, 2);
+    CHECK(into_suite.err.find("would replace its expected outputs") != std::string::npos);
     const run_process::Result help = run_process::run(simcheck, {"grade", "--help"});
     CHECK_EQ(help.status, 0);
     CHECK(help.out.find("--output-factor") != std::string::npos);

@@ -532,6 +532,17 @@ void write_json(std::FILE* out, const Options& o, const std::vector<SceneCase>& 
     std::fputs(json.c_str(), out);
 }
 
+// Whether `path` is `directory` or lies below it, both resolved.
+bool lies_within(const fs::path& path, const fs::path& directory) {
+    std::error_code error;
+    const fs::path inside = fs::weakly_canonical(path, error);
+    fs::path outer = fs::weakly_canonical(directory, error);
+    if (!outer.has_filename()) outer = outer.parent_path();  // "dir/" names dir
+    const auto [mismatch, rest] = std::mismatch(outer.begin(), outer.end(), inside.begin(), inside.end());
+    (void)rest;
+    return mismatch == outer.end();
+}
+
 void write_report_file(const std::string& path, const std::function<void(std::FILE*)>& write) {
     std::FILE* file = std::fopen(path.c_str(), "wb");
     if (!file) throw std::runtime_error(path + ": cannot write: " + std::strerror(errno));
@@ -565,7 +576,13 @@ int grade_main(int argc, char** argv) {
                          "CAP_DAC_OVERRIDE, or no unused user ids mapped): --processes does not hold, and the "
                          "programs run as root\n");
         }
-        if (!o.outputs_dir.empty()) fs::create_directories(o.outputs_dir);
+        if (!o.outputs_dir.empty()) {
+            std::error_code error;
+            if (fs::equivalent(o.outputs_dir, o.suite, error))
+                throw BadUsage("--outputs " + o.outputs_dir +
+                               " is the suite: the outputs, NAME.out, would replace its expected outputs");
+            fs::create_directories(o.outputs_dir);
+        }
         const std::vector<SceneCase> cases = read_suite(o.suite, o.check.boundary);
         const std::optional<std::string> reference = find_reference(o);
 
@@ -576,7 +593,10 @@ int grade_main(int argc, char** argv) {
             if (c.expected_path) o.hidden_paths.push_back(c.expected_path->string());
         }
         o.hidden_paths.push_back(work.string());
-        if (!o.outputs_dir.empty()) o.hidden_paths.push_back(o.outputs_dir);
+        // --outputs DIR is hidden unless the scenes, the program or the runs' directories lie in it.
+        if (!o.outputs_dir.empty() && !lies_within(o.suite, o.outputs_dir) &&
+            !lies_within(o.program.front(), o.outputs_dir) && !lies_within(work.parent_path(), o.outputs_dir))
+            o.hidden_paths.push_back(o.outputs_dir);
         if (geteuid() == 0 && !runs_programs_isolated()) {
             std::fprintf(stderr,
                          "simcheck grade: warning: run by root but unable to make namespaces (no CAP_SYS_ADMIN, "
