@@ -57,11 +57,13 @@ as a whole when it ends), and limits:
                          built with AddressSanitizer, which reserves terabytes)
       --processes N      processes and threads it may add (default 256)
 Run by root, each program runs as a user of its own (an unused user id that
-may read every file but write only in its directory and where anyone may).
+may read every file but write only in its directory and where anyone may)
+and, where the kernel lets root make namespaces, without network and with the
+suite's expected outputs and the other outputs hidden (docs/checking.md).
 Reports:
       --json FILE        {"program", "scenes": [{"scene", "verdict", "step", ...}]}
       --markdown FILE    a table and the details, for pasting
-      --outputs DIR      keep each output as DIR/NAME.out
+      --outputs DIR      keep each output as DIR/NAME.out (DIR not the suite)
 Other:
       --jobs N           run N scenes side by side (the times then say so)
       --reference PATH   the simcli to time against (default: beside simcheck,
