@@ -12,10 +12,12 @@
 #include "run_process.hpp"
 
 #include <arpa/inet.h>
+#include <fcntl.h>
 #include <netinet/in.h>
 #include <signal.h>
 #include <sys/socket.h>
 #include <sys/stat.h>
+#include <sys/wait.h>
 #include <unistd.h>
 
 #include <chrono>
@@ -23,6 +25,7 @@
 #include <filesystem>
 #include <fstream>
 #include <string>
+#include <thread>
 #include <vector>
 
 namespace {
@@ -486,6 +489,62 @@ void programs_under_mpirun_are_graded() {
 #endif
 }
 
+// Ctrl-C or a batch system's SIGTERM in the middle of a grade: the
+// programs running (two, side by side) are stopped, nothing of them is left
+// (no process, no directory in $TMPDIR), no report is written, and simcheck
+// ends by the signal.
+void an_interrupted_grade_leaves_nothing_behind() {
+    const fs::path pids = work() / "interrupted";
+    const fs::path temporary = work() / "interrupted-tmp";
+    const fs::path report = work() / "interrupted.json";
+    const std::string body = "echo $$ > '" + pids.string() + "'/$$\nexec sleep 1000\n";
+    const std::string program = script("interrupted.sh", body);
+    for (const int signal : {SIGINT, SIGTERM}) {
+        check::Context context(strsignal(signal));
+        for (const fs::path& dir : {pids, temporary}) {
+            fs::remove_all(dir);
+            fs::create_directories(dir);
+            chmod(dir.c_str(), 01777);
+        }
+        fs::remove(report);
+        const std::string err_path = (work() / "interrupted.err").string();
+        const pid_t grader = fork();
+        if (grader == 0) {
+            setenv("TMPDIR", temporary.c_str(), 1);
+            const int err = open(err_path.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
+            dup2(err, 2);
+            execl(simcheck.c_str(), simcheck.c_str(), "grade", small_suite().c_str(), "--jobs", "2", "--json",
+                  report.c_str(), "--", program.c_str(), static_cast<char*>(nullptr));
+            _exit(127);
+        }
+        // Both runs started: two pids noted.
+        const auto started = std::chrono::steady_clock::now();
+        const auto noted = [&] {
+            return static_cast<std::size_t>(std::distance(fs::directory_iterator(pids), fs::directory_iterator()));
+        };
+        while (noted() < 2 && std::chrono::steady_clock::now() - started < std::chrono::seconds(20))
+            std::this_thread::sleep_for(std::chrono::milliseconds(10));
+        CHECK_EQ(noted(), std::size_t{2});
+        kill(grader, signal);
+        int status = 0;
+        const auto signalled = std::chrono::steady_clock::now();
+        while (waitpid(grader, &status, WNOHANG) == 0) {
+            if (std::chrono::steady_clock::now() - signalled > std::chrono::seconds(20)) kill(grader, SIGKILL);
+            std::this_thread::sleep_for(std::chrono::milliseconds(10));
+        }
+        CHECK(std::chrono::steady_clock::now() - signalled < std::chrono::seconds(5));
+        CHECK(WIFSIGNALED(status) && WTERMSIG(status) == signal);
+        CHECK(run_process::slurp(err_path).find("interrupted") != std::string::npos);
+        CHECK(!fs::exists(report));
+        for (const fs::directory_entry& file : fs::directory_iterator(pids)) {
+            pid_t pid = 0;
+            std::ifstream(file.path()) >> pid;
+            CHECK(pid > 0 && process_is_gone(pid));
+        }
+        CHECK(fs::is_empty(temporary));
+    }
+}
+
 void each_run_has_a_fresh_empty_directory() {
     const fs::path seen = work() / "directories.txt";
     fs::remove(seen);
@@ -533,6 +592,7 @@ int main(int argc, char** argv) {
          {"programs run by root without CAP_DAC_READ_SEARCH", programs_run_by_root_without_read_search},
          {"programs cannot read the answers", programs_cannot_read_the_answers},
          {"programs under mpirun are graded", programs_under_mpirun_are_graded},
+         {"an interrupted grade leaves nothing behind", an_interrupted_grade_leaves_nothing_behind},
          {"each run has a fresh empty directory", each_run_has_a_fresh_empty_directory},
          {"bad usage", bad_usage}});
     std::error_code ignored;

@@ -555,6 +555,12 @@ void write_report_file(const std::string& path, const std::function<void(std::FI
 }  // namespace
 
 int grade_main(int argc, char** argv) {
+    // Ctrl-C, a batch system's stop or a closed terminal: the runs are stopped and cleaned up first.
+    struct sigaction on_signal {};
+    on_signal.sa_handler = [](int signal) { interrupt_runs(signal); };
+    sigemptyset(&on_signal.sa_mask);
+    on_signal.sa_flags = SA_RESTART;  // poll() still returns at once; the rest goes on
+    for (const int signal : {SIGINT, SIGTERM, SIGHUP}) sigaction(signal, &on_signal, nullptr);
     try {
         const std::optional<Options> parsed = parse(argc, argv);
         if (!parsed) return 0;
@@ -609,9 +615,11 @@ int grade_main(int argc, char** argv) {
         std::string failure;
         std::mutex failure_lock;
         const auto worker = [&] {
-            for (std::size_t k; (k = next.fetch_add(1)) < cases.size();) {
+            for (std::size_t k; runs_interrupted() == 0 && (k = next.fetch_add(1)) < cases.size();) {
                 try {
                     rows[k] = grade_scene(cases[k], o, reference, work);
+                } catch (const SandboxInterrupted&) {
+                    break;
                 } catch (const std::exception& e) {
                     const std::lock_guard<std::mutex> lock(failure_lock);
                     failure = cases[k].name + ": " + e.what();
@@ -624,6 +632,16 @@ int grade_main(int argc, char** argv) {
         for (std::thread& t : threads) t.join();
         std::error_code ignored;
         fs::remove_all(work, ignored);
+        if (const int signal = runs_interrupted(); signal != 0) {
+            std::fprintf(stderr,
+                         "simcheck grade: interrupted (%s): the programs running were stopped and nothing of "
+                         "them is left; no report\n",
+                         strsignal(signal));
+            // Ended by the signal, as the shell and a batch system expect.
+            std::signal(signal, SIG_DFL);
+            std::raise(signal);
+            return 128 + signal;
+        }
         if (!failure.empty()) throw std::runtime_error(failure);
 
         const int conforming = static_cast<int>(

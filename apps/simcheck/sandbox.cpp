@@ -16,6 +16,7 @@
 #include <unistd.h>
 
 #include <algorithm>
+#include <atomic>
 #include <cerrno>
 #include <chrono>
 #include <cstdio>
@@ -133,6 +134,10 @@ double seconds_since(Clock::time_point start) { return std::chrono::duration<dou
 // holds it while it reads and kills.
 std::mutex running_mutex;
 std::set<pid_t> running_leaders;
+
+// Set by interrupt_runs(), from a signal handler.
+std::atomic<int> interrupting_signal{0};
+static_assert(std::atomic<int>::is_always_lock_free);
 
 void become_subreaper() {
     static std::once_flag once;
@@ -253,8 +258,13 @@ bool runs_programs_as_own_users() {
 
 bool runs_programs_isolated() { return can_isolate(); }
 
+void interrupt_runs(int signal) noexcept { interrupting_signal.store(signal); }
+
+int runs_interrupted() noexcept { return interrupting_signal.load(); }
+
 SandboxRun run_sandboxed(const std::vector<std::string>& arguments, const std::string& stdin_path,
                          const std::string& stdout_path, const SandboxLimits& limits) {
+    if (runs_interrupted() != 0) throw SandboxInterrupted();
     const std::string directory = temporary_directory();
     struct RemoveDirectory {
         const std::string& path;
@@ -362,7 +372,14 @@ SandboxRun run_sandboxed(const std::vector<std::string>& arguments, const std::s
 
     char buffer[1 << 16];
     bool ended_by_limit = false;
+    bool interrupted = false;
     while (!ended_by_limit) {
+        // Noticed within a second: no poll below waits longer.
+        if (runs_interrupted() != 0) {
+            stop(SandboxRun::End::timeout);
+            interrupted = ended_by_limit = true;
+            break;
+        }
         reap(false);
         const bool out_open = out_read.get() >= 0, err_open = err_read.get() >= 0;
         if (reaped && ((!out_open && !err_open) || Clock::now() >= drain_until)) break;
@@ -419,6 +436,8 @@ SandboxRun run_sandboxed(const std::vector<std::string>& arguments, const std::s
     if (!stopped && (limits.runs_alone || user != 0)) run.left_running += escaped;
     // Nothing of its user runs any more: what it wrote outside its directory goes too.
     if (user != 0) run.left_files = remove_files_of(user, directory);
+    // Its directory is removed, and its user released, as the exception leaves.
+    if (interrupted) throw SandboxInterrupted();
     return run;
 }
 

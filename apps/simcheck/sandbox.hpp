@@ -17,6 +17,7 @@
 // runs side by side.
 
 #include <cstdint>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -60,6 +61,17 @@ bool runs_programs_as_own_users();
 // Whether programs run isolated: namespaces of their own, the hidden paths
 // hidden and no network (isolation.hpp).
 bool runs_programs_isolated();
+
+// A signal that ends the grade (SIGINT, SIGTERM, SIGHUP): every run going
+// is stopped, its processes killed and its directory removed, and
+// run_sandboxed() then throws SandboxInterrupted, as it does at once once
+// this was called. Async-signal-safe: for a signal handler.
+void interrupt_runs(int signal) noexcept;
+// The signal interrupt_runs() was called with, or 0.
+int runs_interrupted() noexcept;
+struct SandboxInterrupted : std::runtime_error {
+    SandboxInterrupted() : std::runtime_error("interrupted") {}
+};
 
 // Runs argv[0] (looked up in PATH) with stdin from `stdin_path` and stdout
 // into `stdout_path` (created). Throws std::runtime_error when it cannot be
