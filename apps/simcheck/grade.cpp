@@ -87,7 +87,7 @@ struct Options {
     int jobs = 1;
     std::string json_path, markdown_path, outputs_dir;
     // What a program must not read: the expected outputs, the outputs' directories.
-    std::vector<std::string> hidden_paths;
+    HiddenPaths hidden;
     std::string reference;
     bool no_reference = false;
     std::string program_text;  // as given, for the reports
@@ -333,7 +333,7 @@ Row grade_scene(const SceneCase& c, const Options& o, const std::optional<std::s
     limits.memory_bytes = o.memory_mb << 20;
     limits.processes = o.processes;
     limits.runs_alone = o.jobs == 1;
-    limits.hidden_paths = o.hidden_paths;
+    limits.hidden = &o.hidden;
     const double expected_bytes = c.expected_path ? static_cast<double>(fs::file_size(*c.expected_path))
                                                   : static_cast<double>(estimated_output_bytes(c.scene));
     limits.output_bytes = static_cast<std::int64_t>(std::min(o.output_factor * expected_bytes + 1048576.0, 1e17));
@@ -395,16 +395,14 @@ Row grade_scene(const SceneCase& c, const Options& o, const std::optional<std::s
     }
     row.left_running = run.left_running;
     row.left_files = run.left_files;
-    if (run.left_files > 0) {
-        const std::string left = "it left " + std::to_string(run.left_files) + " file" +
-                                 (run.left_files == 1 ? "" : "s") + " in /tmp, /var/tmp or /dev/shm (removed)";
+    // "it left 2 files in ...", after what the message says already.
+    const auto tell_left = [&](int count, const std::string& one, const std::string& many, const std::string& rest) {
+        if (count == 0) return;
+        const std::string left = "it left " + std::to_string(count) + " " + (count == 1 ? one : many) + " " + rest;
         row.message = row.message.empty() ? left : row.message + "; " + left;
-    }
-    if (run.left_running > 0) {
-        const std::string left = "it left " + std::to_string(run.left_running) + " process" +
-                                 (run.left_running == 1 ? "" : "es") + " running after it ended (killed)";
-        row.message = row.message.empty() ? left : row.message + "; " + left;
-    }
+    };
+    tell_left(run.left_files, "file", "files", "in /tmp, /var/tmp or /dev/shm (removed)");
+    tell_left(run.left_running, "process", "processes", "running after it ended (killed)");
     if (!o.outputs_dir.empty()) {
         std::error_code ignored;
         fs::copy_file(output, fs::path(o.outputs_dir) / (c.name + ".out"), fs::copy_options::overwrite_existing,
@@ -540,9 +538,7 @@ bool lies_within(const fs::path& path, const fs::path& directory) {
     const fs::path inside = fs::weakly_canonical(path, error);
     fs::path outer = fs::weakly_canonical(directory, error);
     if (!outer.has_filename()) outer = outer.parent_path();  // "dir/" names dir
-    const auto [mismatch, rest] = std::mismatch(outer.begin(), outer.end(), inside.begin(), inside.end());
-    (void)rest;
-    return mismatch == outer.end();
+    return std::mismatch(outer.begin(), outer.end(), inside.begin(), inside.end()).first == outer.end();
 }
 
 void write_report_file(const std::string& path, const std::function<void(std::FILE*)>& write) {
@@ -597,14 +593,15 @@ int grade_main(int argc, char** argv) {
         std::string work_template = (fs::temp_directory_path() / "simcheck-outputs-XXXXXX").string();
         if (!mkdtemp(work_template.data())) throw std::runtime_error("cannot make a directory for the outputs");
         const fs::path work = work_template;
+        std::vector<std::string> hidden{work.string()};
         for (const SceneCase& c : cases) {
-            if (c.expected_path) o.hidden_paths.push_back(c.expected_path->string());
+            if (c.expected_path) hidden.push_back(c.expected_path->string());
         }
-        o.hidden_paths.push_back(work.string());
         // --outputs DIR is hidden unless the scenes, the program or the runs' directories lie in it.
         if (!o.outputs_dir.empty() && !lies_within(o.suite, o.outputs_dir) &&
             !lies_within(o.program.front(), o.outputs_dir) && !lies_within(work.parent_path(), o.outputs_dir))
-            o.hidden_paths.push_back(o.outputs_dir);
+            hidden.push_back(o.outputs_dir);
+        o.hidden = HiddenPaths(hidden);
         if (geteuid() == 0 && !runs_programs_isolated()) {
             std::fprintf(stderr,
                          "simcheck grade: warning: run by root but unable to make namespaces (no CAP_SYS_ADMIN, "

@@ -50,21 +50,20 @@ HiddenPaths::HiddenPaths(const std::vector<std::string>& paths) {
         if (S_ISREG(info.st_mode)) files_.push_back(path);
         if (S_ISDIR(info.st_mode)) directories_.push_back(path);
     }
-    for (const std::string& file : files_) file_names_.push_back(file.c_str());
-    for (const std::string& directory : directories_) directory_names_.push_back(directory.c_str());
 }
 
 bool HiddenPaths::isolate() const {
     if (unshare(CLONE_NEWNS | CLONE_NEWNET) != 0) return false;
     // Nothing mounted here reaches the grader's namespace.
     if (mount(nullptr, "/", nullptr, MS_REC | MS_PRIVATE, nullptr) != 0) return false;
-    for (const char* directory : directory_names_) {
-        if (mount("simcheck-hidden", directory, "tmpfs", MS_RDONLY | MS_NOSUID | MS_NODEV | MS_NOEXEC,
+    // c_str() only reads: nothing is allocated here.
+    for (const std::string& directory : directories_) {
+        if (mount("simcheck-hidden", directory.c_str(), "tmpfs", MS_RDONLY | MS_NOSUID | MS_NODEV | MS_NOEXEC,
                   "size=4k,mode=0555") != 0)
             return false;
     }
-    for (const char* file : file_names_) {
-        if (mount("/dev/null", file, nullptr, MS_BIND, nullptr) != 0) return false;
+    for (const std::string& file : files_) {
+        if (mount("/dev/null", file.c_str(), nullptr, MS_BIND, nullptr) != 0) return false;
     }
     return bring_loopback_up();
 }

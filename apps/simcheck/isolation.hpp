@@ -21,7 +21,8 @@ namespace simcheck {
 // could make both (asked once).
 bool can_isolate();
 
-// The paths to hide, made ready before a fork: the child may not allocate.
+// The paths to hide, sorted into files and directories once, before any
+// fork: the child may not allocate.
 class HiddenPaths {
 public:
     HiddenPaths() = default;
@@ -35,7 +36,6 @@ public:
 
 private:
     std::vector<std::string> files_, directories_;
-    std::vector<const char*> file_names_, directory_names_;
 };
 
 }  // namespace simcheck

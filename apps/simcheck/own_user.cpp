@@ -77,8 +77,7 @@ bool named_in_passwd_or_group(uid_t id) {
 std::set<uid_t> users_with_processes() {
     std::set<uid_t> users;
     for_each_process([&](const char* pid) {
-        struct stat info {};
-        if (stat((std::string("/proc/") + pid).c_str(), &info) == 0) users.insert(info.st_uid);
+        if (const std::optional<uid_t> owner = process_owner(pid)) users.insert(*owner);
     });
     return users;
 }
@@ -143,11 +142,6 @@ int remove_files_of(uid_t user, const std::string& keep) {
         }
     }
     return removed;
-}
-
-bool process_runs_as(const char* pid, uid_t user) {
-    struct stat info {};
-    return stat((std::string("/proc/") + pid).c_str(), &info) == 0 && info.st_uid == user;
 }
 
 bool become_own_user(uid_t user, int capability) {

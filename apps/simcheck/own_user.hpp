@@ -41,9 +41,6 @@ void release_own_user(uid_t user);
 // many entries.
 int remove_files_of(uid_t user, const std::string& keep);
 
-// Whether process `pid` (its /proc directory's name) runs as `user`.
-bool process_runs_as(const char* pid, uid_t user);
-
 // In a child between fork and exec (async-signal-safe calls only): becomes
 // `user`, group `user` and no supplementary groups, with `capability`
 // (kept_capability()) through exec and no way to gain more (no new

@@ -1,6 +1,5 @@
 #include "sandbox.hpp"
 
-#include "isolation.hpp"
 #include "own_user.hpp"
 #include "process_list.hpp"
 
@@ -195,7 +194,7 @@ Killed kill_adopted(pid_t leader, uid_t user) {
         ProcessStat stat;
         if (!read_process_stat(name, stat)) return;
         const auto pid = static_cast<pid_t>(std::atol(name));
-        const bool its_user = user != 0 && process_runs_as(name, user);
+        const bool its_user = user != 0 && process_owner(name) == user;
         if (!its_user) {
             if (stat.parent != self) return;
             if (running_leaders.count(pid) != 0 || running_leaders.count(stat.group) != 0) return;
@@ -304,8 +303,8 @@ SandboxRun run_sandboxed(const std::vector<std::string>& arguments, const std::s
     const rlim_t tasks =
         static_cast<rlim_t>(user != 0 ? 1 + limits.processes : tasks_of_this_user() + limits.processes);
     const int capability = user != 0 ? kept_capability() : 0;  // found before the fork
-    const std::optional<HiddenPaths> hidden =
-        runs_programs_isolated() ? std::optional<HiddenPaths>(limits.hidden_paths) : std::nullopt;
+    static const HiddenPaths nothing_hidden;
+    const HiddenPaths* hidden = runs_programs_isolated() ? (limits.hidden ? limits.hidden : &nothing_hidden) : nullptr;
 
     become_subreaper();
     const Clock::time_point start = Clock::now();
@@ -316,7 +315,7 @@ SandboxRun run_sandboxed(const std::vector<std::string>& arguments, const std::s
         pid = fork();
         if (pid == 0) {
             start_child(argv.data(), directory.c_str(), stdin_path.c_str(), out_write.get(), err_write.get(), limits,
-                        tasks, user, capability, hidden ? &*hidden : nullptr);
+                        tasks, user, capability, hidden);
         }
         if (pid > 0) running_leaders.insert(pid);
     }

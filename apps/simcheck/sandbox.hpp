@@ -16,6 +16,8 @@
 // write, and whatever it leaves running is found by its user id, also with
 // runs side by side.
 
+#include "isolation.hpp"
+
 #include <cstdint>
 #include <stdexcept>
 #include <string>
@@ -32,9 +34,10 @@ struct SandboxLimits {
     // is then known to be its own, and counted in left_running (as it always
     // is with users of their own).
     bool runs_alone = true;
-    // Files and directories the program must not read (the answers it is
-    // graded against, other runs' outputs): hidden where it runs isolated.
-    std::vector<std::string> hidden_paths;
+    // What the program must not read (the answers it is graded against,
+    // other runs' outputs), hidden where it runs isolated; the caller's, made
+    // once for every run. None: nothing hidden.
+    const HiddenPaths* hidden = nullptr;
 };
 
 struct SandboxRun {
