@@ -79,6 +79,14 @@ fs::path one_scene_suite() {
     return one;
 }
 
+// An empty directory that the graded programs may write their notes into
+// whichever user they run as (like /tmp), made afresh.
+void fresh_shared_directory(const fs::path& path) {
+    fs::remove_all(path);
+    fs::create_directories(path);
+    chmod(path.c_str(), 01777);
+}
+
 std::string script(const std::string& name, const std::string& body) {
     const fs::path path = work() / name;
     std::ofstream(path) << "#!/bin/sh\n" << body;
@@ -253,9 +261,7 @@ void processes_that_leave_the_group_are_killed() {
     const fs::path pids = work() / "escaped";
     for (const std::string jobs : {"1", "2"}) {
         check::Context context("--jobs ", jobs);
-        fs::remove_all(pids);
-        fs::create_directories(pids);
-        chmod(pids.c_str(), 01777);
+        fresh_shared_directory(pids);
         // Each run notes both pids, and waits until the double fork is done before it runs simcli.
         const std::string body = "d='" + pids.string() +
                                  "'\n"
@@ -299,9 +305,8 @@ std::string first_line(const fs::path& file) {
 void check_programs_as_users(const std::vector<std::string>& launcher, bool as_root, bool may_write_anywhere) {
     const fs::path notes = work() / "own-users";
     const fs::path private_dir = notes / "root-only";
-    fs::remove_all(notes);
-    fs::create_directories(private_dir);
-    chmod(notes.c_str(), 01777);
+    fresh_shared_directory(notes);
+    fs::create_directory(private_dir);
     chmod(private_dir.c_str(), 0700);
     std::ofstream(private_dir / "secret") << "42\n";
     chmod((private_dir / "secret").c_str(), 0600);
@@ -445,9 +450,7 @@ void programs_cannot_read_the_answers() {
     for (const bool isolated : {true, false}) {
         check::Context context(isolated ? "isolated" : "without CAP_SYS_ADMIN");
         fs::remove_all(kept);
-        fs::remove_all(notes);
-        fs::create_directories(notes);
-        chmod(notes.c_str(), 01777);
+        fresh_shared_directory(notes);
         const Graded g = grade(small_suite(), {"--outputs", kept.string()}, {script("answers.sh", body)},
                                isolated ? std::vector<std::string>{} : without_sys_admin);
         CHECK_EQ(g.result.status, 0);
@@ -501,11 +504,8 @@ void an_interrupted_grade_leaves_nothing_behind() {
     const std::string program = script("interrupted.sh", body);
     for (const int signal : {SIGINT, SIGTERM}) {
         check::Context context(strsignal(signal));
-        for (const fs::path& dir : {pids, temporary}) {
-            fs::remove_all(dir);
-            fs::create_directories(dir);
-            chmod(dir.c_str(), 01777);
-        }
+        fresh_shared_directory(pids);
+        fresh_shared_directory(temporary);
         fs::remove(report);
         const std::string err_path = (work() / "interrupted.err").string();
         const pid_t grader = fork();
