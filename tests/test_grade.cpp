@@ -13,7 +13,9 @@
 
 #include <arpa/inet.h>
 #include <fcntl.h>
+#include <grp.h>
 #include <netinet/in.h>
+#include <sched.h>
 #include <signal.h>
 #include <sys/socket.h>
 #include <sys/stat.h>
@@ -298,6 +300,10 @@ std::string first_line(const fs::path& file) {
     return line;
 }
 
+// Runs simcheck as nobody (setpriv is util-linux's, on every Debian machine).
+const std::vector<std::string> as_nobody{"/usr/bin/setpriv", "--reuid=65534",   "--regid=65534",
+                                         "--clear-groups",   "--inh-caps=-all", "--"};
+
 // What the programs of one grade saw, run as users of their own by root
 // (`as_root`) or as the grader's user otherwise. `launcher` runs simcheck
 // (setpriv to take capabilities away); `may_write_anywhere`: the program
@@ -378,13 +384,35 @@ void check_programs_as_users(const std::vector<std::string>& launcher, bool as_r
 // (root is exempt from RLIMIT_NPROC), it cannot signal the grader, it
 // still reads a file only root may read (its own files under /root, say),
 // it cannot write where only root may, and what it leaves in /tmp and
-// /var/tmp is removed. Run by another user, the process limit holds as
-// RLIMIT_NPROC over that user's tasks.
+// /var/tmp is removed. Run by another user (nobody here), the process
+// limit holds as RLIMIT_NPROC over that user's tasks (in its user
+// namespace where it runs isolated).
 void programs_run_by_root_are_users_of_their_own() {
     const bool root = geteuid() == 0;
     if (!root) std::printf("not run by root: checking the process limit only, the programs running as this user\n");
     check_programs_as_users({}, root, false);
     if (root) {
+        {
+            // Nobody runs other processes beside the grade, as a user's shells and editors are: the limit
+            // still holds the program to what --processes adds.
+            check::Context context("nobody");
+            std::vector<pid_t> others;
+            for (int k = 0; k < 12; ++k) {
+                const pid_t other = fork();
+                if (other == 0) {
+                    if (setgroups(0, nullptr) == 0 && setresgid(65534, 65534, 65534) == 0 &&
+                        setresuid(65534, 65534, 65534) == 0)
+                        execl("/bin/sleep", "sleep", "60", static_cast<char*>(nullptr));
+                    _exit(127);
+                }
+                others.push_back(other);
+            }
+            check_programs_as_users(as_nobody, false, false);
+            for (const pid_t other : others) {
+                kill(other, SIGKILL);
+                waitpid(other, nullptr, 0);
+            }
+        }
         // A program only root may run is refused before any run, with what to do.
         const std::string closed = script("closed.sh", "exit 0\n");
         chmod(closed.c_str(), 0744);
@@ -416,16 +444,59 @@ int connections_made(int listener) {
     return made;
 }
 
-// Run by root where namespaces can be made, a program cannot read the
-// answers it is graded against (the suite's expected outputs, the outputs
-// kept with --outputs) and has no network: a TCP listener of this test on
-// 127.0.0.1 gets no connection. Without CAP_SYS_ADMIN (setpriv takes it
-// away) the grader says so, and the program reads them and connects.
-void programs_cannot_read_the_answers() {
-    if (geteuid() != 0) {
-        std::printf("not run by root: the programs run as this user, not isolated\n");
-        return;
+// Whether a user other than root may make a user namespace here: a child
+// that becomes nobody tries.
+bool unprivileged_user_namespaces_work() {
+    const pid_t child = fork();
+    if (child == 0) {
+        const bool nobody = geteuid() != 0 || (setgroups(0, nullptr) == 0 && setresgid(65534, 65534, 65534) == 0 &&
+                                               setresuid(65534, 65534, 65534) == 0);
+        _exit(nobody && unshare(CLONE_NEWUSER) == 0 ? 0 : 1);
     }
+    int status = 0;
+    return child > 0 && waitpid(child, &status, 0) == child && WIFEXITED(status) && WEXITSTATUS(status) == 0;
+}
+
+constexpr char without_user_namespaces_option[] = "--as-nobody-without-user-namespaces";
+
+// test_grade --as-nobody-without-user-namespaces COMMAND...: runs COMMAND as
+// nobody where no user namespace can be made (a user namespace of this
+// test's own, root and nobody mapped, whose limit on user namespaces below
+// it is 0). Run by root; the command's exit status, or 125.
+int run_as_nobody_without_user_namespaces(char** command) {
+    int unshared[2], mapped[2];
+    if (pipe(unshared) != 0 || pipe(mapped) != 0) return 125;
+    const pid_t child = fork();
+    if (child == 0) {
+        char byte = 0;
+        if (unshare(CLONE_NEWUSER) != 0 || write(unshared[1], &byte, 1) != 1 || read(mapped[0], &byte, 1) != 1)
+            _exit(125);
+        std::ofstream("/proc/sys/user/max_user_namespaces") << "0\n";
+        if (setgroups(0, nullptr) != 0 || setresgid(65534, 65534, 65534) != 0 || setresuid(65534, 65534, 65534) != 0)
+            _exit(125);
+        execv(command[0], command);
+        _exit(125);
+    }
+    char byte = 0;
+    if (child < 0 || read(unshared[0], &byte, 1) != 1) return 125;
+    const std::string maps = "0 0 1\n65534 65534 1\n";
+    for (const char* map : {"uid_map", "gid_map"}) {
+        std::ofstream("/proc/" + std::to_string(child) + "/" + map) << maps;
+    }
+    if (write(mapped[1], &byte, 1) != 1) return 125;
+    int status = 0;
+    waitpid(child, &status, 0);
+    return WIFEXITED(status) ? WEXITSTATUS(status) : 125;
+}
+
+// Where namespaces can be made, a program cannot read the answers it is
+// graded against (the suite's expected outputs, the outputs kept with
+// --outputs) and has no network: a TCP listener of this test on 127.0.0.1
+// gets no connection. So with root's namespaces, and for another user
+// (nobody here) with a user namespace. Where they cannot be made (root
+// without CAP_SYS_ADMIN; nobody where user namespaces cannot be made) the
+// grader says so, and the program reads them and connects.
+void programs_cannot_read_the_answers() {
     const int listener = socket(AF_INET, SOCK_STREAM | SOCK_NONBLOCK | SOCK_CLOEXEC, 0);
     sockaddr_in address{};
     address.sin_family = AF_INET;
@@ -445,17 +516,34 @@ void programs_cannot_read_the_answers() {
         "'/*.out 2>/dev/null | wc -c > \"$n.suite\"\n" + "cat '" + kept.string() +
         "'/*.out 2>/dev/null | wc -c > \"$n.kept\"\n" + "if bash -c 'echo hello > /dev/tcp/127.0.0.1/" + port +
         "' 2>/dev/null; then echo yes; else echo no; fi > \"$n.network\"\n" + "exec '" + simcli + "'\n";
-    const std::vector<std::string> without_sys_admin{"/usr/bin/setpriv", "--inh-caps", "-all",
-                                                     "--bounding-set",   "-sys_admin", "--"};
-    for (const bool isolated : {true, false}) {
-        check::Context context(isolated ? "isolated" : "without CAP_SYS_ADMIN");
+    struct Mode {
+        std::string name;
+        std::vector<std::string> launcher;
+        bool isolated;
+    };
+    const bool user_namespaces = unprivileged_user_namespaces_work();
+    if (!user_namespaces) std::printf("user namespaces cannot be made here: nobody's programs run not isolated\n");
+    std::vector<Mode> modes;
+    if (geteuid() == 0) {
+        const std::string self = fs::read_symlink("/proc/self/exe").string();
+        modes = {{"root", {}, true},
+                 {"root without CAP_SYS_ADMIN",
+                  {"/usr/bin/setpriv", "--inh-caps", "-all", "--bounding-set", "-sys_admin", "--"},
+                  false},
+                 {"nobody", as_nobody, user_namespaces},
+                 {"nobody without user namespaces", {self, without_user_namespaces_option}, false}};
+    } else {
+        modes = {{"this user", {}, user_namespaces}};
+    }
+    for (const Mode& mode : modes) {
+        check::Context context(mode.name);
         fs::remove_all(kept);
         fresh_shared_directory(notes);
-        const Graded g = grade(small_suite(), {"--outputs", kept.string()}, {script("answers.sh", body)},
-                               isolated ? std::vector<std::string>{} : without_sys_admin);
+        const Graded g =
+            grade(small_suite(), {"--outputs", kept.string()}, {script("answers.sh", body)}, mode.launcher);
         CHECK_EQ(g.result.status, 0);
-        CHECK_EQ(g.json["isolated"].number, isolated ? 1.0 : 0.0);
-        CHECK_EQ(g.result.err.find("unable to make namespaces") != std::string::npos, !isolated);
+        CHECK_EQ(g.json["isolated"].number, mode.isolated ? 1.0 : 0.0);
+        CHECK_EQ(g.result.err.find("unable to make namespaces") != std::string::npos, !mode.isolated);
         int runs = 0, read_kept = 0;
         for (const fs::directory_entry& file : fs::directory_iterator(notes)) {
             if (file.path().extension() != ".suite") continue;
@@ -463,26 +551,28 @@ void programs_cannot_read_the_answers() {
             const std::string base = (file.path().parent_path() / file.path().stem()).string();
             const long suite_bytes = std::stol(first_line(file.path()));
             const long kept_bytes = std::stol(first_line(base + ".kept"));
-            CHECK_EQ(suite_bytes > 0, !isolated);
-            if (isolated) CHECK_EQ(kept_bytes, 0L);
+            CHECK_EQ(suite_bytes > 0, !mode.isolated);
+            if (mode.isolated) CHECK_EQ(kept_bytes, 0L);
             read_kept += kept_bytes > 0 ? 1 : 0;
-            CHECK_EQ(first_line(base + ".network"), std::string(isolated ? "no" : "yes"));
+            CHECK_EQ(first_line(base + ".network"), std::string(mode.isolated ? "no" : "yes"));
         }
         CHECK_EQ(runs, 4);
         // Not isolated, every run after the first reads the outputs kept before it.
-        CHECK_EQ(read_kept, isolated ? 0 : 3);
-        CHECK_EQ(connections_made(listener), isolated ? 0 : 4);
+        CHECK_EQ(read_kept, mode.isolated ? 0 : 3);
+        CHECK_EQ(connections_made(listener), mode.isolated ? 0 : 4);
     }
     close(listener);
 }
 
 // A program run under mpirun is graded like any other: MPI's runtime makes
 // files of megabytes, whatever the output's size, and runs isolated (its
-// own network namespace, loopback up) and as a user of its own.
+// own network namespace, loopback up; by another user than root, in a user
+// namespace too) and, by root, as a user of its own.
 void programs_under_mpirun_are_graded() {
 #if defined(SIMCLI_MPI_PATH) && defined(MPIEXEC_PATH)
     const Graded g = grade(small_suite(), {"--timeout", "60"}, {MPIEXEC_PATH, "-n", "2", SIMCLI_MPI_PATH});
     CHECK_EQ(g.result.status, 0);
+    CHECK_EQ(g.json["isolated"].number, geteuid() == 0 || unprivileged_user_namespaces_work() ? 1.0 : 0.0);
     for (const mini_json::Value& scene : scenes(g).items) {
         check::Context context(scene["scene"].text);
         CHECK_EQ(scene["verdict"].text, std::string("conforms"));
@@ -581,6 +671,8 @@ void bad_usage() {
 }  // namespace
 
 int main(int argc, char** argv) {
+    if (argc > 2 && std::string(argv[1]) == without_user_namespaces_option)
+        return run_as_nobody_without_user_namespaces(argv + 2);
     const int status = check::run(
         argc, argv, "test_grade",
         {{"reference conforms everywhere", reference_conforms_everywhere},

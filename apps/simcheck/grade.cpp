@@ -57,9 +57,10 @@ as a whole when it ends), and limits:
                          built with AddressSanitizer, which reserves terabytes)
       --processes N      processes and threads it may add (default 256)
 Run by root, each program runs as a user of its own (an unused user id that
-may read every file but write only in its directory and where anyone may)
-and, where the kernel lets root make namespaces, without network and with the
-suite's expected outputs and the other outputs hidden (docs/checking.md).
+may read every file but write only in its directory and where anyone may).
+Where the kernel lets it make namespaces (root's, or a user namespace for
+anyone else), each runs without network and with the suite's expected
+outputs and the other outputs hidden (docs/checking.md).
 Reports:
       --json FILE        {"program", "scenes": [{"scene", "verdict", "step", ...}]}
       --markdown FILE    a table and the details, for pasting
@@ -602,10 +603,12 @@ int grade_main(int argc, char** argv) {
             !lies_within(o.program.front(), o.outputs_dir) && !lies_within(work.parent_path(), o.outputs_dir))
             hidden.push_back(o.outputs_dir);
         o.hidden = HiddenPaths(hidden);
-        if (geteuid() == 0 && !runs_programs_isolated()) {
+        if (!runs_programs_isolated()) {
             std::fprintf(stderr,
-                         "simcheck grade: warning: run by root but unable to make namespaces (no CAP_SYS_ADMIN, "
-                         "or unshare refused): the programs can read the expected outputs and reach the network\n");
+                         "simcheck grade: warning: unable to make namespaces (%s): the programs can read the "
+                         "expected outputs and reach the network\n",
+                         geteuid() == 0 ? "run by root without CAP_SYS_ADMIN, or unshare refused"
+                                        : "user namespaces turned off, or unshare refused");
         }
         std::vector<Row> rows(cases.size());
         std::atomic<std::size_t> next{0};

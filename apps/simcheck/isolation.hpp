@@ -1,6 +1,7 @@
 #pragma once
-// Run by root with CAP_SYS_ADMIN, the grader gives each program a mount
-// namespace and a network namespace of its own. In the first, the
+// The grader gives each program a mount namespace and a network namespace
+// of its own: run by root, with CAP_SYS_ADMIN; run by another user, inside
+// a user namespace whose only user is the grader's own. In the first, the
 // grader's files that a program must not read are hidden: each expected
 // output of the suite reads as empty (/dev/null bound over it), and the
 // directories holding other runs' outputs are empty and read-only (a
@@ -9,16 +10,15 @@
 // that talk to themselves, as mpirun does): no network.
 //
 // Where the kernel refuses (a container without CAP_SYS_ADMIN, or whose
-// seccomp filter forbids unshare), programs run without it, and the
-// report says so.
+// seccomp filter forbids unshare; unprivileged user namespaces turned
+// off), programs run without it, and the report says so.
 
 #include <string>
 #include <vector>
 
 namespace simcheck {
 
-// Whether namespaces can be made: this process is root and a trial child
-// could make both (asked once).
+// Whether namespaces can be made: a trial child could make them (asked once).
 bool can_isolate();
 
 // The paths to hide, sorted into files and directories once, before any
