@@ -19,8 +19,11 @@ for tool in aarch64-linux-gnu-g++ qemu-aarch64; do
 done
 [ -x "$native" ] || { echo "no native simcli at $native" >&2; exit 1; }
 
-cmake -S "$source_dir" -B "$work" -DCMAKE_TOOLCHAIN_FILE="$source_dir/cmake/aarch64-linux-gnu.toolchain.cmake" \
-  -DCMAKE_BUILD_TYPE=Release -DCMAKE_CXX_FLAGS_RELEASE="-O1 -DNDEBUG" -DCMAKE_UNITY_BUILD=ON -DPARTICLESIM_BUILD_TESTS=OFF \
+# Ninja where it is (the test command installs it): a tenth less CPU time than make; and one unity
+# file per target: 0.7 of the CPU time of batches of 8.
+generator=$(command -v ninja >/dev/null 2>&1 && echo "-G Ninja" || true)
+cmake $generator -S "$source_dir" -B "$work" -DCMAKE_TOOLCHAIN_FILE="$source_dir/cmake/aarch64-linux-gnu.toolchain.cmake" \
+  -DCMAKE_BUILD_TYPE=Release -DCMAKE_CXX_FLAGS_RELEASE="-O1 -DNDEBUG" -DCMAKE_UNITY_BUILD=ON -DCMAKE_UNITY_BUILD_BATCH_SIZE=0 -DPARTICLESIM_BUILD_TESTS=OFF \
   -DPARTICLESIM_BUILD_BENCH=OFF >/dev/null
 cmake --build "$work" --target simcli -j "$(nproc)" >/dev/null
 foreign=(qemu-aarch64 -L /usr/aarch64-linux-gnu "$work/apps/simcli")

@@ -14,6 +14,7 @@ fi
 required=()
 command -v cmake >/dev/null 2>&1 || required+=(cmake)
 command -v g++ >/dev/null 2>&1 || required+=(g++)
+command -v ninja >/dev/null 2>&1 || required+=(ninja-build)
 [ -f /usr/include/eigen3/Eigen/Core ] || required+=(libeigen3-dev)
 extras=()
 for extra in "$@"; do

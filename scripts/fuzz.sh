@@ -20,7 +20,9 @@ fi
 
 # Without line tables (0.67 of the build's CPU time): a finding's report names
 # the functions, and its artifact reproduces it in a build with -g.
-CXX=clang++ cmake -S "$source_dir" -B "$work" -DCMAKE_BUILD_TYPE=RelWithDebInfo -DCMAKE_CXX_FLAGS_RELWITHDEBINFO="-O1 -g0" \
+# Ninja where it is (the test command installs it): a tenth less CPU time than make.
+generator=$(command -v ninja >/dev/null 2>&1 && echo "-G Ninja" || true)
+CXX=clang++ cmake $generator -S "$source_dir" -B "$work" -DCMAKE_BUILD_TYPE=RelWithDebInfo -DCMAKE_CXX_FLAGS_RELWITHDEBINFO="-O1 -g0" \
   -DCMAKE_UNITY_BUILD=ON -DPARTICLESIM_FUZZ=ON \
   -DPARTICLESIM_BUILD_APPS=OFF -DPARTICLESIM_BUILD_TESTS=OFF -DPARTICLESIM_BUILD_BENCH=OFF >/dev/null
 cmake --build "$work" --target fuzz_scene -j "$(nproc)" >/dev/null

@@ -5,7 +5,8 @@
 # With the distributed engine built (MPI_BUILT), a second consumer
 # (tests/consumer_mpi) finds its component and runs under mpirun, and so
 # does the installed simcli (through simcli-mpi beside it).
-# Inputs: BUILD_DIR, WORK_DIR, CONSUMER_DIR, LIBRARY_USAGE_SOURCE, APPS_BUILT, MPI_BUILT, MPIEXEC.
+# Inputs: BUILD_DIR, WORK_DIR, GENERATOR (the main build's), CONSUMER_DIR, LIBRARY_USAGE_SOURCE, APPS_BUILT, MPI_BUILT,
+# MPIEXEC.
 file(REMOVE_RECURSE "${WORK_DIR}")
 include("${CMAKE_CURRENT_LIST_DIR}/run_step.cmake")
 set(prefix "${WORK_DIR}/prefix")
@@ -42,7 +43,7 @@ endforeach()
 
 file(COPY "${CONSUMER_DIR}/CMakeLists.txt" DESTINATION "${WORK_DIR}/consumer")
 configure_file("${LIBRARY_USAGE_SOURCE}" "${WORK_DIR}/consumer/main.cpp" COPYONLY)
-run_step(${CMAKE_COMMAND} -S "${WORK_DIR}/consumer" -B "${WORK_DIR}/build" -DCMAKE_BUILD_TYPE=Release
+run_step(${CMAKE_COMMAND} -G "${GENERATOR}" -S "${WORK_DIR}/consumer" -B "${WORK_DIR}/build" -DCMAKE_BUILD_TYPE=Release
          "-DCMAKE_PREFIX_PATH=${prefix}")
 run_step(${CMAKE_COMMAND} --build "${WORK_DIR}/build")
 run_step("${WORK_DIR}/build/consumer")
@@ -62,12 +63,12 @@ if(NOT TARGET particlesim::check)
   message(FATAL_ERROR "particlesim::check is missing")
 endif()
 ]=])
-run_step(${CMAKE_COMMAND} -S "${WORK_DIR}/twice" -B "${WORK_DIR}/twice-build" "-DCMAKE_PREFIX_PATH=${prefix}")
+run_step(${CMAKE_COMMAND} -G "${GENERATOR}" -S "${WORK_DIR}/twice" -B "${WORK_DIR}/twice-build" "-DCMAKE_PREFIX_PATH=${prefix}")
 message(STATUS "found twice, with the check component")
 
 if(MPI_BUILT)
   file(COPY "${CONSUMER_DIR}_mpi/CMakeLists.txt" "${CONSUMER_DIR}_mpi/main.cpp" DESTINATION "${WORK_DIR}/consumer_mpi")
-  run_step(${CMAKE_COMMAND} -S "${WORK_DIR}/consumer_mpi" -B "${WORK_DIR}/build_mpi" -DCMAKE_BUILD_TYPE=Release
+  run_step(${CMAKE_COMMAND} -G "${GENERATOR}" -S "${WORK_DIR}/consumer_mpi" -B "${WORK_DIR}/build_mpi" -DCMAKE_BUILD_TYPE=Release
            "-DCMAKE_PREFIX_PATH=${prefix}")
   run_step(${CMAKE_COMMAND} --build "${WORK_DIR}/build_mpi")
   run_step(${MPIEXEC} -np 2 "${WORK_DIR}/build_mpi/consumer_mpi")

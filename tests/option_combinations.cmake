@@ -1,7 +1,7 @@
 # The build options configure alone and together: none, each one, the apps
 # without tests, and all (the sanitizers change flags, not what is built).
 # The library alone is built by subdirectory_consumer.cmake.
-# Inputs: SOURCE_DIR, WORK_DIR.
+# Inputs: SOURCE_DIR, WORK_DIR, GENERATOR (the main build's).
 file(REMOVE_RECURSE "${WORK_DIR}")
 set(options PARTICLESIM_BUILD_APPS PARTICLESIM_BUILD_TESTS PARTICLESIM_BUILD_BENCH PARTICLESIM_SANITIZE)
 foreach(mask RANGE 15)
@@ -23,7 +23,7 @@ foreach(mask RANGE 15)
     math(EXPR bit "${bit} * 2")
   endforeach()
   set(build_dir "${WORK_DIR}/${name}")
-  execute_process(COMMAND ${CMAKE_COMMAND} -S "${SOURCE_DIR}" -B "${build_dir}" ${args} -DCMAKE_BUILD_TYPE=Debug RESULT_VARIABLE status OUTPUT_QUIET ERROR_VARIABLE err)
+  execute_process(COMMAND ${CMAKE_COMMAND} -G "${GENERATOR}" -S "${SOURCE_DIR}" -B "${build_dir}" ${args} -DCMAKE_BUILD_TYPE=Debug RESULT_VARIABLE status OUTPUT_QUIET ERROR_VARIABLE err)
   if(NOT status EQUAL 0)
     message(FATAL_ERROR "configure failed with ${args}:\n${err}")
   endif()
@@ -33,7 +33,7 @@ endforeach()
 
 # The distributed engine: with MPI it configures; without, it stops with a
 # message that names the packages.
-execute_process(COMMAND ${CMAKE_COMMAND} -S "${SOURCE_DIR}" -B "${WORK_DIR}/mpi" -DPARTICLESIM_MPI=ON
+execute_process(COMMAND ${CMAKE_COMMAND} -G "${GENERATOR}" -S "${SOURCE_DIR}" -B "${WORK_DIR}/mpi" -DPARTICLESIM_MPI=ON
                         -DPARTICLESIM_BUILD_TESTS=OFF -DPARTICLESIM_BUILD_BENCH=OFF -DCMAKE_BUILD_TYPE=Debug
                 RESULT_VARIABLE status OUTPUT_QUIET ERROR_VARIABLE err)
 if(status EQUAL 0)

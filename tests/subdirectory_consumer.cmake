@@ -1,16 +1,16 @@
 # Builds tests/subdirectory_consumer (particlesim added with add_subdirectory,
-# at -O0 and as a unity build for speed: the one build of the suite that makes
+# at -O0 and as a unity build of one file per target for speed: the one build of the suite that makes
 # the library alone; a consumer may build it either way),
 # runs it, then installs it and checks that only the consumer's own file was
 # installed: no particlesim header, library or package file (PARTICLESIM_INSTALL
 # defaults to off below the top level).
-# Inputs: SOURCE_DIR, WORK_DIR, LIBRARY_USAGE_SOURCE.
+# Inputs: SOURCE_DIR, WORK_DIR, GENERATOR (the main build's), LIBRARY_USAGE_SOURCE.
 file(REMOVE_RECURSE "${WORK_DIR}")
 include("${CMAKE_CURRENT_LIST_DIR}/run_step.cmake")
 file(COPY "${SOURCE_DIR}/tests/subdirectory_consumer/CMakeLists.txt" DESTINATION "${WORK_DIR}/consumer")
 configure_file("${LIBRARY_USAGE_SOURCE}" "${WORK_DIR}/consumer/main.cpp" COPYONLY)
-run_step(${CMAKE_COMMAND} -S "${WORK_DIR}/consumer" -B "${WORK_DIR}/build" -DCMAKE_BUILD_TYPE=Debug
-         -DCMAKE_CXX_FLAGS_DEBUG=-O0 -DCMAKE_UNITY_BUILD=ON
+run_step(${CMAKE_COMMAND} -G "${GENERATOR}" -S "${WORK_DIR}/consumer" -B "${WORK_DIR}/build" -DCMAKE_BUILD_TYPE=Debug
+         -DCMAKE_CXX_FLAGS_DEBUG=-O0 -DCMAKE_UNITY_BUILD=ON -DCMAKE_UNITY_BUILD_BATCH_SIZE=0
          "-DPARTICLESIM_SOURCE_DIR=${SOURCE_DIR}")
 file(READ "${WORK_DIR}/build/CMakeCache.txt" cache)
 if(cache MATCHES "PARTICLESIM_BUILD_(APPS|TESTS|BENCH)")

@@ -162,14 +162,15 @@ void reference_conforms_everywhere() {
     CHECK(side.result.out.find("2 scenes ran side by side") != std::string::npos);
 }
 
+// The verdicts alone: no reference simcli is timed (--no-reference).
 void textbook_mistakes_are_wrong_at_their_step() {
-    const Graded right = grade(small_suite(), {}, {textbook, "none"});
+    const Graded right = grade(small_suite(), {"--no-reference"}, {textbook, "none"});
     CHECK_EQ(right.result.status, 0);
     int wrong_rows = 0;
     for (const char* mistake : {"no-stop-at-the-wall", "ties-broken-by-index-only", "two-collisions-per-step",
                                 "counters-off-by-one", "a-dropped-line"}) {
         check::Context context(mistake);
-        const Graded g = grade(small_suite(), {}, {textbook, mistake});
+        const Graded g = grade(small_suite(), {"--no-reference"}, {textbook, mistake});
         CHECK_EQ(g.result.status, 1);
         for (std::size_t k = 0; k < scenes(g).items.size(); ++k) {
             const mini_json::Value& s = scenes(g)[k];
@@ -190,7 +191,7 @@ void textbook_mistakes_are_wrong_at_their_step() {
     }
     CHECK(wrong_rows >= 5);
     // The peer's shape: the last step printed twice, the physics right.
-    const Graded twice = grade(small_suite(), {}, {textbook, "last-block-twice"});
+    const Graded twice = grade(small_suite(), {"--no-reference"}, {textbook, "last-block-twice"});
     CHECK_EQ(twice.result.status, 1);
     for (const mini_json::Value& s : scenes(twice).items) {
         CHECK_EQ(s["verdict"].text, std::string("shape"));
