@@ -6,10 +6,12 @@
 // The same bytes also go to both engines' restore(), which must refuse a
 // damaged saved state cleanly; and a run saved halfway and restored must go
 // on exactly like the uninterrupted one. And to simcli's checkpoint reader,
-// whose settings and first part must write back to text that reads the same.
+// whose settings and first part must write back to text that reads the same;
+// and, as an output of two small scenes, to simcheck's readers and judgement.
 // Build and run: scripts/fuzz.sh SECONDS.
 
 #include "checkpoint.hpp"  // simcli's
+#include "judge.hpp"       // simcheck's
 
 #include "particlesim/particlesim.hpp"
 
@@ -135,6 +137,34 @@ void read_any_checkpoint(const std::string& bytes) {
     require(written(read(text)) == text, "a checkpoint's settings or first part read back otherwise");
 }
 
+// simcheck's judgement of an output (its shape reader, then the strict
+// reader, and the rules' check of what they read), on the bytes as the
+// output of two fixed scenes: one printing every step, one the last alone.
+// It must end with a verdict or a malformed output that names its line.
+void judge_any_output(const std::string& bytes) {
+    if (bytes.empty()) return;
+    static const Scene scenes[] = {
+        [] {
+            std::istringstream text("3 20 1 4 print\n0 5 5 1 0.5\n1 10 10 0 -1\n2 15 15 -1 0\n");
+            return read_scene(text);
+        }(),
+        [] {
+            std::istringstream text("2 12 1 3 perf\n0 3 6 2 0\n1 9 6 -2 0\n");
+            return read_scene(text);
+        }(),
+    };
+    for (const Scene& scene : scenes) {
+        std::FILE* output = fmemopen(const_cast<char*>(bytes.data()), bytes.size(), "r");
+        if (!output) fail("fmemopen");
+        const simcheck::Judgement judgement = simcheck::judge_output(scene, output, "output", {});
+        std::fclose(output);
+        require(judgement.outcome != simcheck::Outcome::malformed || judgement.message.rfind("output:", 0) == 0,
+                "a malformed output without its name and line");
+        require(judgement.outcome != simcheck::Outcome::wrong || judgement.report.finding,
+                "a wrong output without its finding");
+    }
+}
+
 // A run saved after `first` steps and restored ends exactly where the whole run ends.
 template <typename E, typename Make, typename Restore>
 void check_save_and_restore(Make&& make, Restore&& restore, std::int64_t first, std::int64_t steps) {
@@ -162,6 +192,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     restore_any<SteppedSimulation>(bytes, SteppedOptions{});
     restore_any<ExactSimulation>(bytes, budgeted_exact);
     read_any_checkpoint(bytes);
+    judge_any_output(bytes);
     std::istringstream input(bytes);
     Scene scene;
     try {
