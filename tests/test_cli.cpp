@@ -446,6 +446,7 @@ void several_ranks_without_mpi() {
 }  // namespace
 
 int main(int argc, char** argv) {
+    run_process::children_without_leak_checks();
     return check::run(argc, argv, "test_cli",
                       {
                           {"examples byte for byte", examples_byte_for_byte},

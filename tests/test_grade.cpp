@@ -674,14 +674,7 @@ void bad_usage() {
 int main(int argc, char** argv) {
     if (argc > 2 && std::string(argv[1]) == without_user_namespaces_option)
         return run_as_nobody_without_user_namespaces(argv + 2);
-    if constexpr (check::sanitized) {
-        // Under the sanitizers, the processes a grade starts (simcheck, the programs, the reference) run
-        // without LeakSanitizer, whose scan at each exit took 40 % of this test's CPU time; AddressSanitizer
-        // and UndefinedBehaviorSanitizer still watch them, and this test's own leaks are still checked.
-        const char* options = std::getenv("ASAN_OPTIONS");
-        const std::string without_leaks = (options && *options ? std::string(options) + ":" : "") + "detect_leaks=0";
-        setenv("ASAN_OPTIONS", without_leaks.c_str(), 1);
-    }
+    run_process::children_without_leak_checks();
     const int status = check::run(
         argc, argv, "test_grade",
         {{"reference conforms everywhere", reference_conforms_everywhere},
