@@ -301,6 +301,14 @@ std::string first_line(const fs::path& file) {
     return line;
 }
 
+constexpr uid_t nobody = 65534;
+
+// In a child of this test run by root: becomes nobody, with no groups and no capabilities.
+bool become_nobody() {
+    return setgroups(0, nullptr) == 0 && setresgid(nobody, nobody, nobody) == 0 &&
+           setresuid(nobody, nobody, nobody) == 0;
+}
+
 // Runs simcheck as nobody (setpriv is util-linux's, on every Debian machine).
 const std::vector<std::string> as_nobody{"/usr/bin/setpriv", "--reuid=65534",   "--regid=65534",
                                          "--clear-groups",   "--inh-caps=-all", "--"};
@@ -401,9 +409,7 @@ void programs_run_by_root_are_users_of_their_own() {
             for (int k = 0; k < 12; ++k) {
                 const pid_t other = fork();
                 if (other == 0) {
-                    if (setgroups(0, nullptr) == 0 && setresgid(65534, 65534, 65534) == 0 &&
-                        setresuid(65534, 65534, 65534) == 0)
-                        execl("/bin/sleep", "sleep", "60", static_cast<char*>(nullptr));
+                    if (become_nobody()) execl("/bin/sleep", "sleep", "60", static_cast<char*>(nullptr));
                     _exit(127);
                 }
                 others.push_back(other);
@@ -450,9 +456,8 @@ int connections_made(int listener) {
 bool unprivileged_user_namespaces_work() {
     const pid_t child = fork();
     if (child == 0) {
-        const bool nobody = geteuid() != 0 || (setgroups(0, nullptr) == 0 && setresgid(65534, 65534, 65534) == 0 &&
-                                               setresuid(65534, 65534, 65534) == 0);
-        _exit(nobody && unshare(CLONE_NEWUSER) == 0 ? 0 : 1);
+        const bool not_root = geteuid() != 0 || become_nobody();
+        _exit(not_root && unshare(CLONE_NEWUSER) == 0 ? 0 : 1);
     }
     int status = 0;
     return child > 0 && waitpid(child, &status, 0) == child && WIFEXITED(status) && WEXITSTATUS(status) == 0;
@@ -473,8 +478,7 @@ int run_as_nobody_without_user_namespaces(char** command) {
         if (unshare(CLONE_NEWUSER) != 0 || write(unshared[1], &byte, 1) != 1 || read(mapped[0], &byte, 1) != 1)
             _exit(125);
         std::ofstream("/proc/sys/user/max_user_namespaces") << "0\n";
-        if (setgroups(0, nullptr) != 0 || setresgid(65534, 65534, 65534) != 0 || setresuid(65534, 65534, 65534) != 0)
-            _exit(125);
+        if (!become_nobody()) _exit(125);
         execv(command[0], command);
         _exit(125);
     }

@@ -11,6 +11,8 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <algorithm>
+#include <charconv>
 #include <cstring>
 
 namespace simcheck {
@@ -42,23 +44,15 @@ bool write_whole(const char* path, const char* text, std::size_t length) {
 }
 
 // Writes "ID ID 1\n", an id mapped onto itself, to a map of /proc/self
-// (async-signal-safe: no allocation).
+// (async-signal-safe: to_chars does not allocate).
 bool map_onto_itself(const char* path, unsigned id) {
-    char digits[16];
-    std::size_t count = 0;
-    do {
-        digits[count++] = static_cast<char>('0' + id % 10);
-        id /= 10;
-    } while (id != 0);
-    char line[40];
-    std::size_t length = 0;
-    for (int copy = 0; copy < 2; ++copy) {
-        for (std::size_t k = count; k-- > 0;) line[length++] = digits[k];
-        line[length++] = ' ';
-    }
-    line[length++] = '1';
-    line[length++] = '\n';
-    return write_whole(path, line, length);
+    char line[32];
+    char* end = std::to_chars(line, line + 10, id).ptr;
+    *end++ = ' ';
+    end = std::to_chars(end, end + 10, id).ptr;
+    constexpr char count[] = " 1\n";
+    end = std::copy(count, count + 3, end);
+    return write_whole(path, line, static_cast<std::size_t>(end - line));
 }
 
 // A user namespace whose only user and group are this process's own, so
@@ -94,9 +88,11 @@ HiddenPaths::HiddenPaths(const std::vector<std::string>& paths) {
     }
 }
 
+bool isolates_in_user_namespace() { return geteuid() != 0; }
+
 bool HiddenPaths::isolate() const {
-    const bool root = geteuid() == 0;
-    if (!root && !enter_user_namespace()) return false;
+    const bool own_user_namespace = isolates_in_user_namespace();
+    if (own_user_namespace && !enter_user_namespace()) return false;
     if (unshare(CLONE_NEWNS | CLONE_NEWNET) != 0) return false;
     // Nothing mounted here reaches the grader's namespace.
     if (mount(nullptr, "/", nullptr, MS_REC | MS_PRIVATE, nullptr) != 0) return false;
@@ -110,7 +106,7 @@ bool HiddenPaths::isolate() const {
         if (mount("/dev/null", file.c_str(), nullptr, MS_BIND, nullptr) != 0) return false;
     }
     // No set-user-ID program gains a user (root's programs: own_user.cpp).
-    if (!root && prctl(PR_SET_NO_NEW_PRIVS, 1, 0, 0, 0) != 0) return false;
+    if (own_user_namespace && prctl(PR_SET_NO_NEW_PRIVS, 1, 0, 0, 0) != 0) return false;
     return bring_loopback_up();
 }
 

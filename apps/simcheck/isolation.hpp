@@ -21,6 +21,11 @@ namespace simcheck {
 // Whether namespaces can be made: a trial child could make them (asked once).
 bool can_isolate();
 
+// Whether an isolated program also gets a user namespace of its own (this
+// process is not root). RLIMIT_NPROC is counted per user namespace: there
+// it counts the program's tasks alone.
+bool isolates_in_user_namespace();
+
 // The paths to hide, sorted into files and directories once, before any
 // fork: the child may not allocate.
 class HiddenPaths {

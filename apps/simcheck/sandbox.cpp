@@ -300,14 +300,13 @@ SandboxRun run_sandboxed(const std::vector<std::string>& arguments, const std::s
     if (user != 0 && chown(directory.c_str(), user, user) != 0)
         throw std::runtime_error("cannot give the working directory to the program's user: " +
                                  std::string(std::strerror(errno)));
-    // RLIMIT_NPROC counts a user's tasks in one user namespace: a user of its own, or a user namespace of
-    // its own (isolated, not run by root), holds the program's tasks alone.
-    const bool counted_alone = user != 0 || (runs_programs_isolated() && geteuid() != 0);
-    const rlim_t tasks =
-        static_cast<rlim_t>(counted_alone ? 1 + limits.processes : tasks_of_this_user() + limits.processes);
     const int capability = user != 0 ? kept_capability() : 0;  // found before the fork
     static const HiddenPaths nothing_hidden;
     const HiddenPaths* hidden = runs_programs_isolated() ? (limits.hidden ? limits.hidden : &nothing_hidden) : nullptr;
+    // A user of its own, or a user namespace of its own, holds the program's tasks alone.
+    const bool counted_alone = user != 0 || (hidden && isolates_in_user_namespace());
+    const rlim_t tasks =
+        static_cast<rlim_t>(counted_alone ? 1 + limits.processes : tasks_of_this_user() + limits.processes);
 
     become_subreaper();
     const Clock::time_point start = Clock::now();
