@@ -14,15 +14,21 @@
 #include <arpa/inet.h>
 #include <fcntl.h>
 #include <grp.h>
+#include <linux/filter.h>
+#include <linux/seccomp.h>
 #include <netinet/in.h>
 #include <sched.h>
 #include <signal.h>
+#include <sys/prctl.h>
 #include <sys/socket.h>
 #include <sys/stat.h>
+#include <sys/syscall.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <chrono>
+#include <cstddef>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
@@ -494,13 +500,68 @@ int run_as_nobody_without_user_namespaces(char** command) {
     return WIFEXITED(status) ? WEXITSTATUS(status) : 125;
 }
 
+constexpr char without_mount_setattr_option[] = "--without-mount-setattr";
+
+// test_grade --without-mount-setattr COMMAND...: runs COMMAND (as nobody,
+// run by root) where mount_setattr fails with ENOSYS, as on a kernel before
+// Linux 5.12 (a seccomp filter). The command's exit status, or 125.
+int run_without_mount_setattr(char** command) {
+#ifdef SYS_mount_setattr
+    if (geteuid() == 0 && !become_nobody()) return 125;
+    sock_filter filter[] = {
+        BPF_STMT(BPF_LD | BPF_W | BPF_ABS, offsetof(seccomp_data, nr)),
+        BPF_JUMP(BPF_JMP | BPF_JEQ | BPF_K, SYS_mount_setattr, 0, 1),
+        BPF_STMT(BPF_RET | BPF_K, SECCOMP_RET_ERRNO | ENOSYS),
+        BPF_STMT(BPF_RET | BPF_K, SECCOMP_RET_ALLOW),
+    };
+    const sock_fprog program{static_cast<unsigned short>(sizeof filter / sizeof filter[0]), filter};
+    if (prctl(PR_SET_NO_NEW_PRIVS, 1, 0, 0, 0) != 0 || prctl(PR_SET_SECCOMP, SECCOMP_MODE_FILTER, &program) != 0)
+        return 125;
+    execv(command[0], command);
+#else
+    (void)command;
+#endif
+    return 125;
+}
+
+// A directory that any user may write, outside the scratch places (/tmp,
+// /var/tmp, /dev/shm, $TMPDIR): beside this test or in $HOME. Empty where
+// every candidate lies in one.
+fs::path writable_outside_scratch_places() {
+    std::vector<fs::path> scratch{"/tmp", "/var/tmp", "/dev/shm"};
+    if (const char* tmpdir = std::getenv("TMPDIR"); tmpdir && *tmpdir) scratch.emplace_back(tmpdir);
+    std::vector<fs::path> candidates{fs::current_path()};
+    if (const char* home = std::getenv("HOME"); home && *home) candidates.emplace_back(home);
+    for (const fs::path& candidate : candidates) {
+        std::error_code error;
+        const fs::path place = fs::canonical(candidate, error);
+        if (error) continue;
+        const bool in_scratch = std::any_of(scratch.begin(), scratch.end(), [&](const fs::path& s) {
+            std::error_code ignored;
+            const std::string prefix = fs::canonical(s, ignored).string();
+            const std::string text = place.string();
+            return !ignored && text.compare(0, prefix.size(), prefix) == 0 &&
+                   (text.size() == prefix.size() || text[prefix.size()] == '/' || prefix == "/");
+        });
+        if (in_scratch) continue;
+        std::string path = (place / "particlesim-grade-outside-XXXXXX").string();
+        if (!mkdtemp(path.data())) continue;
+        chmod(path.c_str(), 01777);
+        return path;
+    }
+    return {};
+}
+
 // Where namespaces can be made, a program cannot read the answers it is
 // graded against (the suite's expected outputs, the outputs kept with
-// --outputs) and has no network: a TCP listener of this test on 127.0.0.1
-// gets no connection. So with root's namespaces, and for another user
-// (nobody here) with a user namespace. Where they cannot be made (root
-// without CAP_SYS_ADMIN; nobody where user namespaces cannot be made) the
-// grader says so, and the program reads them and connects.
+// --outputs), cannot write outside the scratch places (a directory any
+// user may write, beside this test), and has no network: a TCP listener of
+// this test on 127.0.0.1 gets no connection. So with root's namespaces,
+// and for another user (nobody here) with a user namespace. Where they
+// cannot be made (root without CAP_SYS_ADMIN; nobody where user namespaces
+// cannot be made) the grader says so, and the program reads the answers,
+// writes and connects; where mount_setattr is missing, it says that the
+// program writes, and the rest holds.
 void programs_cannot_read_the_answers() {
     const int listener = socket(AF_INET, SOCK_STREAM | SOCK_NONBLOCK | SOCK_CLOEXEC, 0);
     sockaddr_in address{};
@@ -514,32 +575,49 @@ void programs_cannot_read_the_answers() {
     const std::string port = std::to_string(ntohs(address.sin_port));
     const fs::path kept = work() / "kept-outputs";
     const fs::path notes = work() / "answers";
-    // Each run notes, by its pid, how many bytes of the suite's answers and of the kept outputs it read, and
-    // whether it reached the listener; then it runs simcli, and conforms.
+    const fs::path outside = writable_outside_scratch_places();
+    if (outside.empty())
+        std::printf(
+            "no directory outside /tmp, /var/tmp, /dev/shm and $TMPDIR to write: read-only files not checked\n");
+    // Each run notes, by its pid, how many bytes of the suite's answers and of the kept outputs it read,
+    // whether it wrote outside the scratch places and in its working directory, and whether it reached the
+    // listener; then it runs simcli, and conforms.
+    const std::string writes_outside =
+        outside.empty() ? std::string("echo no") : "echo x 2>/dev/null > '" + outside.string() + "'/$$";
     const std::string body =
         "n='" + notes.string() + "'/$$\n" + "cat '" + small_suite().string() +
         "'/*.out 2>/dev/null | wc -c > \"$n.suite\"\n" + "cat '" + kept.string() +
-        "'/*.out 2>/dev/null | wc -c > \"$n.kept\"\n" + "if bash -c 'echo hello > /dev/tcp/127.0.0.1/" + port +
+        "'/*.out 2>/dev/null | wc -c > \"$n.kept\"\n" + "if " + writes_outside +
+        "; then echo yes; else echo no; fi > \"$n.outside\"\n" +
+        "if echo x 2>/dev/null > mine && [ -s mine ]; then echo yes; else echo no; fi > \"$n.here\"\n" +
+        "if bash -c 'echo hello > /dev/tcp/127.0.0.1/" + port +
         "' 2>/dev/null; then echo yes; else echo no; fi > \"$n.network\"\n" + "exec '" + simcli + "'\n";
     struct Mode {
         std::string name;
         std::vector<std::string> launcher;
-        bool isolated;
+        bool isolated, read_only;
     };
     const bool user_namespaces = unprivileged_user_namespaces_work();
     if (!user_namespaces) std::printf("user namespaces cannot be made here: nobody's programs run not isolated\n");
+    const std::string self = fs::read_symlink("/proc/self/exe").string();
     std::vector<Mode> modes;
     if (geteuid() == 0) {
-        const std::string self = fs::read_symlink("/proc/self/exe").string();
-        modes = {{"root", {}, true},
+        modes = {{"root", {}, true, true},
                  {"root without CAP_SYS_ADMIN",
                   {"/usr/bin/setpriv", "--inh-caps", "-all", "--bounding-set", "-sys_admin", "--"},
+                  false,
                   false},
-                 {"nobody", as_nobody, user_namespaces},
-                 {"nobody without user namespaces", {self, without_user_namespaces_option}, false}};
+                 {"nobody", as_nobody, user_namespaces, user_namespaces},
+                 {"nobody without user namespaces", {self, without_user_namespaces_option}, false, false}};
     } else {
-        modes = {{"this user", {}, user_namespaces}};
+        modes = {{"this user", {}, user_namespaces, user_namespaces}};
     }
+#ifdef SYS_mount_setattr
+    modes.push_back({geteuid() == 0 ? "nobody without mount_setattr" : "this user without mount_setattr",
+                     {self, without_mount_setattr_option},
+                     user_namespaces,
+                     false});
+#endif
     for (const Mode& mode : modes) {
         check::Context context(mode.name);
         fs::remove_all(kept);
@@ -548,7 +626,10 @@ void programs_cannot_read_the_answers() {
             grade(small_suite(), {"--outputs", kept.string()}, {script("answers.sh", body)}, mode.launcher);
         CHECK_EQ(g.result.status, 0);
         CHECK_EQ(g.json["isolated"].number, mode.isolated ? 1.0 : 0.0);
+        CHECK_EQ(g.json["read_only"].number, mode.read_only ? 1.0 : 0.0);
         CHECK_EQ(g.result.err.find("unable to make namespaces") != std::string::npos, !mode.isolated);
+        CHECK_EQ(g.result.err.find("unable to make files read-only") != std::string::npos,
+                 mode.isolated && !mode.read_only);
         int runs = 0, read_kept = 0;
         for (const fs::directory_entry& file : fs::directory_iterator(notes)) {
             if (file.path().extension() != ".suite") continue;
@@ -559,6 +640,13 @@ void programs_cannot_read_the_answers() {
             CHECK_EQ(suite_bytes > 0, !mode.isolated);
             if (mode.isolated) CHECK_EQ(kept_bytes, 0L);
             read_kept += kept_bytes > 0 ? 1 : 0;
+            if (!outside.empty()) {
+                const fs::path written = outside / file.path().stem();
+                CHECK_EQ(first_line(base + ".outside"), std::string(mode.read_only ? "no" : "yes"));
+                CHECK_EQ(fs::exists(written), !mode.read_only);
+                fs::remove(written);
+            }
+            CHECK_EQ(first_line(base + ".here"), std::string("yes"));
             CHECK_EQ(first_line(base + ".network"), std::string(mode.isolated ? "no" : "yes"));
         }
         CHECK_EQ(runs, 4);
@@ -567,6 +655,7 @@ void programs_cannot_read_the_answers() {
         CHECK_EQ(connections_made(listener), mode.isolated ? 0 : 4);
     }
     close(listener);
+    if (!outside.empty()) fs::remove_all(outside);
 }
 
 // A program run under mpirun is graded like any other: MPI's runtime makes
@@ -678,6 +767,7 @@ void bad_usage() {
 int main(int argc, char** argv) {
     if (argc > 2 && std::string(argv[1]) == without_user_namespaces_option)
         return run_as_nobody_without_user_namespaces(argv + 2);
+    if (argc > 2 && std::string(argv[1]) == without_mount_setattr_option) return run_without_mount_setattr(argv + 2);
     run_process::children_without_leak_checks();
     const int status = check::run(
         argc, argv, "test_grade",

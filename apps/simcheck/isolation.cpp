@@ -1,5 +1,7 @@
 #include "isolation.hpp"
 
+#include "scratch_places.hpp"
+
 #include <fcntl.h>
 #include <net/if.h>
 #include <sched.h>
@@ -8,11 +10,13 @@
 #include <sys/prctl.h>
 #include <sys/socket.h>
 #include <sys/stat.h>
+#include <sys/syscall.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
 #include <algorithm>
 #include <charconv>
+#include <cstdint>
 #include <cstring>
 
 namespace simcheck {
@@ -67,19 +71,53 @@ bool enter_user_namespace() {
            map_onto_itself("/proc/self/uid_map", user) && map_onto_itself("/proc/self/gid_map", group);
 }
 
-}  // namespace
+// mount_setattr(2) (Linux 5.12), called raw: glibc wraps it only from 2.36.
+struct MountAttributes {
+    std::uint64_t set = 0, clear = 0, propagation = 0, user_namespace_fd = 0;
+};
+constexpr std::uint64_t mount_read_only = 0x1;  // MOUNT_ATTR_RDONLY
+constexpr unsigned at_recursive = 0x8000;       // AT_RECURSIVE
 
-bool can_isolate() {
-    static const bool can = [] {
-        const pid_t trial = fork();
-        if (trial == 0) _exit(HiddenPaths().isolate() ? 0 : 1);
-        int status = 0;
-        return trial > 0 && waitpid(trial, &status, 0) == trial && WIFEXITED(status) && WEXITSTATUS(status) == 0;
-    }();
-    return can;
+bool set_mount_attributes(const char* path, unsigned flags, const MountAttributes& attributes) {
+#ifdef SYS_mount_setattr
+    return syscall(SYS_mount_setattr, AT_FDCWD, path, flags, &attributes, sizeof attributes) == 0;
+#else
+    (void)path, (void)flags, (void)attributes;
+    return false;
+#endif
 }
 
-HiddenPaths::HiddenPaths(const std::vector<std::string>& paths) {
+// Whether a child can isolate itself, with or without read-only files.
+bool trial_isolates(bool read_only) {
+    const pid_t trial = fork();
+    if (trial == 0) _exit(HiddenPaths().isolate(read_only) ? 0 : 1);
+    int status = 0;
+    return trial > 0 && waitpid(trial, &status, 0) == trial && WIFEXITED(status) && WEXITSTATUS(status) == 0;
+}
+
+struct Support {
+    bool namespaces = false, read_only = false;
+};
+
+const Support& support() {
+    static const Support found = [] {
+        Support s;
+        s.read_only = trial_isolates(true);
+        s.namespaces = s.read_only || trial_isolates(false);
+        return s;
+    }();
+    return found;
+}
+
+}  // namespace
+
+bool can_isolate() { return support().namespaces; }
+
+bool can_make_read_only() { return support().read_only; }
+
+HiddenPaths::HiddenPaths() : writable_(scratch_places()) {}
+
+HiddenPaths::HiddenPaths(const std::vector<std::string>& paths) : writable_(scratch_places()) {
     for (const std::string& path : paths) {
         struct stat info {};
         if (stat(path.c_str(), &info) != 0) continue;
@@ -90,12 +128,18 @@ HiddenPaths::HiddenPaths(const std::vector<std::string>& paths) {
 
 bool isolates_in_user_namespace() { return geteuid() != 0; }
 
-bool HiddenPaths::isolate() const {
+bool HiddenPaths::isolate(bool read_only) const {
     const bool own_user_namespace = isolates_in_user_namespace();
     if (own_user_namespace && !enter_user_namespace()) return false;
     if (unshare(CLONE_NEWNS | CLONE_NEWNET) != 0) return false;
     // Nothing mounted here reaches the grader's namespace.
     if (mount(nullptr, "/", nullptr, MS_REC | MS_PRIVATE, nullptr) != 0) return false;
+    // Each scratch place a mount of its own (sorted: a place before those
+    // inside it), so that it can stay writable below while the rest is made
+    // read-only; the hidden paths inside are mounted on top of it.
+    for (const std::string& place : writable_) {
+        if (mount(place.c_str(), place.c_str(), nullptr, MS_BIND | MS_REC, nullptr) != 0) return false;
+    }
     // c_str() only reads: nothing is allocated here.
     for (const std::string& directory : directories_) {
         if (mount("simcheck-hidden", directory.c_str(), "tmpfs", MS_RDONLY | MS_NOSUID | MS_NODEV | MS_NOEXEC,
@@ -104,6 +148,20 @@ bool HiddenPaths::isolate() const {
     }
     for (const std::string& file : files_) {
         if (mount("/dev/null", file.c_str(), nullptr, MS_BIND, nullptr) != 0) return false;
+    }
+    // Every file read-only but in the scratch places: the program cannot
+    // change the grader's files, the suite, or other programs. Device files
+    // (/dev/null, a terminal) are still written: a read-only mount does not
+    // stop that.
+    if (read_only) {
+        MountAttributes all_read_only;
+        all_read_only.set = mount_read_only;
+        if (!set_mount_attributes("/", at_recursive, all_read_only)) return false;
+        MountAttributes writable;
+        writable.clear = mount_read_only;
+        // Refused only where the place was read-only for the grader too (a
+        // read-only mount inherited into a user namespace is locked).
+        for (const std::string& place : writable_) set_mount_attributes(place.c_str(), 0, writable);
     }
     // No set-user-ID program gains a user (root's programs: own_user.cpp).
     if (own_user_namespace && prctl(PR_SET_NO_NEW_PRIVS, 1, 0, 0, 0) != 0) return false;

@@ -6,12 +6,17 @@
 // output of the suite reads as empty (/dev/null bound over it), and the
 // directories holding other runs' outputs are empty and read-only (a
 // tmpfs over each), so a program cannot copy the answers it is graded
-// against. In the second, only loopback exists (brought up, for programs
-// that talk to themselves, as mpirun does): no network.
+// against. Every file but the scratch places (scratch_places.hpp) is
+// read-only there too, so a program cannot change the suite, the grader's
+// files or anyone's that its user may write. In the network namespace,
+// only loopback exists (brought up, for programs that talk to themselves,
+// as mpirun does): no network.
 //
 // Where the kernel refuses (a container without CAP_SYS_ADMIN, or whose
 // seccomp filter forbids unshare; unprivileged user namespaces turned
-// off), programs run without it, and the report says so.
+// off), programs run without it, and the report says so. A kernel before
+// Linux 5.12 cannot make a tree of mounts read-only (mount_setattr): the
+// rest holds, and the report says that too.
 
 #include <string>
 #include <vector>
@@ -20,6 +25,8 @@ namespace simcheck {
 
 // Whether namespaces can be made: a trial child could make them (asked once).
 bool can_isolate();
+// Whether files can be made read-only in them too (asked with can_isolate()).
+bool can_make_read_only();
 
 // Whether an isolated program also gets a user namespace of its own (this
 // process is not root). RLIMIT_NPROC is counted per user namespace: there
@@ -30,17 +37,20 @@ bool isolates_in_user_namespace();
 // fork: the child may not allocate.
 class HiddenPaths {
 public:
-    HiddenPaths() = default;
+    // Nothing hidden.
+    HiddenPaths();
     // Files and directories; anything else (gone, a device) is left alone.
     explicit HiddenPaths(const std::vector<std::string>& paths);
 
     // In a child between fork and exec (async-signal-safe calls only):
-    // enters new mount and network namespaces, hides the paths, and brings
+    // enters new mount and network namespaces, hides the paths, makes every
+    // file but the scratch places read-only (if `read_only`), and brings
     // loopback up. False if any step fails.
-    [[nodiscard]] bool isolate() const;
+    [[nodiscard]] bool isolate(bool read_only) const;
 
 private:
     std::vector<std::string> files_, directories_;
+    std::vector<std::string> writable_;  // scratch_places()
 };
 
 }  // namespace simcheck

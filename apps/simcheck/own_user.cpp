@@ -1,6 +1,7 @@
 #include "own_user.hpp"
 
 #include "process_list.hpp"
+#include "scratch_places.hpp"
 
 #include <grp.h>
 #include <linux/capability.h>
@@ -10,7 +11,6 @@
 #include <sys/syscall.h>
 #include <unistd.h>
 
-#include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <mutex>
@@ -120,16 +120,10 @@ void release_own_user(uid_t user) {
 
 int remove_files_of(uid_t user, const std::string& keep) {
     namespace fs = std::filesystem;
-    std::set<std::string> places{"/tmp", "/var/tmp", "/dev/shm"};
-    if (const char* tmpdir = std::getenv("TMPDIR"); tmpdir && *tmpdir) places.insert(tmpdir);
     struct stat keep_info {};
     const bool keeping = stat(keep.c_str(), &keep_info) == 0;
     int removed = 0;
-    std::set<std::pair<dev_t, ino_t>> seen;  // a place named twice (a link) is visited once
-    for (const std::string& place : places) {
-        struct stat place_info {};
-        if (stat(place.c_str(), &place_info) != 0 || !seen.insert({place_info.st_dev, place_info.st_ino}).second)
-            continue;
+    for (const std::string& place : scratch_places()) {
         std::error_code error;
         for (fs::directory_iterator entry(place, error), end; !error && entry != end; entry.increment(error)) {
             struct stat info {};

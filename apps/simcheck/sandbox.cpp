@@ -78,12 +78,12 @@ void set_limit(int resource, rlim_t value) {
 // `user`: the user of its own it runs as, or 0 to stay this process's.
 [[noreturn]] void start_child(char* const* argv, const char* directory, const char* stdin_path, int out, int err,
                               const SandboxLimits& limits, rlim_t tasks, uid_t user, int capability,
-                              const HiddenPaths* hidden) {
+                              const HiddenPaths* hidden, bool read_only) {
     setpgid(0, 0);
     dup2(err, 2);
     dup2(out, 1);
     const int in = open(stdin_path, O_RDONLY);
-    if (hidden && !hidden->isolate()) {
+    if (hidden && !hidden->isolate(read_only)) {
         constexpr char message[] = "simcheck grade: cannot isolate the program (namespaces)\n";
         [[maybe_unused]] const auto written = write(2, message, sizeof message - 1);
         _exit(127);
@@ -257,6 +257,8 @@ bool runs_programs_as_own_users() {
 
 bool runs_programs_isolated() { return can_isolate(); }
 
+bool runs_programs_read_only() { return can_make_read_only(); }
+
 void interrupt_runs(int signal) noexcept { interrupting_signal.store(signal); }
 
 int runs_interrupted() noexcept { return interrupting_signal.load(); }
@@ -303,6 +305,7 @@ SandboxRun run_sandboxed(const std::vector<std::string>& arguments, const std::s
     const int capability = user != 0 ? kept_capability() : 0;  // found before the fork
     static const HiddenPaths nothing_hidden;
     const HiddenPaths* hidden = runs_programs_isolated() ? (limits.hidden ? limits.hidden : &nothing_hidden) : nullptr;
+    const bool read_only = can_make_read_only();
     // A user of its own, or a user namespace of its own, holds the program's tasks alone.
     const bool counted_alone = user != 0 || (hidden && isolates_in_user_namespace());
     const rlim_t tasks =
@@ -317,7 +320,7 @@ SandboxRun run_sandboxed(const std::vector<std::string>& arguments, const std::s
         pid = fork();
         if (pid == 0) {
             start_child(argv.data(), directory.c_str(), stdin_path.c_str(), out_write.get(), err_write.get(), limits,
-                        tasks, user, capability, hidden);
+                        tasks, user, capability, hidden, read_only);
         }
         if (pid > 0) running_leaders.insert(pid);
     }

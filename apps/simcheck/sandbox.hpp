@@ -64,6 +64,9 @@ bool runs_programs_as_own_users();
 // Whether programs run isolated: namespaces of their own, the hidden paths
 // hidden and no network (isolation.hpp).
 bool runs_programs_isolated();
+// Whether, isolated, they may write nowhere but in the scratch places
+// (scratch_places.hpp): Linux 5.12 or later.
+bool runs_programs_read_only();
 
 // A signal that ends the grade (SIGINT, SIGTERM, SIGHUP): every run going
 // is stopped, its processes killed and its directory removed, and
