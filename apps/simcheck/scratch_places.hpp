@@ -1,7 +1,7 @@
 #pragma once
 // The places any program may expect to write besides its working
 // directory: /tmp, /var/tmp, /dev/shm and $TMPDIR (MPI's runtime keeps its
-// session files and shared memory there). An isolated program may write
+// files and shared memory there). An isolated program may write
 // nowhere else (isolation.hpp); a user of its own leaves nothing in them
 // (own_user.hpp).
 
