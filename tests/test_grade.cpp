@@ -500,17 +500,21 @@ int run_as_nobody_without_user_namespaces(char** command) {
     return WIFEXITED(status) ? WEXITSTATUS(status) : 125;
 }
 
-constexpr char without_mount_setattr_option[] = "--without-mount-setattr";
+constexpr char without_system_call_option[] = "--without-system-call";
 
-// test_grade --without-mount-setattr COMMAND...: runs COMMAND (as nobody,
-// run by root) where mount_setattr fails with ENOSYS, as on a kernel before
-// Linux 5.12 (a seccomp filter). The command's exit status, or 125.
-int run_without_mount_setattr(char** command) {
-#ifdef SYS_mount_setattr
-    if (geteuid() == 0 && !become_nobody()) return 125;
+// test_grade --without-system-call NAME COMMAND...: runs COMMAND (as nobody,
+// run by root) where the system call NAME (mount_setattr or
+// landlock_create_ruleset) fails with ENOSYS, as on a kernel that lacks it
+// (a seccomp filter). The command's exit status, or 125.
+int run_without_system_call(const std::string& name, char** command) {
+#if defined(SYS_mount_setattr) && defined(SYS_landlock_create_ruleset)
+    const long number = name == "mount_setattr"             ? SYS_mount_setattr
+                        : name == "landlock_create_ruleset" ? SYS_landlock_create_ruleset
+                                                            : -1;
+    if (number < 0 || (geteuid() == 0 && !become_nobody())) return 125;
     sock_filter filter[] = {
         BPF_STMT(BPF_LD | BPF_W | BPF_ABS, offsetof(seccomp_data, nr)),
-        BPF_JUMP(BPF_JMP | BPF_JEQ | BPF_K, SYS_mount_setattr, 0, 1),
+        BPF_JUMP(BPF_JMP | BPF_JEQ | BPF_K, static_cast<unsigned>(number), 0, 1),
         BPF_STMT(BPF_RET | BPF_K, SECCOMP_RET_ERRNO | ENOSYS),
         BPF_STMT(BPF_RET | BPF_K, SECCOMP_RET_ALLOW),
     };
@@ -519,7 +523,7 @@ int run_without_mount_setattr(char** command) {
         return 125;
     execv(command[0], command);
 #else
-    (void)command;
+    (void)name, (void)command;
 #endif
     return 125;
 }
@@ -561,7 +565,10 @@ fs::path writable_outside_scratch_places() {
 // cannot be made (root without CAP_SYS_ADMIN; nobody where user namespaces
 // cannot be made) the grader says so, and the program reads the answers,
 // writes and connects; where mount_setattr is missing, it says that the
-// program writes, and the rest holds.
+// program writes, and the rest holds. Its parent, the grader, is out of
+// its signals' reach: a user of its own's by user, a program run as the
+// grader's user by Landlock's signal scope (and, where Landlock is missing,
+// the grader says that it is not).
 void programs_cannot_read_the_answers() {
     const int listener = socket(AF_INET, SOCK_STREAM | SOCK_NONBLOCK | SOCK_CLOEXEC, 0);
     sockaddr_in address{};
@@ -590,16 +597,19 @@ void programs_cannot_read_the_answers() {
         "'/*.out 2>/dev/null | wc -c > \"$n.kept\"\n" + "if " + writes_outside +
         "; then echo yes; else echo no; fi > \"$n.outside\"\n" +
         "if echo x 2>/dev/null > mine && [ -s mine ]; then echo yes; else echo no; fi > \"$n.here\"\n" +
+        "if kill -0 $PPID 2>/dev/null; then echo yes; else echo no; fi > \"$n.signal\"\n" +
         "if bash -c 'echo hello > /dev/tcp/127.0.0.1/" + port +
         "' 2>/dev/null; then echo yes; else echo no; fi > \"$n.network\"\n" + "exec '" + simcli + "'\n";
     struct Mode {
         std::string name;
         std::vector<std::string> launcher;
         bool isolated, read_only;
+        bool signals_confined = true;
     };
     const bool user_namespaces = unprivileged_user_namespaces_work();
     if (!user_namespaces) std::printf("user namespaces cannot be made here: nobody's programs run not isolated\n");
     const std::string self = fs::read_symlink("/proc/self/exe").string();
+    const std::string user = geteuid() == 0 ? "nobody" : "this user";
     std::vector<Mode> modes;
     if (geteuid() == 0) {
         modes = {{"root", {}, true, true},
@@ -612,9 +622,12 @@ void programs_cannot_read_the_answers() {
     } else {
         modes = {{"this user", {}, user_namespaces, user_namespaces}};
     }
-#ifdef SYS_mount_setattr
-    modes.push_back({geteuid() == 0 ? "nobody without mount_setattr" : "this user without mount_setattr",
-                     {self, without_mount_setattr_option},
+#if defined(SYS_mount_setattr) && defined(SYS_landlock_create_ruleset)
+    modes.push_back(
+        {user + " without mount_setattr", {self, without_system_call_option, "mount_setattr"}, user_namespaces, false});
+    modes.push_back({user + " without Landlock",
+                     {self, without_system_call_option, "landlock_create_ruleset"},
+                     user_namespaces,
                      user_namespaces,
                      false});
 #endif
@@ -627,6 +640,10 @@ void programs_cannot_read_the_answers() {
         CHECK_EQ(g.result.status, 0);
         CHECK_EQ(g.json["isolated"].number, mode.isolated ? 1.0 : 0.0);
         CHECK_EQ(g.json["read_only"].number, mode.read_only ? 1.0 : 0.0);
+        CHECK_EQ(g.json["signals_confined"].number, mode.signals_confined ? 1.0 : 0.0);
+        const bool own_users = g.json["own_users"].number == 1.0;
+        CHECK_EQ(g.result.err.find("unable to confine the programs' signals") != std::string::npos,
+                 !mode.signals_confined && !own_users);
         CHECK_EQ(g.result.err.find("unable to make namespaces") != std::string::npos, !mode.isolated);
         CHECK_EQ(g.result.err.find("unable to make files read-only") != std::string::npos,
                  mode.isolated && !mode.read_only);
@@ -647,6 +664,9 @@ void programs_cannot_read_the_answers() {
                 fs::remove(written);
             }
             CHECK_EQ(first_line(base + ".here"), std::string("yes"));
+            // Its parent is the grader: a process of the grader's user, out of reach of a user of its own
+            // and of a confined program.
+            CHECK_EQ(first_line(base + ".signal"), std::string(mode.signals_confined || own_users ? "no" : "yes"));
             CHECK_EQ(first_line(base + ".network"), std::string(mode.isolated ? "no" : "yes"));
         }
         CHECK_EQ(runs, 4);
@@ -767,7 +787,8 @@ void bad_usage() {
 int main(int argc, char** argv) {
     if (argc > 2 && std::string(argv[1]) == without_user_namespaces_option)
         return run_as_nobody_without_user_namespaces(argv + 2);
-    if (argc > 2 && std::string(argv[1]) == without_mount_setattr_option) return run_without_mount_setattr(argv + 2);
+    if (argc > 3 && std::string(argv[1]) == without_system_call_option)
+        return run_without_system_call(argv[2], argv + 3);
     run_process::children_without_leak_checks();
     const int status = check::run(
         argc, argv, "test_grade",

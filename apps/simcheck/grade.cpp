@@ -510,11 +510,13 @@ void write_json(std::FILE* out, const Options& o, const std::vector<SceneCase>& 
         std::snprintf(text, sizeof text, "%.6f", seconds);
         return std::string(text);
     };
-    std::string json = "{\"program\": " + json_string(o.program_text) +
-                       ", \"suite\": " + json_string(o.suite.string()) + ", \"jobs\": " + std::to_string(o.jobs) +
-                       ", \"own_users\": " + (runs_programs_as_own_users() ? "true" : "false") +
-                       ", \"isolated\": " + (runs_programs_isolated() ? "true" : "false") + ", \"read_only\": " +
-                       (runs_programs_isolated() && runs_programs_read_only() ? "true" : "false") + ", \"scenes\": [";
+    std::string json =
+        "{\"program\": " + json_string(o.program_text) + ", \"suite\": " + json_string(o.suite.string()) +
+        ", \"jobs\": " + std::to_string(o.jobs) +
+        ", \"own_users\": " + (runs_programs_as_own_users() ? "true" : "false") +
+        ", \"isolated\": " + (runs_programs_isolated() ? "true" : "false") +
+        ", \"read_only\": " + (runs_programs_isolated() && runs_programs_read_only() ? "true" : "false") +
+        ", \"signals_confined\": " + (runs_programs_with_signals_confined() ? "true" : "false") + ", \"scenes\": [";
     for (std::size_t k = 0; k < rows.size(); ++k) {
         const Row& r = rows[k];
         json += k > 0 ? ",\n  " : "\n  ";
@@ -615,6 +617,11 @@ int grade_main(int argc, char** argv) {
                          "simcheck grade: warning: unable to make files read-only (mount_setattr needs Linux 5.12): "
                          "the programs can write wherever %s\n",
                          geteuid() == 0 ? "any user may" : "this user may");
+        }
+        if (!runs_programs_with_signals_confined() && !runs_programs_as_own_users()) {
+            std::fprintf(stderr,
+                         "simcheck grade: warning: unable to confine the programs' signals (Landlock's signal "
+                         "scope needs Linux 6.12): they can signal every process of this user\n");
         }
         std::vector<Row> rows(cases.size());
         std::atomic<std::size_t> next{0};

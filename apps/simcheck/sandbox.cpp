@@ -2,6 +2,7 @@
 
 #include "own_user.hpp"
 #include "process_list.hpp"
+#include "signal_scope.hpp"
 
 #include <dirent.h>
 #include <fcntl.h>
@@ -78,7 +79,7 @@ void set_limit(int resource, rlim_t value) {
 // `user`: the user of its own it runs as, or 0 to stay this process's.
 [[noreturn]] void start_child(char* const* argv, const char* directory, const char* stdin_path, int out, int err,
                               const SandboxLimits& limits, rlim_t tasks, uid_t user, int capability,
-                              const HiddenPaths* hidden, bool read_only) {
+                              const HiddenPaths* hidden, bool read_only, bool scope_signals) {
     setpgid(0, 0);
     dup2(err, 2);
     dup2(out, 1);
@@ -107,6 +108,11 @@ void set_limit(int resource, rlim_t value) {
     set_limit(RLIMIT_CPU, static_cast<rlim_t>(limits.seconds) + 2);
     if (user != 0 && !become_own_user(user, capability)) {
         constexpr char message[] = "simcheck grade: cannot run the program as a user of its own\n";
+        [[maybe_unused]] const auto written = write(2, message, sizeof message - 1);
+        _exit(127);
+    }
+    if (scope_signals && !confine_signals()) {
+        constexpr char message[] = "simcheck grade: cannot confine the program's signals (Landlock)\n";
         [[maybe_unused]] const auto written = write(2, message, sizeof message - 1);
         _exit(127);
     }
@@ -259,6 +265,8 @@ bool runs_programs_isolated() { return can_isolate(); }
 
 bool runs_programs_read_only() { return can_make_read_only(); }
 
+bool runs_programs_with_signals_confined() { return can_confine_signals(); }
+
 void interrupt_runs(int signal) noexcept { interrupting_signal.store(signal); }
 
 int runs_interrupted() noexcept { return interrupting_signal.load(); }
@@ -306,6 +314,7 @@ SandboxRun run_sandboxed(const std::vector<std::string>& arguments, const std::s
     static const HiddenPaths nothing_hidden;
     const HiddenPaths* hidden = runs_programs_isolated() ? (limits.hidden ? limits.hidden : &nothing_hidden) : nullptr;
     const bool read_only = can_make_read_only();
+    const bool scope_signals = can_confine_signals();
     // A user of its own, or a user namespace of its own, holds the program's tasks alone.
     const bool counted_alone = user != 0 || (hidden && isolates_in_user_namespace());
     const rlim_t tasks =
@@ -320,7 +329,7 @@ SandboxRun run_sandboxed(const std::vector<std::string>& arguments, const std::s
         pid = fork();
         if (pid == 0) {
             start_child(argv.data(), directory.c_str(), stdin_path.c_str(), out_write.get(), err_write.get(), limits,
-                        tasks, user, capability, hidden, read_only);
+                        tasks, user, capability, hidden, read_only, scope_signals);
         }
         if (pid > 0) running_leaders.insert(pid);
     }

@@ -6,7 +6,9 @@
 // adopted (simcheck is their subreaper, Linux's PR_SET_CHILD_SUBREAPER); with a
 // wall-clock limit, a cap on the bytes it writes to stdout, and setrlimit
 // limits on memory, processes, file sizes and core dumps. Standard input is
-// the scene file or /dev/null; nothing else is passed in.
+// the scene file or /dev/null; nothing else is passed in. Where the kernel
+// allows, it runs isolated (isolation.hpp) and may signal only its own
+// processes (signal_scope.hpp).
 //
 // Run by root, it runs each program as a user of its own (an unused user
 // id, free again once nothing of the run is left), keeping only the right
@@ -67,6 +69,9 @@ bool runs_programs_isolated();
 // Whether, isolated, they may write nowhere but in the scratch places
 // (scratch_places.hpp): Linux 5.12 or later.
 bool runs_programs_read_only();
+// Whether a program may signal only its own processes (signal_scope.hpp):
+// Linux 6.12 or later.
+bool runs_programs_with_signals_confined();
 
 // A signal that ends the grade (SIGINT, SIGTERM, SIGHUP): every run going
 // is stopped, its processes killed and its directory removed, and
