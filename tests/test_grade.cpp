@@ -27,6 +27,7 @@
 #include <unistd.h>
 
 #include <algorithm>
+#include <cerrno>
 #include <chrono>
 #include <cstddef>
 #include <cstdlib>
@@ -528,6 +529,26 @@ int run_without_system_call(const std::string& name, char** command) {
     return 125;
 }
 
+// Whether this kernel has mount_setattr (Linux 5.12): a call with no
+// attributes fails, but not with ENOSYS.
+bool kernel_has_mount_setattr() {
+#ifdef SYS_mount_setattr
+    return syscall(SYS_mount_setattr, -1, "", 0, nullptr, 0) == 0 || errno != ENOSYS;
+#else
+    return false;
+#endif
+}
+
+// Whether this kernel's Landlock scopes signals (its ABI 6, Linux 6.12).
+bool kernel_scopes_signals() {
+#ifdef SYS_landlock_create_ruleset
+    constexpr unsigned version = 1U << 0;  // LANDLOCK_CREATE_RULESET_VERSION
+    return syscall(SYS_landlock_create_ruleset, nullptr, 0, version) >= 6;
+#else
+    return false;
+#endif
+}
+
 // A directory that any user may write, outside the scratch places (/tmp,
 // /var/tmp, /dev/shm, $TMPDIR): beside this test or in $HOME. Empty where
 // every candidate lies in one.
@@ -631,6 +652,15 @@ void programs_cannot_read_the_answers() {
                      user_namespaces,
                      false});
 #endif
+    // What this kernel can do at all (Debian 12's own kernel, 6.1, has no signal scope).
+    const bool read_only_files = kernel_has_mount_setattr(), scoped_signals = kernel_scopes_signals();
+    if (!read_only_files) std::printf("no mount_setattr in this kernel: the programs' files are not read-only\n");
+    if (!scoped_signals)
+        std::printf("no Landlock signal scope in this kernel: the programs' signals are not confined\n");
+    for (Mode& mode : modes) {
+        mode.read_only = mode.read_only && read_only_files;
+        mode.signals_confined = mode.signals_confined && scoped_signals;
+    }
     for (const Mode& mode : modes) {
         check::Context context(mode.name);
         fs::remove_all(kept);
