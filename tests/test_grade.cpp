@@ -611,7 +611,7 @@ void programs_cannot_read_the_answers() {
     // whether it wrote outside the scratch places and in its working directory, and whether it reached the
     // listener; then it runs simcli, and conforms.
     const std::string writes_outside =
-        outside.empty() ? std::string("echo no") : "echo x 2>/dev/null > '" + outside.string() + "'/$$";
+        outside.empty() ? std::string("false") : "echo x 2>/dev/null > '" + outside.string() + "'/$$";
     const std::string body =
         "n='" + notes.string() + "'/$$\n" + "cat '" + small_suite().string() +
         "'/*.out 2>/dev/null | wc -c > \"$n.suite\"\n" + "cat '" + kept.string() +
