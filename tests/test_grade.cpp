@@ -35,6 +35,7 @@
 #include <fstream>
 #include <string>
 #include <thread>
+#include <utility>
 #include <vector>
 
 namespace {
@@ -501,30 +502,31 @@ int run_as_nobody_without_user_namespaces(char** command) {
     return WIFEXITED(status) ? WEXITSTATUS(status) : 125;
 }
 
-constexpr char without_system_call_option[] = "--without-system-call";
+constexpr char without_system_calls_option[] = "--without-system-calls";
 
-// test_grade --without-system-call NAME COMMAND...: runs COMMAND (as nobody,
-// run by root) where the system call NAME (mount_setattr or
-// landlock_create_ruleset) fails with ENOSYS, as on a kernel that lacks it
-// (a seccomp filter). The command's exit status, or 125.
-int run_without_system_call(const std::string& name, char** command) {
+// test_grade --without-system-calls NAMES COMMAND...: runs COMMAND (as
+// nobody, run by root) where the system calls NAMES (mount_setattr and/or
+// landlock_create_ruleset, with commas between) fail with ENOSYS, as on a
+// kernel that lacks them (a seccomp filter). The command's exit status, or
+// 125.
+int run_without_system_calls(const std::string& names, char** command) {
 #if defined(SYS_mount_setattr) && defined(SYS_landlock_create_ruleset)
-    const long number = name == "mount_setattr"             ? SYS_mount_setattr
-                        : name == "landlock_create_ruleset" ? SYS_landlock_create_ruleset
-                                                            : -1;
-    if (number < 0 || (geteuid() == 0 && !become_nobody())) return 125;
-    sock_filter filter[] = {
-        BPF_STMT(BPF_LD | BPF_W | BPF_ABS, offsetof(seccomp_data, nr)),
-        BPF_JUMP(BPF_JMP | BPF_JEQ | BPF_K, static_cast<unsigned>(number), 0, 1),
-        BPF_STMT(BPF_RET | BPF_K, SECCOMP_RET_ERRNO | ENOSYS),
-        BPF_STMT(BPF_RET | BPF_K, SECCOMP_RET_ALLOW),
-    };
-    const sock_fprog program{static_cast<unsigned short>(sizeof filter / sizeof filter[0]), filter};
+    std::vector<sock_filter> filter{BPF_STMT(BPF_LD | BPF_W | BPF_ABS, offsetof(seccomp_data, nr))};
+    const std::pair<std::string, long> calls[] = {{"mount_setattr", SYS_mount_setattr},
+                                                  {"landlock_create_ruleset", SYS_landlock_create_ruleset}};
+    for (const auto& [name, number] : calls) {
+        if (("," + names + ",").find("," + name + ",") == std::string::npos) continue;
+        filter.push_back(BPF_JUMP(BPF_JMP | BPF_JEQ | BPF_K, static_cast<unsigned>(number), 0, 1));
+        filter.push_back(BPF_STMT(BPF_RET | BPF_K, SECCOMP_RET_ERRNO | ENOSYS));
+    }
+    filter.push_back(BPF_STMT(BPF_RET | BPF_K, SECCOMP_RET_ALLOW));
+    if (filter.size() == 2 || (geteuid() == 0 && !become_nobody())) return 125;
+    const sock_fprog program{static_cast<unsigned short>(filter.size()), filter.data()};
     if (prctl(PR_SET_NO_NEW_PRIVS, 1, 0, 0, 0) != 0 || prctl(PR_SET_SECCOMP, SECCOMP_MODE_FILTER, &program) != 0)
         return 125;
     execv(command[0], command);
 #else
-    (void)name, (void)command;
+    (void)names, (void)command;
 #endif
     return 125;
 }
@@ -539,13 +541,14 @@ bool kernel_has_mount_setattr() {
 #endif
 }
 
-// Whether this kernel's Landlock scopes signals (its ABI 6, Linux 6.12).
-bool kernel_scopes_signals() {
+// This kernel's Landlock ABI: 3 (Linux 6.2) limits writes, 6 (6.12) scopes
+// signals; below 1, none.
+long kernel_landlock_abi() {
 #ifdef SYS_landlock_create_ruleset
     constexpr unsigned version = 1U << 0;  // LANDLOCK_CREATE_RULESET_VERSION
-    return syscall(SYS_landlock_create_ruleset, nullptr, 0, version) >= 6;
+    return syscall(SYS_landlock_create_ruleset, nullptr, 0, version);
 #else
-    return false;
+    return 0;
 #endif
 }
 
@@ -579,17 +582,18 @@ fs::path writable_outside_scratch_places() {
 
 // Where namespaces can be made, a program cannot read the answers it is
 // graded against (the suite's expected outputs, the outputs kept with
-// --outputs), cannot write outside the scratch places (a directory any
-// user may write, beside this test), and has no network: a TCP listener of
-// this test on 127.0.0.1 gets no connection. So with root's namespaces,
-// and for another user (nobody here) with a user namespace. Where they
-// cannot be made (root without CAP_SYS_ADMIN; nobody where user namespaces
-// cannot be made) the grader says so, and the program reads the answers,
-// writes and connects; where mount_setattr is missing, it says that the
-// program writes, and the rest holds. Its parent, the grader, is out of
-// its signals' reach: a user of its own's by user, a program run as the
-// grader's user by Landlock's signal scope (and, where Landlock is missing,
-// the grader says that it is not).
+// --outputs) and has no network: a TCP listener of this test on 127.0.0.1
+// gets no connection. So with root's namespaces, and for another user
+// (nobody here) with a user namespace. Where they cannot be made (root
+// without CAP_SYS_ADMIN; nobody where user namespaces cannot be made) the
+// grader says so, and the program reads the answers and connects. It
+// cannot write outside the scratch places (into a directory any user may
+// write, beside this test) where the namespace's mounts are read-only
+// (mount_setattr) or Landlock limits its writes, and with neither the
+// grader says so. Its parent, the grader, is out of its signals' reach: a
+// user of its own's by user, a program run as the grader's user by
+// Landlock's signal scope (and where that is missing, the grader says so).
+// Each of mount_setattr and Landlock is taken away by a seccomp filter.
 void programs_cannot_read_the_answers() {
     const int listener = socket(AF_INET, SOCK_STREAM | SOCK_NONBLOCK | SOCK_CLOEXEC, 0);
     sockaddr_in address{};
@@ -609,7 +613,8 @@ void programs_cannot_read_the_answers() {
             "no directory outside /tmp, /var/tmp, /dev/shm and $TMPDIR to write: read-only files not checked\n");
     // Each run notes, by its pid, how many bytes of the suite's answers and of the kept outputs it read,
     // whether it wrote outside the scratch places and in its working directory, and whether it reached the
-    // listener; then it runs simcli, and conforms.
+    // listener; then it runs simcli, its streams opened again by their names (/dev/stdout: a pipe that a user of
+    // its own may open), and conforms.
     const std::string writes_outside =
         outside.empty() ? std::string("false") : "echo x 2>/dev/null > '" + outside.string() + "'/$$";
     const std::string body =
@@ -620,12 +625,15 @@ void programs_cannot_read_the_answers() {
         "if echo x 2>/dev/null > mine && [ -s mine ]; then echo yes; else echo no; fi > \"$n.here\"\n" +
         "if kill -0 $PPID 2>/dev/null; then echo yes; else echo no; fi > \"$n.signal\"\n" +
         "if bash -c 'echo hello > /dev/tcp/127.0.0.1/" + port +
-        "' 2>/dev/null; then echo yes; else echo no; fi > \"$n.network\"\n" + "exec '" + simcli + "'\n";
+        "' 2>/dev/null; then echo yes; else echo no; fi > \"$n.network\"\n" + "exec '" + simcli +
+        "' < /dev/stdin > /dev/stdout 2> /dev/stderr\n";
+    // `mount_setattr`, `landlock`: whether the mode leaves these calls to the grader.
     struct Mode {
         std::string name;
         std::vector<std::string> launcher;
-        bool isolated, read_only;
-        bool signals_confined = true;
+        bool isolated;
+        bool mount_setattr = true, landlock = true;
+        bool read_only = false, signals_confined = false;  // expected, set below
     };
     const bool user_namespaces = unprivileged_user_namespaces_work();
     if (!user_namespaces) std::printf("user namespaces cannot be made here: nobody's programs run not isolated\n");
@@ -633,33 +641,34 @@ void programs_cannot_read_the_answers() {
     const std::string user = geteuid() == 0 ? "nobody" : "this user";
     std::vector<Mode> modes;
     if (geteuid() == 0) {
-        modes = {{"root", {}, true, true},
+        modes = {{"root", {}, true},
                  {"root without CAP_SYS_ADMIN",
                   {"/usr/bin/setpriv", "--inh-caps", "-all", "--bounding-set", "-sys_admin", "--"},
-                  false,
                   false},
-                 {"nobody", as_nobody, user_namespaces, user_namespaces},
-                 {"nobody without user namespaces", {self, without_user_namespaces_option}, false, false}};
+                 {"nobody", as_nobody, user_namespaces},
+                 {"nobody without user namespaces", {self, without_user_namespaces_option}, false}};
     } else {
-        modes = {{"this user", {}, user_namespaces, user_namespaces}};
+        modes = {{"this user", {}, user_namespaces}};
     }
 #if defined(SYS_mount_setattr) && defined(SYS_landlock_create_ruleset)
+    const auto without = [&](const std::string& names) {
+        return std::vector<std::string>{self, without_system_calls_option, names};
+    };
+    modes.push_back({user + " without mount_setattr", without("mount_setattr"), user_namespaces, false, true});
+    modes.push_back({user + " without Landlock", without("landlock_create_ruleset"), user_namespaces, true, false});
     modes.push_back(
-        {user + " without mount_setattr", {self, without_system_call_option, "mount_setattr"}, user_namespaces, false});
-    modes.push_back({user + " without Landlock",
-                     {self, without_system_call_option, "landlock_create_ruleset"},
-                     user_namespaces,
-                     user_namespaces,
-                     false});
+        {user + " without either", without("mount_setattr,landlock_create_ruleset"), user_namespaces, false, false});
 #endif
-    // What this kernel can do at all (Debian 12's own kernel, 6.1, has no signal scope).
-    const bool read_only_files = kernel_has_mount_setattr(), scoped_signals = kernel_scopes_signals();
-    if (!read_only_files) std::printf("no mount_setattr in this kernel: the programs' files are not read-only\n");
-    if (!scoped_signals)
-        std::printf("no Landlock signal scope in this kernel: the programs' signals are not confined\n");
+    // What this kernel can do at all (Debian 12's own kernel, 6.1, has Landlock's ABI 2).
+    const bool kernel_mount_setattr = kernel_has_mount_setattr();
+    const long landlock_abi = kernel_landlock_abi();
+    if (!kernel_mount_setattr) std::printf("no mount_setattr in this kernel: no read-only mounts checked\n");
+    if (landlock_abi < 3) std::printf("Landlock ABI %ld here: its limit on writes not checked\n", landlock_abi);
+    if (landlock_abi < 6) std::printf("Landlock ABI %ld here: its signal scope not checked\n", landlock_abi);
     for (Mode& mode : modes) {
-        mode.read_only = mode.read_only && read_only_files;
-        mode.signals_confined = mode.signals_confined && scoped_signals;
+        mode.read_only =
+            (mode.isolated && mode.mount_setattr && kernel_mount_setattr) || (mode.landlock && landlock_abi >= 3);
+        mode.signals_confined = mode.landlock && landlock_abi >= 6;
     }
     for (const Mode& mode : modes) {
         check::Context context(mode.name);
@@ -675,8 +684,7 @@ void programs_cannot_read_the_answers() {
         CHECK_EQ(g.result.err.find("unable to confine the programs' signals") != std::string::npos,
                  !mode.signals_confined && !own_users);
         CHECK_EQ(g.result.err.find("unable to make namespaces") != std::string::npos, !mode.isolated);
-        CHECK_EQ(g.result.err.find("unable to make files read-only") != std::string::npos,
-                 mode.isolated && !mode.read_only);
+        CHECK_EQ(g.result.err.find("unable to make files read-only") != std::string::npos, !mode.read_only);
         int runs = 0, read_kept = 0;
         for (const fs::directory_entry& file : fs::directory_iterator(notes)) {
             if (file.path().extension() != ".suite") continue;
@@ -817,8 +825,8 @@ void bad_usage() {
 int main(int argc, char** argv) {
     if (argc > 2 && std::string(argv[1]) == without_user_namespaces_option)
         return run_as_nobody_without_user_namespaces(argv + 2);
-    if (argc > 3 && std::string(argv[1]) == without_system_call_option)
-        return run_without_system_call(argv[2], argv + 3);
+    if (argc > 3 && std::string(argv[1]) == without_system_calls_option)
+        return run_without_system_calls(argv[2], argv + 3);
     run_process::children_without_leak_checks();
     const int status = check::run(
         argc, argv, "test_grade",

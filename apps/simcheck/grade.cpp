@@ -510,13 +510,13 @@ void write_json(std::FILE* out, const Options& o, const std::vector<SceneCase>& 
         std::snprintf(text, sizeof text, "%.6f", seconds);
         return std::string(text);
     };
-    std::string json =
-        "{\"program\": " + json_string(o.program_text) + ", \"suite\": " + json_string(o.suite.string()) +
-        ", \"jobs\": " + std::to_string(o.jobs) +
-        ", \"own_users\": " + (runs_programs_as_own_users() ? "true" : "false") +
-        ", \"isolated\": " + (runs_programs_isolated() ? "true" : "false") +
-        ", \"read_only\": " + (runs_programs_isolated() && runs_programs_read_only() ? "true" : "false") +
-        ", \"signals_confined\": " + (runs_programs_with_signals_confined() ? "true" : "false") + ", \"scenes\": [";
+    std::string json = "{\"program\": " + json_string(o.program_text) +
+                       ", \"suite\": " + json_string(o.suite.string()) + ", \"jobs\": " + std::to_string(o.jobs) +
+                       ", \"own_users\": " + (runs_programs_as_own_users() ? "true" : "false") +
+                       ", \"isolated\": " + (runs_programs_isolated() ? "true" : "false") +
+                       ", \"read_only\": " + (runs_programs_read_only() ? "true" : "false") +
+                       ", \"signals_confined\": " + (runs_programs_with_signals_confined() ? "true" : "false") +
+                       ", \"scenes\": [";
     for (std::size_t k = 0; k < rows.size(); ++k) {
         const Row& r = rows[k];
         json += k > 0 ? ",\n  " : "\n  ";
@@ -612,10 +612,11 @@ int grade_main(int argc, char** argv) {
                          "expected outputs and reach the network\n",
                          geteuid() == 0 ? "run by root without CAP_SYS_ADMIN, or unshare refused"
                                         : "user namespaces turned off, or unshare refused");
-        } else if (!runs_programs_read_only()) {
+        }
+        if (!runs_programs_read_only()) {
             std::fprintf(stderr,
-                         "simcheck grade: warning: unable to make files read-only (mount_setattr needs Linux 5.12): "
-                         "the programs can write wherever %s\n",
+                         "simcheck grade: warning: unable to make files read-only (Landlock needs Linux 6.2, "
+                         "mount_setattr in namespaces 5.12): the programs can write wherever %s\n",
                          geteuid() == 0 ? "any user may" : "this user may");
         }
         if (!runs_programs_with_signals_confined() && !runs_programs_as_own_users()) {

@@ -1,8 +1,8 @@
 #include "sandbox.hpp"
 
+#include "landlock_domain.hpp"
 #include "own_user.hpp"
 #include "process_list.hpp"
-#include "signal_scope.hpp"
 
 #include <dirent.h>
 #include <fcntl.h>
@@ -79,7 +79,7 @@ void set_limit(int resource, rlim_t value) {
 // `user`: the user of its own it runs as, or 0 to stay this process's.
 [[noreturn]] void start_child(char* const* argv, const char* directory, const char* stdin_path, int out, int err,
                               const SandboxLimits& limits, rlim_t tasks, uid_t user, int capability,
-                              const HiddenPaths* hidden, bool read_only, bool scope_signals) {
+                              const HiddenPaths* hidden, bool read_only, const LandlockDomain& domain) {
     setpgid(0, 0);
     dup2(err, 2);
     dup2(out, 1);
@@ -111,8 +111,8 @@ void set_limit(int resource, rlim_t value) {
         [[maybe_unused]] const auto written = write(2, message, sizeof message - 1);
         _exit(127);
     }
-    if (scope_signals && !confine_signals()) {
-        constexpr char message[] = "simcheck grade: cannot confine the program's signals (Landlock)\n";
+    if (!domain.enter()) {
+        constexpr char message[] = "simcheck grade: cannot enter the program's Landlock domain\n";
         [[maybe_unused]] const auto written = write(2, message, sizeof message - 1);
         _exit(127);
     }
@@ -263,9 +263,11 @@ bool runs_programs_as_own_users() {
 
 bool runs_programs_isolated() { return can_isolate(); }
 
-bool runs_programs_read_only() { return can_make_read_only(); }
+bool runs_programs_read_only() {
+    return (runs_programs_isolated() && can_make_read_only()) || landlock_limits_writes();
+}
 
-bool runs_programs_with_signals_confined() { return can_confine_signals(); }
+bool runs_programs_with_signals_confined() { return landlock_scopes_signals(); }
 
 void interrupt_runs(int signal) noexcept { interrupting_signal.store(signal); }
 
@@ -310,11 +312,16 @@ SandboxRun run_sandboxed(const std::vector<std::string>& arguments, const std::s
     if (user != 0 && chown(directory.c_str(), user, user) != 0)
         throw std::runtime_error("cannot give the working directory to the program's user: " +
                                  std::string(std::strerror(errno)));
+    // Its stdout and stderr too: opening /dev/stdout (a shell's `> /dev/stdout`)
+    // opens the pipe again, as its user, which a pipe of root's (mode 0600) refuses.
+    if (user != 0 && (fchown(out_write.get(), user, user) != 0 || fchown(err_write.get(), user, user) != 0))
+        throw std::runtime_error("cannot give the output pipes to the program's user: " +
+                                 std::string(std::strerror(errno)));
     const int capability = user != 0 ? kept_capability() : 0;  // found before the fork
     static const HiddenPaths nothing_hidden;
     const HiddenPaths* hidden = runs_programs_isolated() ? (limits.hidden ? limits.hidden : &nothing_hidden) : nullptr;
     const bool read_only = can_make_read_only();
-    const bool scope_signals = can_confine_signals();
+    static const LandlockDomain domain;  // asks the kernel what Landlock can do, before any fork
     // A user of its own, or a user namespace of its own, holds the program's tasks alone.
     const bool counted_alone = user != 0 || (hidden && isolates_in_user_namespace());
     const rlim_t tasks =
@@ -329,7 +336,7 @@ SandboxRun run_sandboxed(const std::vector<std::string>& arguments, const std::s
         pid = fork();
         if (pid == 0) {
             start_child(argv.data(), directory.c_str(), stdin_path.c_str(), out_write.get(), err_write.get(), limits,
-                        tasks, user, capability, hidden, read_only, scope_signals);
+                        tasks, user, capability, hidden, read_only, domain);
         }
         if (pid > 0) running_leaders.insert(pid);
     }

@@ -7,8 +7,9 @@
 // wall-clock limit, a cap on the bytes it writes to stdout, and setrlimit
 // limits on memory, processes, file sizes and core dumps. Standard input is
 // the scene file or /dev/null; nothing else is passed in. Where the kernel
-// allows, it runs isolated (isolation.hpp) and may signal only its own
-// processes (signal_scope.hpp).
+// allows, it runs isolated (isolation.hpp), and in a Landlock domain
+// (landlock_domain.hpp) that may signal only its own processes and write
+// only in the scratch places.
 //
 // Run by root, it runs each program as a user of its own (an unused user
 // id, free again once nothing of the run is left), keeping only the right
@@ -66,10 +67,11 @@ bool runs_programs_as_own_users();
 // Whether programs run isolated: namespaces of their own, the hidden paths
 // hidden and no network (isolation.hpp).
 bool runs_programs_isolated();
-// Whether, isolated, they may write nowhere but in the scratch places
-// (scratch_places.hpp): Linux 5.12 or later.
+// Whether they may write nowhere but in the scratch places
+// (scratch_places.hpp): by Landlock (Linux 6.2), or isolated by read-only
+// mounts (Linux 5.12).
 bool runs_programs_read_only();
-// Whether a program may signal only its own processes (signal_scope.hpp):
+// Whether a program may signal only its own processes (landlock_domain.hpp):
 // Linux 6.12 or later.
 bool runs_programs_with_signals_confined();
 
