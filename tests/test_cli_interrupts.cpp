@@ -452,19 +452,27 @@ void second_signal_stops_at_once() {
 }
 
 void progress_line() {
-    // About 3 s of work; the line appears after ~2 s, only when forced off a terminal.
+    // Seconds of work; the line comes at the pace asked for, only when forced off a terminal.
     const std::string scene = "4000 800 1 100000 perf\n";
-    const Result forced = simcli_run({"--progress", "-t", "1"}, scene, {SIGINT, 3000});
-    CHECK(forced.err.find("simcli: step ") == 0);
-    CHECK(forced.err.find(" of 100000 (") != std::string::npos);
-    CHECK(forced.err.find(" steps/s, about ") != std::string::npos);
-    CHECK(forced.out.find("0 0 ") == 0);  // nothing of it on stdout
+    const Result paced = simcli_run({"--progress-every", "0.2", "-t", "1"}, scene, {SIGINT, 900});
+    CHECK(paced.err.find("simcli: step ") == 0);
+    CHECK(paced.err.find(" of 100000 (") != std::string::npos);
+    CHECK(paced.err.find(" steps/s, about ") != std::string::npos);
+    // Lines at about 0.2, 0.4, 0.6 and 0.8 s of its run: more than one, as plain lines.
+    const auto lines = std::count(paced.err.begin(), paced.err.end(), '\n');
+    CHECK(lines >= 2 && lines <= 6);
+    CHECK(paced.out.find("0 0 ") == 0);  // nothing of it on stdout
+    // The default pace: nothing before about two seconds, then a line.
+    const Result early = simcli_run({"--progress", "-t", "1"}, scene, {SIGINT, 1000});
+    CHECK(early.err.find("simcli: step ") == std::string::npos);
+    CHECK(early.err.find("simcli: interrupted after step ") == 0);
     // A resting disk for 2^63 - 1 steps shows its (very long) way, without overflow.
-    const Result endless = simcli_run({"--progress"}, "1 20 1 9223372036854775807 perf\n0 5 5 0 0\n", {SIGINT, 3000});
+    const Result endless =
+        simcli_run({"--progress-every", "0.2"}, "1 20 1 9223372036854775807 perf\n0 5 5 0 0\n", {SIGINT, 700});
     CHECK_EQ(endless.status, 130);
     CHECK(endless.err.find("simcli: step ") == 0);
     CHECK(endless.err.find(" years left") != std::string::npos);
-    const Result automatic = simcli_run({"-t", "1"}, scene, {SIGINT, 3000});
+    const Result automatic = simcli_run({"-t", "1"}, scene, {SIGINT, 2500});
     CHECK(automatic.err.find("simcli: step ") == std::string::npos);  // stderr is a file here
     CHECK(automatic.err.find("simcli: interrupted after step ") == 0);
 }
@@ -480,6 +488,10 @@ void bad_usage() {
     };
     rejected({"--checkpoint-every", "5"}, "--checkpoint-every K needs --checkpoint FILE");
     rejected({"--progress", "--quiet"}, "contradict");
+    rejected({"--progress-every", "5", "--quiet"}, "contradict");
+    for (const char* pace : {"0", "-1", "nan", "1e9", "2s", ""}) {
+        rejected({"--progress-every", pace}, "--progress-every: expected seconds from 0.001 to 3.2e7");
+    }
     rejected({"--resume", dir / "none", "scene.in"}, "takes no scene file");
     rejected({"--resume", dir / "none", "--engine", "exact"}, "come from the checkpoint");
     rejected({"--resume", dir / "none"}, "cannot open the checkpoint");

@@ -50,6 +50,8 @@ Simulates N hard disks bouncing elastically in a square box, in discrete steps.
                                    and so do --trajectory and --observables
       --progress / --quiet         force / silence the progress line on stderr (default:
                                    on a terminal, for runs longer than about two seconds)
+      --progress-every SECONDS       a progress line every SECONDS, the first after SECONDS
+                                   (a batch job's log; default 5 off a terminal)
       --animate FILE.html          also write a self-contained page that plays the run
       --animate-every K            one frame every K steps (default: automatic, the page
                                    under about 50 MB); with --engine exact also 0.5, 0.25,
@@ -104,6 +106,7 @@ enum LongOnly {
     opt_checkpoint_every,
     opt_resume,
     opt_progress,
+    opt_progress_every,
     opt_quiet,
     opt_animate,
     opt_animate_every,
@@ -132,6 +135,17 @@ double parse_animate_every(std::string_view text) {
             "--animate-every: expected a whole number of steps, or 1/k of a step (0.5, 0.25, 0.1, ...), "
             "found \"" +
             std::string(text) + "\"");
+    }
+    return value;
+}
+
+// --progress-every: a time in seconds, from a millisecond to a year.
+double parse_progress_every(std::string_view text) {
+    double value = 0.0;
+    const auto [end, error] = std::from_chars(text.data(), text.data() + text.size(), value);
+    const bool number = !text.empty() && error == std::errc{} && end == text.data() + text.size();
+    if (!number || !(value >= 0.001 && value <= 3.2e7)) {
+        throw BadInput("--progress-every: expected seconds from 0.001 to 3.2e7, found \"" + std::string(text) + "\"");
     }
     return value;
 }
@@ -165,6 +179,8 @@ void check_combinations(CliOptions& options, const Given& given) {
     options.stepped.pair_search =
         options.stepped.grid_cells ? PairSearch::grid : given.pair_search.value_or(PairSearch::automatic);
     if (given.progress && given.quiet) throw BadInput("--progress and --quiet contradict each other");
+    if (options.progress_every && given.quiet) throw BadInput("--progress-every and --quiet contradict each other");
+    if (options.progress_every) options.progress = ProgressChoice::forced;
     if (options.checkpoint_every && !options.checkpoint_path) {
         throw BadInput("--checkpoint-every K needs --checkpoint FILE");
     }
@@ -225,6 +241,7 @@ std::optional<CliOptions> parse_arguments(int argc, char** argv) {
                                           {"checkpoint-every", required_argument, nullptr, opt_checkpoint_every},
                                           {"resume", required_argument, nullptr, opt_resume},
                                           {"progress", no_argument, nullptr, opt_progress},
+                                          {"progress-every", required_argument, nullptr, opt_progress_every},
                                           {"quiet", no_argument, nullptr, opt_quiet},
                                           {"animate", required_argument, nullptr, opt_animate},
                                           {"animate-every", required_argument, nullptr, opt_animate_every},
@@ -288,6 +305,7 @@ std::optional<CliOptions> parse_arguments(int argc, char** argv) {
             given.progress = true;
             options.progress = ProgressChoice::forced;
             break;
+        case opt_progress_every: options.progress_every = parse_progress_every(value); break;
         case opt_quiet:
             given.quiet = true;
             options.progress = ProgressChoice::silenced;

@@ -37,6 +37,7 @@ struct CliOptions {
     std::optional<std::int64_t> checkpoint_every;
     std::optional<std::string> resume_path;
     ProgressChoice progress = ProgressChoice::automatic;
+    std::optional<double> progress_every;  // seconds between lines; empty: the line's own pace
     std::optional<AnimationRequest> animation;
     std::optional<std::string> snapshot_path;
     std::optional<std::int64_t> snapshot_step;  // empty: the last step

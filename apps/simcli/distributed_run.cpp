@@ -352,7 +352,7 @@ private:
         const auto start = std::chrono::steady_clock::now();
         {
             std::optional<ProgressLine> progress;
-            if (on_root()) progress.emplace(options_.progress, first_step, settings.steps);
+            if (on_root()) progress.emplace(options_.progress, first_step, settings.steps, options_.progress_every);
             for (std::int64_t step = first_step; step < settings.steps;) {
                 try {
                     engine.step();

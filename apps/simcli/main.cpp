@@ -170,7 +170,7 @@ RunStats write_run(E& engine, const RunSettings& settings, const CliOptions& opt
     const bool print = settings.mode == OutputMode::print;
     const auto start = std::chrono::steady_clock::now();
     {
-        ProgressLine progress(options.progress, first_step, settings.steps);
+        ProgressLine progress(options.progress, first_step, settings.steps, options.progress_every);
         catch_interrupts();
         for (std::int64_t step = first_step; step < settings.steps;) {
             engine.step();

@@ -33,8 +33,11 @@ std::string duration_text(double seconds) {
 
 }  // namespace
 
-ProgressLine::ProgressLine(ProgressChoice choice, std::int64_t first_step, std::int64_t last_step)
+ProgressLine::ProgressLine(ProgressChoice choice, std::int64_t first_step, std::int64_t last_step,
+                           std::optional<double> every)
     : on_terminal_(isatty(STDERR_FILENO) != 0),
+      first_after_seconds_(every.value_or(quiet_start_seconds)),
+      interval_seconds_(every.value_or(on_terminal_ ? terminal_interval_seconds : plain_interval_seconds)),
       first_step_(first_step),
       last_step_(last_step),
       start_(Clock::now()),
@@ -52,10 +55,10 @@ void ProgressLine::redraw(std::int64_t step) {
     const double since_drawn = std::chrono::duration<double>(now - last_drawn_).count();
     const double done = static_cast<double>(step - first_step_);
     const double rate = elapsed > 0.0 ? done / elapsed : 0.0;
-    // Read the clock again after about a tenth of the drawing interval.
-    countdown_ = std::clamp<std::int64_t>(static_cast<std::int64_t>(rate * 0.025), 1, 1 << 20);
-    const double interval = on_terminal_ ? terminal_interval_seconds : plain_interval_seconds;
-    if (elapsed < quiet_start_seconds || (shown_ && since_drawn < interval)) return;
+    // Read the clock again after about a tenth of the shortest drawing interval.
+    countdown_ = std::clamp<std::int64_t>(
+        static_cast<std::int64_t>(rate * 0.1 * std::min(interval_seconds_, terminal_interval_seconds)), 1, 1 << 20);
+    if (elapsed < first_after_seconds_ || (shown_ && since_drawn < interval_seconds_)) return;
     last_drawn_ = now;
     shown_ = true;
     const double total = static_cast<double>(last_step_ - first_step_);
