@@ -60,7 +60,9 @@ Run by root, each program runs as a user of its own (an unused user id that
 may read every file but write only in its directory and where anyone may).
 Where the kernel lets it make namespaces (root's, or a user namespace for
 anyone else), each runs without network and with the suite's expected
-outputs and the other outputs hidden (docs/checking.md).
+outputs and the other outputs hidden. Each may write only in /tmp, /var/tmp,
+/dev/shm and $TMPDIR (its directory is there), and signal only its own
+processes, where the kernel has the means (docs/checking.md).
 Reports:
       --json FILE        {"program", "scenes": [{"scene", "verdict", "step", ...}]}
       --markdown FILE    a table and the details, for pasting
