@@ -453,11 +453,20 @@ int main(int argc, char** argv) {
                           {"random scenes and options", random_scenes_and_options},
                           {"help and version", help_and_version},
                           {"bad usage", bad_usage},
-                          {"bad input", bad_input},
+                          // Their error paths end the program early: with leak checks, as the rest are not.
+                          {"bad input",
+                           [] {
+                               const run_process::ChildrenWithLeakChecks leak_checks;
+                               bad_input();
+                           }},
                           {"outputs are files of their own", outputs_are_files_of_their_own},
                           {"exact engine", exact_engine},
                           {"stats", stats},
-                          {"write failures", write_failures},
+                          {"write failures",
+                           [] {
+                               const run_process::ChildrenWithLeakChecks leak_checks;
+                               write_failures();
+                           }},
 #ifdef SIMCLI_WITHOUT_MPI
                           {"several ranks without MPI", several_ranks_without_mpi},
 #endif

@@ -32,6 +32,30 @@ inline void children_without_leak_checks() {
 #endif
 }
 
+// For its lifetime, the programs this test starts run with LeakSanitizer
+// again (after children_without_leak_checks()): for a run or two that must
+// show the programs' own leaks at their exit.
+class ChildrenWithLeakChecks {
+public:
+    ChildrenWithLeakChecks() {
+#if defined(__SANITIZE_ADDRESS__)
+        const char* options = std::getenv("ASAN_OPTIONS");
+        saved_ = options ? options : "";
+        setenv("ASAN_OPTIONS", (saved_.empty() ? std::string() : saved_ + ":").append("detect_leaks=1").c_str(), 1);
+#endif
+    }
+    ~ChildrenWithLeakChecks() {
+#if defined(__SANITIZE_ADDRESS__)
+        setenv("ASAN_OPTIONS", saved_.c_str(), 1);
+#endif
+    }
+    ChildrenWithLeakChecks(const ChildrenWithLeakChecks&) = delete;
+    ChildrenWithLeakChecks& operator=(const ChildrenWithLeakChecks&) = delete;
+
+private:
+    [[maybe_unused]] std::string saved_;
+};
+
 struct Result {
     int status = -1;  // exit status, or 128 + signal
     std::string out;
