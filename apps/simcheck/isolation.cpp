@@ -89,8 +89,9 @@ bool set_mount_attributes(const char* path, unsigned flags, const MountAttribute
 
 // Whether a child can isolate itself, with or without read-only files.
 bool trial_isolates(bool read_only) {
+    const HiddenPaths nothing_hidden;  // made before the fork: it allocates
     const pid_t trial = fork();
-    if (trial == 0) _exit(HiddenPaths().isolate(read_only) ? 0 : 1);
+    if (trial == 0) _exit(nothing_hidden.isolate(read_only) ? 0 : 1);
     int status = 0;
     return trial > 0 && waitpid(trial, &status, 0) == trial && WIFEXITED(status) && WEXITSTATUS(status) == 0;
 }

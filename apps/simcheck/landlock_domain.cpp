@@ -65,13 +65,13 @@ bool landlock_scopes_signals() { return landlock_abi() >= first_abi_with_scopes;
 
 bool landlock_limits_writes() { return landlock_abi() >= first_abi_with_truncate; }
 
-LandlockDomain::LandlockDomain() : writable_(scratch_places()) {}
+LandlockDomain::LandlockDomain() : writable_(scratch_places()), abi_(landlock_abi()) {}
 
 bool LandlockDomain::enter() const {
 #if defined(SYS_landlock_create_ruleset) && defined(SYS_landlock_add_rule) && defined(SYS_landlock_restrict_self)
     RulesetAttributes attributes;
-    if (landlock_limits_writes()) attributes.handled_access_fs = all_writes;
-    if (landlock_scopes_signals()) attributes.scoped = scope_signal | scope_abstract_unix_socket;
+    if (abi_ >= first_abi_with_truncate) attributes.handled_access_fs = all_writes;
+    if (abi_ >= first_abi_with_scopes) attributes.scoped = scope_signal | scope_abstract_unix_socket;
     if (attributes.handled_access_fs == 0 && attributes.scoped == 0) return true;
     const int ruleset = static_cast<int>(syscall(SYS_landlock_create_ruleset, &attributes, sizeof attributes, 0));
     if (ruleset < 0) return false;

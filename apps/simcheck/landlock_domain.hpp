@@ -26,8 +26,8 @@ bool landlock_limits_writes();
 
 class LandlockDomain {
 public:
-    // The scratch places found now: made before any fork, as the child may
-    // not allocate.
+    // The scratch places found now, and what this kernel's Landlock can do:
+    // asked before any fork, as the child may not allocate or lock.
     LandlockDomain();
 
     // In a child between fork and exec (async-signal-safe calls only), last
@@ -37,6 +37,7 @@ public:
 
 private:
     std::vector<std::string> writable_;
+    long abi_;  // Landlock's ABI version, below 1 without it
 };
 
 }  // namespace simcheck

@@ -321,7 +321,7 @@ SandboxRun run_sandboxed(const std::vector<std::string>& arguments, const std::s
     static const HiddenPaths nothing_hidden;
     const HiddenPaths* hidden = runs_programs_isolated() ? (limits.hidden ? limits.hidden : &nothing_hidden) : nullptr;
     const bool read_only = can_make_read_only();
-    static const LandlockDomain domain;  // asks the kernel what Landlock can do, before any fork
+    static const LandlockDomain domain;
     // A user of its own, or a user namespace of its own, holds the program's tasks alone.
     const bool counted_alone = user != 0 || (hidden && isolates_in_user_namespace());
     const rlim_t tasks =
