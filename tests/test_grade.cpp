@@ -627,6 +627,8 @@ void programs_cannot_read_the_answers() {
         "'/*.out 2>/dev/null | wc -c > \"$n.kept\"\n" + "if " + writes_outside +
         "; then echo yes; else echo no; fi > \"$n.outside\"\n" +
         "if echo x 2>/dev/null > mine && [ -s mine ]; then echo yes; else echo no; fi > \"$n.here\"\n" +
+        "if echo x 2>/dev/null > '" + small_suite().string() +
+        "'/intruder-$$; then echo yes; else echo no; fi > \"$n.into_suite\"\n" +
         "if kill -0 $PPID 2>/dev/null; then echo yes; else echo no; fi > \"$n.signal\"\n" +
         "if bash -c 'echo hello > /dev/tcp/127.0.0.1/" + port +
         "' 2>/dev/null; then echo yes; else echo no; fi > \"$n.network\"\n" + "exec '" + simcli +
@@ -638,6 +640,7 @@ void programs_cannot_read_the_answers() {
         bool isolated;
         bool mount_setattr = true, landlock = true;
         bool read_only = false, signals_confined = false;  // expected, set below
+        bool suite_read_only = false;                      // the suite, in /tmp here: by the namespace's mounts alone
     };
     const bool user_namespaces = unprivileged_user_namespaces_work();
     if (!user_namespaces) std::printf("user namespaces cannot be made here: nobody's programs run not isolated\n");
@@ -673,7 +676,10 @@ void programs_cannot_read_the_answers() {
         mode.read_only =
             (mode.isolated && mode.mount_setattr && kernel_mount_setattr) || (mode.landlock && landlock_abi >= 3);
         mode.signals_confined = mode.landlock && landlock_abi >= 6;
+        mode.suite_read_only = mode.isolated && mode.mount_setattr && kernel_mount_setattr;
     }
+    // The suite lies in /tmp, a scratch place; any user may write into it here but where it is kept read-only.
+    fs::permissions(small_suite(), fs::perms::all | fs::perms::sticky_bit);
     for (const Mode& mode : modes) {
         check::Context context(mode.name);
         fs::remove_all(kept);
@@ -706,6 +712,10 @@ void programs_cannot_read_the_answers() {
                 fs::remove(written);
             }
             CHECK_EQ(first_line(base + ".here"), std::string("yes"));
+            const fs::path intruder = small_suite() / ("intruder-" + file.path().stem().string());
+            CHECK_EQ(first_line(base + ".into_suite"), std::string(mode.suite_read_only ? "no" : "yes"));
+            CHECK_EQ(fs::exists(intruder), !mode.suite_read_only);
+            fs::remove(intruder);
             // Its parent is the grader: a process of the grader's user, out of reach of a user of its own
             // and of a confined program.
             CHECK_EQ(first_line(base + ".signal"), std::string(mode.signals_confined || own_users ? "no" : "yes"));
@@ -717,6 +727,8 @@ void programs_cannot_read_the_answers() {
         CHECK_EQ(connections_made(listener), mode.isolated ? 0 : 4);
     }
     close(listener);
+    fs::permissions(small_suite(), fs::perms::owner_all | fs::perms::group_read | fs::perms::group_exec |
+                                       fs::perms::others_read | fs::perms::others_exec);
     if (!outside.empty()) fs::remove_all(outside);
 }
 

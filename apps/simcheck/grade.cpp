@@ -607,7 +607,8 @@ int grade_main(int argc, char** argv) {
         if (!o.outputs_dir.empty() && !lies_within(o.suite, o.outputs_dir) &&
             !lies_within(o.program.front(), o.outputs_dir) && !lies_within(work.parent_path(), o.outputs_dir))
             hidden.push_back(o.outputs_dir);
-        o.hidden = HiddenPaths(hidden);
+        // The suite stays read-only where it lies in /tmp: the next grade reads it.
+        o.hidden = HiddenPaths(hidden, {o.suite.string()});
         if (!runs_programs_isolated()) {
             std::fprintf(stderr,
                          "simcheck grade: warning: unable to make namespaces (%s): the programs can read the "

@@ -118,7 +118,12 @@ bool can_make_read_only() { return support().read_only; }
 
 HiddenPaths::HiddenPaths() : writable_(scratch_places()) {}
 
-HiddenPaths::HiddenPaths(const std::vector<std::string>& paths) : writable_(scratch_places()) {
+HiddenPaths::HiddenPaths(const std::vector<std::string>& paths, const std::vector<std::string>& read_only_directories)
+    : writable_(scratch_places()) {
+    for (const std::string& directory : read_only_directories) {
+        struct stat info {};
+        if (stat(directory.c_str(), &info) == 0 && S_ISDIR(info.st_mode)) read_only_directories_.push_back(directory);
+    }
     for (const std::string& path : paths) {
         struct stat info {};
         if (stat(path.c_str(), &info) != 0) continue;
@@ -140,6 +145,14 @@ bool HiddenPaths::isolate(bool read_only) const {
     // read-only; the hidden paths inside are mounted on top of it.
     for (const std::string& place : writable_) {
         if (mount(place.c_str(), place.c_str(), nullptr, MS_BIND | MS_REC, nullptr) != 0) return false;
+    }
+    // Mounts of their own too, on top of the scratch places' (where they lie
+    // in one): the read-only flag made below stays on them when the scratch
+    // places' own is cleared.
+    if (read_only) {
+        for (const std::string& directory : read_only_directories_) {
+            if (mount(directory.c_str(), directory.c_str(), nullptr, MS_BIND | MS_REC, nullptr) != 0) return false;
+        }
     }
     // c_str() only reads: nothing is allocated here.
     for (const std::string& directory : directories_) {

@@ -40,7 +40,10 @@ public:
     // Nothing hidden.
     HiddenPaths();
     // Files and directories; anything else (gone, a device) is left alone.
-    explicit HiddenPaths(const std::vector<std::string>& paths);
+    // `read_only_directories` stay read-only even inside a scratch place (the
+    // suite in /tmp, which the next grade reads), where files are read-only.
+    explicit HiddenPaths(const std::vector<std::string>& paths,
+                         const std::vector<std::string>& read_only_directories = {});
 
     // In a child between fork and exec (async-signal-safe calls only):
     // enters new mount and network namespaces, hides the paths, makes every
@@ -51,6 +54,7 @@ public:
 private:
     std::vector<std::string> files_, directories_;
     std::vector<std::string> writable_;  // scratch_places()
+    std::vector<std::string> read_only_directories_;
 };
 
 }  // namespace simcheck
