@@ -673,10 +673,9 @@ void programs_cannot_read_the_answers() {
     if (landlock_abi < 3) std::printf("Landlock ABI %ld here: its limit on writes not checked\n", landlock_abi);
     if (landlock_abi < 6) std::printf("Landlock ABI %ld here: its signal scope not checked\n", landlock_abi);
     for (Mode& mode : modes) {
-        mode.read_only =
-            (mode.isolated && mode.mount_setattr && kernel_mount_setattr) || (mode.landlock && landlock_abi >= 3);
-        mode.signals_confined = mode.landlock && landlock_abi >= 6;
         mode.suite_read_only = mode.isolated && mode.mount_setattr && kernel_mount_setattr;
+        mode.read_only = mode.suite_read_only || (mode.landlock && landlock_abi >= 3);
+        mode.signals_confined = mode.landlock && landlock_abi >= 6;
     }
     // The suite lies in /tmp, a scratch place; any user may write into it here but where it is kept read-only.
     fs::permissions(small_suite(), fs::perms::all | fs::perms::sticky_bit);

@@ -140,16 +140,16 @@ bool HiddenPaths::isolate(bool read_only) const {
     if (unshare(CLONE_NEWNS | CLONE_NEWNET) != 0) return false;
     // Nothing mounted here reaches the grader's namespace.
     if (mount(nullptr, "/", nullptr, MS_REC | MS_PRIVATE, nullptr) != 0) return false;
-    // Each scratch place a mount of its own (sorted: a place before those
-    // inside it), so that it can stay writable below while the rest is made
-    // read-only; the hidden paths inside are mounted on top of it.
-    for (const std::string& place : writable_) {
-        if (mount(place.c_str(), place.c_str(), nullptr, MS_BIND | MS_REC, nullptr) != 0) return false;
-    }
-    // Mounts of their own too, on top of the scratch places' (where they lie
-    // in one): the read-only flag made below stays on them when the scratch
-    // places' own is cleared.
     if (read_only) {
+        // Each scratch place a mount of its own (sorted: a place before those
+        // inside it), so that it can stay writable below while the rest is
+        // made read-only; the hidden paths inside are mounted on top of it.
+        for (const std::string& place : writable_) {
+            if (mount(place.c_str(), place.c_str(), nullptr, MS_BIND | MS_REC, nullptr) != 0) return false;
+        }
+        // The directories kept read-only too, on top of the scratch places'
+        // (where they lie in one): the read-only flag made below stays on
+        // them when the scratch places' own is cleared.
         for (const std::string& directory : read_only_directories_) {
             if (mount(directory.c_str(), directory.c_str(), nullptr, MS_BIND | MS_REC, nullptr) != 0) return false;
         }

@@ -18,6 +18,12 @@
 
 namespace run_process {
 
+// ASAN_OPTIONS with `setting` after what it holds now (the later wins).
+inline std::string asan_options_with(const std::string& setting) {
+    const char* options = std::getenv("ASAN_OPTIONS");
+    return (options && *options ? std::string(options) + ":" : std::string()) + setting;
+}
+
 // Under AddressSanitizer, the programs this test starts from now on (and
 // theirs) run without LeakSanitizer, whose scan at each of their exits took
 // 40 % of a test's CPU time there when it runs simcli or simcheck hundreds of
@@ -26,9 +32,7 @@ namespace run_process {
 // checked. Elsewhere it does nothing.
 inline void children_without_leak_checks() {
 #if defined(__SANITIZE_ADDRESS__)
-    const char* options = std::getenv("ASAN_OPTIONS");
-    const std::string without_leaks = (options && *options ? std::string(options) + ":" : "") + "detect_leaks=0";
-    setenv("ASAN_OPTIONS", without_leaks.c_str(), 1);
+    setenv("ASAN_OPTIONS", asan_options_with("detect_leaks=0").c_str(), 1);
 #endif
 }
 
@@ -41,7 +45,7 @@ public:
 #if defined(__SANITIZE_ADDRESS__)
         const char* options = std::getenv("ASAN_OPTIONS");
         saved_ = options ? options : "";
-        setenv("ASAN_OPTIONS", (saved_.empty() ? std::string() : saved_ + ":").append("detect_leaks=1").c_str(), 1);
+        setenv("ASAN_OPTIONS", asan_options_with("detect_leaks=1").c_str(), 1);
 #endif
     }
     ~ChildrenWithLeakChecks() {
