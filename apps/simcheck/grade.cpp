@@ -59,10 +59,11 @@ as a whole when it ends), and limits:
 Run by root, each program runs as a user of its own (an unused user id that
 may read every file but write only in its directory and where anyone may).
 Where the kernel lets it make namespaces (root's, or a user namespace for
-anyone else), each runs without network and with the suite's expected
-outputs and the other outputs hidden. Each may write only in /tmp, /var/tmp,
-/dev/shm and $TMPDIR (its directory is there), and signal only its own
-processes, where the kernel has the means (docs/checking.md).
+anyone else), each runs without network, sees only its own processes, and
+has the suite's expected outputs and the other outputs hidden. Each may
+write only in /tmp, /var/tmp, /dev/shm and $TMPDIR (its directory is there),
+and signal only its own processes, where the kernel has the means
+(docs/checking.md).
 Reports:
       --json FILE        {"program", "scenes": [{"scene", "verdict", "step", ...}]}
       --markdown FILE    a table and the details, for pasting
@@ -518,6 +519,7 @@ void write_json(std::FILE* out, const Options& o, const std::vector<SceneCase>& 
                        ", \"isolated\": " + (runs_programs_isolated() ? "true" : "false") +
                        ", \"read_only\": " + (runs_programs_read_only() ? "true" : "false") +
                        ", \"signals_confined\": " + (runs_programs_with_signals_confined() ? "true" : "false") +
+                       ", \"processes_hidden\": " + (runs_programs_with_own_processes() ? "true" : "false") +
                        ", \"scenes\": [";
     for (std::size_t k = 0; k < rows.size(); ++k) {
         const Row& r = rows[k];
@@ -624,8 +626,9 @@ int grade_main(int argc, char** argv) {
         }
         if (!runs_programs_with_signals_confined() && !runs_programs_as_own_users()) {
             std::fprintf(stderr,
-                         "simcheck grade: warning: unable to confine the programs' signals (Landlock's signal "
-                         "scope needs Linux 6.12): they can signal every process of this user\n");
+                         "simcheck grade: warning: unable to confine the programs' signals (neither a PID "
+                         "namespace nor Landlock's signal scope, Linux 6.12): they can signal every process of "
+                         "this user\n");
         }
         std::vector<Row> rows(cases.size());
         std::atomic<std::size_t> next{0};

@@ -62,12 +62,13 @@ bool map_onto_itself(const char* path, unsigned id) {
 // A user namespace whose only user and group are this process's own, so
 // that a user other than root may make the mount and network namespaces.
 // The program keeps no capability in it: its user is not the namespace's
-// root, so exec drops them.
-bool enter_user_namespace() {
+// root, so exec drops them. `made`: the namespace is there already
+// (fork_into_pid_namespace()), its ids not yet mapped.
+bool enter_user_namespace(bool made) {
     const uid_t user = geteuid();
     const gid_t group = getegid();
     constexpr char deny[] = "deny";
-    return unshare(CLONE_NEWUSER) == 0 && write_whole("/proc/self/setgroups", deny, sizeof deny - 1) &&
+    return (made || unshare(CLONE_NEWUSER) == 0) && write_whole("/proc/self/setgroups", deny, sizeof deny - 1) &&
            map_onto_itself("/proc/self/uid_map", user) && map_onto_itself("/proc/self/gid_map", group);
 }
 
@@ -87,24 +88,26 @@ bool set_mount_attributes(const char* path, unsigned flags, const MountAttribute
 #endif
 }
 
-// Whether a child can isolate itself, with or without read-only files.
-bool trial_isolates(bool read_only) {
+// Whether a child can isolate itself, with or without read-only files, in
+// a PID namespace of its own or not.
+bool trial_isolates(bool read_only, bool own_processes) {
     const HiddenPaths nothing_hidden;  // made before the fork: it allocates
-    const pid_t trial = fork();
-    if (trial == 0) _exit(nothing_hidden.isolate(read_only) ? 0 : 1);
+    const pid_t trial = own_processes ? fork_into_pid_namespace() : fork();
+    if (trial == 0) _exit(nothing_hidden.isolate(read_only, own_processes) ? 0 : 1);
     int status = 0;
     return trial > 0 && waitpid(trial, &status, 0) == trial && WIFEXITED(status) && WEXITSTATUS(status) == 0;
 }
 
 struct Support {
-    bool namespaces = false, read_only = false;
+    bool namespaces = false, read_only = false, own_processes = false;
 };
 
 const Support& support() {
     static const Support found = [] {
         Support s;
-        s.read_only = trial_isolates(true);
-        s.namespaces = s.read_only || trial_isolates(false);
+        s.read_only = trial_isolates(true, false);
+        s.namespaces = s.read_only || trial_isolates(false, false);
+        s.own_processes = s.namespaces && trial_isolates(s.read_only, true);
         return s;
     }();
     return found;
@@ -115,6 +118,18 @@ const Support& support() {
 bool can_isolate() { return support().namespaces; }
 
 bool can_make_read_only() { return support().read_only; }
+
+bool can_give_own_processes() { return support().own_processes; }
+
+pid_t fork_into_pid_namespace() {
+    // Raw clone(2), like fork() but for its flags: the child may call only
+    // async-signal-safe functions, as after fork() in a threaded process.
+    // With CLONE_NEWUSER in the same call a user other than root may make
+    // the PID namespace, which the user namespace then owns.
+    unsigned long flags = CLONE_NEWPID | SIGCHLD;
+    if (isolates_in_user_namespace()) flags |= CLONE_NEWUSER;
+    return static_cast<pid_t>(syscall(SYS_clone, flags, nullptr, nullptr, nullptr, nullptr));
+}
 
 HiddenPaths::HiddenPaths() : writable_(scratch_places()) {}
 
@@ -134,9 +149,9 @@ HiddenPaths::HiddenPaths(const std::vector<std::string>& paths, const std::vecto
 
 bool isolates_in_user_namespace() { return geteuid() != 0; }
 
-bool HiddenPaths::isolate(bool read_only) const {
+bool HiddenPaths::isolate(bool read_only, bool own_processes) const {
     const bool own_user_namespace = isolates_in_user_namespace();
-    if (own_user_namespace && !enter_user_namespace()) return false;
+    if (own_user_namespace && !enter_user_namespace(own_processes)) return false;
     if (unshare(CLONE_NEWNS | CLONE_NEWNET) != 0) return false;
     // Nothing mounted here reaches the grader's namespace.
     if (mount(nullptr, "/", nullptr, MS_REC | MS_PRIVATE, nullptr) != 0) return false;
@@ -163,6 +178,10 @@ bool HiddenPaths::isolate(bool read_only) const {
     for (const std::string& file : files_) {
         if (mount("/dev/null", file.c_str(), nullptr, MS_BIND, nullptr) != 0) return false;
     }
+    // A /proc of the PID namespace: it lists the program's processes alone,
+    // so no other process's command line, environment or open files are
+    // there to read. Made before the tree is made read-only, as /proc was.
+    if (own_processes && mount("proc", "/proc", "proc", MS_NOSUID | MS_NODEV | MS_NOEXEC, nullptr) != 0) return false;
     // Every file read-only but in the scratch places: the program cannot
     // change the grader's files, the suite, or other programs. Device files
     // (/dev/null, a terminal) are still written: a read-only mount does not

@@ -1,12 +1,14 @@
 #pragma once
-// The grader gives each program a mount namespace and a network namespace
-// of its own: run by root, with CAP_SYS_ADMIN; run by another user, inside
-// a user namespace whose only user is the grader's own. In the first, the
-// grader's files that a program must not read are hidden: each expected
-// output of the suite reads as empty (/dev/null bound over it), and the
-// directories holding other runs' outputs are empty and read-only (a
-// tmpfs over each), so a program cannot copy the answers it is graded
-// against. Every file but the scratch places (scratch_places.hpp) is
+// The grader gives each program a mount namespace, a network namespace and
+// a PID namespace of its own: run by root, with CAP_SYS_ADMIN; run by
+// another user, inside a user namespace whose only user is the grader's
+// own. In the PID namespace, with a /proc of its own, the program sees and
+// signals its own processes alone (namespace_init.hpp). In the mount
+// namespace, the grader's files that a program must not read are hidden:
+// each expected output of the suite reads as empty (/dev/null bound over
+// it), and the directories holding other runs' outputs are empty and
+// read-only (a tmpfs over each), so a program cannot copy the answers it
+// is graded against. Every file but the scratch places (scratch_places.hpp) is
 // read-only there too, so a program cannot change the suite, the grader's
 // files or anyone's that its user may write. In the network namespace,
 // only loopback exists (brought up, for programs that talk to themselves,
@@ -16,7 +18,11 @@
 // seccomp filter forbids unshare; unprivileged user namespaces turned
 // off), programs run without it, and the report says so. A kernel before
 // Linux 5.12 cannot make a tree of mounts read-only (mount_setattr): the
-// rest holds, and the report says that too.
+// rest holds, and the report says that too. Where the kernel cannot
+// mount the PID namespace's /proc (a container whose /proc has masked
+// paths), programs run without a PID namespace.
+
+#include <sys/types.h>
 
 #include <string>
 #include <vector>
@@ -27,6 +33,16 @@ namespace simcheck {
 bool can_isolate();
 // Whether files can be made read-only in them too (asked with can_isolate()).
 bool can_make_read_only();
+// Whether a PID namespace can be made too, with a /proc of its own (asked
+// with can_isolate()).
+bool can_give_own_processes();
+
+// Like fork(), but the child is the first process (PID 1) of a new PID
+// namespace, and of a new user namespace where isolate() would enter one:
+// isolate(read_only, true) then finishes what it starts. 0 in the child,
+// the child's pid here, -1 on failure. The child may call only
+// async-signal-safe functions.
+pid_t fork_into_pid_namespace();
 
 // Whether an isolated program also gets a user namespace of its own (this
 // process is not root). RLIMIT_NPROC is counted per user namespace: there
@@ -48,8 +64,9 @@ public:
     // In a child between fork and exec (async-signal-safe calls only):
     // enters new mount and network namespaces, hides the paths, makes every
     // file but the scratch places read-only (if `read_only`), and brings
-    // loopback up. False if any step fails.
-    [[nodiscard]] bool isolate(bool read_only) const;
+    // loopback up. `own_processes`: the child of fork_into_pid_namespace(),
+    // which also gets a /proc of its PID namespace. False if any step fails.
+    [[nodiscard]] bool isolate(bool read_only, bool own_processes) const;
 
 private:
     std::vector<std::string> files_, directories_;

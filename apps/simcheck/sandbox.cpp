@@ -1,6 +1,7 @@
 #include "sandbox.hpp"
 
 #include "landlock_domain.hpp"
+#include "namespace_init.hpp"
 #include "own_user.hpp"
 #include "process_list.hpp"
 
@@ -77,14 +78,17 @@ void set_limit(int resource, rlim_t value) {
 
 // In the child, between fork and exec: async-signal-safe calls only.
 // `user`: the user of its own it runs as, or 0 to stay this process's.
+// `init_report`: the child of fork_into_pid_namespace(), which stays the
+// namespace's init and tells its end there (namespace_init.hpp); else -1.
 [[noreturn]] void start_child(char* const* argv, const char* directory, const char* stdin_path, int out, int err,
                               const SandboxLimits& limits, rlim_t tasks, uid_t user, int capability,
-                              const HiddenPaths* hidden, bool read_only, const LandlockDomain& domain) {
+                              const HiddenPaths* hidden, bool read_only, int init_report,
+                              const LandlockDomain& domain) {
     setpgid(0, 0);
     dup2(err, 2);
     dup2(out, 1);
     const int in = open(stdin_path, O_RDONLY);
-    if (hidden && !hidden->isolate(read_only)) {
+    if (hidden && !hidden->isolate(read_only, init_report >= 0)) {
         constexpr char message[] = "simcheck grade: cannot isolate the program (namespaces)\n";
         [[maybe_unused]] const auto written = write(2, message, sizeof message - 1);
         _exit(127);
@@ -94,6 +98,7 @@ void set_limit(int resource, rlim_t value) {
         [[maybe_unused]] const auto written = write(2, message, sizeof message - 1);
         _exit(127);
     }
+    if (init_report >= 0) split_off_program(init_report);
     if (close_range(3, ~0U, 0) != 0) {
         for (int fd = 3; fd < 1024; ++fd) ::close(fd);
     }
@@ -267,7 +272,9 @@ bool runs_programs_read_only() {
     return (runs_programs_isolated() && can_make_read_only()) || landlock_limits_writes();
 }
 
-bool runs_programs_with_signals_confined() { return landlock_scopes_signals(); }
+bool runs_programs_with_signals_confined() { return landlock_scopes_signals() || runs_programs_with_own_processes(); }
+
+bool runs_programs_with_own_processes() { return runs_programs_isolated() && can_give_own_processes(); }
 
 void interrupt_runs(int signal) noexcept { interrupting_signal.store(signal); }
 
@@ -321,11 +328,20 @@ SandboxRun run_sandboxed(const std::vector<std::string>& arguments, const std::s
     static const HiddenPaths nothing_hidden;
     const HiddenPaths* hidden = runs_programs_isolated() ? (limits.hidden ? limits.hidden : &nothing_hidden) : nullptr;
     const bool read_only = can_make_read_only();
+    // In a PID namespace of its own, the program's leader is the namespace's init, which tells the program's
+    // end through this pipe (namespace_init.hpp).
+    const bool own_processes = hidden && can_give_own_processes();
+    int report_pipe[2] = {-1, -1};
+    if (own_processes && pipe2(report_pipe, O_CLOEXEC | O_NONBLOCK) != 0)
+        throw std::runtime_error("cannot make a pipe");
+    Fd report_read(report_pipe[0]), report_write(report_pipe[1]);
     static const LandlockDomain domain;
-    // A user of its own, or a user namespace of its own, holds the program's tasks alone.
-    const bool counted_alone = user != 0 || (hidden && isolates_in_user_namespace());
-    const rlim_t tasks =
-        static_cast<rlim_t>(counted_alone ? 1 + limits.processes : tasks_of_this_user() + limits.processes);
+    // A user of its own, or a user namespace of its own, holds the program's tasks alone (and, in a user
+    // namespace, the init of its PID namespace).
+    const bool in_user_namespace = hidden && isolates_in_user_namespace();
+    const rlim_t tasks = static_cast<rlim_t>(user != 0 || in_user_namespace
+                                                 ? 1 + (in_user_namespace && own_processes ? 1 : 0) + limits.processes
+                                                 : tasks_of_this_user() + limits.processes);
 
     become_subreaper();
     const Clock::time_point start = Clock::now();
@@ -333,10 +349,10 @@ SandboxRun run_sandboxed(const std::vector<std::string>& arguments, const std::s
     {
         // Registered before any sweep can see it as a child.
         const std::lock_guard<std::mutex> lock(running_mutex);
-        pid = fork();
+        pid = own_processes ? fork_into_pid_namespace() : fork();
         if (pid == 0) {
             start_child(argv.data(), directory.c_str(), stdin_path.c_str(), out_write.get(), err_write.get(), limits,
-                        tasks, user, capability, hidden, read_only, domain);
+                        tasks, user, capability, hidden, read_only, own_processes ? report_write.get() : -1, domain);
         }
         if (pid > 0) running_leaders.insert(pid);
     }
@@ -361,6 +377,7 @@ SandboxRun run_sandboxed(const std::vector<std::string>& arguments, const std::s
     setpgid(pid, pid);  // as the child does: whichever runs first
     out_write.close();
     err_write.close();
+    report_write.close();
     // Told at once when the program ends, where the kernel can (pidfd).
     Fd exited(static_cast<int>(syscall(SYS_pidfd_open, pid, 0)));
 
@@ -443,6 +460,13 @@ SandboxRun run_sandboxed(const std::vector<std::string>& arguments, const std::s
     }
     if (!ended_by_limit) {
         reap(true);
+        // The leader was its PID namespace's init: the program's own end is the one the init told, with what
+        // it left running there (killed by then).
+        ProgramEnd told;
+        if (own_processes && read(report_read.get(), &told, sizeof told) == static_cast<ssize_t>(sizeof told)) {
+            status = told.wait_status;
+            run.left_running += told.left_running;
+        }
         if (WIFSIGNALED(status)) {
             run.end = SandboxRun::End::signalled;
             run.signal = WTERMSIG(status);

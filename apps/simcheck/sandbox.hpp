@@ -71,8 +71,13 @@ bool runs_programs_isolated();
 // (scratch_places.hpp): by Landlock (Linux 6.2), or isolated by read-only
 // mounts (Linux 5.12).
 bool runs_programs_read_only();
-// Whether a program may signal only its own processes (landlock_domain.hpp):
-// Linux 6.12 or later.
+// Whether a program sees only its own processes: a PID namespace of its
+// own, with its own /proc (isolation.hpp). Its signals then reach nothing
+// else either, and what it leaves running is counted and killed by run,
+// also with runs side by side.
+bool runs_programs_with_own_processes();
+// Whether a program may signal only its own processes: by its PID
+// namespace, or by Landlock's signal scope (landlock_domain.hpp, Linux 6.12).
 bool runs_programs_with_signals_confined();
 
 // A signal that ends the grade (SIGINT, SIGTERM, SIGHUP): every run going
