@@ -413,6 +413,22 @@ void write_failures() {
     const Result bad_path = simcli_run({"-o", "/nonexistent/dir/out.txt"}, scene);
     CHECK_EQ(bad_path.status, 1);
     CHECK(one_line(bad_path.err));
+    // Started with stdout closed (`>&-`), the steps are not written into a file opened later as descriptor 1
+    // (the trajectory): a write error, as with stdout a closed pipe.
+    char directory[] = "/tmp/particlesim-cli-XXXXXX";
+    const std::string trajectory = std::string(mkdtemp(directory)) + "/closed-stdout.xyz";
+    const std::vector<std::string> with_trajectory{"--engine",           "exact", "--trajectory", trajectory,
+                                                   "--trajectory-every", "10"};
+    std::vector<std::string> closed_stdout{"-c", "exec \"$0\" \"$@\" >&-", simcli};
+    closed_stdout.insert(closed_stdout.end(), with_trajectory.begin(), with_trajectory.end());
+    const Result no_stdout = run_process::run("/bin/sh", closed_stdout, scene);
+    CHECK_EQ(no_stdout.status, 1);
+    CHECK(one_line(no_stdout.err));
+    CHECK(no_stdout.err.find("cannot write") != std::string::npos);
+    const std::string left = std::filesystem::exists(trajectory) ? run_process::slurp(trajectory) : std::string();
+    CHECK_EQ(simcli_run(with_trajectory, scene).status, 0);
+    CHECK(left.empty() || left == run_process::slurp(trajectory));
+    std::filesystem::remove_all(directory);
 }
 
 #ifdef SIMCLI_WITHOUT_MPI

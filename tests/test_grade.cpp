@@ -882,6 +882,43 @@ void each_run_has_a_fresh_empty_directory() {
     }
 }
 
+// Started with its standard streams closed (a batch system's `<&- >&-
+// 2>&-`), simcheck still grades: a pipe it makes for a run must not take
+// their numbers, onto which the program's streams are moved. Its summary
+// cannot be written: it says so (with stderr open), and the JSON report
+// holds the verdicts.
+void a_grade_with_its_streams_closed() {
+    const fs::path json = work() / "streams-closed.json";
+    const fs::path err = work() / "streams-closed.err";
+    for (const bool stderr_open : {false, true}) {
+        check::Context context(stderr_open ? "stdin and stdout closed" : "stdin, stdout and stderr closed");
+        fs::remove(json);
+        const pid_t grader = fork();
+        if (grader == 0) {
+            const int err_fd = open(err.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0644);
+            if (err_fd < 0 || dup2(err_fd, 2) != 2) _exit(127);
+            for (int fd = 0; fd < (stderr_open ? 2 : 3); ++fd) close(fd);
+            execl(simcheck.c_str(), simcheck.c_str(), "grade", small_suite().c_str(), "--json", json.c_str(),
+#if defined(__SANITIZE_ADDRESS__)
+                  "--memory", "0",
+#endif
+                  "--", simcli.c_str(), static_cast<char*>(nullptr));
+            _exit(127);
+        }
+        int status = -1;
+        CHECK(grader > 0 && waitpid(grader, &status, 0) == grader);
+        CHECK(WIFEXITED(status) && WEXITSTATUS(status) == 2);
+        CHECK_EQ(run_process::slurp(err.string())
+                         .find("simcheck grade: cannot write the summary to stdout: Bad file "
+                               "descriptor (the reports are written)\n") != std::string::npos,
+                 stderr_open);
+        const mini_json::Value report = mini_json::Parser(run_process::slurp(json.string())).parse();
+        CHECK_EQ(report["scenes"].items.size(), std::size_t{4});
+        for (const mini_json::Value& scene : report["scenes"].items)
+            CHECK_EQ(scene["verdict"].text, std::string("conforms"));
+    }
+}
+
 void bad_usage() {
     CHECK_EQ(run_process::run(simcheck, {"grade", small_suite().string()}).status, 2);
     CHECK_EQ(run_process::run(simcheck, {"grade", small_suite().string(), "--", "/no/such/program"}).status, 2);
@@ -918,6 +955,7 @@ int main(int argc, char** argv) {
          {"programs under mpirun are graded", programs_under_mpirun_are_graded},
          {"an interrupted grade leaves nothing behind", an_interrupted_grade_leaves_nothing_behind},
          {"each run has a fresh empty directory", each_run_has_a_fresh_empty_directory},
+         {"a grade with its streams closed", a_grade_with_its_streams_closed},
          {"bad usage", bad_usage}});
     std::error_code ignored;
     fs::remove_all(work(), ignored);

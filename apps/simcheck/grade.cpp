@@ -671,7 +671,11 @@ int grade_main(int argc, char** argv) {
         if (!o.markdown_path.empty()) {
             write_report_file(o.markdown_path, [&](std::FILE* f) { write_markdown(f, o, cases, rows, conforming); });
         }
-        if (std::fflush(stdout) != 0) return 2;
+        if (std::fflush(stdout) != 0 || std::ferror(stdout)) {
+            std::fprintf(stderr, "simcheck grade: cannot write the summary to stdout: %s (the reports are written)\n",
+                         std::strerror(errno));
+            return 2;
+        }
         return conforming == static_cast<int>(rows.size()) ? 0 : 1;
     } catch (const BadUsage& e) {
         std::fprintf(stderr, "simcheck grade: %s\n", e.what());

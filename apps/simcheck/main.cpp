@@ -6,6 +6,7 @@
 //   4: the physics conforms, the output's shape deviates (named).
 
 #include "command_line.hpp"
+#include "common/standard_streams.hpp"
 #include "grade.hpp"
 #include "judge.hpp"
 #include "report.hpp"
@@ -209,6 +210,8 @@ int run(const Arguments& args) {
 }  // namespace
 
 int main(int argc, char** argv) {
+    // A run's pipes must not take the numbers of closed standard streams.
+    if (!apps_common::open_closed_standard_streams()) return exit_bad_input;
     if (argc > 1 && std::strcmp(argv[1], "grade") == 0) return simcheck::grade_main(argc - 1, argv + 1);
     bool json = false;
     for (int k = 1; k < argc; ++k) json = json || std::strcmp(argv[k], "--json") == 0;

@@ -6,6 +6,7 @@
 #include "animation.hpp"
 #include "checkpoint.hpp"
 #include "cli_options.hpp"
+#include "common/standard_streams.hpp"
 #include "distributed_run.hpp"
 #include "first_part.hpp"
 #include "interrupts.hpp"
@@ -429,6 +430,8 @@ int run_one_process(int argc, char** argv) {
 }  // namespace
 
 int main(int argc, char** argv) {
+    // An output file must not take the number of a closed standard stream.
+    if (!apps_common::open_closed_standard_streams()) return 2;
     std::signal(SIGPIPE, SIG_IGN);  // a closed pipe is a write error (exit 1), not a signal
 #if defined(SIMCLI_WITH_MPI)
     // simcli-mpi: started otherwise, it never initialises MPI.

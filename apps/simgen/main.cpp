@@ -3,6 +3,7 @@
 //   simgen suite DIR          a graded suite with expected outputs and a manifest
 // Thin by design: the families live in the library (scene_families.hpp).
 
+#include "common/standard_streams.hpp"
 #include "suite.hpp"
 
 #include "particlesim/particlesim.hpp"
@@ -197,6 +198,8 @@ int run(int argc, char** argv) {
 }  // namespace
 
 int main(int argc, char** argv) {
+    // A scene file must not take the number of a closed standard stream.
+    if (!apps_common::open_closed_standard_streams()) return 2;
     try {
         return run(argc, argv);
     } catch (const BadUsage& e) {
