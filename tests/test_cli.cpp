@@ -192,6 +192,9 @@ void bad_usage() {
     expect_rejected({"a.in", "b.in"}, scene, "simcli: expected at most one scene file", "");
     expect_rejected({"/nonexistent/scene.in"}, "", "simcli: /nonexistent/scene.in: cannot open", "No such file");
     expect_rejected({"/tmp"}, "", "simcli: /tmp: is a directory", "");
+    const Result directory_in = run_process::run("/bin/sh", {"-c", "exec \"$0\" < /", simcli});
+    CHECK_EQ(directory_in.status, 2);
+    CHECK_EQ(directory_in.err, std::string("simcli: <stdin>: is a directory\n"));
     expect_rejected({"--trajectory", "/nonexistent/run.xyz"}, scene, "simcli: /nonexistent/run.xyz: cannot create", "");
     expect_rejected({"--trajectory", "run.xyz", "--trajectory-every", "0"}, scene, "simcli: --trajectory-every",
                     "expected an integer in [1, ");

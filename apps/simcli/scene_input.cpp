@@ -2,6 +2,8 @@
 
 #include "particlesim/random_scene.hpp"
 
+#include <sys/stat.h>
+
 #include <cerrno>
 #include <cstring>
 #include <filesystem>
@@ -14,7 +16,12 @@ namespace {
 
 particlesim::Scene read_input(const std::string& path, const std::string& name, particlesim::SceneLines& lines,
                               particlesim::Boundary boundary) {
-    if (path == "-") return particlesim::read_scene(std::cin, &lines, boundary);
+    if (path == "-") {
+        // A directory on stdin (`simcli < DIR`) reads as an empty input: said as what it is.
+        struct stat input {};
+        if (fstat(0, &input) == 0 && S_ISDIR(input.st_mode)) throw BadInput(name + ": is a directory");
+        return particlesim::read_scene(std::cin, &lines, boundary);
+    }
     std::error_code error;
     if (std::filesystem::is_directory(path, error)) throw BadInput(name + ": is a directory");
     std::ifstream file(path, std::ios::binary);
