@@ -13,9 +13,11 @@
 #include "particlesim/particlesim.hpp"
 
 #include <algorithm>
+#include <cerrno>
 #include <charconv>
 #include <cmath>
 #include <cstdlib>
+#include <cstring>
 #include <filesystem>
 #include <fstream>
 #include <map>
@@ -448,6 +450,13 @@ void every_family_checks_cleanly() {
         CHECK(no.err.find(why) != std::string::npos);
         CHECK_EQ(std::count(no.err.begin(), no.err.end(), '\n'), 1);
     }
+    // A suite directory that cannot be made (a file stands there): a failure while running, in one line.
+    const std::string file = work_dir() + "/a-file";
+    std::ofstream(file) << "x\n";
+    const run_process::Result no_directory = run_process::run(simgen, {"suite", file + "/suite"});
+    CHECK_EQ(no_directory.status, 1);
+    CHECK_EQ(no_directory.err,
+             "simgen: " + file + "/suite: cannot make the directory: " + std::strerror(ENOTDIR) + "\n");
 }
 
 void suite_checks_cleanly() {

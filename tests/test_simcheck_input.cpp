@@ -12,6 +12,7 @@
 
 #include <fstream>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace {
@@ -200,7 +201,26 @@ void bad_usage() {
     CHECK_EQ(run_process::run(simcheck, {}).status, 2);
     CHECK_EQ(run_process::run(simcheck, {"-", "-"}).status, 2);
     CHECK_EQ(run_process::run(simcheck, {"/nonexistent/scene", "/nonexistent/out"}).status, 2);
-    CHECK_EQ(run_process::run(simcheck, {write_file("s.in", pair_scene), "/tmp"}).status, 2);
+    // A directory as the scene or the output, named or on stdin: said as what it is, and not judged.
+    const std::string scene = write_file("s.in", pair_scene), output = write_file("s.out", pair_output);
+    const std::vector<std::pair<std::vector<std::string>, std::string>> directories{
+        {{scene, "/tmp"}, "simcheck: /tmp: is a directory\n"},
+        {{"/tmp", output}, "simcheck: /tmp: is a directory\n"},
+        {{scene, "-"}, "simcheck: <stdin>: is a directory\n"},
+        {{"-", output}, "simcheck: <stdin>: is a directory\n"}};
+    for (const auto& [files, message] : directories) {
+        std::vector<std::string> args{"-c", "exec \"$0\" \"$@\" < /", simcheck};
+        args.insert(args.end(), files.begin(), files.end());
+        const run_process::Result r = run_process::run("/bin/sh", args);
+        CHECK_EQ(r.status, 2);
+        CHECK(r.out.empty());
+        CHECK_EQ(r.err, message);
+    }
+    // A report that cannot be written is said so (stdout closed).
+    const run_process::Result closed =
+        run_process::run("/bin/sh", {"-c", "exec \"$0\" \"$@\" >&-", simcheck, scene, output});
+    CHECK_EQ(closed.status, 2);
+    CHECK_EQ(closed.err, std::string("simcheck: cannot write the report: Bad file descriptor\n"));
     CHECK_EQ(run_process::run(simcheck, {"--substeps", "0", "a", "b"}).status, 2);
     CHECK_EQ(run_process::run(simcheck, {"--frobnicate", "a", "b"}).status, 2);
     const run_process::Result help = run_process::run(simcheck, {"--help"});

@@ -15,6 +15,8 @@
 #include "particlesim/step_check.hpp"
 #include "particlesim/version.hpp"
 
+#include <sys/stat.h>
+
 #include <charconv>
 #include <cstdint>
 #include <cstdio>
@@ -103,8 +105,17 @@ std::optional<Arguments> parse_arguments(int argc, char** argv) {
 
 std::string display_name(const std::string& path) { return path == "-" ? "<stdin>" : path; }
 
+// A directory, named or on stdin, would read as an empty or unreadable
+// input: said as what it is.
+void refuse_directory(const std::string& path, const std::string& name) {
+    struct stat info {};
+    const int found = path == "-" ? fstat(0, &info) : stat(path.c_str(), &info);
+    if (found == 0 && S_ISDIR(info.st_mode)) throw BadUsage(name + ": is a directory");
+}
+
 Scene read_scene_file(const std::string& path, Boundary boundary) {
     const std::string name = display_name(path);
+    refuse_directory(path, name);
     try {
         if (path == "-") return read_scene(std::cin, nullptr, boundary);
         std::ifstream file(path, std::ios::binary);
@@ -155,6 +166,7 @@ int close_copy_then_rest(void* cookie) {
 // an endless or huge stream is judged from its first lines instead of being
 // stored whole first.
 std::FILE* open_output(const std::string& path, const std::string& name) {
+    refuse_directory(path, name);
     if (path != "-") {
         std::FILE* file = std::fopen(path.c_str(), "rb");
         if (!file) throw BadUsage(name + ": cannot open: " + std::strerror(errno));
@@ -196,7 +208,10 @@ int run(const Arguments& args) {
     } else {
         write_text_report(stdout, judgement, context);
     }
-    if (std::fflush(stdout) != 0) return exit_bad_input;
+    if (std::fflush(stdout) != 0 || std::ferror(stdout)) {
+        std::fprintf(stderr, "simcheck: cannot write the report: %s\n", std::strerror(errno));
+        return exit_bad_input;
+    }
     switch (judgement.outcome) {
     case Outcome::conforms: return exit_conforms;
     case Outcome::shape: return exit_shape;

@@ -103,7 +103,9 @@ std::vector<std::string> suite_case_names() {
 }
 
 void write_suite(const std::string& directory, std::uint64_t seed, const std::vector<std::string>& only) {
-    std::filesystem::create_directories(directory);
+    std::error_code error;
+    std::filesystem::create_directories(directory, error);
+    if (error) throw std::runtime_error(directory + ": cannot make the directory: " + error.message());
     std::ofstream manifest(directory + "/manifest.tsv");
     manifest << "case\tfamily\tparticles\tbox\tradius\tsteps\tmode\texercises\n";
     int number = 0;
