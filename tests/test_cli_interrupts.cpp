@@ -495,6 +495,7 @@ void bad_usage() {
     rejected({"--resume", dir / "none", "scene.in"}, "takes no scene file");
     rejected({"--resume", dir / "none", "--engine", "exact"}, "come from the checkpoint");
     rejected({"--resume", dir / "none"}, "cannot open the checkpoint");
+    rejected({"--resume", dir / "."}, dir / ".: is a directory");
     write_file(dir / "bad",
                "particlesim-checkpoint 1\nbox-size 20 radius 1 steps 3 mode perf engine step substeps 1 "
                "numbers fixed8\nstepped-engine-state 1\n5 0 0 0 0\n1 1 0 0 0 0\n");

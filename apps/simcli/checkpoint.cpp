@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <charconv>
 #include <cmath>
+#include <filesystem>
 #include <fstream>
 #include <stdexcept>
 #include <string_view>
@@ -143,6 +144,8 @@ void write_settings(std::ostream& out, const RunSettings& s, const FirstPart& fi
 }
 
 Checkpoint read_checkpoint(const std::string& path) {
+    std::error_code error;
+    if (std::filesystem::is_directory(path, error)) throw std::invalid_argument(path + ": is a directory");
     auto file = std::make_unique<std::ifstream>(path, std::ios::binary);
     if (!*file) throw std::invalid_argument(path + ": cannot open the checkpoint");
     return read_checkpoint(std::move(file), path);
