@@ -52,8 +52,8 @@ struct SandboxRun {
     std::int64_t output_bytes = 0;
     std::string stderr_head;  // the first few kilobytes of its standard error
     // Processes of the program still running when it had ended by itself,
-    // all killed: its group's, and, run alone or as a user of its own, what
-    // had left the group.
+    // all killed: its group's, and, run alone, as a user of its own or in a
+    // PID namespace of its own, what had left the group.
     int left_running = 0;
     // Run as a user of its own: the entries it left in /tmp, /var/tmp,
     // /dev/shm or $TMPDIR, all removed.
