@@ -754,6 +754,12 @@ void programs_cannot_read_the_answers() {
         CHECK_EQ(g.result.err.find("unable to confine the programs' signals") != std::string::npos,
                  !mode.signals_confined && !own_users);
         CHECK_EQ(g.result.err.find("unable to make namespaces") != std::string::npos, !mode.isolated);
+        // The warning names the cause it found.
+        if (mode.name == "root without CAP_SYS_ADMIN")
+            CHECK(g.result.err.find("(run by root without CAP_SYS_ADMIN") != std::string::npos);
+        if (mode.name == "nobody without user namespaces")
+            CHECK(g.result.err.find("(user namespaces turned off: user.max_user_namespaces = 0): ") !=
+                  std::string::npos);
         CHECK_EQ(g.result.err.find("unable to make files read-only") != std::string::npos, !mode.read_only);
         int runs = 0, read_kept = 0;
         for (const fs::directory_entry& file : fs::directory_iterator(notes)) {

@@ -614,9 +614,9 @@ int grade_main(int argc, char** argv) {
         if (!runs_programs_isolated()) {
             std::fprintf(stderr,
                          "simcheck grade: warning: unable to make namespaces (%s): the programs can read the "
-                         "expected outputs and reach the network\n",
-                         geteuid() == 0 ? "run by root without CAP_SYS_ADMIN, or unshare refused"
-                                        : "user namespaces turned off, or unshare refused");
+                         "expected outputs and reach the network%s\n",
+                         namespaces_refused_because().c_str(),
+                         geteuid() == 0 ? "" : "; grade as root, or see docs/checking.md");
         }
         if (!runs_programs_read_only()) {
             std::fprintf(stderr,

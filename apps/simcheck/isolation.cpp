@@ -18,6 +18,8 @@
 #include <charconv>
 #include <cstdint>
 #include <cstring>
+#include <fstream>
+#include <string>
 
 namespace simcheck {
 
@@ -120,6 +122,24 @@ bool can_isolate() { return support().namespaces; }
 bool can_make_read_only() { return support().read_only; }
 
 bool can_give_own_processes() { return support().own_processes; }
+
+std::string namespaces_refused_because() {
+    if (!isolates_in_user_namespace()) return "run by root without CAP_SYS_ADMIN, or unshare refused";
+    const auto setting = [](const char* path) {
+        std::string value;
+        std::getline(std::ifstream(path), value);
+        return value;
+    };
+    if (setting("/proc/sys/user/max_user_namespaces") == "0")
+        return "user namespaces turned off: user.max_user_namespaces = 0";
+    if (setting("/proc/sys/kernel/unprivileged_userns_clone") == "0")
+        return "unprivileged user namespaces turned off: kernel.unprivileged_userns_clone = 0";
+    // Ubuntu from 23.10: the namespace is made, but without capabilities in it.
+    if (setting("/proc/sys/kernel/apparmor_restrict_unprivileged_userns") == "1")
+        return "AppArmor leaves unprivileged user namespaces without capabilities: "
+               "kernel.apparmor_restrict_unprivileged_userns = 1";
+    return "unshare refused";
+}
 
 pid_t fork_into_pid_namespace() {
     // Raw clone(2), like fork() but for its flags: the child may call only

@@ -37,6 +37,10 @@ bool can_make_read_only();
 // with can_isolate()).
 bool can_give_own_processes();
 
+// Why namespaces cannot be made here, as far as the kernel's settings
+// tell, and what lifts it: for the grader's warning.
+std::string namespaces_refused_because();
+
 // Like fork(), but the child is the first process (PID 1) of a new PID
 // namespace, and of a new user namespace where isolate() would enter one:
 // isolate(read_only, true) then finishes what it starts. 0 in the child,
