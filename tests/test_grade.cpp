@@ -929,7 +929,11 @@ void bad_usage() {
     CHECK_EQ(run_process::run(simcheck, {"grade", small_suite().string()}).status, 2);
     CHECK_EQ(run_process::run(simcheck, {"grade", small_suite().string(), "--", "/no/such/program"}).status, 2);
     CHECK_EQ(run_process::run(simcheck, {"grade", (work() / "nowhere").string(), "--", simcli}).status, 2);
-    CHECK_EQ(run_process::run(simcheck, {"grade", small_suite().string(), "--timeout", "x", "--", simcli}).status, 2);
+    const run_process::Result bad_timeout =
+        run_process::run(simcheck, {"grade", small_suite().string(), "--timeout", "x", "--", simcli});
+    CHECK_EQ(bad_timeout.status, 2);
+    CHECK_EQ(bad_timeout.err,
+             std::string("simcheck grade: --timeout needs a number from 0.01 to 1000000, not \"x\"\n"));
     // The outputs kept in the suite itself would replace its expected outputs.
     const run_process::Result into_suite = run_process::run(
         simcheck, {"grade", small_suite().string(), "--outputs", (small_suite() / ".").string(), "--", simcli});

@@ -30,6 +30,7 @@
 #include <stdexcept>
 #include <string>
 #include <thread>
+#include <type_traits>
 #include <vector>
 
 namespace simcheck {
@@ -98,13 +99,25 @@ struct Options {
     particlesim::StepCheckOptions check;
 };
 
+// A bound as a user writes it: 0.01 and 1000000, not 0.010000 and 1000000.000000.
+template <typename Number>
+std::string bound_text(Number bound) {
+    if constexpr (std::is_floating_point_v<Number>) {
+        char text[32];
+        std::snprintf(text, sizeof text, "%.15g", static_cast<double>(bound));
+        return text;
+    } else {
+        return std::to_string(bound);
+    }
+}
+
 template <typename Number>
 Number number_option(const std::string& name, const std::string& text, Number low, Number high) {
     Number value{};
     const auto [end, error] = std::from_chars(text.data(), text.data() + text.size(), value);
     if (error != std::errc() || end != text.data() + text.size() || !(value >= low && value <= high)) {
-        throw BadUsage(name + " needs a number from " + std::to_string(low) + " to " + std::to_string(high) +
-                       ", not \"" + text + "\"");
+        throw BadUsage(name + " needs a number from " + bound_text(low) + " to " + bound_text(high) + ", not \"" +
+                       text + "\"");
     }
     return value;
 }
