@@ -939,6 +939,27 @@ void bad_usage() {
         simcheck, {"grade", small_suite().string(), "--outputs", (small_suite() / ".").string(), "--", simcli});
     CHECK_EQ(into_suite.status, 2);
     CHECK(into_suite.err.find("would replace its expected outputs") != std::string::npos);
+    // A directory is not a program; a scene the grader cannot read is named, before any run.
+    const run_process::Result directory =
+        run_process::run(simcheck, {"grade", small_suite().string(), "--", work().string()});
+    CHECK_EQ(directory.status, 2);
+    CHECK(directory.err.find("no such program (or not executable)") != std::string::npos);
+    const fs::path unreadable = work() / "unreadable-suite";
+    fs::create_directories(unreadable);
+    chmod(unreadable.c_str(), 0755);
+    fs::copy_file(small_suite() / "01-cradle.in", unreadable / "01-cradle.in", fs::copy_options::overwrite_existing);
+    chmod((unreadable / "01-cradle.in").c_str(), 0);
+    std::vector<std::string> grade_unreadable{"grade", unreadable.string(), "--", simcli};
+    const run_process::Result unread =
+        geteuid() == 0 ? [&] {
+            std::vector<std::string> launched(as_nobody.begin() + 1, as_nobody.end());
+            launched.push_back(simcheck);
+            launched.insert(launched.end(), grade_unreadable.begin(), grade_unreadable.end());
+            return run_process::run(as_nobody.front(), launched);
+        }()
+                       : run_process::run(simcheck, grade_unreadable);
+    CHECK_EQ(unread.status, 2);
+    CHECK(unread.err.find("01-cradle.in: cannot open: Permission denied\n") != std::string::npos);
     const run_process::Result help = run_process::run(simcheck, {"grade", "--help"});
     CHECK_EQ(help.status, 0);
     CHECK(help.out.find("--output-factor") != std::string::npos);

@@ -175,10 +175,12 @@ std::optional<Options> parse(int argc, char** argv) {
     return o;
 }
 
-// Where a program of this name would be run from: a path as given, or PATH.
+// Where a program of this name would be run from: a path as given, or PATH
+// (a directory is searchable, not runnable).
 std::optional<std::string> find_program(const std::string& name) {
     if (name.find('/') != std::string::npos) {
-        return access(name.c_str(), X_OK) == 0 ? std::optional<std::string>(name) : std::nullopt;
+        return access(name.c_str(), X_OK) == 0 && !fs::is_directory(name) ? std::optional<std::string>(name)
+                                                                          : std::nullopt;
     }
     const char* path = std::getenv("PATH");
     std::string_view dirs = path ? path : "/usr/bin:/bin";
@@ -249,6 +251,7 @@ std::vector<SceneCase> read_suite(const fs::path& suite, particlesim::Boundary b
         if (fs::is_regular_file(expected)) c.expected_path = expected;
         if (const auto it = exercises.find(c.name); it != exercises.end()) c.exercises = it->second;
         std::ifstream in(c.scene_path, std::ios::binary);
+        if (!in) throw BadUsage(c.scene_path.string() + ": cannot open: " + std::strerror(errno));
         try {
             c.scene = particlesim::read_scene(in, nullptr, boundary);
         } catch (const particlesim::InputError& e) {
