@@ -78,7 +78,7 @@ void split_off_program(int report) {
             end.wait_status = status;
             break;
         }
-        if (ended < 0 && errno != EINTR) _exit(127);  // the program is gone unseen: cannot be
+        if (ended < 0 && errno != EINTR) _exit(127);  // no child left, the program not among them: not expected
     }
     end.left_running = processes_besides_init();
     [[maybe_unused]] const auto written = write(report, &end, sizeof end);
