@@ -435,6 +435,8 @@ void every_family_checks_cleanly() {
         {{"compressed", "-n", "10", "--boundary", "periodic"}, "at least 5 diameters wide"},
         {{"compressed", "--growth-rate", "0"}, "growth rate"},
         {{"crystal", "--fraction", "0.95"}, "area fraction"},
+        {{"fast", "-r", "0"}, "the radius must lie in [1e-60, 1e60] (the accepted range), not 0"},
+        {{"gas", "-r", "-1"}, "the radius must lie in [1e-60, 1e60] (the accepted range), not -1"},
         {{"suite", work_dir() + "/never-written", "--only", "cradle,nope"}, "no suite case \"nope\""},
         {{"gas", "--only", "cradle"}, "belongs to simgen suite"},
         {{"suite", "--seed", "3"}, "not the option --seed"},

@@ -464,6 +464,13 @@ std::optional<SceneFamily> scene_family_named(std::string_view name) {
 
 Scene make_family_scene(SceneFamily family, const SceneFamilyOptions& options) {
     if (options.steps < 0) throw std::invalid_argument("particlesim::make_family_scene: steps must be >= 0");
+    // Checked first: several families derive the box from the radius, whose own check would name the box.
+    if (!(options.radius >= min_length && options.radius <= max_magnitude)) {
+        throw std::invalid_argument(
+            "particlesim::make_family_scene: the radius must lie in [1e-60, 1e60] (the "
+            "accepted range), not " +
+            format_brief(options.radius));
+    }
     if (options.particles && *options.particles > max_particle_count()) {
         throw std::invalid_argument("particlesim::make_family_scene: " + std::to_string(*options.particles) +
                                     " particles are more than this machine can hold (at most " +
