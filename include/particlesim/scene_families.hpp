@@ -62,8 +62,8 @@ struct SceneFamilyOptions {
 // crystal denser than its lattice fits: the message names the densest; a
 // compression above close packing, or one that jams first: the message
 // names the fraction reached; more particles than this machine can hold,
-// as the scene reader counts them), and SceneTooFull when random disks do
-// not fit.
+// as the scene reader counts them; a radius outside the accepted range,
+// world.hpp), and SceneTooFull when random disks do not fit.
 Scene make_family_scene(SceneFamily family, const SceneFamilyOptions& options);
 
 // io.md's input format with every particle listed: "N L r S mode" and "i x y vx vy".
