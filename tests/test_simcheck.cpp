@@ -437,6 +437,7 @@ void every_family_checks_cleanly() {
         {{"crystal", "--fraction", "0.95"}, "area fraction"},
         {{"fast", "-r", "0"}, "the radius must lie in [1e-60, 1e60] (the accepted range), not 0"},
         {{"gas", "-r", "-1"}, "the radius must lie in [1e-60, 1e60] (the accepted range), not -1"},
+        {{"line", "-n", "1000", "-L", "10"}, "1000 disks 4r apart in a row need L >= 4 r N = 4000, not 10"},
         {{"suite", work_dir() + "/never-written", "--only", "cradle,nope"}, "no suite case \"nope\""},
         {{"gas", "--only", "cradle"}, "belongs to simgen suite"},
         {{"suite", "--seed", "3"}, "not the option --seed"},

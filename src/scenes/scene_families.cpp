@@ -111,6 +111,12 @@ Scene line(const SceneFamilyOptions& o) {
     const std::size_t count = o.particles.value_or(100);
     const double r = o.radius;
     const double box = o.box_size.value_or(4.0 * r * static_cast<double>(count + 1));
+    const double row = 4.0 * r * static_cast<double>(count);  // the last disk's right edge
+    if (box < row) {
+        throw std::invalid_argument("particlesim::make_family_scene: " + std::to_string(count) +
+                                    " disks 4r apart in a row need L >= 4 r N = " + format_brief(row) + ", not " +
+                                    format_brief(box));
+    }
     const double speed = speeds_or(o, {r, r}).max;
     std::vector<Particle> particles;
     for (std::size_t k = 0; k < count; ++k) {
