@@ -632,8 +632,9 @@ fs::path writable_outside_scratch_places() {
 // grader says so. The grader's user's processes are out of its signals'
 // reach: a user of its own's by user, a program run as the grader's user by
 // its PID namespace (isolated) or Landlock's signal scope (and with
-// neither, the grader says so). In its PID namespace it does not even see
-// them. Each of mount_setattr and Landlock is taken away by a seccomp filter.
+// neither, the grader says so): where they are, each run starts with
+// `kill -KILL -1`, and the grade and a process of the grader's user live
+// on. In its PID namespace it does not even see them. Each of mount_setattr and Landlock is taken away by a seccomp filter.
 void programs_cannot_read_the_answers() {
     const int listener = socket(AF_INET, SOCK_STREAM | SOCK_NONBLOCK | SOCK_CLOEXEC, 0);
     sockaddr_in address{};
@@ -742,10 +743,16 @@ void programs_cannot_read_the_answers() {
         fs::remove_all(kept);
         fresh_shared_directory(notes);
         const pid_t grader_user = root && mode.as_nobody ? nobody_sleep : getpid();
+        // Where its signals are confined, each run first sends SIGKILL to every process it may signal: the
+        // grade goes on, and the grader's user's process lives.
+        const std::string kill_everything = mode.signals_confined ? "kill -KILL -1\n" : "";
         const Graded g =
             grade(small_suite(), {"--outputs", kept.string()},
-                  {script("answers.sh", "grader_user=" + std::to_string(grader_user) + "\n" + body)}, mode.launcher);
+                  {script("answers.sh", kill_everything + "grader_user=" + std::to_string(grader_user) + "\n" + body)},
+                  mode.launcher);
         CHECK_EQ(g.result.status, 0);
+        if (nobody_sleep > 0) CHECK_EQ(waitpid(nobody_sleep, nullptr, WNOHANG), 0);  // still running
+        if (g.json.kind != mini_json::Value::Kind::object) continue;                 // no report: failed above
         CHECK_EQ(g.json["isolated"].number, mode.isolated ? 1.0 : 0.0);
         CHECK_EQ(g.json["read_only"].number, mode.read_only ? 1.0 : 0.0);
         CHECK_EQ(g.json["signals_confined"].number, mode.signals_confined ? 1.0 : 0.0);
