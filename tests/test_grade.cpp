@@ -634,7 +634,8 @@ fs::path writable_outside_scratch_places() {
 // its PID namespace (isolated) or Landlock's signal scope (and with
 // neither, the grader says so): where they are, each run starts with
 // `kill -KILL -1`, and the grade and a process of the grader's user live
-// on. In its PID namespace it does not even see them. Each of mount_setattr and Landlock is taken away by a seccomp filter.
+// on. In its PID namespace it does not even see them. Each of
+// mount_setattr and Landlock is taken away by a seccomp filter.
 void programs_cannot_read_the_answers() {
     const int listener = socket(AF_INET, SOCK_STREAM | SOCK_NONBLOCK | SOCK_CLOEXEC, 0);
     sockaddr_in address{};
