@@ -38,7 +38,8 @@ bool can_make_read_only();
 bool can_give_own_processes();
 
 // Why namespaces cannot be made here, as far as the kernel's settings
-// tell, and what lifts it: for the grader's warning.
+// tell (the setting named, where one refuses them): for the grader's
+// warning.
 std::string namespaces_refused_because();
 
 // Like fork(), but the child is the first process (PID 1) of a new PID

@@ -6,6 +6,7 @@
 //   4: the physics conforms, the output's shape deviates (named).
 
 #include "command_line.hpp"
+#include "common/input_path.hpp"
 #include "common/standard_streams.hpp"
 #include "grade.hpp"
 #include "judge.hpp"
@@ -14,8 +15,6 @@
 #include "particlesim/scene.hpp"
 #include "particlesim/step_check.hpp"
 #include "particlesim/version.hpp"
-
-#include <sys/stat.h>
 
 #include <charconv>
 #include <cstdint>
@@ -105,12 +104,8 @@ std::optional<Arguments> parse_arguments(int argc, char** argv) {
 
 std::string display_name(const std::string& path) { return path == "-" ? "<stdin>" : path; }
 
-// A directory, named or on stdin, would read as an empty or unreadable
-// input: said as what it is.
 void refuse_directory(const std::string& path, const std::string& name) {
-    struct stat info {};
-    const int found = path == "-" ? fstat(0, &info) : stat(path.c_str(), &info);
-    if (found == 0 && S_ISDIR(info.st_mode)) throw BadUsage(name + ": is a directory");
+    if (apps_common::names_a_directory(path)) throw BadUsage(name + ": is a directory");
 }
 
 Scene read_scene_file(const std::string& path, Boundary boundary) {

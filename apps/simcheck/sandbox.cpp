@@ -274,7 +274,7 @@ bool runs_programs_read_only() {
 
 bool runs_programs_with_signals_confined() { return landlock_scopes_signals() || runs_programs_with_own_processes(); }
 
-bool runs_programs_with_own_processes() { return runs_programs_isolated() && can_give_own_processes(); }
+bool runs_programs_with_own_processes() { return can_give_own_processes(); }  // only where isolated
 
 void interrupt_runs(int signal) noexcept { interrupting_signal.store(signal); }
 
@@ -336,12 +336,12 @@ SandboxRun run_sandboxed(const std::vector<std::string>& arguments, const std::s
         throw std::runtime_error("cannot make a pipe");
     Fd report_read(report_pipe[0]), report_write(report_pipe[1]);
     static const LandlockDomain domain;
-    // A user of its own, or a user namespace of its own, holds the program's tasks alone (and, in a user
-    // namespace, the init of its PID namespace).
+    // A user of its own, or a user namespace of its own, holds the program's tasks alone: the program, and in a
+    // user namespace the init of its PID namespace too (a user of its own's init is root's).
     const bool in_user_namespace = hidden && isolates_in_user_namespace();
-    const rlim_t tasks = static_cast<rlim_t>(user != 0 || in_user_namespace
-                                                 ? 1 + (in_user_namespace && own_processes ? 1 : 0) + limits.processes
-                                                 : tasks_of_this_user() + limits.processes);
+    const int counted_before_it_adds = in_user_namespace && own_processes ? 2 : 1;
+    const rlim_t tasks = static_cast<rlim_t>(user != 0 || in_user_namespace ? counted_before_it_adds + limits.processes
+                                                                            : tasks_of_this_user() + limits.processes);
 
     become_subreaper();
     const Clock::time_point start = Clock::now();

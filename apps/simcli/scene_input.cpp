@@ -1,12 +1,11 @@
 #include "scene_input.hpp"
 
-#include "particlesim/random_scene.hpp"
+#include "common/input_path.hpp"
 
-#include <sys/stat.h>
+#include "particlesim/random_scene.hpp"
 
 #include <cerrno>
 #include <cstring>
-#include <filesystem>
 #include <fstream>
 #include <iostream>
 
@@ -16,14 +15,8 @@ namespace {
 
 particlesim::Scene read_input(const std::string& path, const std::string& name, particlesim::SceneLines& lines,
                               particlesim::Boundary boundary) {
-    if (path == "-") {
-        // A directory on stdin (`simcli < DIR`) reads as an empty input: said as what it is.
-        struct stat input {};
-        if (fstat(0, &input) == 0 && S_ISDIR(input.st_mode)) throw BadInput(name + ": is a directory");
-        return particlesim::read_scene(std::cin, &lines, boundary);
-    }
-    std::error_code error;
-    if (std::filesystem::is_directory(path, error)) throw BadInput(name + ": is a directory");
+    if (apps_common::names_a_directory(path)) throw BadInput(name + ": is a directory");
+    if (path == "-") return particlesim::read_scene(std::cin, &lines, boundary);
     std::ifstream file(path, std::ios::binary);
     if (!file) throw BadInput(name + ": cannot open: " + std::strerror(errno));
     return particlesim::read_scene(file, &lines, boundary);
