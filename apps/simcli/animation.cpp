@@ -94,11 +94,23 @@ Animation::Animation(const AnimationRequest& request, const particlesim::World& 
         every_ = static_cast<double>(stride_);
     } else {
         // Frames that fit the budget: the first, the last, and one every K steps.
-        const double fitting = std::max(2.0, std::floor(animation_page_budget / frame_bytes(particles)));
+        const double per_frame = frame_bytes(particles);
+        const double fitting = std::max(2.0, std::floor(animation_page_budget / per_frame));
         const double needed = static_cast<double>(steps) + 1.0;
         if (needed > fitting) {
             stride_ = static_cast<std::int64_t>(std::ceil(static_cast<double>(steps) / (fitting - 1.0)));
             every_ = static_cast<double>(stride_);
+        }
+        // The first and the last frame alone may pass the budget (millions of
+        // particles): then the note says so instead of promising the budget.
+        const double kept = static_cast<double>(steps / stride_ + 1 + (steps % stride_ != 0 ? 1 : 0));
+        if (kept * per_frame > animation_page_budget) {
+            std::fprintf(stderr,
+                         "simcli: --animate keeps %s, and the page may still reach about %.0f MB (%zu particles "
+                         "take up to about %.0f MB a frame); --snapshot draws one state in a smaller file\n",
+                         kept > 1.0 ? "only the first and the last frame" : "the one frame", kept * per_frame / 1e6,
+                         particles, per_frame / 1e6);
+        } else if (needed > fitting) {
             std::fprintf(stderr,
                          "simcli: --animate keeps one frame in %lld (%zu particles, %lld steps: the page stays under "
                          "about %.0f MB; --animate-every K sets it)\n",

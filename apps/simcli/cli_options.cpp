@@ -54,7 +54,8 @@ Simulates N hard disks bouncing elastically in a square box, in discrete steps.
                                    (a batch job's log; default 5 off a terminal)
       --animate FILE.html          also write a self-contained page that plays the run
       --animate-every K            one frame every K steps (default: automatic, the page
-                                   under about 50 MB); with --engine exact also 0.5, 0.25,
+                                   under about 50 MB, or only the first and the last frame
+                                   where those pass it); with --engine exact also 0.5, 0.25,
                                    ... (1/k): frames between whole steps
       --snapshot FILE.svg          also write one state as an SVG picture
       --snapshot-step N              the state after step N (default: the last)
