@@ -130,6 +130,14 @@ void what_cannot_be_grown() {
         const double reached = std::strtod(jammed.c_str() + at + 24, nullptr);
         CHECK(reached > 0.6 && reached < 0.89);
     }
+    // A growth too slow to reach the fraction within the event budget is not
+    // a jam: the refusal asks for a faster growth, not a slower one.
+    SceneFamilyOptions slow = compression(16, 0.5);
+    slow.growth_rate = 1e-6;
+    const std::string too_slow = refusal(slow);
+    CHECK(too_slow.find("still growing") != std::string::npos);
+    CHECK(too_slow.find("ask for a faster growth rate than 1e-06") != std::string::npos);
+    CHECK(too_slow.find("jammed") == std::string::npos);
     for (const double rate : {0.0, -1.0, 100.0}) {
         SceneFamilyOptions o = compression(100, 0.5);
         o.growth_rate = rate;

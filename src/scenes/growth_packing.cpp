@@ -24,10 +24,14 @@ constexpr double clearance = 1e-9;
 // Near its jam a growing packing collides ever faster while its radius all
 // but stops: jammed when a window of this many events a disk grows the
 // radius by less than `least_growth` of itself (far from the jam a window
-// grows it by a percent or more), or after `most_events_per_disk` in all.
+// grows it by a percent or more), or after `most_events_per_disk` in all
+// (then a jam, or a growth too slow where the radius still grew).
 constexpr double events_per_disk_in_window = 100.0;
 constexpr double least_growth = 1e-7;
 constexpr double most_events_per_disk = 20000.0;
+// A packing whose radius still grows by this much a window when the events
+// run out was not jamming: its growth rate was too slow for the budget.
+constexpr double still_growing = 1e-3;
 
 class Growth {
 public:
@@ -68,6 +72,7 @@ public:
         const double budget = most_events_per_disk * disks, window = events_per_disk_in_window * disks;
         std::uint64_t events = 0, since_rescale = 0, since_window = 0;
         double window_start = now_;
+        double last_window_growth = 1.0;  // the radius's relative growth over the last window
         while (!queue_.empty() && queue_.top().time <= end_) {
             const Event event = queue_.top();
             queue_.pop();
@@ -78,9 +83,13 @@ public:
                 predict_pairs(event.i);
                 continue;
             }
-            if (static_cast<double>(++events) > budget) refuse_jammed(events);
+            if (static_cast<double>(++events) > budget) {
+                if (last_window_growth > still_growing) refuse_too_slow(events, last_window_growth);
+                refuse_jammed(events);
+            }
             if (static_cast<double>(++since_window) > window) {
-                if (event.time - window_start < least_growth * event.time) refuse_jammed(events);
+                last_window_growth = (event.time - window_start) / event.time;
+                if (last_window_growth < least_growth) refuse_jammed(events);
                 since_window = 0;
                 window_start = event.time;
             }
@@ -334,6 +343,17 @@ private:
                                     " (after " +
                                     format_brief(static_cast<double>(events) / std::max<double>(count_, 1.0)) +
                                     " events a disk); ask for a lower fraction or a slower growth rate");
+    }
+
+    [[noreturn]] void refuse_too_slow(std::uint64_t events, double window_growth) const {
+        const double radius = radius_at(now_);
+        const double reached = static_cast<double>(count_) * std::numbers::pi * radius * radius / (box_ * box_);
+        throw std::invalid_argument(
+            "particlesim::make_family_scene: the compression took its most events (" +
+            format_brief(static_cast<double>(events) / std::max<double>(count_, 1.0)) + " a disk) at area fraction " +
+            format_brief(reached) + ", short of " + format_short(request_.area_fraction) + ", still growing (" +
+            format_brief(100.0 * window_growth) + " % over the last " + format_brief(events_per_disk_in_window) +
+            " events a disk): ask for a faster growth rate than " + format_short(request_.growth_rate));
     }
 
     GrowthRequest request_;
