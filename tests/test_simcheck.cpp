@@ -423,6 +423,21 @@ void every_family_checks_cleanly() {
         if (v.status != 0) std::fprintf(stderr, "%s: %s\n", info.name, v.out.c_str());
         CHECK_EQ(v.status, 0);
     }
+    // Thousands of disks with each family's defaults (its box from N): the
+    // walls family's box once held at most 313, the fast family's 100 r about
+    // 1600 disks.
+    for (const SceneFamilyInfo& info : scene_families()) {
+        std::vector<std::string> arguments{info.name, "-n", "2000", "-s", "1"};
+        if (info.family == SceneFamily::compressed) arguments.insert(arguments.end(), {"--fraction", "0.3"});
+        const run_process::Result many = run_process::run(simgen, arguments);
+        check::Context context(info.name, " -n 2000: ", many.err);
+        CHECK_EQ(many.status, 0);
+        if (many.status != 0) continue;
+        std::istringstream in(many.out);
+        const Scene scene = read_scene(in);
+        // The ties family is its fixed set of tied collisions.
+        if (info.family != SceneFamily::ties) CHECK_EQ(scene.particle_count, std::size_t{2000});
+    }
     // The random family is the scene simcli draws for the same header and seed.
     const run_process::Result gen =
         run_process::run(simgen, {"random", "-n", "300", "-L", "900", "-s", "20", "--seed", "42"});
@@ -438,6 +453,8 @@ void every_family_checks_cleanly() {
         {{"fast", "-r", "0"}, "the radius must lie in [1e-60, 1e60] (the accepted range), not 0"},
         {{"gas", "-r", "-1"}, "the radius must lie in [1e-60, 1e60] (the accepted range), not -1"},
         {{"line", "-n", "1000", "-L", "10"}, "1000 disks 4r apart in a row need L >= 4 r N = 4000, not 10"},
+        {{"walls", "-n", "100", "-L", "40", "-r", "2"},
+         "a box of side 40 is too small for 100 disks of the walls family (the default box for them, 192, fits)"},
         {{"suite", work_dir() + "/never-written", "--only", "cradle,nope"}, "no suite case \"nope\""},
         {{"gas", "--only", "cradle"}, "belongs to simgen suite"},
         {{"suite", "--seed", "3"}, "not the option --seed"},

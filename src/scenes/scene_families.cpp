@@ -210,9 +210,13 @@ Scene ties(const SceneFamilyOptions& o) {
 }
 
 Scene fast(const SceneFamilyOptions& o) {
-    const World world{o.box_size.value_or(100.0 * o.radius), o.radius};
+    // 100 r by default, wider where the disks would pass an area fraction of
+    // 0.5 (from 1592 disks), which random placement cannot reach.
+    const std::size_t count = o.particles.value_or(50);
+    const double roomy = o.radius * std::sqrt(static_cast<double>(count) * std::numbers::pi / 0.5);
+    const World world{o.box_size.value_or(std::max(100.0 * o.radius, roomy)), o.radius};
     const RandomSceneOptions random{o.seed, speeds_or(o, {2.0 * world.box_size, 5.0 * world.box_size})};
-    return scene_of(o, world.box_size, make_random_particles(o.particles.value_or(50), world, random));
+    return scene_of(o, world.box_size, make_random_particles(count, world, random));
 }
 
 // Half the disks sit on the four walls in turn (some moving into them: a
@@ -220,14 +224,25 @@ Scene fast(const SceneFamilyOptions& o) {
 Scene walls(const SceneFamilyOptions& o) {
     const std::size_t count = o.particles.value_or(64);
     const double r = o.radius;
-    const double box = o.box_size.value_or(8.0 * r * std::ceil(std::sqrt(static_cast<double>(count))) + 16.0 * r);
     const std::size_t on_walls = count / 2;
+    // Room for the pairs inside, and for the wall disks 4 r apart, a quarter
+    // of them along each wall, 3 r from the corners and r to spare against
+    // rounding (from 314 disks the walls need the more).
+    const double along_walls = on_walls == 0 ? 0.0 : 7.0 * r + 4.0 * r * static_cast<double>((on_walls - 1) / 4);
+    const double fitting_box =
+        std::max(8.0 * r * std::ceil(std::sqrt(static_cast<double>(count))) + 16.0 * r, along_walls);
+    const double box = o.box_size.value_or(fitting_box);
+    const auto too_small = [&] {
+        return std::invalid_argument("particlesim::make_family_scene: a box of side " + format_short(box) +
+                                     " is too small for " + std::to_string(count) +
+                                     " disks of the walls family (the default box for them, " +
+                                     format_short(fitting_box) + ", fits)");
+    };
     SplitMix64 rng(o.seed);
     std::vector<Particle> particles;
     for (std::size_t k = 0; k < on_walls; ++k) {
         const double along = 3.0 * r + 4.0 * r * static_cast<double>(k / 4);
-        if (along > box - 3.0 * r)
-            throw std::invalid_argument("particlesim::make_family_scene: the box is too small for the walls family");
+        if (along > box - 3.0 * r) throw too_small();
         switch (k % 4) {
         case 0: particles.push_back(disk(r, along)); break;
         case 1: particles.push_back(disk(along, r)); break;
@@ -236,8 +251,7 @@ Scene walls(const SceneFamilyOptions& o) {
         }
     }
     for (double y = 5.0 * r; particles.size() < count; y += 4.0 * r) {
-        if (y > box - 5.0 * r)
-            throw std::invalid_argument("particlesim::make_family_scene: the box is too small for the walls family");
+        if (y > box - 5.0 * r) throw too_small();
         for (double x = 5.0 * r; x + 2.0 * r <= box - 5.0 * r && particles.size() < count; x += 6.0 * r) {
             particles.push_back(disk(x, y));
             if (particles.size() < count) particles.push_back(disk(x + 2.0 * r, y));
