@@ -438,6 +438,24 @@ void every_family_checks_cleanly() {
         // The ties family is its fixed set of tied collisions.
         if (info.family != SceneFamily::ties) CHECK_EQ(scene.particle_count, std::size_t{2000});
     }
+    // No disks: an empty scene in a box of the family's size (the lattice's
+    // once came out 3e19 wide, the crystal refused it), or, for the cradle,
+    // which needs two, a refusal that says so.
+    for (const SceneFamilyInfo& info : scene_families()) {
+        const run_process::Result none = run_process::run(simgen, {info.name, "-n", "0", "-s", "1"});
+        check::Context context(info.name, " -n 0: ", none.err);
+        if (info.family == SceneFamily::cradle) {
+            CHECK_EQ(none.status, 2);
+            CHECK(none.err.find("Newton's cradle needs at least 2 disks") != std::string::npos);
+            continue;
+        }
+        CHECK_EQ(none.status, 0);
+        if (none.status != 0) continue;
+        std::istringstream in(none.out);
+        const Scene scene = read_scene(in);
+        if (info.family != SceneFamily::ties) CHECK_EQ(scene.particle_count, std::size_t{0});
+        CHECK(scene.world.box_size <= 20000.0);
+    }
     // The random family is the scene simcli draws for the same header and seed.
     const run_process::Result gen =
         run_process::run(simgen, {"random", "-n", "300", "-L", "900", "-s", "20", "--seed", "42"});

@@ -60,8 +60,9 @@ struct SceneFamilyOptions {
 
 // Throws std::invalid_argument for options the family cannot honour (a
 // crystal denser than its lattice fits: the message names the densest; a
-// compression above close packing, or one that jams first: the message
-// names the fraction reached; more particles than this machine can hold,
+// compression above close packing, or one that jams first or runs out of
+// events still growing: the message names the fraction reached; a cradle
+// of fewer than 2 disks; more particles than this machine can hold,
 // as the scene reader counts them; a radius outside the accepted range,
 // world.hpp), and SceneTooFull when random disks do not fit.
 Scene make_family_scene(SceneFamily family, const SceneFamilyOptions& options);

@@ -85,9 +85,9 @@ Scene lattice(const SceneFamilyOptions& o) {
     const double spacing = 2.0 * r * (1.0 + gap);
     const double row_height = spacing * std::sqrt(3.0) / 2.0;
     const double jitter = 0.3 * gap * r;
-    const auto columns =
-        static_cast<std::size_t>(std::ceil(std::sqrt(static_cast<double>(count) * 2.0 / std::sqrt(3.0))));
-    const std::size_t rows = (count + columns - 1) / std::max<std::size_t>(columns, 1);
+    const auto columns = std::max<std::size_t>(
+        1, static_cast<std::size_t>(std::ceil(std::sqrt(static_cast<double>(count) * 2.0 / std::sqrt(3.0)))));
+    const std::size_t rows = (count + columns - 1) / columns;
     const double margin = r + jitter;
     const double box = 2.0 * margin + std::max(spacing * (static_cast<double>(columns) - 0.5),
                                                row_height * static_cast<double>(rows > 0 ? rows - 1 : 0));
@@ -129,7 +129,13 @@ Scene line(const SceneFamilyOptions& o) {
 // r/2 per step and reaches the row after 8 steps. Under the step rules the
 // momentum passes one disk per step (one collision per particle per step).
 Scene cradle(const SceneFamilyOptions& o) {
-    const std::size_t count = std::max<std::size_t>(o.particles.value_or(5), 2);
+    const std::size_t count = o.particles.value_or(5);
+    if (count < 2) {
+        throw std::invalid_argument(
+            "particlesim::make_family_scene: Newton's cradle needs at least 2 disks (one "
+            "moving into a row at rest), not " +
+            std::to_string(count));
+    }
     const double r = o.radius;
     const double box = 4.0 * r * static_cast<double>(count + 4);
     const double speed = speeds_or(o, {0.5 * r, 0.5 * r}).max;
@@ -363,8 +369,10 @@ Scene periodic_crystal(const SceneFamilyOptions& o, std::size_t count) {
         }
     }
     const double densest_box = 2.0 * r * (1.0 + crystal_clearance) / best;
-    const double densest = std::min(static_cast<double>(count) * std::numbers::pi * r * r / (densest_box * densest_box),
-                                    close_packing_fraction);
+    // (No disks: the box of one.)
+    const double densest = std::min(
+        static_cast<double>(std::max<std::size_t>(count, 1)) * std::numbers::pi * r * r / (densest_box * densest_box),
+        close_packing_fraction);
     const double fraction =
         o.area_fraction ? area_fraction_or(o, 0.7, close_packing_fraction) : std::min(0.7, 0.95 * densest);
     const double box = side_for(count, r, fraction);
@@ -396,8 +404,10 @@ Scene crystal(const SceneFamilyOptions& o) {
     const double r = o.radius;
     const LatticeShape shape = squarest_lattice(std::max<std::size_t>(count, 1));
     const double densest_box = 2.0 * r + 2.0 * r * (1.0 + crystal_clearance) * shape.extent();
-    const double densest = std::min(static_cast<double>(count) * std::numbers::pi * r * r / (densest_box * densest_box),
-                                    close_packing_fraction);
+    // (No disks: the box of one.)
+    const double densest = std::min(
+        static_cast<double>(std::max<std::size_t>(count, 1)) * std::numbers::pi * r * r / (densest_box * densest_box),
+        close_packing_fraction);
     // Unasked: 0.7, or a little below the densest for the few disks that cannot reach it.
     const double fraction =
         o.area_fraction ? area_fraction_or(o, 0.7, close_packing_fraction) : std::min(0.7, 0.95 * densest);
