@@ -438,6 +438,25 @@ void every_family_checks_cleanly() {
         // The ties family is its fixed set of tied collisions.
         if (info.family != SceneFamily::ties) CHECK_EQ(scene.particle_count, std::size_t{2000});
     }
+    // Clusters of a few disks each, at the default fraction and at the
+    // highest: random placement fills them (drawn wider where it must; 5 to 8
+    // disks and 21 to 32 once failed at the default 0.4).
+    for (std::size_t n = 1; n <= 40; ++n) {
+        for (const double fraction : {0.4, 0.5}) {
+            check::Context context("clusters of ", n, " disks at ", fraction);
+            SceneFamilyOptions options;
+            options.particles = n;
+            options.area_fraction = fraction;
+            std::size_t made = 0;
+            try {
+                made = make_family_scene(SceneFamily::clusters, options).particles.size();
+            } catch (const std::exception& e) {
+                check::Context why(e.what());
+                CHECK(false);
+            }
+            CHECK_EQ(made, n);
+        }
+    }
     // No disks: an empty scene in a box of the family's size (the lattice's
     // once came out 3e19 wide, the crystal refused it), or, for the cradle,
     // which needs two, a refusal that says so.
