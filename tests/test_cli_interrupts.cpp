@@ -95,6 +95,26 @@ void checkpoint_every_k_resumes_byte_for_byte() {
     }
 }
 
+// "--resume -" reads the checkpoint from stdin, as "-" reads a scene; a
+// checkpoint that cannot be opened is refused with the reason.
+void a_checkpoint_from_stdin() {
+    const ScratchDir dir;
+    const std::string checkpoint = dir / "run.checkpoint";
+    CHECK_EQ(simcli_run({"--checkpoint", checkpoint, "--checkpoint-every", "25"}, "200 2000 1 60 print\n").status, 0);
+    const Result from_file = simcli_run({"--resume", checkpoint});
+    CHECK_EQ(from_file.status, 0);
+    CHECK(!from_file.out.empty());
+    const Result from_stdin = simcli_run({"--resume", "-"}, run_process::slurp(checkpoint));
+    CHECK_EQ(from_stdin.status, 0);
+    CHECK(from_stdin.out == from_file.out);
+    const Result garbage = simcli_run({"--resume", "-"}, "not a checkpoint\n");
+    CHECK_EQ(garbage.status, 2);
+    CHECK(garbage.err.find("simcli: <stdin>: not a checkpoint simcli can resume") != std::string::npos);
+    const Result missing = simcli_run({"--resume", dir / "missing"});
+    CHECK_EQ(missing.status, 2);
+    CHECK(missing.err.find("missing: cannot open the checkpoint: No such file or directory") != std::string::npos);
+}
+
 // --stats of a resumed run counts the steps that run made (in its time and
 // rate, and its threads line): 60 steps with a
 // checkpoint every 25 resume at step 50, so 10 steps, the last 2 of them
@@ -543,6 +563,7 @@ int main(int argc, char** argv) {
                       {{"checkpoint every K resumes byte for byte", checkpoint_every_k_resumes_byte_for_byte},
                        {"signals, checkpoint and resume", signals_checkpoint_and_resume},
                        {"resumed stats count the resumed steps", resumed_stats_count_the_resumed_steps},
+                       {"a checkpoint from stdin", a_checkpoint_from_stdin},
                        {"observables and trajectory resume", observables_and_trajectory_resume},
                        {"killed run resumes from its last checkpoint", killed_run_resumes_from_its_last_checkpoint},
                        {"last periodic checkpoint cuts the output back", last_periodic_checkpoint_cuts_the_output_back},

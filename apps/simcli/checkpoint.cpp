@@ -1,12 +1,15 @@
 #include "checkpoint.hpp"
 
+#include "common/input_path.hpp"
 #include "particlesim/saved_state.hpp"
 
 #include <algorithm>
+#include <cerrno>
 #include <charconv>
 #include <cmath>
-#include <filesystem>
+#include <cstring>
 #include <fstream>
+#include <iostream>
 #include <stdexcept>
 #include <string_view>
 
@@ -144,10 +147,12 @@ void write_settings(std::ostream& out, const RunSettings& s, const FirstPart& fi
 }
 
 Checkpoint read_checkpoint(const std::string& path) {
-    std::error_code error;
-    if (std::filesystem::is_directory(path, error)) throw std::invalid_argument(path + ": is a directory");
+    // "-": stdin, as for a scene.
+    const std::string name = path == "-" ? "<stdin>" : path;
+    if (apps_common::names_a_directory(path)) throw std::invalid_argument(name + ": is a directory");
+    if (path == "-") return read_checkpoint(std::make_unique<std::istream>(std::cin.rdbuf()), name);
     auto file = std::make_unique<std::ifstream>(path, std::ios::binary);
-    if (!*file) throw std::invalid_argument(path + ": cannot open the checkpoint");
+    if (!*file) throw std::invalid_argument(path + ": cannot open the checkpoint: " + std::strerror(errno));
     return read_checkpoint(std::move(file), path);
 }
 

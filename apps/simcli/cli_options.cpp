@@ -45,9 +45,9 @@ Simulates N hard disks bouncing elastically in a square box, in discrete steps.
                                    (then exit 130 / 143, keeping the output, trajectory and
                                    observables written so far)
       --checkpoint-every K           and after every K steps
-      --resume FILE                continue a checkpointed run bit for bit; writes the
-                                   steps after the checkpoint (append them to the first part),
-                                   and so do --trajectory and --observables
+      --resume FILE                continue a checkpointed run bit for bit ('-': stdin); writes
+                                   the steps after the checkpoint (append them to the first
+                                   part), and so do --trajectory and --observables
       --progress / --quiet         force / silence the progress line on stderr (default:
                                    on a terminal, for runs longer than about two seconds)
       --progress-every SECONDS       a progress line every SECONDS, the first after SECONDS
