@@ -223,7 +223,27 @@ void simcli_boundary() {
     const run_process::Result small = run_process::run(simcli, {"--engine", "exact", "--boundary", "periodic"},
                                                        "2 8 1 1 print\n0 2 4 1 0\n1 6 4 0 0\n");
     CHECK_EQ(small.status, 2);
-    CHECK(small.err.find("a periodic box needs at least 5 cells a side") != std::string::npos);
+    CHECK(small.err.find("a periodic box needs at least 5 cells a side, each wider than a contact distance") !=
+          std::string::npos);
+    CHECK(small.err.find("): L must exceed 5 x 2.00") != std::string::npos);
+    CHECK(small.err.find(", not 8\n") != std::string::npos);
+
+    // A grid asked for in the library: from 5 cells a side to as many as the
+    // contact distance leaves room for (L = 20, r = 1: 9).
+    for (const int cells : {4, 10, 9, 5}) {
+        check::Context context(cells, " cells a side");
+        std::string why;
+        try {
+            ExactSimulation(World{20.0, 1.0}, {disk(2, 4, 1, 0), disk(6, 4, 0, 0)}, periodic(cells));
+        } catch (const std::invalid_argument& e) {
+            why = e.what();
+        }
+        if (cells == 4 || cells == 10) {
+            CHECK(why.find("cells_per_side from 5 to 9 here, not " + std::to_string(cells)) != std::string::npos);
+        } else {
+            CHECK(why.empty());
+        }
+    }
 }
 
 }  // namespace
