@@ -392,6 +392,16 @@ void order_is_seen() {
     CHECK_EQ(r["pressureShown"].number, 1.0);
     CHECK(r["psi6"].number > 0.0 && r["psi6"].number <= 1.0);
     CHECK(r["pressure"].number > 0.0);
+    // The psi6 plot starts at the first frame (the lattice, |psi6| near 1),
+    // and the energy, kept by the exact engine to rounding, draws flat: its
+    // plot spans a millionth of it, not the rounding's noise.
+    const double psi6_first = r["psi6First"].number;
+    CHECK(psi6_first > 0.9);
+    CHECK(r["psi6Plot"][0].number <= psi6_first && psi6_first <= r["psi6Plot"][1].number);
+    const double energy = r["energy"].number;
+    const double energy_span = r["energyPlot"][1].number - r["energyPlot"][0].number;
+    CHECK(energy_span >= 0.99e-6 * energy);
+    CHECK(r["energyPlot"][0].number <= energy && energy <= r["energyPlot"][1].number);
     CHECK(r["errors"].items.empty());
     CHECK_EQ(run_process::run(simcli, {gas, "--colour-by", "psi6"}).status, 2);
     CHECK_EQ(run_process::run(simcli, {gas, "--colour-by", "phase", "--snapshot", svg}).status, 2);

@@ -239,32 +239,47 @@
     const steps = series[f * 4 + 2];
     return steps > 0 ? series[f * 4 + column] / steps : 0;
   };
-  const plotLines = (canvas, lines, f, logY) => {
+  // A line starts at frame 1 when its values are over the interval since the
+  // frame before (`from: 0` for the state's own values: energy, psi6).
+  const plotLines = (canvas, lines, f) => {
     const c = canvas.getContext("2d");
     const w = canvas.width, h = canvas.height, left = 58, bottom = 16;
     c.clearRect(0, 0, w, h);
     let low = Infinity, high = -Infinity;
     for (const line of lines) {
-      for (let g = 1; g < frameCount; ++g) {
+      for (let g = line.from ?? 1; g < frameCount; ++g) {
         const v = line.value(g);
         if (Number.isFinite(v)) { low = Math.min(low, v); high = Math.max(high, v); }
       }
     }
     if (!Number.isFinite(low)) { low = 0; high = 1; }
+    // At least a millionth of the values' size: an energy kept to rounding
+    // (1e-15) draws flat instead of as noise across the whole height.
+    const least = 1e-6 * Math.max(Math.abs(low), Math.abs(high));
+    if (high - low < least) {
+      const middle = (low + high) / 2;
+      low = middle - least / 2;
+      high = middle + least / 2;
+    }
     if (!(high > low)) { low -= 1; high += 1; }
+    canvas.dataset.low = String(low);
+    canvas.dataset.high = String(high);
+    // Enough digits to tell the two ends apart.
+    let digits = 6;
+    while (digits < 15 && high.toPrecision(digits) === low.toPrecision(digits)) ++digits;
     const x = (g) => left + ((w - left - 4) * (frameCount > 1 ? g / (frameCount - 1) : 0));
     const y = (v) => h - bottom - ((h - bottom - 6) * (v - low)) / (high - low);
     c.strokeStyle = "#d0d7de";
     c.strokeRect(left, 4, w - left - 4, h - bottom - 4);
     c.fillStyle = "#59636e";
     c.font = "10px sans-serif";
-    c.fillText(high.toPrecision(6), 2, 12);
-    c.fillText(low.toPrecision(6), 2, h - bottom);
+    c.fillText(high.toPrecision(digits), 2, 12);
+    c.fillText(low.toPrecision(digits), 2, h - bottom);
     for (const line of lines) {
       c.strokeStyle = line.colour;
       c.beginPath();
       let drawing = false; // an unknown value (NaN) breaks the line
-      for (let g = 1; g < frameCount; ++g) {
+      for (let g = line.from ?? 1; g < frameCount; ++g) {
         const v = line.value(g);
         if (!Number.isFinite(v)) { drawing = false; continue; }
         (drawing ? c.lineTo : c.moveTo).call(c, x(g), y(v));
@@ -286,11 +301,11 @@
     $("collisions-label").textContent = f > 0 ? `particles ${formatCount(perStep(f, 0))}, walls ${formatCount(perStep(f, 1))}` : "";
     $("collisions-label").dataset.particle = String(perStep(f, 0));
     $("collisions-label").dataset.wall = String(perStep(f, 1));
-    plotLines($("energy-plot"), [{ colour: "#2b8a3e", value: (g) => series[g * 4 + 3] }], f);
+    plotLines($("energy-plot"), [{ colour: "#2b8a3e", from: 0, value: (g) => series[g * 4 + 3] }], f);
     $("energy-label").textContent = `E = ${series[f * 4 + 3].toPrecision(8)}`;
     drawSpeedHistogram(f);
     if (order) {
-      plotLines($("psi6-plot"), [{ colour: "#7048e8", value: (g) => meta.psi6[g] }], f);
+      plotLines($("psi6-plot"), [{ colour: "#7048e8", from: 0, value: (g) => meta.psi6[g] }], f);
       $("psi6-label").textContent = meta.psi6[f].toFixed(4);
       $("psi6-label").dataset.value = String(meta.psi6[f]);
       const pressureAt = (g) => (meta.pressure[g] === null ? NaN : meta.pressure[g]);
@@ -460,6 +475,10 @@
       results.pressureShown = !$("pressure-figure").hidden;
       results.psi6 = Number($("psi6-label").dataset.value);
       results.pressure = Number($("pressure-label").dataset.value);
+      results.psi6First = meta.psi6[0];
+      results.psi6Plot = [Number($("psi6-plot").dataset.low), Number($("psi6-plot").dataset.high)];
+      results.energy = series[3];
+      results.energyPlot = [Number($("energy-plot").dataset.low), Number($("energy-plot").dataset.high)];
     }
     settings.colour = "fixed";
     settings.showHits = false;
