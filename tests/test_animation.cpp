@@ -209,6 +209,15 @@ void the_page_shows_the_run() {
     }
     CHECK_EQ(matching, 12);
     CHECK(busy >= 4);
+    // The label is the plot's key: each count in its line's colour.
+    const auto& key = r["collisionsKey"].items;
+    CHECK_EQ(key.size(), 2U);
+    if (key.size() == 2) {
+        CHECK(key[0][0].text.rfind("particles ", 0) == 0);
+        CHECK_EQ(key[0][1].text, std::string("rgb(214, 51, 108)"));
+        CHECK(key[1][0].text.rfind("walls ", 0) == 0);
+        CHECK_EQ(key[1][1].text, std::string("rgb(28, 126, 214)"));
+    }
 }
 
 void exact_engine_between_steps() {

@@ -293,14 +293,27 @@
     c.lineTo(x(f), h - bottom);
     c.stroke();
   };
+  const particleColour = "#d6336c", wallColour = "#1c7ed6";
+  // Text in a line's colour: the plot's key.
+  const keyed = (text, colour) => {
+    const span = document.createElement("span");
+    span.textContent = text;
+    span.style.color = colour;
+    return span;
+  };
   const drawPlots = (f) => {
     plotLines($("collisions-plot"), [
-      { colour: "#d6336c", value: (g) => perStep(g, 0) },
-      { colour: "#1c7ed6", value: (g) => perStep(g, 1) },
+      { colour: particleColour, value: (g) => perStep(g, 0) },
+      { colour: wallColour, value: (g) => perStep(g, 1) },
     ], f);
-    $("collisions-label").textContent = f > 0 ? `particles ${formatCount(perStep(f, 0))}, walls ${formatCount(perStep(f, 1))}` : "";
-    $("collisions-label").dataset.particle = String(perStep(f, 0));
-    $("collisions-label").dataset.wall = String(perStep(f, 1));
+    const label = $("collisions-label");
+    label.replaceChildren();
+    if (f > 0) {
+      label.append(keyed(`particles ${formatCount(perStep(f, 0))}`, particleColour), ", ",
+        keyed(`walls ${formatCount(perStep(f, 1))}`, wallColour));
+    }
+    label.dataset.particle = String(perStep(f, 0));
+    label.dataset.wall = String(perStep(f, 1));
     plotLines($("energy-plot"), [{ colour: "#2b8a3e", from: 0, value: (g) => series[g * 4 + 3] }], f);
     $("energy-label").textContent = `E = ${series[f * 4 + 3].toPrecision(8)}`;
     drawSpeedHistogram(f);
@@ -502,6 +515,8 @@
       go(f);
       results.collisions.push([Number($("collisions-label").dataset.particle), Number($("collisions-label").dataset.wall)]);
     }
+    // The collisions plot's key: each count in its line's colour.
+    results.collisionsKey = Array.from($("collisions-label").children).map((span) => [span.textContent, span.style.color]);
     results.drawMs = drawn > 0 ? (performance.now() - drawingStarted) / drawn : 0; // one frame, box and plots
     go(0);
     play();
