@@ -416,6 +416,49 @@ void order_is_seen() {
     CHECK_EQ(run_process::run(simcli, {gas, "--colour-by", "phase", "--snapshot", svg}).status, 2);
 }
 
+// In a periodic box a disk across an edge is drawn on both sides, clipped
+// to the box, on the page and in the picture: a disk at x = 19.5 of 20
+// shows its image's sliver [0, 0.5] at the left edge, a corner disk at four
+// places.
+void periodic_images_are_drawn() {
+    const std::string scene = write_file("edges.in", "3 20 1 2 print\n0 19.5 10 0 0\n1 0.25 19.75 0 0\n2 10 5 0 0\n");
+    const std::string page = work_dir() + "/edges.html", svg = work_dir() + "/edges.svg";
+    const run_process::Result out =
+        run_process::run(simcli, {scene, "--engine", "exact", "--boundary", "periodic", "--animate", page, "--snapshot",
+                                  svg, "--snapshot-step", "0"});
+    CHECK_EQ(out.status, 0);
+    // The corner disk's images lie at (20.25, 19.75), (0.25, -0.25) and (20.25, -0.25).
+    const std::vector<Vec2> on{{0.25, 10.0}, {19.9, 19.9}, {0.1, 0.1}, {19.9, 0.1}, {10.0, 5.0}};
+    const std::vector<Vec2> off{{0.25, 13.0}, {19.9, 14.0}, {5.0, 0.1}, {10.0, 19.9}};
+    const PageRun run =
+        open_page(page, "{\"frame\":0,\"on\":" + points(on) + ",\"off\":" + points(off) + ",\"scrubTo\":1}");
+    const mini_json::Value& r = run.report;
+    if (r.kind == mini_json::Value::Kind::object) {
+        int orange = 0, white = 0;
+        for (const auto& pixel : r["on"].items) orange += colour_is(pixel, 232, 89, 12);
+        for (const auto& pixel : r["off"].items) white += colour_is(pixel, 255, 255, 255);
+        CHECK_EQ(orange, 5);
+        CHECK_EQ(white, 4);
+        CHECK(r["errors"].items.empty());
+    }
+    // The picture: 2 + 4 + 1 circles, and the box clips them.
+    const auto circles = [](const std::string& text) {
+        std::size_t found = 0;
+        for (std::size_t at = text.find("<circle"); at != std::string::npos; at = text.find("<circle", at + 1)) ++found;
+        return found;
+    };
+    const std::string text = run_process::slurp(svg);
+    CHECK_EQ(circles(text), std::size_t{7});
+    CHECK(text.find("cx=\"-0.5\" cy=\"10\"") != std::string::npos);
+    CHECK(text.find("clip-path=\"url(#box)\"") != std::string::npos);
+    // A walled box draws each disk once.
+    const std::string walled = write_file("walled.in", "2 20 1 2 print\n0 19 10 0 0\n1 1 1 0 0\n");
+    CHECK_EQ(run_process::run(simcli, {walled, "--snapshot", svg}).status, 0);
+    const std::string walled_text = run_process::slurp(svg);
+    CHECK(walled_text.find("clip-path") == std::string::npos);
+    CHECK_EQ(circles(walled_text), std::size_t{2});
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -427,6 +470,7 @@ int main(int argc, char** argv) {
                                   {{"the page shows the run", the_page_shows_the_run},
                                    {"exact engine between steps", exact_engine_between_steps},
                                    {"large runs stay in budget", large_runs_stay_in_budget},
+                                   {"periodic images are drawn", periodic_images_are_drawn},
                                    {"snapshot is the state", snapshot_is_the_state},
                                    {"order is seen", order_is_seen}});
     std::filesystem::remove_all(work_dir());

@@ -188,12 +188,13 @@ void Animation::write() {
     std::uint64_t count_max = 0;
     for (std::size_t i = 0; i < count_; ++i)
         count_max = std::max(count_max, last_counters_[2 * i] + last_counters_[2 * i + 1]);
-    std::string meta = "{\"version\": 1, \"particles\": " + std::to_string(count_) +
-                       ", \"box\": " + number(world_.box_size) + ", \"radius\": " + number(world_.radius) +
-                       ", \"engine\": \"" + engine_ + "\", \"substeps\": " + std::to_string(substeps_) +
-                       ", \"steps\": " + std::to_string(steps_) + ", \"every\": " + number(every_) +
-                       ", \"speedMin\": " + number(speed_min_) + ", \"speedMax\": " + number(speed_max_) +
-                       ", \"countMax\": " + std::to_string(count_max) + ", \"times\": [";
+    std::string meta =
+        "{\"version\": 1, \"particles\": " + std::to_string(count_) + ", \"box\": " + number(world_.box_size) +
+        ", \"radius\": " + number(world_.radius) + ", \"engine\": \"" + engine_ +
+        "\", \"substeps\": " + std::to_string(substeps_) + ", \"steps\": " + std::to_string(steps_) +
+        ", \"every\": " + number(every_) + ", \"speedMin\": " + number(speed_min_) +
+        ", \"speedMax\": " + number(speed_max_) + ", \"countMax\": " + std::to_string(count_max) +
+        ", \"periodic\": " + (boundary_ == particlesim::Boundary::periodic ? "true" : "false") + ", \"times\": [";
     for (std::size_t f = 0; f < times_.size(); ++f) meta += (f > 0 ? ", " : "") + number(times_[f]);
     meta += "]";
     if (colour_by_ == ColourBy::psi6) {

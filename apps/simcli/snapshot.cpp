@@ -30,6 +30,25 @@ std::array<int, 3> ramp(double t) {
     return rgb;
 }
 
+// Where a disk is drawn: at its centre, and in a periodic box also at its
+// images across the edges it overlaps (up to four places at a corner).
+std::vector<particlesim::Vec2> drawn_at(const particlesim::Vec2& centre, double radius, double L, bool periodic) {
+    std::vector<particlesim::Vec2> places{centre};
+    if (!periodic) return places;
+    const auto shifts = [&](double coordinate) {
+        std::vector<double> by{0.0};
+        if (coordinate < radius) by.push_back(L);
+        if (coordinate > L - radius) by.push_back(-L);
+        return by;
+    };
+    for (const double dx : shifts(centre.x())) {
+        for (const double dy : shifts(centre.y())) {
+            if (dx != 0.0 || dy != 0.0) places.emplace_back(centre.x() + dx, centre.y() + dy);
+        }
+    }
+    return places;
+}
+
 }  // namespace
 
 void write_snapshot(const std::string& path, const particlesim::World& world,
@@ -58,8 +77,15 @@ void write_snapshot(const std::string& path, const particlesim::World& world,
                  "<rect x=\"0\" y=\"0\" width=\"%.7g\" height=\"%.7g\" fill=\"#ffffff\" stroke=\"#59636e\" "
                  "stroke-width=\"%.7g\"/>\n",
                  L, L, pixel);
+    const bool periodic = boundary == particlesim::Boundary::periodic;
+    if (periodic) {
+        // A disk across an edge shows its part on each side: the box clips
+        // its images.
+        std::fprintf(out, "<clipPath id=\"box\"><rect x=\"0\" y=\"0\" width=\"%.7g\" height=\"%.7g\"/></clipPath>\n", L,
+                     L);
+    }
     // y upwards, as in the box.
-    std::fprintf(out, "<g transform=\"matrix(1 0 0 -1 0 %.7g)\">\n", L);
+    std::fprintf(out, "<g transform=\"matrix(1 0 0 -1 0 %.7g)\"%s>\n", L, periodic ? " clip-path=\"url(#box)\"" : "");
     const bool by_order = colour_by == ColourBy::psi6;
     const std::vector<std::complex<double>> order =
         by_order ? particlesim::local_hexatic_order(particles, world, boundary) : std::vector<std::complex<double>>{};
@@ -67,8 +93,10 @@ void write_snapshot(const std::string& path, const particlesim::World& world,
         const particlesim::Particle& p = particles[i];
         const double t = high > low ? (p.velocity.norm() - low) / (high - low) : 0.5;
         const auto [red, green, blue] = by_order ? psi6_colour(order[i]) : ramp(t);
-        std::fprintf(out, "<circle cx=\"%.7g\" cy=\"%.7g\" r=\"%.7g\" fill=\"rgb(%d,%d,%d)\"/>\n", p.position.x(),
-                     p.position.y(), radius, red, green, blue);
+        for (const particlesim::Vec2& at : drawn_at(p.position, radius, L, periodic)) {
+            std::fprintf(out, "<circle cx=\"%.7g\" cy=\"%.7g\" r=\"%.7g\" fill=\"rgb(%d,%d,%d)\"/>\n", at.x(), at.y(),
+                         radius, red, green, blue);
+        }
     }
     std::fprintf(out, "</g>\n");
     char colour[160];

@@ -35,6 +35,7 @@
   const order = meta.colourBy === "psi6" ? new Uint8Array(bytesOf("run-order")) : null;
   const L = meta.box;
   const r = meta.radius;
+  const periodic = meta.periodic === true;
 
   // ---- elements and settings ----
   const $ = (id) => document.getElementById(id);
@@ -171,21 +172,42 @@
     const palette = byOrder ? psiColours : bucketColours;
     const groups = Array.from({ length: palette.length }, () => []);
     for (let i = 0; i < count; ++i) groups[settings.colour === "fixed" ? 0 : byOrder ? psiGroupOf(f, i) : bucketOf(f, i)].push(i);
+    // In a periodic box a disk across an edge shows its part on each side:
+    // its images are drawn too, clipped to the box.
+    const side = L * scale;
+    const imageShifts = (at, low, high) => {
+      const shifts = [0];
+      if (periodic && at - drawRadius < low) shifts.push(side);
+      if (periodic && at + drawRadius > high) shifts.push(-side);
+      return shifts;
+    };
+    if (periodic) {
+      ctx.save();
+      ctx.beginPath();
+      ctx.rect(px(0), py(L), side, side);
+      ctx.clip();
+    }
     groups.forEach((members, b) => {
       if (members.length === 0) return;
       ctx.fillStyle = settings.colour === "fixed" ? fixedColour : palette[b];
       ctx.beginPath();
       for (const i of members) {
-        const x = px(frames[(f * count + i) * 4]), y = py(frames[(f * count + i) * 4 + 1]);
-        if (asPoints) {
-          ctx.rect(Math.floor(x) - dotOffset, Math.floor(y) - dotOffset, dot, dot);
-        } else {
-          ctx.moveTo(x + drawRadius, y);
-          ctx.arc(x, y, drawRadius, 0, 2 * Math.PI);
+        const x0 = px(frames[(f * count + i) * 4]), y0 = py(frames[(f * count + i) * 4 + 1]);
+        for (const dx of imageShifts(x0, px(0), px(L))) {
+          for (const dy of imageShifts(y0, py(L), py(0))) {
+            const x = x0 + dx, y = y0 + dy;
+            if (asPoints) {
+              ctx.rect(Math.floor(x) - dotOffset, Math.floor(y) - dotOffset, dot, dot);
+            } else {
+              ctx.moveTo(x + drawRadius, y);
+              ctx.arc(x, y, drawRadius, 0, 2 * Math.PI);
+            }
+          }
         }
       }
       ctx.fill();
     });
+    if (periodic) ctx.restore();
     const ring = (i, colour, extra) => {
       ctx.strokeStyle = colour;
       ctx.beginPath();
