@@ -369,7 +369,7 @@ void order_is_seen() {
     CHECK_EQ(out.status, 0);
     const std::string text = run_process::slurp(svg);
     const std::vector<std::string> lattice_colours = disk_colours(text);
-    CHECK_EQ(lattice_colours.size(), std::size_t{100});
+    CHECK(lattice_colours.size() >= std::size_t{100});  // the disks, and the images of those across an edge
     CHECK(std::all_of(lattice_colours.begin(), lattice_colours.end(),
                       [&](const std::string& c) { return c == lattice_colours[0]; }));
     const std::size_t caption = text.find("|psi6| = ");
