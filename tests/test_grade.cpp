@@ -169,6 +169,15 @@ void reference_conforms_everywhere() {
     const std::string md = run_process::slurp(markdown.string());
     CHECK(md.find("| scene | exercises | verdict | first wrong step | seconds | x simcli |") != std::string::npos);
     CHECK(md.find("| 02-ties | exact ties") != std::string::npos);
+    // A scene whose name holds the table's separator stays in its cell.
+    const fs::path odd_suite = work() / "odd-suite";
+    fs::create_directories(odd_suite);
+    std::ofstream(odd_suite / "odd|name.in") << "2 20 1 3 print\n";
+    const Graded odd = grade(odd_suite, {"--no-reference", "--markdown", markdown.string()}, {"/bin/true"});
+    CHECK_EQ(odd.result.status, 1);
+    const std::string odd_md = run_process::slurp(markdown.string());
+    CHECK(odd_md.find("| odd\\|name |  | malformed |") != std::string::npos);
+    CHECK(odd_md.find("- **odd\\|name** (malformed): ") != std::string::npos);
     // Side by side: the same verdicts, and the report says the times are shared.
     const Graded side = grade(small_suite(), {"--jobs", "2"}, {simcli, "{}"});
     CHECK_EQ(side.result.status, 0);

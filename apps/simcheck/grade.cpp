@@ -507,7 +507,7 @@ void write_markdown(std::FILE* out, const Options& o, const std::vector<SceneCas
         out, "| scene | exercises | verdict | first wrong step | seconds | x simcli |\n|---|---|---|---|---|---|\n");
     for (std::size_t k = 0; k < rows.size(); ++k) {
         const Row& r = rows[k];
-        std::fprintf(out, "| %s | %s | %s | %s | %s | %s |\n", cases[k].name.c_str(),
+        std::fprintf(out, "| %s | %s | %s | %s | %s | %s |\n", markdown_cell(cases[k].name).c_str(),
                      markdown_cell(cases[k].exercises).c_str(), r.verdict.c_str(),
                      r.step ? std::to_string(*r.step).c_str() : "", seconds_text(r.seconds).c_str(),
                      ratio_text(r).c_str());
@@ -516,7 +516,7 @@ void write_markdown(std::FILE* out, const Options& o, const std::vector<SceneCas
     for (std::size_t k = 0; k < rows.size(); ++k) {
         const Row& r = rows[k];
         if (r.message.empty() && r.deviations.empty()) continue;
-        std::fprintf(out, "- **%s** (%s): %s\n", cases[k].name.c_str(), r.verdict.c_str(),
+        std::fprintf(out, "- **%s** (%s): %s\n", markdown_cell(cases[k].name).c_str(), r.verdict.c_str(),
                      markdown_cell(r.message).c_str());
         for (const std::string& d : r.deviations) std::fprintf(out, "  - %s\n", markdown_cell(d).c_str());
     }
