@@ -550,6 +550,18 @@ void suite_checks_cleanly() {
     const std::string some_manifest = run_process::slurp(some + "/manifest.tsv");
     CHECK_EQ(std::count(some_manifest.begin(), some_manifest.end(), '\n'), 3);
     CHECK(!std::filesystem::exists(work_dir() + "/never-written"));
+    // Written afresh, a suite's directory says nothing; holding scenes this run
+    // did not write (which simcheck grade would grade too), it says which.
+    const run_process::Result again = run_process::run(simgen, {"suite", dir});
+    CHECK_EQ(again.status, 0);
+    CHECK_EQ(again.err, std::string());
+    std::ofstream(dir + "/mine.in") << "3 20 1 3 print\n";
+    const run_process::Result with_mine = run_process::run(simgen, {"suite", dir});
+    CHECK_EQ(with_mine.status, 0);
+    CHECK(with_mine.err.find("also holds 1 scene this run did not write (mine.in)") != std::string::npos);
+    const run_process::Result fewer = run_process::run(simgen, {"suite", some, "--only", "cradle"});
+    CHECK_EQ(fewer.status, 0);
+    CHECK(fewer.err.find("also holds 1 scene this run did not write (04-line.in)") != std::string::npos);
     // Help anywhere is help, never a directory to write.
     for (const std::vector<std::string>& arguments :
          {std::vector<std::string>{"suite", "--help"}, std::vector<std::string>{"gas", "-h"}}) {

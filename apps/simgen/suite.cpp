@@ -94,6 +94,27 @@ void write_expected_output(const Scene& scene, const std::string& path) {
     if (std::fclose(file) != 0) throw std::runtime_error(path + ": cannot write: " + std::strerror(errno));
 }
 
+// simcheck grade grades every *.in of the directory: scenes this run did not
+// write (another suite's, or a user's) would be graded with it, so say so.
+void warn_of_other_scenes(const std::string& directory, const std::vector<std::string>& written) {
+    std::vector<std::string> others;
+    std::error_code error;
+    for (const auto& entry : std::filesystem::directory_iterator(directory, error)) {
+        const std::string name = entry.path().filename().string();
+        if (entry.path().extension() == ".in" && std::find(written.begin(), written.end(), name) == written.end())
+            others.push_back(name);
+    }
+    if (others.empty()) return;
+    std::sort(others.begin(), others.end());
+    std::string listed;
+    for (std::size_t k = 0; k < others.size() && k < 3; ++k) listed += (k > 0 ? ", " : "") + others[k];
+    if (others.size() > 3) listed += " and " + std::to_string(others.size() - 3) + " more";
+    std::fprintf(stderr,
+                 "simgen: %s also holds %zu scene%s this run did not write (%s): simcheck grade grades every *.in "
+                 "there\n",
+                 directory.c_str(), others.size(), others.size() == 1 ? "" : "s", listed.c_str());
+}
+
 }  // namespace
 
 std::vector<std::string> suite_case_names() {
@@ -108,6 +129,7 @@ void write_suite(const std::string& directory, std::uint64_t seed, const std::ve
     if (error) throw std::runtime_error(directory + ": cannot make the directory: " + error.message());
     std::ofstream manifest(directory + "/manifest.tsv");
     manifest << "case\tfamily\tparticles\tbox\tradius\tsteps\tmode\texercises\n";
+    std::vector<std::string> written;
     int number = 0;
     for (const SuiteCase& c : suite_cases(seed)) {
         ++number;
@@ -116,6 +138,7 @@ void write_suite(const std::string& directory, std::uint64_t seed, const std::ve
         char prefix[16];
         std::snprintf(prefix, sizeof prefix, "%02d-", number);
         const std::string stem = directory + "/" + prefix + c.name;
+        written.push_back(std::string(prefix) + c.name + ".in");
         {
             std::ofstream in(stem + ".in");
             write_scene(in, scene);
@@ -131,6 +154,7 @@ void write_suite(const std::string& directory, std::uint64_t seed, const std::ve
                  << '\t' << (scene.mode == OutputMode::print ? "print" : "perf") << '\t' << c.exercises << '\n';
     }
     if (!manifest.flush()) throw std::runtime_error(directory + "/manifest.tsv: cannot write");
+    warn_of_other_scenes(directory, written);
 }
 
 }  // namespace simgen
