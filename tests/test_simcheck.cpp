@@ -16,6 +16,7 @@
 #include <cerrno>
 #include <charconv>
 #include <cmath>
+#include <csignal>
 #include <cstdlib>
 #include <cstring>
 #include <filesystem>
@@ -562,6 +563,24 @@ void suite_checks_cleanly() {
     const run_process::Result fewer = run_process::run(simgen, {"suite", some, "--only", "cradle"});
     CHECK_EQ(fewer.status, 0);
     CHECK(fewer.err.find("also holds 1 scene this run did not write (04-line.in)") != std::string::npos);
+    // Stopped halfway, a suite leaves whole files or none: SIGTERM as the
+    // default scene's expected output (6 MB, the largest) is being written.
+    const std::string stopped = work_dir() + "/stopped";
+    std::filesystem::remove_all(stopped);
+    const run_process::Result halfway = run_process::run(
+        simgen, {"suite", stopped}, "", "", false, run_process::Signal(SIGTERM, 0, stopped + "/10-random-default.in"));
+    CHECK_EQ(halfway.status, 128 + SIGTERM);
+    int whole = 0;
+    for (const auto& entry : std::filesystem::directory_iterator(stopped)) {
+        const std::string name = entry.path().filename();
+        check::Context context("left by the stopped suite: ", name);
+        CHECK(name.find(".partial") == std::string::npos);
+        const bool same = run_process::slurp(entry.path().string()) == run_process::slurp(dir + "/" + name);
+        CHECK(same);
+        whole += same;
+    }
+    CHECK(whole >= 19);  // the nine cases before and the scene of the tenth
+    CHECK(!std::filesystem::exists(stopped + "/manifest.tsv"));
     // Help anywhere is help, never a directory to write.
     for (const std::vector<std::string>& arguments :
          {std::vector<std::string>{"suite", "--help"}, std::vector<std::string>{"gas", "-h"}}) {

@@ -1,5 +1,7 @@
 #include "suite.hpp"
 
+#include "whole_file.hpp"
+
 #include "particlesim/particlesim.hpp"
 
 #include <algorithm>
@@ -8,7 +10,7 @@
 #include <cstdio>
 #include <cstring>
 #include <filesystem>
-#include <fstream>
+#include <sstream>
 #include <stdexcept>
 #include <vector>
 
@@ -72,9 +74,7 @@ std::string shortest(double value) {
 }
 
 void write_expected_output(const Scene& scene, const std::string& path) {
-    std::FILE* file = std::fopen(path.c_str(), "wb");
-    if (!file) throw std::runtime_error(path + ": cannot write: " + std::strerror(errno));
-    try {
+    write_whole_file(path, [&](std::FILE* file) {
         SteppedOptions reference;
         reference.pair_search = PairSearch::brute_force;
         reference.threads = 1;
@@ -87,11 +87,11 @@ void write_expected_output(const Scene& scene, const std::string& path) {
         });
         writer.write_final(scene.steps, engine.particles());
         writer.flush();
-    } catch (...) {
-        std::fclose(file);
-        throw;
-    }
-    if (std::fclose(file) != 0) throw std::runtime_error(path + ": cannot write: " + std::strerror(errno));
+    });
+}
+
+void write_text(const std::string& path, const std::string& text) {
+    write_whole_file(path, [&](std::FILE* file) { std::fwrite(text.data(), 1, text.size(), file); });
 }
 
 // simcheck grade grades every *.in of the directory: scenes this run did not
@@ -127,7 +127,7 @@ void write_suite(const std::string& directory, std::uint64_t seed, const std::ve
     std::error_code error;
     std::filesystem::create_directories(directory, error);
     if (error) throw std::runtime_error(directory + ": cannot make the directory: " + error.message());
-    std::ofstream manifest(directory + "/manifest.tsv");
+    std::ostringstream manifest;
     manifest << "case\tfamily\tparticles\tbox\tradius\tsteps\tmode\texercises\n";
     std::vector<std::string> written;
     int number = 0;
@@ -139,11 +139,9 @@ void write_suite(const std::string& directory, std::uint64_t seed, const std::ve
         std::snprintf(prefix, sizeof prefix, "%02d-", number);
         const std::string stem = directory + "/" + prefix + c.name;
         written.push_back(std::string(prefix) + c.name + ".in");
-        {
-            std::ofstream in(stem + ".in");
-            write_scene(in, scene);
-            if (!in) throw std::runtime_error(stem + ".in: cannot write");
-        }
+        std::ostringstream scene_text;
+        write_scene(scene_text, scene);
+        write_text(stem + ".in", scene_text.str());
         write_expected_output(scene, stem + ".out");
         const char* family = "";
         for (const SceneFamilyInfo& info : scene_families()) {
@@ -153,7 +151,7 @@ void write_suite(const std::string& directory, std::uint64_t seed, const std::ve
                  << shortest(scene.world.box_size) << '\t' << shortest(scene.world.radius) << '\t' << scene.steps
                  << '\t' << (scene.mode == OutputMode::print ? "print" : "perf") << '\t' << c.exercises << '\n';
     }
-    if (!manifest.flush()) throw std::runtime_error(directory + "/manifest.tsv: cannot write");
+    write_text(directory + "/manifest.tsv", manifest.str());
     warn_of_other_scenes(directory, written);
 }
 
