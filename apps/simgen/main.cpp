@@ -13,6 +13,7 @@
 #include <cmath>
 #include <cstdio>
 #include <iostream>
+#include <limits>
 #include <new>
 #include <optional>
 #include <stdexcept>
@@ -87,9 +88,15 @@ template <typename T>
 T parse_number(const std::string& option, const std::string& text) {
     T value{};
     const auto [end, error] = std::from_chars(text.data(), text.data() + text.size(), value);
-    if (error != std::errc() || end != text.data() + text.size()) {
-        throw BadUsage(option + " needs a number, not \"" + text + "\"");
+    const bool parsed = error == std::errc() && end == text.data() + text.size();
+    if constexpr (std::is_integral_v<T>) {
+        // Counts, steps and seeds: whole numbers from 0 within the type's range.
+        if (!parsed || value < T{0}) {
+            throw BadUsage(option + " needs a whole number from 0 to " + std::to_string(std::numeric_limits<T>::max()) +
+                           ", not \"" + text + "\"");
+        }
     }
+    if (!parsed) throw BadUsage(option + " needs a number, not \"" + text + "\"");
     if constexpr (std::is_floating_point_v<T>) {
         if (!std::isfinite(value)) throw BadUsage(option + " needs a finite number, not \"" + text + "\"");
     }
