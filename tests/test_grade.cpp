@@ -182,6 +182,9 @@ void reference_conforms_everywhere() {
     const Graded side = grade(small_suite(), {"--jobs", "2"}, {simcli, "{}"});
     CHECK_EQ(side.result.status, 0);
     CHECK(side.result.out.find("2 scenes ran side by side") != std::string::npos);
+    // No more ran side by side than there are scenes.
+    const Graded wide = grade(small_suite(), {"--jobs", "8", "--no-reference"}, {"/bin/true"});
+    CHECK(wide.result.out.find("(4 scenes ran side by side") != std::string::npos);
 }
 
 // The verdicts alone: no reference simcli is timed (--no-reference).

@@ -221,6 +221,10 @@ void bad_usage() {
         run_process::run("/bin/sh", {"-c", "exec \"$0\" \"$@\" >&-", simcheck, scene, output});
     CHECK_EQ(closed.status, 2);
     CHECK_EQ(closed.err, std::string("simcheck: cannot write the report: Bad file descriptor\n"));
+    // A third file (a value given to --json, which takes none) is named.
+    const run_process::Result third = run_process::run(simcheck, {scene, output, "--json", "report.json"});
+    CHECK_EQ(third.status, 2);
+    CHECK(third.err.find("\"report.json\" would be a third") != std::string::npos);
     CHECK_EQ(run_process::run(simcheck, {"--substeps", "0", "a", "b"}).status, 2);
     CHECK_EQ(run_process::run(simcheck, {"--frobnicate", "a", "b"}).status, 2);
     const run_process::Result help = run_process::run(simcheck, {"--help"});

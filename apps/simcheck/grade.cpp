@@ -452,10 +452,13 @@ std::string program_text(const Options& o) {
 }
 
 std::string header_text(const Options& o, std::size_t scenes, int conforming) {
+    // No more ran at once than there are scenes.
+    const std::size_t side_by_side = std::min(static_cast<std::size_t>(o.jobs), scenes);
     return "simcheck grade: " + o.program_text + " on " + o.suite.string() + ": " + std::to_string(conforming) +
            " of " + std::to_string(scenes) + " scenes conform" +
-           (o.jobs > 1 ? " (" + std::to_string(o.jobs) + " scenes ran side by side: times are shared-machine times)"
-                       : "");
+           (side_by_side > 1
+                ? " (" + std::to_string(side_by_side) + " scenes ran side by side: times are shared-machine times)"
+                : "");
 }
 
 void write_text(std::FILE* out, const Options& o, const std::vector<SceneCase>& cases, const std::vector<Row>& rows,

@@ -94,6 +94,9 @@ std::optional<Arguments> parse_arguments(int argc, char** argv) {
             files.push_back(arg);
         }
     }
+    if (files.size() > 2) {
+        throw BadUsage("takes a SCENE and an OUTPUT, and \"" + files[2] + "\" would be a third (simcheck --help)");
+    }
     if (files.size() != 2) throw BadUsage("needs a SCENE and an OUTPUT (simcheck --help)");
     if (files[0] == "-" && files[1] == "-") throw BadUsage("SCENE and OUTPUT cannot both be stdin");
     require_consistent_rules(args.options, substeps_given);
