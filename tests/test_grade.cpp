@@ -959,6 +959,34 @@ void bad_usage() {
         simcheck, {"grade", small_suite().string(), "--outputs", (small_suite() / ".").string(), "--", simcli});
     CHECK_EQ(into_suite.status, 2);
     CHECK(into_suite.err.find("would replace its expected outputs") != std::string::npos);
+    // Reports and kept outputs that cannot be written are refused before any
+    // run (the program would leave its mark in the run's directory's parent).
+    const std::string marker = (work() / "ran.mark").string();
+    const std::string marking = script("marking.sh", "touch " + marker + "\n");
+    const fs::path a_file = work() / "a-file";
+    std::ofstream(a_file) << "";
+    const std::vector<std::pair<std::vector<std::string>, std::string>> unwritable{
+        {{"--outputs", a_file.string()}, "--outputs " + a_file.string() + ": cannot make the directory: "},
+        {{"--json", work().string()}, "--json " + work().string() + ": is a directory"},
+        {{"--markdown", "/nonexistent/report.md"},
+         "--markdown /nonexistent/report.md: cannot write: No such file or directory"},
+    };
+    for (const auto& [options, message] : unwritable) {
+        std::vector<std::string> args{"grade", small_suite().string(), "--no-reference"};
+        args.insert(args.end(), options.begin(), options.end());
+        args.insert(args.end(), {"--", marking});
+        const run_process::Result refused = run_process::run(simcheck, args);
+        check::Context context(options[0], ": ", refused.err);
+        CHECK_EQ(refused.status, 2);
+        CHECK(refused.err.find("simcheck grade: " + message) == 0);
+        CHECK(!fs::exists(marker));
+    }
+    // With a report it can write, the same grade runs the program, which leaves its mark.
+    const run_process::Result writable =
+        run_process::run(simcheck, {"grade", small_suite().string(), "--no-reference", "--json",
+                                    (work() / "marking.json").string(), "--", marking});
+    CHECK_EQ(writable.status, 1);  // no output: every scene malformed
+    CHECK(fs::exists(marker));
     // A directory is not a program; a scene the grader cannot read is named, before any run.
     const run_process::Result directory =
         run_process::run(simcheck, {"grade", small_suite().string(), "--", work().string()});

@@ -568,6 +568,18 @@ bool lies_within(const fs::path& path, const fs::path& directory) {
     return std::mismatch(outer.begin(), outer.end(), inside.begin(), inside.end()).first == outer.end();
 }
 
+// Opens `path` for writing as the report will (making it, then removing what
+// it made), so that an unwritable report is refused before any program runs.
+void require_can_write(const std::string& option, const std::string& path) {
+    std::error_code error;
+    if (fs::is_directory(path, error)) throw BadUsage(option + " " + path + ": is a directory");
+    const bool existed = fs::exists(path, error);
+    std::FILE* file = std::fopen(path.c_str(), "ab");
+    if (!file) throw BadUsage(option + " " + path + ": cannot write: " + std::strerror(errno));
+    std::fclose(file);
+    if (!existed) std::remove(path.c_str());
+}
+
 void write_report_file(const std::string& path, const std::function<void(std::FILE*)>& write) {
     std::FILE* file = std::fopen(path.c_str(), "wb");
     if (!file) throw std::runtime_error(path + ": cannot write: " + std::strerror(errno));
@@ -612,8 +624,12 @@ int grade_main(int argc, char** argv) {
             if (fs::equivalent(o.outputs_dir, o.suite, error))
                 throw BadUsage("--outputs " + o.outputs_dir +
                                " is the suite: the outputs, NAME.out, would replace its expected outputs");
-            fs::create_directories(o.outputs_dir);
+            fs::create_directories(o.outputs_dir, error);
+            if (error) throw BadUsage("--outputs " + o.outputs_dir + ": cannot make the directory: " + error.message());
         }
+        // A report that cannot be written fails now, not after the runs.
+        if (!o.json_path.empty()) require_can_write("--json", o.json_path);
+        if (!o.markdown_path.empty()) require_can_write("--markdown", o.markdown_path);
         const std::vector<SceneCase> cases = read_suite(o.suite, o.check.boundary);
         const std::optional<std::string> reference = find_reference(o);
 
