@@ -416,6 +416,21 @@ void write_failures() {
     const Result bad_path = simcli_run({"-o", "/nonexistent/dir/out.txt"}, scene);
     CHECK_EQ(bad_path.status, 1);
     CHECK(one_line(bad_path.err));
+    // The pictures' files are tried before the run, not after it: no step
+    // ran, so no checkpoint was written (one is due every 10 steps).
+    char pictures_directory[] = "/tmp/particlesim-cli-XXXXXX";
+    const std::string pictures = mkdtemp(pictures_directory);
+    for (const char* option : {"--snapshot", "--animate"}) {
+        check::Context context(option);
+        const std::string checkpoint = pictures + "/" + (option + 2) + ".checkpoint";
+        const Result picture = simcli_run(
+            {option, "/nonexistent/dir/picture", "--checkpoint", checkpoint, "--checkpoint-every", "10"}, scene);
+        CHECK_EQ(picture.status, 1);
+        CHECK(one_line(picture.err));
+        CHECK(picture.err.find("/nonexistent/dir/picture: ") != std::string::npos);
+        CHECK(!std::filesystem::exists(checkpoint));
+    }
+    std::filesystem::remove_all(pictures);
     // Started with stdout closed (`>&-`), the steps are not written into a file opened later as descriptor 1
     // (the trajectory): a write error, as with stdout a closed pipe.
     char directory[] = "/tmp/particlesim-cli-XXXXXX";

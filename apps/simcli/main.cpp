@@ -61,6 +61,9 @@ struct Pictures {
     // --trajectory and --observables opened, and --checkpoint tried, before
     // anything runs: a file that cannot be written is bad input.
     void open_files(const CliOptions& options, const World& world, Boundary box_boundary, std::int64_t steps) {
+        // The picture is written at its step, perhaps the last: tried now, and
+        // refused as --animate's page is (a failure to write, exit 1).
+        if (options.snapshot_path) require_can_create(*options.snapshot_path);
         try {
             if (options.trajectory_path) {
                 trajectory.emplace(*options.trajectory_path, world, box_boundary, options.trajectory_every, steps);
