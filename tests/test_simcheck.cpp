@@ -309,6 +309,19 @@ void exact_engine_outputs_pass() {
         if (dense.status != 0) std::fprintf(stderr, "exact, dense: %s\n", dense.out.c_str());
         CHECK_EQ(dense.status, 0);
     }
+    // In the shortest form that reads back (--exact-numbers) the printed
+    // numbers are the doubles themselves, and the report says so (it said
+    // "known within 0", then "within that rounding" of the chaotic steps).
+    const std::string gas_text = scene_text(family_scene(SceneFamily::gas, 3, 50, 20));
+    for (const std::vector<std::string>& engine :
+         {std::vector<std::string>{}, std::vector<std::string>{"--engine", "exact"}}) {
+        std::vector<std::string> simcli_args = engine;
+        simcli_args.emplace_back("--exact-numbers");
+        const Verdict exact_numbers = run_simcheck(gas_text, run_simcli(gas_text, simcli_args), engine);
+        CHECK_EQ(exact_numbers.status, 0);
+        CHECK(exact_numbers.first_line.find("; printed numbers read as the exact doubles") != std::string::npos);
+        CHECK(exact_numbers.out.find("within 0") == std::string::npos);
+    }
     // The stepped rules are not hard disks: a crowded stepped output fails the exact check.
     const Scene gas = family_scene(SceneFamily::lattice, 7, 200, 20);
     const Verdict stepped = run_simcheck(scene_text(gas), run_simcli(scene_text(gas), {}), {"--engine", "exact"});

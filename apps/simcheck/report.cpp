@@ -22,6 +22,18 @@ std::string state_text(const Particle& p) {
            "  vy " + number(p.velocity.y());
 }
 
+// How the printed numbers are taken: within half their last digit, or, in
+// the shortest form that reads back (--exact-numbers), as the doubles
+// themselves, whose last bits still round in any program's arithmetic.
+std::string how_numbers_are_read(double uncertainty) {
+    if (uncertainty > 0.0) {
+        char text[64];
+        std::snprintf(text, sizeof text, "known within %g", uncertainty);
+        return text;
+    }
+    return "the exact doubles";
+}
+
 }  // namespace
 
 std::string json_string(const std::string& text) {
@@ -84,9 +96,8 @@ void write_text_report(std::FILE* out, const Judgement& judgement, const ReportC
         if (f.printed) std::fprintf(out, "  printed   %s\n", state_text(*f.printed).c_str());
         if (f.expected && f.printed) {
             std::fprintf(out,
-                         "  (printed numbers are read as known within %g; \"expected\" is the middle of what "
-                         "the rules allow)\n",
-                         report.uncertainty);
+                         "  (printed numbers are read as %s; \"expected\" is the middle of what the rules allow)\n",
+                         how_numbers_are_read(report.uncertainty).c_str());
         }
         if (!judgement.deviations.empty()) {
             std::fprintf(out, "  (read despite deviations from io.md's shape:)\n");
@@ -107,10 +118,11 @@ void write_text_report(std::FILE* out, const Judgement& judgement, const ReportC
     std::fprintf(out, " %zu particles, %lld steps, checked against %s", report.particles,
                  static_cast<long long>(report.steps), context.rules.c_str());
     std::fprintf(out, report.steps_checked > 0 ? " step by step" : " from the initial state");
-    std::fprintf(out, "; printed numbers read as known within %g\n", report.uncertainty);
+    std::fprintf(out, "; printed numbers read as %s\n", how_numbers_are_read(report.uncertainty).c_str());
     if (report.within_rounding_count > 0) {
-        std::fprintf(out, "%zu decision(s) of the rules were within that rounding; either outcome was accepted:\n",
-                     report.within_rounding_count);
+        std::fprintf(out, "%zu decision(s) of the rules were within %s; either outcome was accepted:\n",
+                     report.within_rounding_count,
+                     report.uncertainty > 0.0 ? "that rounding" : "the rounding of the doubles' last bits");
         for (const auto& [step, what] : report.within_rounding) {
             std::fprintf(out, "  step %lld: %s\n", static_cast<long long>(step), what.c_str());
         }
