@@ -183,6 +183,8 @@ void bad_usage() {
     expect_rejected({"--grid", "4097"}, scene, "simcli: --grid", "[1, 4096]");  // refused, not clamped
     expect_rejected({"--broadphase", "brute", "--grid", "4"}, scene, "simcli: --grid", "not with --broadphase brute");
     expect_rejected({"--grid", "4", "--broadphase", "brute"}, scene, "simcli: --grid", "not with --broadphase brute");
+    expect_rejected({"--grid", "4", "--broadphase", "paths"}, scene, "simcli: --grid", "not with --broadphase paths");
+    CHECK(simcli_run({"--grid", "4", "--broadphase", "grid"}, scene).out == simcli_run({}, scene).out);
     expect_rejected({"--substeps", "0"}, scene, "simcli: --substeps", "expected an integer in [1, 1048576]");
     expect_rejected({"--engine", "exact", "--substeps", "2"}, scene, "simcli: --broadphase, --grid and --substeps",
                     "not to --engine exact");

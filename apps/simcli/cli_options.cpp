@@ -34,6 +34,7 @@ Simulates N hard disks bouncing elastically in a square box, in discrete steps.
                                    pair search (default auto); all give identical output
       --grid G                     the grid search with a G x G grid (1 <= G <= 4096;
                                    4 = the 4 x 4 grid of L/4 cells); not with --broadphase brute
+                                   or paths
       --substeps K                 K micro-steps per step (default 1)
       --engine step|exact          exact = continuous-time event-driven engine
                                    (one thread; needs a start without overlaps)
@@ -173,9 +174,12 @@ void check_combinations(CliOptions& options, const Given& given) {
     if (options.engine == EngineChoice::exact && given.step_engine_options) {
         throw BadInput("--broadphase, --grid and --substeps belong to the step engine, not to --engine exact");
     }
-    // --grid G is a grid search with a G x G grid; it contradicts only --broadphase brute.
-    if (options.stepped.grid_cells && given.pair_search == PairSearch::brute_force) {
-        throw BadInput("--grid G is the grid search, not with --broadphase brute");
+    // --grid G is a grid search with a G x G grid: with --broadphase grid or
+    // auto, not with another search asked for by name.
+    if (options.stepped.grid_cells && given.pair_search &&
+        (*given.pair_search == PairSearch::brute_force || *given.pair_search == PairSearch::paths)) {
+        throw BadInput(std::string("--grid G is the grid search, not with --broadphase ") +
+                       particlesim::pair_search_name(*given.pair_search));
     }
     options.stepped.pair_search =
         options.stepped.grid_cells ? PairSearch::grid : given.pair_search.value_or(PairSearch::automatic);
