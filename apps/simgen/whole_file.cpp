@@ -58,32 +58,32 @@ void write_whole_file(const std::string& path, const std::function<void(std::FIL
     }
     std::memcpy(partial_path, partial.c_str(), partial.size() + 1);
     partial_listed = 1;
+    // Every way out but the rename removes the partial file, keeping errno for the message.
+    const auto abandon = [&] {
+        const int error = errno;
+        std::remove(partial.c_str());
+        partial_listed = 0;
+        errno = error;
+    };
     std::FILE* file = std::fopen(partial.c_str(), "wb");
     if (!file) {
-        partial_listed = 0;
+        abandon();
         fail(path, "cannot write");
     }
     try {
         write(file);
     } catch (...) {
         std::fclose(file);
-        std::remove(partial.c_str());
-        partial_listed = 0;
+        abandon();
         throw;
     }
     const bool written = !std::ferror(file);
     if (std::fclose(file) != 0 || !written) {
-        const int error = errno;
-        std::remove(partial.c_str());
-        partial_listed = 0;
-        errno = error;
+        abandon();
         fail(path, "cannot write");
     }
     if (std::rename(partial.c_str(), path.c_str()) != 0) {
-        const int error = errno;
-        std::remove(partial.c_str());
-        partial_listed = 0;
-        errno = error;
+        abandon();
         fail(path, "cannot put in place");
     }
     partial_listed = 0;

@@ -91,18 +91,16 @@ UniformGrid periodic_neighbour_grid(const World& world, std::size_t particle_cou
     const int side =
         cells_per_side.value_or(std::max(cells_per_side_for(world, particle_count), periodic_cells_at_least));
     const std::string at_least = std::to_string(periodic_cells_at_least);
+    const std::string needs = "particlesim::ExactSimulation: a periodic box needs at least " + at_least +
+                              " cells a side, each wider than a contact distance";
     if (world.box_size / periodic_cells_at_least < reach) {
-        throw std::invalid_argument("particlesim::ExactSimulation: a periodic box needs at least " + at_least +
-                                    " cells a side, each wider than a contact distance (2r and a margin for "
-                                    "rounding, " +
-                                    format_short(reach) + "): L must exceed " + at_least + " x " + format_short(reach) +
-                                    " = " + format_short(periodic_cells_at_least * reach) + ", not " +
+        throw std::invalid_argument(needs + " (2r and a margin for rounding, " + format_short(reach) +
+                                    "): L must exceed " + at_least + " x " + format_short(reach) + " = " +
+                                    format_short(periodic_cells_at_least * reach) + ", not " +
                                     format_short(world.box_size));
     }
     if (side < periodic_cells_at_least || world.box_size / side < reach) {
-        throw std::invalid_argument("particlesim::ExactSimulation: a periodic box needs at least " + at_least +
-                                    " cells a side, each wider than a contact distance: cells_per_side from " +
-                                    at_least + " to " +
+        throw std::invalid_argument(needs + ": cells_per_side from " + at_least + " to " +
                                     std::to_string(static_cast<long long>(std::floor(world.box_size / reach))) +
                                     " here, not " + std::to_string(side));
     }

@@ -335,24 +335,28 @@ private:
         predict_all();
     }
 
-    [[noreturn]] void refuse_jammed(std::uint64_t events) const {
+    // The area fraction the disks fill now, and the events so far a disk: what a refusal names.
+    [[nodiscard]] double fraction_reached() const {
         const double radius = radius_at(now_);
-        const double reached = static_cast<double>(count_) * std::numbers::pi * radius * radius / (box_ * box_);
+        return static_cast<double>(count_) * std::numbers::pi * radius * radius / (box_ * box_);
+    }
+    [[nodiscard]] double per_disk(std::uint64_t events) const {
+        return static_cast<double>(events) / std::max<double>(count_, 1.0);
+    }
+
+    [[noreturn]] void refuse_jammed(std::uint64_t events) const {
         throw std::invalid_argument("particlesim::make_family_scene: the disks jammed at area fraction " +
-                                    format_brief(reached) + " before reaching " + format_short(request_.area_fraction) +
-                                    " (after " +
-                                    format_brief(static_cast<double>(events) / std::max<double>(count_, 1.0)) +
+                                    format_brief(fraction_reached()) + " before reaching " +
+                                    format_short(request_.area_fraction) + " (after " + format_brief(per_disk(events)) +
                                     " events a disk); ask for a lower fraction or a slower growth rate");
     }
 
     [[noreturn]] void refuse_too_slow(std::uint64_t events, double window_growth) const {
-        const double radius = radius_at(now_);
-        const double reached = static_cast<double>(count_) * std::numbers::pi * radius * radius / (box_ * box_);
         throw std::invalid_argument(
-            "particlesim::make_family_scene: the compression took its most events (" +
-            format_brief(static_cast<double>(events) / std::max<double>(count_, 1.0)) + " a disk) at area fraction " +
-            format_brief(reached) + ", short of " + format_short(request_.area_fraction) + ", still growing (" +
-            format_brief(100.0 * window_growth) + " % over the last " + format_brief(events_per_disk_in_window) +
+            "particlesim::make_family_scene: the compression took its most events (" + format_brief(per_disk(events)) +
+            " a disk) at area fraction " + format_brief(fraction_reached()) + ", short of " +
+            format_short(request_.area_fraction) + ", still growing (" + format_brief(100.0 * window_growth) +
+            " % over the last " + format_brief(events_per_disk_in_window) +
             " events a disk): ask for a faster growth rate than " + format_short(request_.growth_rate));
     }
 
