@@ -310,8 +310,8 @@ void exact_engine_outputs_pass() {
         CHECK_EQ(dense.status, 0);
     }
     // In the shortest form that reads back (--exact-numbers) the printed
-    // numbers are the doubles themselves, and the report says so (it said
-    // "known within 0", then "within that rounding" of the chaotic steps).
+    // numbers are the doubles themselves, and the report says so, not that
+    // they are known "within 0".
     const std::string gas_text = scene_text(family_scene(SceneFamily::gas, 3, 50, 20));
     for (const std::vector<std::string>& engine :
          {std::vector<std::string>{}, std::vector<std::string>{"--engine", "exact"}}) {
@@ -438,8 +438,8 @@ void every_family_checks_cleanly() {
         CHECK_EQ(v.status, 0);
     }
     // Thousands of disks with each family's defaults (its box from N): the
-    // walls family's box once held at most 313, the fast family's 100 r about
-    // 1600 disks.
+    // walls family's box must hold the disks along its walls as well as the
+    // pairs inside, and the fast family's must grow past 100 r.
     for (const SceneFamilyInfo& info : scene_families()) {
         std::vector<std::string> arguments{info.name, "-n", "2000", "-s", "1"};
         if (info.family == SceneFamily::compressed) arguments.insert(arguments.end(), {"--fraction", "0.3"});
@@ -453,8 +453,8 @@ void every_family_checks_cleanly() {
         if (info.family != SceneFamily::ties) CHECK_EQ(scene.particle_count, std::size_t{2000});
     }
     // Clusters of a few disks each, at the default fraction and at the
-    // highest: random placement fills them (drawn wider where it must; 5 to 8
-    // disks and 21 to 32 once failed at the default 0.4).
+    // highest: random placement fills them, drawn wider where it must (a
+    // cluster of 2 at 0.4 is mostly the margin along its walls).
     for (std::size_t n = 1; n <= 40; ++n) {
         for (const double fraction : {0.4, 0.5}) {
             check::Context context("clusters of ", n, " disks at ", fraction);
@@ -471,9 +471,9 @@ void every_family_checks_cleanly() {
             CHECK_EQ(made, n);
         }
     }
-    // No disks: an empty scene in a box of the family's size (the lattice's
-    // once came out 3e19 wide, the crystal refused it), or, for the cradle,
-    // which needs two, a refusal that says so.
+    // No disks: an empty scene in a box of the family's size (no wider than
+    // the random family's 20000), or, for the cradle, which needs two, a
+    // refusal that says so.
     for (const SceneFamilyInfo& info : scene_families()) {
         const run_process::Result none = run_process::run(simgen, {info.name, "-n", "0", "-s", "1"});
         check::Context context(info.name, " -n 0: ", none.err);
