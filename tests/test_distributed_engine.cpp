@@ -272,6 +272,65 @@ void a_bad_scene_is_refused_on_every_rank() {
     CHECK_EQ(all_refused, 1);
 }
 
+// What SteppedSimulation refuses in its options, on every rank, with its
+// message; and options bad on one rank only still refuse on all, with that
+// rank's message.
+void bad_options_are_refused_on_every_rank() {
+    const World world{10.0, 1.0};
+    const auto refusal = [&](const SteppedOptions& options, bool restoring) {
+        std::string message;
+        try {
+            const std::vector<Particle> none;
+            if (restoring) {
+                std::istringstream saved("stepped-engine-state 1 0 0 0 0 0 ");
+                DistributedSimulation::restore(MPI_COMM_WORLD, world, rank_here() == 0 ? &saved : nullptr, options);
+            } else {
+                DistributedSimulation engine(MPI_COMM_WORLD, world, none, options);
+            }
+        } catch (const std::invalid_argument& e) {
+            message = e.what();
+        }
+        int all_refused = message.empty() ? 0 : 1;
+        MPI_Allreduce(MPI_IN_PLACE, &all_refused, 1, MPI_INT, MPI_MIN, MPI_COMM_WORLD);
+        CHECK_EQ(all_refused, message.empty() ? 0 : 1);
+        return message;
+    };
+    const auto stepped_refusal = [&](const SteppedOptions& options) {
+        try {
+            SteppedSimulation(world, {}, options);
+        } catch (const std::invalid_argument& e) {
+            return std::string(e.what());
+        }
+        return std::string();
+    };
+    const std::vector<SteppedOptions> bad{{.threads = 0},
+                                          {.threads = -4},
+                                          {.substeps = 0},
+                                          {.sort_by_position_every = -1},
+                                          {.pair_search = PairSearch::grid, .grid_cells = 0},
+                                          {.pair_search = PairSearch::brute_force, .grid_cells = 3},
+                                          {.pair_search = static_cast<PairSearch>(9)}};
+    for (const SteppedOptions& options : bad) {
+        for (const bool restoring : {false, true}) {
+            const check::Context context("bad options #", &options - bad.data(), restoring ? ", restoring" : "");
+            const std::string message = refusal(options, restoring);
+            CHECK(!message.empty());
+            CHECK_EQ(message, stepped_refusal(options));
+        }
+    }
+    CHECK_EQ(refusal({}, false), "");
+    CHECK_EQ(refusal({}, true), "");
+    // Threads refused on the last rank only.
+    const int ranks = [] {
+        int count = 1;
+        MPI_Comm_size(MPI_COMM_WORLD, &count);
+        return count;
+    }();
+    SteppedOptions on_last_rank;
+    if (rank_here() == ranks - 1) on_last_rank.threads = 0;
+    CHECK_EQ(refusal(on_last_rank, false), "particlesim::SteppedOptions: threads must be >= 1, not 0");
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -285,7 +344,8 @@ int main(int argc, char** argv) {
                              {"substeps and two threads a rank", substeps_and_two_threads_a_rank},
                              {"cuts follow the disks", cuts_follow_the_disks},
                              {"saved on three ranks, continued on all", saved_on_three_ranks_continued_on_all},
-                             {"a bad scene is refused on every rank", a_bad_scene_is_refused_on_every_rank}});
+                             {"a bad scene is refused on every rank", a_bad_scene_is_refused_on_every_rank},
+                             {"bad options are refused on every rank", bad_options_are_refused_on_every_rank}});
     // Any rank's failure fails the test.
     MPI_Allreduce(MPI_IN_PLACE, &status, 1, MPI_INT, MPI_MAX, MPI_COMM_WORLD);
     MPI_Finalize();

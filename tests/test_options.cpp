@@ -1,11 +1,14 @@
-// Options are checked where they enter an engine: every bad value throws
-// std::invalid_argument naming the option, and every good one is accepted.
+// Options are checked where they enter an engine or the step checker: every
+// bad value throws std::invalid_argument naming the option, and every good
+// one is accepted.
 
 #include "check.hpp"
 
 #include "particlesim/exact_simulation.hpp"
+#include "particlesim/step_check.hpp"
 #include "particlesim/stepped_simulation.hpp"
 
+#include <limits>
 #include <stdexcept>
 #include <string>
 
@@ -50,6 +53,9 @@ void stepped_options_are_checked() {
     CHECK(names(stepped({.pair_search = PairSearch::brute_force, .grid_cells = 4}), "grid_cells"));
     CHECK(names(stepped({.grid_cells = 4}), "grid_cells"));
     CHECK(names(stepped({.substeps = 0}), "SteppedOptions"));
+    // A value cast from a number that names no search.
+    CHECK_EQ(stepped({.pair_search = static_cast<PairSearch>(7)}),
+             "particlesim::SteppedOptions: pair_search must be one of the PairSearch values, not 7");
 
     CHECK_EQ(stepped({}), "");
     CHECK_EQ(stepped({.pair_search = PairSearch::grid, .grid_cells = max_grid_cells}), "");
@@ -67,6 +73,8 @@ void exact_options_are_checked() {
     };
     CHECK(names(exact({.cells_per_side = 0}), "cells_per_side"));
     CHECK(names(exact({.cells_per_side = max_grid_cells + 1}), "cells_per_side"));
+    CHECK_EQ(exact({.boundary = static_cast<Boundary>(9)}),
+             "particlesim::ExactOptions: boundary must be Boundary::walls or Boundary::periodic, not 9");
     CHECK_EQ(exact({}), "");
     CHECK_EQ(exact({.cells_per_side = 1}), "");
 }
@@ -81,6 +89,29 @@ void bad_worlds_are_refused_by_both_engines() {
     outside[1].position.x() = 19.5;  // beyond L - r
     CHECK(names(refusal([&] { SteppedSimulation(world, outside); }), "particle 1"));
     CHECK(names(refusal([&] { ExactSimulation(world, outside); }), "particle 1"));
+    // NaN is named as such, not as a number out of range.
+    const double nan = std::numeric_limits<double>::quiet_NaN();
+    std::vector<Particle> nan_velocity = two_disks();
+    nan_velocity[1].velocity.y() = nan;
+    std::vector<Particle> nan_position = two_disks();
+    nan_position[0].position.x() = nan;
+    CHECK_EQ(refusal([&] { SteppedSimulation(world, nan_velocity); }),
+             "particlesim::SteppedSimulation: particle 1 has a velocity that is not a number (NaN)");
+    CHECK_EQ(refusal([&] { ExactSimulation(world, nan_velocity); }),
+             "particlesim::ExactSimulation: particle 1 has a velocity that is not a number (NaN)");
+    CHECK_EQ(refusal([&] { ExactSimulation(world, nan_position, {.boundary = Boundary::periodic}); }),
+             "particlesim::ExactSimulation: particle 0 has a position that is not a number (NaN)");
+}
+
+void step_check_options_are_checked() {
+    const auto checker = [](const StepCheckOptions& options) { return refusal([&] { StepChecker(world, options); }); };
+    CHECK_EQ(checker({}), "");
+    CHECK_EQ(checker({.rules = CheckedRules::exact, .boundary = Boundary::periodic}), "");
+    CHECK(names(checker({.substeps = 0}), "substeps"));
+    CHECK_EQ(checker({.rules = static_cast<CheckedRules>(5)}),
+             "StepCheckOptions: rules must be CheckedRules::stepped or CheckedRules::exact, not 5");
+    CHECK_EQ(checker({.rules = CheckedRules::exact, .boundary = static_cast<Boundary>(3)}),
+             "StepCheckOptions: boundary must be Boundary::walls or Boundary::periodic, not 3");
 }
 
 }  // namespace
@@ -89,5 +120,6 @@ int main(int argc, char** argv) {
     return check::run(argc, argv, "test_options",
                       {{"stepped options are checked", stepped_options_are_checked},
                        {"exact options are checked", exact_options_are_checked},
-                       {"bad worlds are refused by both engines", bad_worlds_are_refused_by_both_engines}});
+                       {"bad worlds are refused by both engines", bad_worlds_are_refused_by_both_engines},
+                       {"step check options are checked", step_check_options_are_checked}});
 }

@@ -1017,6 +1017,9 @@ namespace {
 
 void check_options(const ExactOptions& options) {
     const OptionsCheck check("particlesim::ExactOptions");
+    if (options.boundary != Boundary::walls && options.boundary != Boundary::periodic)
+        check.fail("boundary must be Boundary::walls or Boundary::periodic, not " +
+                   std::to_string(static_cast<int>(options.boundary)));
     if (options.cells_per_side) check.in_range("cells_per_side", *options.cells_per_side, 1, max_grid_cells);
     if (options.max_events_per_step && *options.max_events_per_step == 0)
         check.fail("max_events_per_step must be >= 1");

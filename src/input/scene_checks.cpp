@@ -33,6 +33,10 @@ void require_valid_scene(const char* engine, const World& world, std::span<const
     if (particles.size() >= std::size_t{0xffffffffU}) fail("too many particles");
     for (std::size_t i = 0; i < particles.size(); ++i) {
         const Particle& p = particles[i];
+        if (std::isnan(p.position.x()) || std::isnan(p.position.y()))
+            fail("particle " + std::to_string(i) + " has a position that is not a number (NaN)");
+        if (std::isnan(p.velocity.x()) || std::isnan(p.velocity.y()))
+            fail("particle " + std::to_string(i) + " has a velocity that is not a number (NaN)");
         if (centres == CentresIn::walled_box) {
             const bool inside = p.position.x() >= world.lower() && p.position.x() <= world.upper() &&
                                 p.position.y() >= world.lower() && p.position.y() <= world.upper();

@@ -5,6 +5,7 @@
 #include "core/collision.hpp"
 #include "core/uniform_grid.hpp"
 #include "input/scene_checks.hpp"
+#include "input/stepped_options_check.hpp"
 #include "mpi/domain_strips.hpp"
 #include "mpi/neighbour_exchange.hpp"
 #include "mpi/rank_selection.hpp"
@@ -76,15 +77,35 @@ double halo_reach(const World& world, double max_speed, double duration) {
     return (2.0 * world.radius + 2.0 * max_speed * duration) * (1.0 + 1e-9) + 1e-300;
 }
 
-// Every rank throws the refusal rank 0 found (empty: none), so that all
+// Every rank throws the refusal `from` found (empty: none), so that all
 // leave a collective construction together.
-void agree_on_refusal(MPI_Comm comm, std::string refusal) {
+void agree_on_refusal(MPI_Comm comm, std::string refusal, int from = root) {
     std::uint64_t length = refusal.size();
-    MPI_Bcast(&length, 1, MPI_UINT64_T, root, comm);
+    MPI_Bcast(&length, 1, MPI_UINT64_T, from, comm);
     if (length == 0) return;
     refusal.resize(length);
-    MPI_Bcast(refusal.data(), static_cast<int>(length), MPI_CHAR, root, comm);
+    MPI_Bcast(refusal.data(), static_cast<int>(length), MPI_CHAR, from, comm);
     throw std::invalid_argument(refusal);
+}
+
+// Every rank checks its own options and every rank throws the refusal of
+// the lowest rank that has one: ranks given different options still leave
+// together.
+const SteppedOptions& agreed_options(MPI_Comm comm, const SteppedOptions& options) {
+    std::string refusal;
+    try {
+        require_valid_stepped_options(options);
+    } catch (const std::invalid_argument& e) {
+        refusal = e.what();
+    }
+    int rank = 0;
+    int ranks = 1;
+    MPI_Comm_rank(comm, &rank);
+    MPI_Comm_size(comm, &ranks);
+    int first_refusing = refusal.empty() ? ranks : rank;
+    MPI_Allreduce(MPI_IN_PLACE, &first_refusing, 1, MPI_INT, MPI_MIN, comm);
+    if (first_refusing < ranks) agree_on_refusal(comm, refusal, first_refusing);
+    return options;
 }
 
 }  // namespace
@@ -592,7 +613,7 @@ private:
 
 DistributedSimulation::DistributedSimulation(MPI_Comm comm, const World& world, std::vector<Particle> particles_on_root,
                                              const SteppedOptions& options)
-    : engine_(std::make_unique<Implementation>(comm, world, options)) {
+    : engine_(std::make_unique<Implementation>(comm, world, agreed_options(comm, options))) {
     engine_->distribute(std::move(particles_on_root), 0, {});
 }
 
@@ -600,7 +621,7 @@ DistributedSimulation::DistributedSimulation(std::unique_ptr<Implementation> eng
 
 DistributedSimulation DistributedSimulation::restore(MPI_Comm comm, const World& world, std::istream* saved_on_root,
                                                      const SteppedOptions& options) {
-    auto engine = std::make_unique<Implementation>(comm, world, options);
+    auto engine = std::make_unique<Implementation>(comm, world, agreed_options(comm, options));
     SteppedState state;
     std::string refusal;
     int rank = 0;

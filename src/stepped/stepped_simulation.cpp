@@ -4,8 +4,8 @@
 #include "core/assert.hpp"
 #include "core/box.hpp"
 #include "core/collision.hpp"
-#include "input/options_check.hpp"
 #include "input/scene_checks.hpp"
+#include "input/stepped_options_check.hpp"
 #include "parallel/parallel.hpp"
 #include "particlesim/exact_simulation.hpp"
 #include "search/brute_force_search.hpp"
@@ -29,14 +29,7 @@ namespace {
 using namespace stepped_tuning;
 
 const SteppedOptions& checked(const SteppedOptions& options) {
-    const OptionsCheck check("particlesim::SteppedOptions");
-    if (options.grid_cells) {
-        check.in_range("grid_cells", *options.grid_cells, 1, max_grid_cells);
-        if (options.pair_search != PairSearch::grid) check.fail("grid_cells needs pair_search = PairSearch::grid");
-    }
-    if (options.threads) check.at_least("threads", *options.threads, 1);
-    check.at_least("substeps", options.substeps, 1);
-    if (options.sort_by_position_every) check.at_least("sort_by_position_every", *options.sort_by_position_every, 0);
+    require_valid_stepped_options(options);
     return options;
 }
 
