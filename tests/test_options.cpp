@@ -1,10 +1,14 @@
 // Options are checked where they enter an engine or the step checker: every
 // bad value throws std::invalid_argument naming the option, and every good
-// one is accepted.
+// one is accepted. So are the files and runs given to the library's writers,
+// readers and recorders.
 
 #include "check.hpp"
 
+#include "particlesim/accuracy.hpp"
 #include "particlesim/exact_simulation.hpp"
+#include "particlesim/output_reader.hpp"
+#include "particlesim/state_writer.hpp"
 #include "particlesim/step_check.hpp"
 #include "particlesim/stepped_simulation.hpp"
 
@@ -114,6 +118,19 @@ void step_check_options_are_checked() {
              "StepCheckOptions: boundary must be Boundary::walls or Boundary::periodic, not 3");
 }
 
+void null_files_and_mismatched_runs_are_refused() {
+    CHECK_EQ(refusal([] { StateWriter(nullptr); }), "particlesim::StateWriter: no FILE to write to (null)");
+    CHECK_EQ(refusal([] { OutputReader(nullptr, "run.out"); }),
+             "particlesim::OutputReader: no FILE to read run.out from (null)");
+    const std::vector<Particle> start = two_disks();
+    RunRecorder recorder(world, start, default_checkpoints);
+    const std::vector<Particle> three(3);
+    CHECK_EQ(refusal([&] { recorder.observe(1, three, {}); }),
+             "particlesim::RunRecorder: observed 3 particles, but the run started with 2");
+    CHECK_EQ(refusal([&] { recorder.observe(1, start, {}); }), "");
+    CHECK_EQ(recorder.record().steps, std::int64_t{1});
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -121,5 +138,6 @@ int main(int argc, char** argv) {
                       {{"stepped options are checked", stepped_options_are_checked},
                        {"exact options are checked", exact_options_are_checked},
                        {"bad worlds are refused by both engines", bad_worlds_are_refused_by_both_engines},
-                       {"step check options are checked", step_check_options_are_checked}});
+                       {"step check options are checked", step_check_options_are_checked},
+                       {"null files and mismatched runs are refused", null_files_and_mismatched_runs_are_refused}});
 }

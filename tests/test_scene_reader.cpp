@@ -4,11 +4,14 @@
 #include "check.hpp"
 
 #include "particlesim/scene.hpp"
+#include "particlesim/scene_families.hpp"
 
 #include <atomic>
 #include <cstdlib>
+#include <limits>
 #include <new>
 #include <sstream>
+#include <stdexcept>
 #include <string>
 
 // The largest single allocation, to show that memory follows the input.
@@ -196,6 +199,59 @@ void memory_follows_the_input() {
     CHECK_EQ(lines.particles[1], 3L);
 }
 
+// write_scene() writes what read_scene() reads back to the same scene, a
+// random one included, and refuses, writing nothing, what the reader would
+// refuse.
+void scenes_written_read_back() {
+    for (const std::string text : {"1000\n20000\n1\n1000\nprint\n", "0\n10\n1\n0\nperf\n",
+                                   "2\n10\n0.5\n3\nperf\n0 1 1 0.25 -0.125\n1 9 2.5 0 1e-3\n"}) {
+        const check::Context context(text);
+        const Outcome first = read(text);
+        CHECK(first.ok);
+        std::ostringstream written;
+        write_scene(written, first.scene);
+        const Outcome again = read(written.str());
+        CHECK(again.ok);
+        CHECK_EQ(again.scene.particle_count, first.scene.particle_count);
+        CHECK_EQ(again.scene.is_random(), first.scene.is_random());
+        CHECK_EQ(again.scene.world.box_size, first.scene.world.box_size);
+        CHECK_EQ(again.scene.world.radius, first.scene.world.radius);
+        CHECK_EQ(again.scene.steps, first.scene.steps);
+        CHECK(again.scene.mode == first.scene.mode);
+        CHECK_EQ(again.scene.particles.size(), first.scene.particles.size());
+        for (std::size_t i = 0; i < first.scene.particles.size(); ++i) {
+            CHECK(again.scene.particles[i].position == first.scene.particles[i].position);
+            CHECK(again.scene.particles[i].velocity == first.scene.particles[i].velocity);
+        }
+    }
+    CHECK_EQ(read("1000\n20000\n1\n1000\nprint\n").scene.is_random(), true);
+
+    const auto refusal = [](const Scene& scene) {
+        std::ostringstream written;
+        try {
+            write_scene(written, scene);
+        } catch (const std::invalid_argument& e) {
+            CHECK_EQ(written.str(), "");
+            return std::string(e.what());
+        }
+        return std::string();
+    };
+    Scene good = read("2\n10\n0.5\n3\nperf\n0 1 1 0.25 -0.125\n1 9 2.5 0 1e-3\n").scene;
+    CHECK_EQ(refusal(good), "");
+    Scene bad = good;
+    bad.world.box_size = std::numeric_limits<double>::quiet_NaN();
+    CHECK(refusal(bad).find("the box size and the radius") != std::string::npos);
+    bad = good;
+    bad.steps = -1;
+    CHECK(refusal(bad).find("steps must be >= 0") != std::string::npos);
+    bad = good;
+    bad.mode = static_cast<OutputMode>(7);
+    CHECK(refusal(bad).find("print or perf") != std::string::npos);
+    bad = good;
+    bad.particles[1].velocity.x() = std::numeric_limits<double>::infinity();
+    CHECK_EQ(refusal(bad), "particlesim::write_scene: particle 1 has a number beyond the accepted range (or NaN)");
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -205,5 +261,6 @@ int main(int argc, char** argv) {
                        {"bad particles", bad_particles},
                        {"accepted range", accepted_range},
                        {"friendly input", friendly_input},
-                       {"memory follows the input", memory_follows_the_input}});
+                       {"memory follows the input", memory_follows_the_input},
+                       {"scenes written read back", scenes_written_read_back}});
 }

@@ -62,6 +62,7 @@ public:
     RunRecorder(RunRecorder&&) noexcept;
     RunRecorder& operator=(RunRecorder&&) noexcept;
 
+    // Throws std::invalid_argument when the particles are not as many as the start's.
     void observe(std::int64_t step, std::span<const Particle> particles, const StepCounts& step_counts);
     [[nodiscard]] const RunRecord& record() const;
 

@@ -36,7 +36,7 @@ struct OutputLine {
 
 class OutputReader {
 public:
-    OutputReader(std::FILE* in, std::string name);  // `in`: not owned
+    OutputReader(std::FILE* in, std::string name);  // `in`: not owned; null throws std::invalid_argument
 
     // The next line, or false at the end. Throws InputError.
     bool next(OutputLine& out);

@@ -67,7 +67,12 @@ struct SceneFamilyOptions {
 // world.hpp), and SceneTooFull when random disks do not fit.
 Scene make_family_scene(SceneFamily family, const SceneFamilyOptions& options);
 
-// io.md's input format with every particle listed: "N L r S mode" and "i x y vx vy".
+// io.md's input format with every particle listed: "N L r S mode" and "i x y vx vy";
+// a random scene (Scene::is_random(), as read_scene() returns it) as its
+// first lines alone, from which the reader draws the same particles. Throws
+// std::invalid_argument, writing nothing, for what the reader would refuse:
+// L or r outside the accepted range (world.hpp), S < 0, a mode that is
+// neither print nor perf, a coordinate beyond 1e60 or NaN.
 void write_scene(std::ostream& out, const Scene& scene);
 
 }  // namespace particlesim

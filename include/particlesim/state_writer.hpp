@@ -24,7 +24,8 @@ enum class NumberFormat { fixed8, shortest };
 
 class StateWriter {
 public:
-    explicit StateWriter(std::FILE* out, NumberFormat format = NumberFormat::fixed8);  // `out`: not owned; not closed
+    // `out`: not owned, not closed; null throws std::invalid_argument.
+    explicit StateWriter(std::FILE* out, NumberFormat format = NumberFormat::fixed8);
 
     // "s i x y vx vy" for every particle. A block may be written in parts:
     // `first_index` is the index i of the part's first particle.

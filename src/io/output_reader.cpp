@@ -4,6 +4,7 @@
 #include <charconv>
 #include <cmath>
 #include <cstring>
+#include <stdexcept>
 #include <string_view>
 #include <system_error>
 #include <vector>
@@ -37,7 +38,10 @@ bool is_fixed8(std::string_view token) {
     return true;
 }
 
-OutputReader::OutputReader(std::FILE* in, std::string name) : in_(in), name_(std::move(name)) {}
+OutputReader::OutputReader(std::FILE* in, std::string name) : in_(in), name_(std::move(name)) {
+    if (in_ == nullptr)
+        throw std::invalid_argument("particlesim::OutputReader: no FILE to read " + name_ + " from (null)");
+}
 
 // Refills the window of the input from the FILE in large blocks.
 bool OutputReader::fill() {

@@ -5,6 +5,7 @@
 #include <cerrno>
 #include <charconv>
 #include <cstring>
+#include <stdexcept>
 #include <string>
 
 namespace particlesim {
@@ -18,7 +19,9 @@ constexpr std::size_t longest_state_line = 4 * 21 + 4 * (max_fixed8_length + 1) 
 }  // namespace
 
 StateWriter::StateWriter(std::FILE* out, NumberFormat format)
-    : out_(out), format_(format), buffer_(std::make_unique_for_overwrite<char[]>(buffer_size)) {}
+    : out_(out), format_(format), buffer_(std::make_unique_for_overwrite<char[]>(buffer_size)) {
+    if (out_ == nullptr) throw std::invalid_argument("particlesim::StateWriter: no FILE to write to (null)");
+}
 
 void StateWriter::write_state(std::int64_t step, std::span<const Particle> particles, std::size_t first_index) {
     write_block(step, particles, first_index, false);

@@ -7,6 +7,7 @@
 #include <cmath>
 #include <limits>
 #include <stdexcept>
+#include <string>
 
 namespace particlesim {
 
@@ -21,6 +22,11 @@ public:
     }
 
     void observe(std::int64_t step, std::span<const Particle> particles, const StepCounts& step_counts) {
+        if (particles.size() != record_.particle_count) {
+            throw std::invalid_argument("particlesim::RunRecorder: observed " + std::to_string(particles.size()) +
+                                        " particles, but the run started with " +
+                                        std::to_string(record_.particle_count));
+        }
         record_.steps = step;
         record_.particle_collisions += step_counts.particle_collisions;
         record_.wall_collisions += step_counts.wall_collisions;

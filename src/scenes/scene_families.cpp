@@ -536,9 +536,28 @@ Scene make_family_scene(SceneFamily family, const SceneFamilyOptions& options) {
 }
 
 void write_scene(std::ostream& out, const Scene& scene) {
+    // Refused rather than written as text that the scene reader refuses.
+    const auto refuse = [](const std::string& what) {
+        throw std::invalid_argument("particlesim::write_scene: " + what);
+    };
+    const auto length_in_range = [](double length) { return length >= min_length && length <= max_magnitude; };
+    if (!length_in_range(scene.world.box_size) || !length_in_range(scene.world.radius))
+        refuse("the box size and the radius must lie in [1e-60, 1e60] (the accepted range)");
+    if (scene.steps < 0) refuse("steps must be >= 0");
+    if (scene.mode != OutputMode::print && scene.mode != OutputMode::perf) refuse("the mode must be print or perf");
+    for (std::size_t i = 0; i < scene.particles.size(); ++i) {
+        const Particle& p = scene.particles[i];
+        for (const double value : {p.position.x(), p.position.y(), p.velocity.x(), p.velocity.y()}) {
+            if (!(std::fabs(value) <= max_magnitude))
+                refuse("particle " + std::to_string(i) + " has a number beyond the accepted range (or NaN)");
+        }
+    }
+    // A random scene (N > 0, no particle listed) is its first lines: the
+    // reader draws the same particles again.
+    const std::size_t count = scene.particles.empty() ? scene.particle_count : scene.particles.size();
     char number[32];
     const auto shortest = [&](double value) { return std::string(number, write_shortest(number, value)); };
-    out << scene.particles.size() << '\n'
+    out << count << '\n'
         << shortest(scene.world.box_size) << '\n'
         << shortest(scene.world.radius) << '\n'
         << scene.steps << '\n'
