@@ -218,6 +218,18 @@ void the_page_shows_the_run() {
         CHECK(key[1][0].text.rfind("walls ", 0) == 0);
         CHECK_EQ(key[1][1].text, std::string("rgb(28, 126, 214)"));
     }
+    // The plot's ends are whole counts here, written as such ("0", not "0.00000").
+    const auto& ends = r["collisionsPlot"].items;
+    const auto& end_texts = r["collisionsPlotText"].items;
+    CHECK_EQ(ends.size(), 2U);
+    CHECK_EQ(end_texts.size(), 2U);
+    if (ends.size() == 2 && end_texts.size() == 2) {
+        CHECK(ends[1].number > ends[0].number);
+        for (std::size_t i = 0; i < 2; ++i) {
+            CHECK_EQ(ends[i].number, std::floor(ends[i].number));
+            CHECK_EQ(end_texts[i].text, std::to_string(static_cast<long long>(ends[i].number)));
+        }
+    }
 }
 
 void exact_engine_between_steps() {
@@ -411,6 +423,13 @@ void order_is_seen() {
     const double energy_span = r["energyPlot"][1].number - r["energyPlot"][0].number;
     CHECK(energy_span >= 0.99e-6 * energy);
     CHECK(r["energyPlot"][0].number <= energy && energy <= r["energyPlot"][1].number);
+    // Its end labels differ, in as few digits as tell them apart, none a trailing zero.
+    const std::string low_text = r["energyPlotText"][0].text, high_text = r["energyPlotText"][1].text;
+    CHECK(low_text != high_text);
+    for (const std::string& text : {low_text, high_text}) {
+        CHECK(text.find('.') == std::string::npos || text.back() != '0');
+        CHECK(std::fabs(std::stod(text) - energy) <= energy_span);
+    }
     CHECK(r["errors"].items.empty());
     CHECK_EQ(run_process::run(simcli, {gas, "--colour-by", "psi6"}).status, 2);
     CHECK_EQ(run_process::run(simcli, {gas, "--colour-by", "phase", "--snapshot", svg}).status, 2);

@@ -286,17 +286,23 @@
     if (!(high > low)) { low -= 1; high += 1; }
     canvas.dataset.low = String(low);
     canvas.dataset.high = String(high);
-    // Enough digits to tell the two ends apart.
-    let digits = 6;
-    while (digits < 15 && high.toPrecision(digits) === low.toPrecision(digits)) ++digits;
+    // The fewest digits (four at least, and every digit of the whole part)
+    // that tell the two ends apart, with no trailing zeros: a count's ends
+    // read "12345" and "0", not "1.235e+4" or "0.00000".
+    const wholeDigits = Math.floor(Math.log10(Math.max(Math.abs(low), Math.abs(high), 1))) + 1;
+    let digits = Math.min(17, Math.max(4, wholeDigits));
+    while (digits < 17 && high.toPrecision(digits) === low.toPrecision(digits)) ++digits;
+    const endText = (v) => String(Number(v.toPrecision(digits)));
+    canvas.dataset.lowText = endText(low);
+    canvas.dataset.highText = endText(high);
     const x = (g) => left + ((w - left - 4) * (frameCount > 1 ? g / (frameCount - 1) : 0));
     const y = (v) => h - bottom - ((h - bottom - 6) * (v - low)) / (high - low);
     c.strokeStyle = "#d0d7de";
     c.strokeRect(left, 4, w - left - 4, h - bottom - 4);
     c.fillStyle = "#59636e";
     c.font = "10px sans-serif";
-    c.fillText(high.toPrecision(digits), 2, 12);
-    c.fillText(low.toPrecision(digits), 2, h - bottom);
+    c.fillText(canvas.dataset.highText, 2, 12);
+    c.fillText(canvas.dataset.lowText, 2, h - bottom);
     for (const line of lines) {
       c.strokeStyle = line.colour;
       c.beginPath();
@@ -514,6 +520,7 @@
       results.psi6Plot = [Number($("psi6-plot").dataset.low), Number($("psi6-plot").dataset.high)];
       results.energy = series[3];
       results.energyPlot = [Number($("energy-plot").dataset.low), Number($("energy-plot").dataset.high)];
+      results.energyPlotText = [$("energy-plot").dataset.lowText, $("energy-plot").dataset.highText];
     }
     settings.colour = "fixed";
     settings.showHits = false;
@@ -539,6 +546,9 @@
     }
     // The collisions plot's key: each count in its line's colour.
     results.collisionsKey = Array.from($("collisions-label").children).map((span) => [span.textContent, span.style.color]);
+    const collisionsPlot = $("collisions-plot").dataset;
+    results.collisionsPlot = [Number(collisionsPlot.low), Number(collisionsPlot.high)];
+    results.collisionsPlotText = [collisionsPlot.lowText, collisionsPlot.highText];
     results.drawMs = drawn > 0 ? (performance.now() - drawingStarted) / drawn : 0; // one frame, box and plots
     go(0);
     play();
