@@ -80,13 +80,15 @@ std::string percent_encoded(const std::string& text) {
     return out;
 }
 
+std::string point(const Vec2& at) {
+    char text[80];
+    std::snprintf(text, sizeof text, "[%.9g,%.9g]", at.x(), at.y());
+    return text;
+}
+
 std::string points(const std::vector<Vec2>& list) {
     std::string out = "[";
-    for (std::size_t k = 0; k < list.size(); ++k) {
-        char text[80];
-        std::snprintf(text, sizeof text, "%s[%.9g,%.9g]", k ? "," : "", list[k].x(), list[k].y());
-        out += text;
-    }
+    for (std::size_t k = 0; k < list.size(); ++k) out += (k ? "," : "") + point(list[k]);
     return out + "]";
 }
 
@@ -97,13 +99,22 @@ struct PageRun {
 };
 
 // Opens `page` with the self-test request; what the page reports about itself.
-PageRun open_page(const std::string& page, const std::string& request, int budget_ms = 8000) {
+// `window`: Chromium's --window-size (empty: its default).
+PageRun open_page(const std::string& page, const std::string& request, int budget_ms = 8000,
+                  const std::string& window = "") {
     const std::string profile = work_dir() + "/profile";
     const auto start = std::chrono::steady_clock::now();
-    const run_process::Result r = run_process::run(
-        chromium_path(), {"--headless", "--no-sandbox", "--disable-gpu", "--no-first-run", "--user-data-dir=" + profile,
-                          "--enable-logging=stderr", "--v=0", "--virtual-time-budget=" + std::to_string(budget_ms),
-                          "--dump-dom", "file://" + page + "#selftest=" + percent_encoded(request)});
+    std::vector<std::string> args{"--headless",
+                                  "--no-sandbox",
+                                  "--disable-gpu",
+                                  "--no-first-run",
+                                  "--user-data-dir=" + profile,
+                                  "--enable-logging=stderr",
+                                  "--v=0",
+                                  "--virtual-time-budget=" + std::to_string(budget_ms)};
+    if (!window.empty()) args.push_back("--window-size=" + window);
+    args.insert(args.end(), {"--dump-dom", "file://" + page + "#selftest=" + percent_encoded(request)});
+    const run_process::Result r = run_process::run(chromium_path(), args);
     PageRun run;
     run.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     run.log = r.err;
@@ -172,12 +183,16 @@ void the_page_shows_the_run() {
     for (const Particle& p : states[scrub]) scrubbed_on.push_back(p.position);
     const std::vector<Vec2> off = empty_points(states[frame], 24.0, 1.4, 12);
     CHECK(off.size() >= 8);
+    // A click on disk 4 chooses it.
+    const int clicked = 4;
     const std::string request = "{\"frame\":" + std::to_string(frame) + ",\"on\":" + points(on) +
                                 ",\"off\":" + points(off) + ",\"scrubTo\":" + std::to_string(scrub) +
-                                ",\"scrubOn\":" + points(scrubbed_on) + "}";
+                                ",\"scrubOn\":" + points(scrubbed_on) +
+                                ",\"click\":" + point(states[frame][clicked].position) + "}";
     const PageRun run = open_page(page, request);
     const mini_json::Value& r = run.report;
     if (r.kind != mini_json::Value::Kind::object) return;
+    CHECK_EQ(r["chosen"].number, static_cast<double>(clicked));
     CHECK_EQ(r["frames"].number, 13.0);
     CHECK_EQ(r["shownFrame"].number, static_cast<double>(frame));
     int orange = 0, white = 0, scrubbed = 0;
@@ -230,6 +245,23 @@ void the_page_shows_the_run() {
             CHECK_EQ(end_texts[i].text, std::to_string(static_cast<long long>(ends[i].number)));
         }
     }
+    // In a window narrower than the box, the box shrinks to fit, square, and
+    // a click still chooses the disk under it.
+    const mini_json::Value narrow =
+        open_page(page,
+                  "{\"frame\":" + std::to_string(frame) +
+                      ",\"on\":[],\"off\":[],\"scrubTo\":1,\"click\":" + point(states[frame][5].position) + "}",
+                  8000, "500,800")
+            .report;
+    if (narrow.kind != mini_json::Value::Kind::object) return;
+    const mini_json::Value& layout = narrow["layout"];
+    // (Headless Chromium makes a window at least 500 wide; the box is 722.)
+    const double window_width = layout["windowWidth"].number;
+    CHECK(window_width < 600.0);
+    CHECK(layout["pageWidth"].number <= window_width);
+    CHECK(layout["boxWidth"].number < window_width && layout["boxWidth"].number > 0.8 * window_width);
+    CHECK(std::fabs(layout["boxWidth"].number - layout["boxHeight"].number) < 1.0);
+    CHECK_EQ(narrow["chosen"].number, 5.0);
 }
 
 void exact_engine_between_steps() {

@@ -529,6 +529,18 @@
     results.on = request.on.map(([x, y]) => pixelAt(x, y));
     results.off = request.off.map(([x, y]) => pixelAt(x, y));
     results.shownFrame = current;
+    if (request.click) {
+      // A click on the world point, through the box's drawn size.
+      const rect = box.getBoundingClientRect();
+      box.dispatchEvent(new MouseEvent("click", {
+        clientX: rect.left + (px(request.click[0]) * rect.width) / box.width,
+        clientY: rect.top + (py(request.click[1]) * rect.height) / box.height,
+      }));
+      results.chosen = settings.chosen;
+    }
+    const boxShown = box.getBoundingClientRect();
+    results.layout = { windowWidth: window.innerWidth, pageWidth: document.documentElement.scrollWidth,
+      boxWidth: boxShown.width, boxHeight: boxShown.height };
     scrubber.value = String(request.scrubTo);
     scrubber.dispatchEvent(new Event("input"));
     results.afterScrub = current;
