@@ -172,29 +172,30 @@
     const palette = byOrder ? psiColours : bucketColours;
     const groups = Array.from({ length: palette.length }, () => []);
     for (let i = 0; i < count; ++i) groups[settings.colour === "fixed" ? 0 : byOrder ? psiGroupOf(f, i) : bucketOf(f, i)].push(i);
-    // In a periodic box a disk across an edge shows its part on each side:
-    // its images are drawn too, clipped to the box.
+    // In a periodic box a disk (or a ring round it) across an edge shows its
+    // part on each side: its images are drawn too, clipped to the box.
     const side = L * scale;
-    const imageShifts = (at, low, high) => {
+    const imageShifts = (at, low, high, reach) => {
       const shifts = [0];
-      if (periodic && at - drawRadius < low) shifts.push(side);
-      if (periodic && at + drawRadius > high) shifts.push(-side);
+      if (periodic && at - reach < low) shifts.push(side);
+      if (periodic && at + reach > high) shifts.push(-side);
       return shifts;
     };
-    if (periodic) {
+    const clipToBox = () => {
       ctx.save();
       ctx.beginPath();
       ctx.rect(px(0), py(L), side, side);
       ctx.clip();
-    }
+    };
+    if (periodic) clipToBox();
     groups.forEach((members, b) => {
       if (members.length === 0) return;
       ctx.fillStyle = settings.colour === "fixed" ? fixedColour : palette[b];
       ctx.beginPath();
       for (const i of members) {
         const x0 = px(frames[(f * count + i) * 4]), y0 = py(frames[(f * count + i) * 4 + 1]);
-        for (const dx of imageShifts(x0, px(0), px(L))) {
-          for (const dy of imageShifts(y0, py(L), py(0))) {
+        for (const dx of imageShifts(x0, px(0), px(L), drawRadius)) {
+          for (const dy of imageShifts(y0, py(L), py(0), drawRadius)) {
             const x = x0 + dx, y = y0 + dy;
             if (asPoints) {
               ctx.rect(Math.floor(x) - dotOffset, Math.floor(y) - dotOffset, dot, dot);
@@ -209,10 +210,19 @@
     });
     if (periodic) ctx.restore();
     const ring = (i, colour, extra) => {
+      const x0 = px(frames[(f * count + i) * 4]), y0 = py(frames[(f * count + i) * 4 + 1]);
+      const reach = drawRadius + extra + ctx.lineWidth;
+      if (periodic) clipToBox(); // before the path: clipping begins a path of its own
       ctx.strokeStyle = colour;
       ctx.beginPath();
-      ctx.arc(px(frames[(f * count + i) * 4]), py(frames[(f * count + i) * 4 + 1]), drawRadius + extra, 0, 2 * Math.PI);
+      for (const dx of imageShifts(x0, px(0), px(L), reach)) {
+        for (const dy of imageShifts(y0, py(L), py(0), reach)) {
+          ctx.moveTo(x0 + dx + drawRadius + extra, y0 + dy);
+          ctx.arc(x0 + dx, y0 + dy, drawRadius + extra, 0, 2 * Math.PI);
+        }
+      }
       ctx.stroke();
+      if (periodic) ctx.restore();
     };
     const overlaps = settings.showOverlaps ? findOverlaps(f) : 0;
     if (settings.showOverlaps && overlaps > 0) {
@@ -247,8 +257,10 @@
     for (const i of members) {
       for (let g = from; g <= f; ++g) {
         const x = px(frames[(g * count + i) * 4]), y = py(frames[(g * count + i) * 4 + 1]);
-        // A jump longer than half the box is a wall bounce between frames: no line across the box.
-        const far = g > from && Math.abs(frames[(g * count + i) * 4] - frames[((g - 1) * count + i) * 4]) > L / 2;
+        // A jump longer than half the box on either axis (a fast bounce, or a
+        // wrap through a periodic edge) breaks the line: none across the box.
+        const jump = (axis) => Math.abs(frames[(g * count + i) * 4 + axis] - frames[((g - 1) * count + i) * 4 + axis]);
+        const far = g > from && (jump(0) > L / 2 || jump(1) > L / 2);
         if (g === from || far) ctx.moveTo(x, y);
         else ctx.lineTo(x, y);
       }
@@ -459,9 +471,14 @@
     const rect = box.getBoundingClientRect();
     const x = ((event.clientX - rect.left) * (box.width / rect.width) - margin) / scale;
     const y = (box.height - margin - (event.clientY - rect.top) * (box.height / rect.height)) / scale;
+    // The nearest disk, or in a periodic box the nearest image of one.
+    const apart = (a, b) => {
+      const d = Math.abs(a - b);
+      return periodic ? Math.min(d, L - d) : d;
+    };
     let best = -1, bestDistance = Infinity;
     for (let i = 0; i < count; ++i) {
-      const d = Math.hypot(frames[(current * count + i) * 4] - x, frames[(current * count + i) * 4 + 1] - y);
+      const d = Math.hypot(apart(frames[(current * count + i) * 4], x), apart(frames[(current * count + i) * 4 + 1], y));
       if (d < bestDistance) { best = i; bestDistance = d; }
     }
     settings.chosen = best;
@@ -503,7 +520,7 @@
     const request = JSON.parse(decodeURIComponent(probe[1]));
     // The pixel that contains the point (a disk at least 1.5 pixels in radius covers it whole).
     const pixelAt = (x, y) => Array.from(ctx.getImageData(Math.floor(px(x)), Math.floor(py(y)), 1, 1).data.slice(0, 3));
-    const results = { frames: frameCount, openMs, scriptMs };
+    const results = { frames: frameCount, openMs, scriptMs, scale };
     if (order) {
       // Before anything else changes the colours: the pixel at each point in
       // the psi6 colouring, and the plots' labels at the last frame.
@@ -525,6 +542,7 @@
     settings.colour = "fixed";
     settings.showHits = false;
     settings.showOverlaps = false;
+    settings.trails = request.trails || "none";
     go(request.frame);
     results.on = request.on.map(([x, y]) => pixelAt(x, y));
     results.off = request.off.map(([x, y]) => pixelAt(x, y));
@@ -537,6 +555,7 @@
         clientY: rect.top + (py(request.click[1]) * rect.height) / box.height,
       }));
       results.chosen = settings.chosen;
+      results.clickedOn = (request.clickedOn || []).map(([x, y]) => pixelAt(x, y));
     }
     const boxShown = box.getBoundingClientRect();
     results.layout = { windowWidth: window.innerWidth, pageWidth: document.documentElement.scrollWidth,
