@@ -328,7 +328,7 @@ void bad_options_are_refused_on_every_rank() {
     }();
     SteppedOptions on_last_rank;
     if (rank_here() == ranks - 1) on_last_rank.threads = 0;
-    CHECK_EQ(refusal(on_last_rank, false), "particlesim::SteppedOptions: threads must be >= 1, not 0");
+    CHECK_EQ(refusal(on_last_rank, false), "particlesim::SteppedOptions: threads must be in [1, 1024], not 0");
 }
 
 }  // namespace

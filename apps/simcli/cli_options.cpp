@@ -269,7 +269,9 @@ std::optional<CliOptions> parse_arguments(int argc, char** argv) {
         const std::string_view value = optarg != nullptr ? optarg : "";
         switch (c) {
         case 'o': options.output_path = std::string(value); break;
-        case 't': options.stepped.threads = static_cast<int>(parse_unsigned("--threads", value, 1, 1024)); break;
+        case 't':
+            options.stepped.threads = static_cast<int>(parse_unsigned("--threads", value, 1, particlesim::max_threads));
+            break;
         case opt_seed:
             given.seed = true;
             options.random.seed = parse_unsigned("--seed", value, 0, UINT64_MAX);

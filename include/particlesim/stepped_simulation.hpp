@@ -29,6 +29,11 @@ enum class PairSearch {
 // Its name on simcli's command line and in reports: auto, brute, grid, paths.
 [[nodiscard]] const char* pair_search_name(PairSearch search);
 
+// The most worker threads an engine takes (SteppedOptions::threads): each
+// keeps buffers of its own, and more threads than this would hold memory
+// and time for nothing on any machine built today.
+inline constexpr int max_threads = 1024;
+
 // Every option is checked when the engine is built; a bad one throws
 // std::invalid_argument naming it. None changes the results, except substeps.
 struct SteppedOptions {
@@ -36,7 +41,7 @@ struct SteppedOptions {
     // Imposes a G x G grid, 1 <= G <= max_grid_cells; only with PairSearch::grid.
     // Empty: the grid is sized from each step's motion.
     std::optional<int> grid_cells = std::nullopt;
-    // Worker threads, >= 1. Empty: OpenMP's default; a scene of up to 20000
+    // Worker threads, 1 to max_threads. Empty: OpenMP's default; a scene of up to 20000
     // particles then runs its steps on one thread in the stretches where
     // short trials find that faster (a shared or busy machine). The results
     // are the same for every thread count.

@@ -23,7 +23,7 @@ void require_valid_stepped_options(const SteppedOptions& options) {
         check.in_range("grid_cells", *options.grid_cells, 1, max_grid_cells);
         if (options.pair_search != PairSearch::grid) check.fail("grid_cells needs pair_search = PairSearch::grid");
     }
-    if (options.threads) check.at_least("threads", *options.threads, 1);
+    if (options.threads) check.in_range("threads", *options.threads, 1, max_threads);
     check.at_least("substeps", options.substeps, 1);
     if (options.sort_by_position_every) check.at_least("sort_by_position_every", *options.sort_by_position_every, 0);
 }

@@ -1,7 +1,9 @@
 #include "parallel/parallel.hpp"
+#include "particlesim/stepped_simulation.hpp"
 
 #include <pthread.h>
 
+#include <algorithm>
 #include <atomic>
 #include <cstdint>
 
@@ -22,7 +24,10 @@ const bool fork_watch = [] {
 
 }  // namespace
 
-int default_thread_count() { return omp_get_active_level() > 0 ? 1 : std::max(omp_get_max_threads(), 1); }
+// OMP_NUM_THREADS may ask for more than an engine takes (max_threads).
+int default_thread_count() {
+    return omp_get_active_level() > 0 ? 1 : std::clamp(omp_get_max_threads(), 1, max_threads);
+}
 
 bool loops_may_start_threads() {
     if (omp_get_active_level() > 0 || forked_after_regions.load(std::memory_order_relaxed)) return false;
