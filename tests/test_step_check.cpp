@@ -8,6 +8,8 @@
 #include "check/uncertain_step.hpp"
 #include "particlesim/step_check.hpp"
 
+#include <limits>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -287,6 +289,45 @@ void perf_run() {
     CHECK_EQ(run.collisions[0].particle_min, 1U);
 }
 
+// What the caller says of a printing is checked too: an uncertainty that is
+// no distance, or wall marks for some particles only, throw instead of
+// judging (a negative uncertainty made a right step wrong; marks for some
+// particles were silently dropped).
+void printings_are_checked() {
+    const std::vector<Particle> before{disk(5, 10, 1, 0)};
+    const std::vector<Particle> after{disk(6, 10, 1, 0)};
+    const std::vector<Particle> two{disk(5, 10, 1, 0), disk(15, 10, 0, 0)};
+    const std::vector<OnWall> one_mark(1);
+    for (const bool exact : {false, true}) {
+        const check::Context context(exact ? "exact rules" : "stepped rules");
+        StepChecker checker(World{20, 1.0}, {.rules = exact ? CheckedRules::exact : CheckedRules::stepped});
+        const auto refusal = [&](const PrintedState& from, const PrintedState& to) {
+            try {
+                (void)checker.check(from, to);
+            } catch (const std::invalid_argument& e) {
+                return std::string(e.what());
+            }
+            return std::string();
+        };
+        CHECK_EQ(refusal({before, 0.0}, {after, fixed8_uncertainty}), "");
+        CHECK_EQ(refusal({before, -1.0}, {after, 0.0}),
+                 "StepChecker: the state before the step has an uncertainty that is not a distance in [0, 1e60]: -1");
+        CHECK_EQ(refusal({before, 0.0}, {after, std::numeric_limits<double>::quiet_NaN()}),
+                 "StepChecker: the state after the step has an uncertainty that is not a distance in [0, 1e60]: nan");
+        CHECK_EQ(refusal({two, 0.0, one_mark}, {two, 0.0}),
+                 "StepChecker: the state before the step has 2 particles and 1 on_wall marks; give one a particle, or "
+                 "none");
+        CHECK_EQ(refusal({before, 0.0, one_mark}, {after, 0.0}), "");
+        bool refused = false;
+        try {
+            (void)checker.run({before, 0.0}, -1);
+        } catch (const std::invalid_argument& e) {
+            refused = std::string(e.what()) == "StepChecker::run: steps must be >= 0, not -1";
+        }
+        CHECK(refused);
+    }
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -306,5 +347,6 @@ int main(int argc, char** argv) {
                        {"starts on the wall exactly", starts_on_the_wall_exactly},
                        {"outside the box", outside_the_box},
                        {"exact rules", exact_rules},
-                       {"perf run", perf_run}});
+                       {"perf run", perf_run},
+                       {"printings are checked", printings_are_checked}});
 }

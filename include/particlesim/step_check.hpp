@@ -106,13 +106,16 @@ public:
     // Whether `after` is one step of the rules from `before` (same number of
     // particles, in index order). Throws std::invalid_argument when `before`
     // is not a valid state, or (exact rules) when its disks overlap beyond
-    // its uncertainty: no step of the rules starts there.
+    // its uncertainty: no step of the rules starts there; and when either
+    // state's uncertainty is negative or NaN, or its on_wall is neither
+    // empty nor one per particle.
     [[nodiscard]] StepCheck check(const PrintedState& before, const PrintedState& after);
 
     // The stepped rules run for `steps` steps from `start` (a perf-mode
     // output has nothing in between): the bounds of every state they may
     // reach and the collision counts, or the first step from which a decision
-    // is within rounding and the run may go more than one way.
+    // is within rounding and the run may go more than one way. Throws
+    // std::invalid_argument as check() does for `start`, and for steps < 0.
     struct Run {
         std::vector<Particle> lower;  // componentwise bounds of the final state
         std::vector<Particle> upper;

@@ -74,6 +74,7 @@ public:
 
     StepCheck check(const PrintedState& before, const PrintedState& after) {
         require_printed_state(before);
+        require_printing(after, "after");
         if (after.particles.size() != before.particles.size()) {
             throw std::invalid_argument("the two states have different numbers of particles");
         }
@@ -87,6 +88,8 @@ public:
     }
 
     Run run(const PrintedState& start, std::int64_t steps) {
+        if (steps < 0)
+            throw std::invalid_argument("StepChecker::run: steps must be >= 0, not " + std::to_string(steps));
         require_printed_state(start);
         if (options_.rules == CheckedRules::exact) return exact_.run(start, steps);
         Run result;
@@ -115,6 +118,7 @@ private:
     // A state printed by a correct program: valid within its uncertainty (the
     // bounds made of it are clamped into the box, where the true state lies).
     void require_printed_state(const PrintedState& state) const {
+        require_printing(state, "before");
         for (std::size_t p = 0; p < state.particles.size(); ++p) {
             const Particle& q = state.particles[p];
             for (int axis = 0; axis < 2; ++axis) {
@@ -128,6 +132,22 @@ private:
                                                 "accepted range");
                 }
             }
+        }
+    }
+
+    // What the caller says of a state's printing, which no output can fix:
+    // an uncertainty that is a distance, and a wall mark for each particle or none.
+    static void require_printing(const PrintedState& state, const char* which) {
+        if (!(state.uncertainty >= 0.0 && state.uncertainty <= max_magnitude)) {
+            throw std::invalid_argument(
+                std::string("StepChecker: the state ") + which +
+                " the step has an uncertainty that is not a distance in [0, 1e60]: " + format_short(state.uncertainty));
+        }
+        if (!state.on_wall.empty() && state.on_wall.size() != state.particles.size()) {
+            throw std::invalid_argument(std::string("StepChecker: the state ") + which + " the step has " +
+                                        std::to_string(state.particles.size()) + " particles and " +
+                                        std::to_string(state.on_wall.size()) +
+                                        " on_wall marks; give one a particle, or none");
         }
     }
 
