@@ -65,7 +65,7 @@ bool same_candidates_every_step(const NamedScene& scene, std::optional<int> grid
         const PairSearchInput in{sim.particles(), wall_time, box, 1.0};
         const std::vector<Collision> reference = pair_candidates(in, std::nullopt, true, 1);
         for (ThreadCandidates& buffer : path_buffers) buffer.found.clear();
-        paths.find_pairs(in, path_buffers);
+        if (!paths.find_pairs(in, path_buffers)) return false;  // these scenes never crowd it past its limit
         if (reference != pair_candidates(in, grid_cells, false, threads, lanes) || reference != merged(path_buffers)) {
             return false;
         }

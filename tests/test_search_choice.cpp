@@ -1,5 +1,6 @@
 // The automatic pair search: brute force for a handful of particles; then
-// the cheaper of the paths search and the grid by the cost model. Each scene
+// the cheaper of the paths search and the grid by the cost model; and the
+// paths search handing over to the grid where its paths crowd together. Each scene
 // below was timed with both searches forced (one thread, docs/benchmarks.md
 // "Which search"); the choice must be the faster, and by the model's own
 // numbers the faster by the margin measured where the margin was wide.
@@ -7,13 +8,20 @@
 #include "check.hpp"
 
 #include "particlesim/random_scene.hpp"
+#include "particlesim/scene_families.hpp"
+#include "particlesim/stepped_simulation.hpp"
 #include "search/path_lines.hpp"
 #include "stepped/search_choice.hpp"
 #include "stepped/stepped_tuning.hpp"
 
+#include <sys/resource.h>
+
 #include <cmath>
+#include <cstdint>
 #include <numbers>
 #include <string>
+#include <utility>
+#include <vector>
 
 using namespace particlesim;
 
@@ -95,9 +103,76 @@ void the_edges() {
     CHECK(four.paths_ns < one.paths_ns);
 }
 
+// Runs `steps` steps with `search`; the particles, and the search in use at the end.
+std::pair<std::vector<Particle>, PairSearch> run_with(const World& world, const std::vector<Particle>& start,
+                                                      PairSearch search, std::int64_t steps) {
+    SteppedSimulation engine(world, start, {.pair_search = search, .threads = 2});
+    for (std::int64_t s = 0; s < steps; ++s) engine.step();
+    const auto shown = engine.particles();
+    return {std::vector<Particle>(shown.begin(), shown.end()), engine.pair_search()};
+}
+
+bool same_states(const std::vector<Particle>& a, const std::vector<Particle>& b) {
+    if (a.size() != b.size()) return false;
+    for (std::size_t i = 0; i < a.size(); ++i) {
+        if (a[i].position != b[i].position || a[i].velocity != b[i].velocity ||
+            a[i].particle_collisions != b[i].particle_collisions || a[i].wall_collisions != b[i].wall_collisions)
+            return false;
+    }
+    return true;
+}
+
+long peak_kilobytes() {
+    rusage usage{};
+    getrusage(RUSAGE_SELF, &usage);
+    return usage.ru_maxrss;
+}
+
+// Where the paths crowd together the paths search hands over to the grid,
+// asked for or chosen, with the same results: 4000 disks piled on one point
+// (it watched all 8 M pairs, 400 MB, before), and simgen's row of disks
+// moving along itself (19.6 s for 300 steps of 2000 disks, against the
+// grid's 0.08 s). Sparse scenes keep it.
+void crowded_paths_hand_over() {
+    const World box{100.0, 1.0};
+    std::vector<Particle> pile(4000);
+    std::uint64_t state = 7;
+    const auto uniform = [&state] {  // a small LCG: any velocities will do
+        state = state * 6364136223846793005ULL + 1442695040888963407ULL;
+        return static_cast<double>(state >> 11) * 0x1p-53 * 2.0 - 1.0;
+    };
+    for (Particle& p : pile) {
+        p.position = Vec2(50.0, 50.0);
+        p.velocity = Vec2(uniform(), uniform());
+    }
+    const long before = peak_kilobytes();
+    const auto [by_paths, paths_then] = run_with(box, pile, PairSearch::paths, 3);
+    CHECK(peak_kilobytes() - before < 64 * 1024);
+    CHECK(paths_then == PairSearch::grid);
+    const auto [by_auto, auto_then] = run_with(box, pile, PairSearch::automatic, 3);
+    CHECK(auto_then == PairSearch::grid);
+    const auto [by_brute, brute_then] = run_with(box, pile, PairSearch::brute_force, 3);
+    CHECK(same_states(by_paths, by_brute));
+    CHECK(same_states(by_auto, by_brute));
+
+    SceneFamilyOptions row;
+    row.particles = 2000;
+    const Scene line = make_family_scene(SceneFamily::line, row);
+    CHECK(automatic_search(line.world, line.particles, 1) == PairSearch::paths);  // by the model: few new lines
+    const auto [line_auto, line_then] = run_with(line.world, line.particles, PairSearch::automatic, 300);
+    CHECK(line_then == PairSearch::grid);
+    CHECK(same_states(line_auto, run_with(line.world, line.particles, PairSearch::grid, 300).first));
+
+    const SceneShape sparse = default_density(1000);
+    const auto particles = make_random_particles(sparse.count, sparse.world);
+    CHECK(run_with(sparse.world, particles, PairSearch::paths, 200).second == PairSearch::paths);
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
     return check::run(argc, argv, "test_search_choice",
-                      {{"the measured faster", the_measured_faster}, {"the edges", the_edges}});
+                      {{"the measured faster", the_measured_faster},
+                       {"the edges", the_edges},
+                       {"crowded paths hand over", crowded_paths_hand_over}});
 }

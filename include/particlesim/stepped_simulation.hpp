@@ -23,7 +23,11 @@ enum class PairSearch {
     automatic,    // the cheapest for the scene: brute force (tiny), paths (sparse) or grid
     brute_force,  // every pair: the reference
     grid,         // uniform grid over the swept paths, exact for any speed
-    paths,        // each particle's path kept between its collisions: sparse scenes
+    // Each particle's path kept between its collisions: sparse scenes. Where
+    // the paths crowd together (disks piled up, a row moving along itself)
+    // it hands over to the grid for the rest of the run, which finds the
+    // same candidates, rather than watch nearly every pair.
+    paths,
 };
 
 // Its name on simcli's command line and in reports: auto, brute, grid, paths.
@@ -82,7 +86,8 @@ public:
     // Summed over the micro-steps of the last step.
     [[nodiscard]] const StepCounts& last_step() const;
     [[nodiscard]] const StepCounts& totals() const;
-    // The pair search in use: the one asked for, or the one automatic chose.
+    // The pair search in use: the one asked for, or the one automatic chose;
+    // the grid once the paths search has handed over to it.
     [[nodiscard]] PairSearch pair_search() const;
     // The most threads a step uses: the ones asked for, or OpenMP's default.
     [[nodiscard]] int threads() const;

@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <array>
+#include <atomic>
 #include <cmath>
 
 namespace particlesim {
@@ -17,7 +18,7 @@ std::uint64_t collision_count(const Particle& p) { return p.particle_collisions 
 
 }  // namespace
 
-void PathSearch::find_pairs(const PairSearchInput& in, std::span<ThreadCandidates> out) {
+bool PathSearch::find_pairs(const PairSearchInput& in, std::span<ThreadCandidates> out) {
     // Grown, never shrunk: a step may use fewer threads than the one before.
     if (thread_watches_.size() < out.size()) thread_watches_.resize(out.size());
     const bool afresh = make_lines(in);
@@ -38,12 +39,25 @@ void PathSearch::find_pairs(const PairSearchInput& in, std::span<ThreadCandidate
         steady_workers_ = workers;
     }
     // New lines in blocks: PathLines reads each group of lines once for the block.
+    // Each thread stops once the watches it found would pass the limit with
+    // those kept: at most a block's more each, whatever the scene.
     constexpr std::int64_t block = PathLines::max_block;
+    const std::size_t limit = watch_limit(in.particles.size());
+    std::atomic<bool> crowded{false};
     parallel_for_dynamic(workers, (new_count + block - 1) / block, 1, [&](std::int64_t b, std::size_t thread) {
+        if (crowded.load(std::memory_order_relaxed)) return;
         const auto first = static_cast<std::size_t>(b * block);
         const std::size_t count = std::min<std::size_t>(block, new_lines_.size() - first);
         watch_near(in, first, count, reach, thread_watches_[thread]);
+        if (watches_.size() + thread_watches_[thread].found.size() > limit)
+            crowded.store(true, std::memory_order_relaxed);
     });
+    std::size_t watched = watches_.size();
+    for (const ThreadWatches& thread : thread_watches_) watched += thread.found.size();
+    if (crowded.load() || watched > limit) {
+        release();
+        return false;
+    }
     for (ThreadWatches& thread : thread_watches_) {
         watches_.insert(watches_.end(), thread.found.begin(), thread.found.end());
         thread.found.clear();
@@ -60,6 +74,13 @@ void PathSearch::find_pairs(const PairSearchInput& in, std::span<ThreadCandidate
     }
     watches_.resize(kept);
     ++micro_steps_;
+    return true;
+}
+
+void PathSearch::release() {
+    std::vector<Watch>().swap(watches_);
+    std::vector<ThreadWatches>().swap(thread_watches_);
+    lines_made_ = false;
 }
 
 // Every line through the particles' positions now; new lines for the

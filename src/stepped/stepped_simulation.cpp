@@ -115,6 +115,15 @@ public:
     std::int64_t steps_on_one_thread() const { return thread_choice_.steps_on_one_thread(); }
 
 private:
+    // The paths search declined, its lines crowded together
+    // (PathSearch::watch_limit()): the grid, which finds the same candidates,
+    // takes over for the rest of the run. Its steps read the blocks' motion.
+    void hand_over_to_grid() {
+        search_ = PairSearch::grid;
+        start_.with_motion = true;
+        stage_time_.reserve(particles_.size());
+    }
+
     // What is kept by stored index and must be measured or made afresh once
     // the particles change places.
     void particles_reordered() {
@@ -179,11 +188,10 @@ private:
                                  threads);
         if (search_ == PairSearch::brute_force) {
             find_pairs_brute_force(input, found);
-        } else if (search_ == PairSearch::paths) {
-            paths_.find_pairs(input, found);
-        } else {
-            grid_.find_pairs(input, options_.grid_cells, found, &selection);
+        } else if (search_ == PairSearch::paths && !paths_.find_pairs(input, found)) {
+            hand_over_to_grid();  // this micro-step too
         }
+        if (search_ == PairSearch::grid) grid_.find_pairs(input, options_.grid_cells, found, &selection);
         const StepCounts accepted = selection.decide_rest(found);
         resolve_collisions(particles_, partner_, collision_time, accepted, box_, duration, threads);
         // ... and the next step's first wall time again, measured as the free flight moves the particles.
