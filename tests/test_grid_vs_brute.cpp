@@ -18,6 +18,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <optional>
 #include <stdexcept>
 #include <vector>
@@ -65,7 +66,8 @@ bool same_candidates_every_step(const NamedScene& scene, std::optional<int> grid
         const PairSearchInput in{sim.particles(), wall_time, box, 1.0};
         const std::vector<Collision> reference = pair_candidates(in, std::nullopt, true, 1);
         for (ThreadCandidates& buffer : path_buffers) buffer.found.clear();
-        if (!paths.find_pairs(in, path_buffers)) return false;  // these scenes never crowd it past its limit
+        // No limit: every scene here, crowded or not, gets the paths search's candidates compared.
+        if (!paths.find_pairs(in, path_buffers, std::numeric_limits<std::size_t>::max())) return false;
         if (reference != pair_candidates(in, grid_cells, false, threads, lanes) || reference != merged(path_buffers)) {
             return false;
         }

@@ -18,7 +18,7 @@ std::uint64_t collision_count(const Particle& p) { return p.particle_collisions 
 
 }  // namespace
 
-bool PathSearch::find_pairs(const PairSearchInput& in, std::span<ThreadCandidates> out) {
+bool PathSearch::find_pairs(const PairSearchInput& in, std::span<ThreadCandidates> out, std::size_t watch_limit) {
     // Grown, never shrunk: a step may use fewer threads than the one before.
     if (thread_watches_.size() < out.size()) thread_watches_.resize(out.size());
     const bool afresh = make_lines(in);
@@ -42,7 +42,7 @@ bool PathSearch::find_pairs(const PairSearchInput& in, std::span<ThreadCandidate
     // Each thread stops once the watches it found would pass the limit with
     // those kept: at most a block's more each, whatever the scene.
     constexpr std::int64_t block = PathLines::max_block;
-    const std::size_t limit = watch_limit(in.particles.size());
+    const std::size_t limit = watch_limit;
     std::atomic<bool> crowded{false};
     parallel_for_dynamic(workers, (new_count + block - 1) / block, 1, [&](std::int64_t b, std::size_t thread) {
         if (crowded.load(std::memory_order_relaxed)) return;

@@ -35,17 +35,10 @@ public:
     // Appends the pair candidates of the micro-step starting at the state
     // `in` holds to out[0]; call once per micro-step, in order. New lines
     // are tested on up to out.size() threads. Returns false, appending
-    // nothing and letting go of its watches, where it would watch more pairs
-    // than watch_limit(): another search must take this micro-step and the
-    // rest of the run.
-    [[nodiscard]] bool find_pairs(const PairSearchInput& in, std::span<ThreadCandidates> out);
-    // The most pairs watched at once. Where lines crowd together (disks piled
-    // on one another, a row moving along its own line) nearly every pair
-    // would be watched, N^2 / 2 of them in memory and tested every
-    // micro-step: 5000 disks piled on one point held 787 MB and took 8 s a
-    // step, against the grid's 6 MB and 0.1 s. The scenes the search suits
-    // watch 0.04 (the default scene) to 8 pairs a particle.
-    static std::size_t watch_limit(std::size_t particles) { return 16 * particles + 65536; }
+    // nothing and letting go of its watches, where it would watch more than
+    // `watch_limit` pairs (stepped_tuning's paths_watches_*): another search
+    // must take this micro-step and the rest of the run.
+    [[nodiscard]] bool find_pairs(const PairSearchInput& in, std::span<ThreadCandidates> out, std::size_t watch_limit);
 
     // The stored particles were reordered: every line is made afresh.
     void forget() { lines_made_ = false; }

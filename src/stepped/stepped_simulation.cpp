@@ -47,6 +47,9 @@ public:
         thread_choice_ = ThreadChoice(threads_, !options_.threads && count <= threads_by_trials_up_to);
         search_ = options_.pair_search;
         if (search_ == PairSearch::automatic) search_ = automatic_search(world_, particles_, options_.substeps);
+        paths_watch_limit_ = options_.pair_search == PairSearch::automatic
+                                 ? paths_watches_per_particle_chosen * count + paths_watches_floor_chosen
+                                 : paths_watches_per_particle_asked * count + paths_watches_floor_asked;
         const bool threads_share_grid = search_ == PairSearch::grid && threads_ >= 2;
         const bool sorted =
             count >= sort_by_position_from || (threads_share_grid && count >= sort_by_position_shared_from);
@@ -116,7 +119,7 @@ public:
 
 private:
     // The paths search declined, its lines crowded together
-    // (PathSearch::watch_limit()): the grid, which finds the same candidates,
+    // (paths_watch_limit_): the grid, which finds the same candidates,
     // takes over for the rest of the run. Its steps read the blocks' motion.
     void hand_over_to_grid() {
         search_ = PairSearch::grid;
@@ -188,7 +191,7 @@ private:
                                  threads);
         if (search_ == PairSearch::brute_force) {
             find_pairs_brute_force(input, found);
-        } else if (search_ == PairSearch::paths && !paths_.find_pairs(input, found)) {
+        } else if (search_ == PairSearch::paths && !paths_.find_pairs(input, found, paths_watch_limit_)) {
             hand_over_to_grid();  // this micro-step too
         }
         if (search_ == PairSearch::grid) grid_.find_pairs(input, options_.grid_cells, found, &selection);
@@ -226,7 +229,8 @@ private:
     std::vector<ThreadCandidates> thread_candidates_;
     GridSearch grid_;
     PathSearch paths_;
-    struct {  // scratch of the invariant checks (PARTICLESIM_VALIDATE), reused
+    std::size_t paths_watch_limit_ = 0;  // the most pairs it may watch (stepped_tuning's paths_watches_*)
+    struct {                             // scratch of the invariant checks (PARTICLESIM_VALIDATE), reused
         std::vector<double> wall_time;
         StepStart start;
     } validation_;

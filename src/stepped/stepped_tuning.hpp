@@ -46,6 +46,21 @@ inline constexpr double grid_particle_slice_sixteen_lanes_ns = 35.0;
 // Particles up to which the paths search may be chosen: its first
 // micro-step tests all N^2 / 2 pairs.
 inline constexpr std::size_t paths_up_to = 20000;
+// The most pairs the paths search watches before it hands over to the grid
+// for the rest of the run (the same candidates; docs/architecture.md,
+// "Handing over to the grid"): a per particle and a floor. Where lines
+// crowd together nearly every pair is watched and tested each micro-step:
+// simgen's `line` (a row moving along itself) watched 132 a particle, and
+// 5000 disks piled on one point all 12.5 M pairs (787 MB, 8 s a step
+// against the grid's 6 MB and 0.1 s). The rules' random scenes watch 0.04
+// (the default scene) to 0.22 a particle. Where automatic chose it, past 2
+// a particle the watched pairs' tests cost about the grid's whole step
+// (`simgen walls` and `line`: the grid 2 to 16 times faster); where it was
+// asked for, only a bound on memory (32 bytes a watch).
+inline constexpr std::size_t paths_watches_per_particle_chosen = 2;
+inline constexpr std::size_t paths_watches_floor_chosen = 4096;
+inline constexpr std::size_t paths_watches_per_particle_asked = 16;
+inline constexpr std::size_t paths_watches_floor_asked = 65536;
 // Line tests (new lines x particles) a micro-step must give each thread
 // before the paths search shares them out: a second thread cost 1.19 times
 // one's time at 1.1 M tests a micro-step (N = 2000) and 1.25 at 0.25 M (the
