@@ -21,6 +21,7 @@
 #include <cmath>
 #include <limits>
 #include <mutex>
+#include <numbers>
 #include <numeric>
 #include <stdexcept>
 #include <string>
@@ -178,6 +179,8 @@ GridLayout GridSearch::choose_layout(const PairSearchInput& in, std::optional<in
         const double area = in.area > 0.0 ? in.area : box_size * box_size;
         const double spacing = std::sqrt(area / static_cast<double>(std::max<std::int64_t>(present, 1)));
         layout.slices = slices_for(slice_sweep_in_spacings * spacing);
+        layout.first_slice_collisions =
+            mean_sweep / layout.slices * 4.0 * std::numbers::sqrt2 * layout.reach * static_cast<double>(present) / area;
         const double wanted = std::max(spacing, diameter + 2.0 * mean_sweep / layout.slices);
         const double max_side =
             std::floor(std::sqrt(4.0 * static_cast<double>(present) * (box_size * box_size / area))) + 1.0;
@@ -194,10 +197,14 @@ void GridSearch::find_pairs(const PairSearchInput& in, std::optional<int> forced
     const std::size_t count = in.particles.size();
     // Small scenes cut into a slice a thread or more: one thread a slice,
     // each with buffers of its own (fixed by the scene, so they are allocated
-    // once). Large scenes, and scenes of fewer slices than threads (a slow
-    // gas has one): all threads share each slice, and one set of buffers
+    // once). Large scenes, scenes of fewer slices than threads (a slow gas
+    // has one), and scenes whose first slices decide most particles
+    // (stepped_tuning): all threads share each slice, and one set of buffers
     // keeps the memory per particle low.
-    const bool parallel_slices = threads >= 2 && count < slice_parallel_below && layout_.slices >= threads;
+    const bool decided_early = layout_.slices >= decide_from_slices &&
+                               layout_.first_slice_collisions > slices_shared_from_first_slice_collisions;
+    const bool parallel_slices =
+        threads >= 2 && count < slice_parallel_below && layout_.slices >= threads && !decided_early;
     const int workers = count < grid_shared_from
                             ? 1
                             : worker_count(buffers.size(), static_cast<std::int64_t>(count), min_particles_per_thread);

@@ -31,6 +31,10 @@ namespace particlesim {
 struct GridLayout {
     UniformGrid grid;
     int slices = 1;
+    // The pair collisions a particle may expect in the first slice (its mean
+    // path there through the others' density, 4r wide): how much the first
+    // slice's decisions leave out of the later ones.
+    double first_slice_collisions = 0.0;
     double reach = 0.0;  // r plus the rounding margin added around each path
     // 1, or for a box far from 1 the power of two that brings L into [1, 2):
     // float bounds are taken of scaled coordinates, so they keep their

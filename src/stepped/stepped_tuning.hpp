@@ -159,6 +159,18 @@ inline constexpr int max_pieces = 8;
 // a slice a thread or more; from here on a step has one slice, which the
 // threads share.
 inline constexpr std::size_t slice_parallel_below = 50000;
+// ... unless the particles are expected to collide this often in the first
+// slice (its mean path through the others' density, 4r wide, ideal gas):
+// a scene dense enough that the first slices decide most particles (the
+// later ones leave them out). Then the slices are searched one after
+// another, each shared by the threads: a thread a slice searches the second
+// before the first's decisions, with nearly every path still in it. On
+// simgen's `fast` family (30000 disks, area fraction 0.5, paths of several
+// box sides a step), two threads made 2.5 times one thread's pair tests
+// and took 1.4 to 1.7 times its time, 0.55 shared; on the gas at area
+// fraction 0.3 and 30 to 60 r a step, 1.3 to 1.5 times, and shared 1.0.
+// Sparse scenes (the rules' random scene at any speed) keep a thread a slice.
+inline constexpr double slices_shared_from_first_slice_collisions = 0.75;
 // Ranges of cells each worker sums when the threads share a slice's binning.
 inline constexpr std::size_t cell_ranges_per_worker = 8;
 // Boxes a cell from which a slice's scans test the particles' lines too:
