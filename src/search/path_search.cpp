@@ -42,19 +42,18 @@ bool PathSearch::find_pairs(const PairSearchInput& in, std::span<ThreadCandidate
     // Each thread stops once the watches it found would pass the limit with
     // those kept: at most a block's more each, whatever the scene.
     constexpr std::int64_t block = PathLines::max_block;
-    const std::size_t limit = watch_limit;
     std::atomic<bool> crowded{false};
     parallel_for_dynamic(workers, (new_count + block - 1) / block, 1, [&](std::int64_t b, std::size_t thread) {
         if (crowded.load(std::memory_order_relaxed)) return;
         const auto first = static_cast<std::size_t>(b * block);
         const std::size_t count = std::min<std::size_t>(block, new_lines_.size() - first);
         watch_near(in, first, count, reach, thread_watches_[thread]);
-        if (watches_.size() + thread_watches_[thread].found.size() > limit)
+        if (watches_.size() + thread_watches_[thread].found.size() > watch_limit)
             crowded.store(true, std::memory_order_relaxed);
     });
     std::size_t watched = watches_.size();
     for (const ThreadWatches& thread : thread_watches_) watched += thread.found.size();
-    if (crowded.load() || watched > limit) {
+    if (crowded.load() || watched > watch_limit) {
         release();
         return false;
     }
