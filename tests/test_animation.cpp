@@ -472,30 +472,36 @@ void order_is_seen() {
 // shows its image's sliver [0, 0.5] at the left edge, a corner disk at four
 // places.
 void periodic_images_are_drawn() {
-    const std::string scene = write_file("edges.in", "3 20 1 2 print\n0 19.5 10 0 0\n1 0.25 19.75 0 0\n2 10 5 0 0\n");
+    // Disks 0 to 2 at rest across the edges; disk 3 goes up from y = 19.5
+    // through the top edge, to 0.5 and 1.5.
+    const std::string scene =
+        write_file("edges.in", "4 20 1 2 print\n0 19.5 10 0 0\n1 0.25 19.75 0 0\n2 10 5 0 0\n3 15 19.5 0 1\n");
     const std::string page = work_dir() + "/edges.html", svg = work_dir() + "/edges.svg";
     const run_process::Result out =
         run_process::run(simcli, {scene, "--engine", "exact", "--boundary", "periodic", "--animate", page, "--snapshot",
                                   svg, "--snapshot-step", "0"});
     CHECK_EQ(out.status, 0);
-    // The corner disk's images lie at (20.25, 19.75), (0.25, -0.25) and (20.25, -0.25).
-    const std::vector<Vec2> on{{0.25, 10.0}, {19.9, 19.9}, {0.1, 0.1}, {19.9, 0.1}, {10.0, 5.0}};
-    const std::vector<Vec2> off{{0.25, 13.0}, {19.9, 14.0}, {5.0, 0.1}, {10.0, 19.9}};
+    // At frame 2: the corner disk's images lie at (20.25, 19.75), (0.25, -0.25) and (20.25, -0.25).
+    const std::vector<Vec2> on{{0.25, 10.0}, {19.9, 19.9}, {0.1, 0.1}, {19.9, 0.1}, {10.0, 5.0}, {15.0, 1.5}};
+    // Disk 3's trail breaks where it wraps: no line across the box at x = 15.
+    const std::vector<Vec2> off{{0.25, 13.0}, {19.9, 14.0}, {5.0, 0.1},  {10.0, 19.9},
+                                {15.0, 5.0},  {15.0, 10.0}, {15.0, 15.0}};
     // A click at (0.2, 10) lands on disk 0's image at (-0.5, 10), nearer than
     // any disk itself, and chooses disk 0. Its ring (5 pixels outside the
     // disk: 40.4 pixels at 35.4 a unit, 1.1412 units) is drawn round the disk
     // and round the image: through (18.3588, 10) and (0.6412, 10).
     const std::vector<Vec2> on_ring{{18.3588, 10.0}, {0.6412, 10.0}}, off_ring{{1.0, 10.0}};
-    const PageRun run = open_page(page, "{\"frame\":0,\"on\":" + points(on) + ",\"off\":" + points(off) +
-                                            ",\"scrubTo\":1,\"click\":[0.2,10],\"clickedOn\":" +
-                                            points({on_ring[0], on_ring[1], off_ring[0]}) + "}");
+    const PageRun run = open_page(
+        page, "{\"frame\":2,\"trails\":\"all\",\"on\":" + points(on) + ",\"off\":" + points(off) +
+                  ",\"scrubTo\":1,\"click\":[0.2,10],\"clickedOn\":" + points({on_ring[0], on_ring[1], off_ring[0]}) +
+                  "}");
     const mini_json::Value& r = run.report;
     if (r.kind == mini_json::Value::Kind::object) {
         int orange = 0, white = 0;
         for (const auto& pixel : r["on"].items) orange += colour_is(pixel, 232, 89, 12);
         for (const auto& pixel : r["off"].items) white += colour_is(pixel, 255, 255, 255);
-        CHECK_EQ(orange, 5);
-        CHECK_EQ(white, 4);
+        CHECK_EQ(orange, 6);
+        CHECK_EQ(white, 7);
         CHECK_EQ(r["scale"].number, 35.4);  // the ring's points above assume it
         CHECK_EQ(r["chosen"].number, 0.0);
         const auto& ring = r["clickedOn"].items;
@@ -507,31 +513,14 @@ void periodic_images_are_drawn() {
         }
         CHECK(r["errors"].items.empty());
     }
-    // A trail through a periodic edge breaks there: no line across the box.
-    // The disk goes up from y = 19.5 through the top edge, to 0.5 and 1.5.
-    const std::string wrapping = write_file("wrap.in", "1 20 1 2 print\n0 5 19.5 0 1\n");
-    const std::string wrapping_page = work_dir() + "/wrap.html";
-    CHECK_EQ(
-        run_process::run(simcli, {wrapping, "--engine", "exact", "--boundary", "periodic", "--animate", wrapping_page})
-            .status,
-        0);
-    const mini_json::Value trail =
-        open_page(wrapping_page,
-                  "{\"frame\":2,\"trails\":\"all\",\"on\":[[5,1.5]],\"off\":[[5,10],[5,5],[5,15]],"
-                  "\"scrubTo\":1}")
-            .report;
-    if (trail.kind == mini_json::Value::Kind::object) {
-        CHECK(colour_is(trail["on"][0], 232, 89, 12));
-        for (const auto& pixel : trail["off"].items) CHECK(colour_is(pixel, 255, 255, 255));
-    }
-    // The picture: 2 + 4 + 1 circles, and the box clips them.
+    // The picture at step 0: 2 + 4 + 1 + 2 circles, and the box clips them.
     const auto circles = [](const std::string& text) {
         std::size_t found = 0;
         for (std::size_t at = text.find("<circle"); at != std::string::npos; at = text.find("<circle", at + 1)) ++found;
         return found;
     };
     const std::string text = run_process::slurp(svg);
-    CHECK_EQ(circles(text), std::size_t{7});
+    CHECK_EQ(circles(text), std::size_t{9});
     CHECK(text.find("cx=\"-0.5\" cy=\"10\"") != std::string::npos);
     CHECK(text.find("clip-path=\"url(#box)\"") != std::string::npos);
     // A walled box draws each disk once.
