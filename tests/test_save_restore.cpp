@@ -9,9 +9,11 @@
 
 #include "particlesim/exact_simulation.hpp"
 #include "particlesim/random_scene.hpp"
+#include "particlesim/scene_families.hpp"
 #include "particlesim/stepped_simulation.hpp"
 
 #include <sstream>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -157,12 +159,12 @@ void damaged_states_are_refused() {
         refused("", "empty");
         refused(good.substr(0, good.size() / 2), "truncated");
         refused(with_token(good, 0, "other-engine-state"), "another engine's state");
-        refused(with_token(good, 1, is_exact ? "3" : "2"), "another version");
+        refused(with_token(good, 1, is_exact ? "4" : "2"), "another version");
         // The exact engine's state: the header (2 tokens), N, the time, the
-        // step, 3 counts, 2 collision sums; then each particle's 6 numbers,
+        // step, 3 counts, 2 collision sums, the cells a side; then each particle's 6 numbers,
         // its stamp, cell, wall time, crossing (time, cell) and pair event
         // (time, i, j, partner, partner's version).
-        const std::size_t first_particle = is_exact ? 10 : 7;
+        const std::size_t first_particle = is_exact ? 11 : 7;
         refused(with_token(good, first_particle, "nan"), "a NaN position");
         refused(with_token(good, first_particle, "1e300"), "a position outside the box");
         refused(with_token(good, first_particle, std::string(100, '1')), "a huge token");
@@ -176,6 +178,8 @@ void damaged_states_are_refused() {
             refused(with_token(good, first_particle + 14, "99999999"), "a partner outside the scene");
             refused(with_token(good, 8, "inf"), "a collision sum that is not finite");
             refused(with_token(good, 9, "nan"), "a NaN collision sum");
+            refused(with_token(good, 10, "0"), "no cells");
+            refused(with_token(good, 10, "4097"), "more cells than a grid may have");
         }
         refused(with_token(good, 5, "-1"), "a negative count");
     }
@@ -191,9 +195,9 @@ void pair_event_of_other_particles_is_refused() {
     exact.step();
     const std::string good = saved_text(exact);
     const std::vector<std::string> tokens = tokens_of(good);
-    // After the 10 tokens of the header, 16 a particle; its pair event's time
+    // After the 11 tokens of the header, 16 a particle; its pair event's time
     // is the 12th, then i, j, the partner and its version.
-    constexpr std::size_t first_particle = 10;
+    constexpr std::size_t first_particle = 11;
     std::size_t damaged = 0;
     for (std::size_t k = 0; first_particle + 16 * (k + 1) <= tokens.size() && damaged < 5; ++k) {
         const std::size_t time = first_particle + 16 * k + 11;
@@ -210,32 +214,77 @@ void pair_event_of_other_particles_is_refused() {
     CHECK_EQ(ExactSimulation::restore(world, in).steps_done(), 1);  // the undamaged state restores
 }
 
-// A state saved before the exact engine saved its collision sums (version
-// 1: the same tokens without them) still restores, to the same run, its
-// sums starting at 0.
-void exact_state_without_sums_restores() {
+// States saved before the exact engine saved its cells a side (version 2:
+// the same tokens without it) and its collision sums (version 1: without
+// both) still restore, to the same run, the sums of version 1 starting at 0.
+void exact_states_of_earlier_versions_restore() {
     const NamedScene scene = random_scenes::make(0);
-    ExactSimulation exact(scene.world, scene.particles);
-    for (int k = 0; k < 3; ++k) exact.step();
-    CHECK(exact.collision_sums().pair_virial != 0.0 || exact.collision_sums().wall_impulse != 0.0);
-    std::istringstream in(saved_text(exact));
-    std::vector<std::string> tokens;
-    for (std::string t; in >> t;) tokens.push_back(t);
-    CHECK(tokens.size() > 10 && tokens[0] == "exact-engine-state" && tokens[1] == "2");
-    tokens[1] = "1";
-    tokens.erase(tokens.begin() + 8, tokens.begin() + 10);
-    std::string version_one;
-    for (const std::string& t : tokens) version_one += t + " ";
-    std::istringstream saved(version_one);
-    ExactSimulation restored = ExactSimulation::restore(scene.world, saved);
-    CHECK_EQ(restored.collision_sums().pair_virial, 0.0);
-    CHECK_EQ(restored.collision_sums().wall_impulse, 0.0);
-    CHECK_EQ(restored.steps_done(), exact.steps_done());
-    for (int k = 0; k < 3; ++k) {
+    for (const int version : {1, 2}) {
+        const check::Context context("version ", version);
+        ExactSimulation exact(scene.world, scene.particles);
+        for (int k = 0; k < 3; ++k) exact.step();
+        CHECK(exact.collision_sums().pair_virial != 0.0 || exact.collision_sums().wall_impulse != 0.0);
+        std::istringstream in(saved_text(exact));
+        std::vector<std::string> tokens;
+        for (std::string t; in >> t;) tokens.push_back(t);
+        // The head: name, version, N, time, steps, three counts, two sums, the cells a side.
+        CHECK(tokens.size() > 11 && tokens[0] == "exact-engine-state" && tokens[1] == "3");
+        CHECK_EQ(tokens[10], std::to_string(exact.cells_per_side()));
+        tokens[1] = std::to_string(version);
+        tokens.erase(tokens.begin() + (version == 1 ? 8 : 10), tokens.begin() + 11);
+        std::string earlier;
+        for (const std::string& t : tokens) earlier += t + " ";
+        std::istringstream saved(earlier);
+        ExactSimulation restored = ExactSimulation::restore(scene.world, saved);
+        CHECK_EQ(restored.cells_per_side(), exact.cells_per_side());
+        if (version == 1) {
+            CHECK_EQ(restored.collision_sums().pair_virial, 0.0);
+            CHECK_EQ(restored.collision_sums().wall_impulse, 0.0);
+        } else {
+            CHECK_EQ(restored.collision_sums().pair_virial, exact.collision_sums().pair_virial);
+        }
+        CHECK_EQ(restored.steps_done(), exact.steps_done());
+        for (int k = 0; k < 3; ++k) {
+            exact.step();
+            restored.step();
+            CHECK_EQ(state_hash::hash(restored.particles()), state_hash::hash(exact.particles()));
+        }
+    }
+}
+
+// The cells a side a run chose from its particles (lines that crowd take
+// the cells, which the model from N, r and L alone would not) are saved,
+// and a restored run takes them: the same run, where the model's choice
+// would have read the saved cells wrongly. Other cells asked for are refused.
+void crowded_lines_restore_with_their_cells() {
+    SceneFamilyOptions row;
+    row.particles = 400;
+    const Scene cradle = make_family_scene(SceneFamily::cradle, row);
+    ExactSimulation exact(cradle.world, cradle.particles);
+    CHECK(exact.cells_per_side() > 1);  // the lines crowd: every disk is on the moving one's line
+    ExactSimulation by_lines(cradle.world, cradle.particles, {.cells_per_side = 1});
+    for (int k = 0; k < 20; ++k) {
+        exact.step();
+        by_lines.step();
+    }
+    CHECK_EQ(state_hash::hash(by_lines.particles()), state_hash::hash(exact.particles()));
+    const std::string text = saved_text(exact);
+    std::istringstream in(text);
+    ExactSimulation restored = ExactSimulation::restore(cradle.world, in);
+    CHECK_EQ(restored.cells_per_side(), exact.cells_per_side());
+    for (int k = 0; k < 20; ++k) {
         exact.step();
         restored.step();
-        CHECK_EQ(state_hash::hash(restored.particles()), state_hash::hash(exact.particles()));
     }
+    CHECK_EQ(state_hash::hash(restored.particles()), state_hash::hash(exact.particles()));
+    std::istringstream again(text);
+    bool refused = false;
+    try {
+        (void)ExactSimulation::restore(cradle.world, again, {.cells_per_side = 1});
+    } catch (const std::invalid_argument& e) {
+        refused = std::string(e.what()).find("the state was saved with") != std::string::npos;
+    }
+    CHECK(refused);
 }
 
 }  // namespace
@@ -244,7 +293,8 @@ int main(int argc, char** argv) {
     return check::run(argc, argv, "test_save_restore",
                       {{"stepped engine resumes bit for bit", stepped_engine_resumes_bit_for_bit},
                        {"exact engine resumes bit for bit", exact_engine_resumes_bit_for_bit},
-                       {"exact state without sums restores", exact_state_without_sums_restores},
+                       {"exact states of earlier versions restore", exact_states_of_earlier_versions_restore},
+                       {"crowded lines restore with their cells", crowded_lines_restore_with_their_cells},
                        {"damaged states are refused", damaged_states_are_refused},
                        {"a pair event of other particles is refused", pair_event_of_other_particles_is_refused}});
 }

@@ -20,8 +20,10 @@
 #include <array>
 #include <cmath>
 #include <optional>
+#include <span>
 #include <string>
 #include <type_traits>
+#include <vector>
 
 namespace particlesim {
 
@@ -107,13 +109,43 @@ UniformGrid periodic_neighbour_grid(const World& world, std::size_t particle_cou
     return UniformGrid(world.box_size, side);
 }
 
-UniformGrid neighbour_grid(const World& world, std::size_t particle_count, const ExactOptions& options) {
-    const std::optional<int> cells_per_side = options.cells_per_side;
-    if (options.boundary == Boundary::periodic) return periodic_neighbour_grid(world, particle_count, cells_per_side);
-    if (cells_per_side) return UniformGrid(world.box_size, *cells_per_side);
+// Whether the lines of a sample of the particles (exact_tuning::lines_probed,
+// spread over the indices) meet more than lines_crowd_from_near others on
+// average: a row moving along itself, a cradle.
+bool lines_crowd(const World& world, std::span<const Particle> particles) {
+    using namespace exact_tuning;
+    PathLines lines;
+    lines.assign(particles, Box::of(world));
+    const std::size_t probed = std::min<std::size_t>(lines_probed, particles.size());
+    std::vector<std::uint32_t> near;
+    std::size_t met = 0;
+    for (std::size_t k = 0; k < probed; ++k) {
+        near.clear();
+        lines.gather_near(static_cast<std::uint32_t>(k * particles.size() / probed), near);
+        met += near.size();
+    }
+    return static_cast<double>(met) > lines_crowd_from_near * static_cast<double>(probed);
+}
+
+// The cells a side that the cost model alone chooses from N, r and L.
+int modelled_cells_per_side(const World& world, std::size_t particle_count, Boundary boundary) {
     const int side = cells_per_side_for(world, particle_count);
-    if (lines_are_cheaper(world, particle_count, side)) return UniformGrid(world.box_size, 1);
-    return UniformGrid(world.box_size, side);
+    if (boundary == Boundary::periodic) return std::max(side, periodic_cells_at_least);
+    return lines_are_cheaper(world, particle_count, side) ? 1 : side;
+}
+
+// The cells of a run from its start: the options' side, or the cost model's
+// choice, lines only where they do not crowd. A restored run takes the side
+// its state was saved with (ExactOptions::cells_per_side set by restore()).
+UniformGrid neighbour_grid(const World& world, std::span<const Particle> particles, const ExactOptions& options) {
+    std::optional<int> cells_per_side = options.cells_per_side;
+    if (!cells_per_side) {
+        cells_per_side = modelled_cells_per_side(world, particles.size(), options.boundary);
+        if (*cells_per_side == 1 && lines_crowd(world, particles))
+            cells_per_side = cells_per_side_for(world, particles.size());
+    }
+    if (options.boundary == Boundary::periodic) return periodic_neighbour_grid(world, particles.size(), cells_per_side);
+    return UniformGrid(world.box_size, *cells_per_side);
 }
 
 }  // namespace
@@ -183,6 +215,9 @@ public:
         std::int64_t steps_done = 0;
         StepCounts totals;
         CollisionSums sums;  // zero in a version 1 state, which had none
+        // The cells a side it ran with (version 3); before, the cost model's
+        // choice from N, r and L, which restore() makes again.
+        std::optional<int> cells_per_side;
         // Both grow with the input, whatever its header says.
         std::vector<Particle> particles;  // each at its own stamp
         std::vector<SavedPredictions> predictions;
@@ -260,7 +295,8 @@ public:
         snapshot_current_ = false;
     }
 
-    // `version` 1 has no collision sums; 2 has them after the counts.
+    // `version` 1 has no collision sums; 2 has them after the counts; 3 also
+    // the cells a side after them.
     static SavedRun read_saved(SavedStateReader& in, int version) {
         SavedRun run;
         const std::uint64_t count = in.count(0xfffffffeU);
@@ -273,6 +309,11 @@ public:
             run.sums.wall_impulse = in.real();
             if (!std::isfinite(run.sums.pair_virial) || !std::isfinite(run.sums.wall_impulse))
                 in.fail("collision sums that are not finite");
+        }
+        if (version >= 3) {
+            const std::uint64_t side = in.count(max_grid_cells);
+            if (side == 0) in.fail("no cells");
+            run.cells_per_side = static_cast<int>(side);
         }
         for (std::uint64_t i = 0; i < count; ++i) {
             run.particles.push_back(read_particle(in));
@@ -299,6 +340,7 @@ public:
         save_counts(out, totals_);
         save_number(out, collision_sums_.pair_virial);
         save_number(out, collision_sums_.wall_impulse);
+        save_number(out, static_cast<std::uint64_t>(cells_.grid().per_side()));
         out << '\n';
         for (std::uint32_t i = 0; i < count(); ++i) {
             save_particle(out, particle_at_stamp(i));
@@ -388,7 +430,7 @@ private:
         : world_(world),
           box_(Box::of(world)),
           periodic_(options.boundary == Boundary::periodic),
-          cells_(neighbour_grid(world, particles.size(), options), particles.size()),
+          cells_(neighbour_grid(world, particles, options), particles.size()),
           plans_(particles.size()),
           snapshot_(std::move(particles)),
           gathered_(count() + 1),
@@ -1044,15 +1086,27 @@ ExactSimulation ExactSimulation::restore(const World& world, std::istream& saved
     SavedStateReader reader(saved, restore_refusal);
     reader.expect("exact-engine-state");
     const std::string version = reader.word();
-    if (version != "1" && version != "2") reader.fail("an unknown version");
-    Implementation::SavedRun run = Implementation::read_saved(reader, version == "1" ? 1 : 2);
+    if (version != "1" && version != "2" && version != "3") reader.fail("an unknown version");
+    Implementation::SavedRun run = Implementation::read_saved(reader, version == "1" ? 1 : version == "2" ? 2 : 3);
     require_valid_scene("particlesim::ExactSimulation::restore", world, run.particles,
                         options.boundary == Boundary::periodic ? CentresIn::periodic_saved : CentresIn::walled_box);
-    return ExactSimulation(std::make_unique<Implementation>(world, std::move(run), options));
+    ExactOptions as_saved = options;
+    if (run.cells_per_side) {
+        if (options.cells_per_side && *options.cells_per_side != *run.cells_per_side) {
+            throw std::invalid_argument("particlesim::ExactOptions: cells_per_side " +
+                                        std::to_string(*options.cells_per_side) + ", but the state was saved with " +
+                                        std::to_string(*run.cells_per_side));
+        }
+        as_saved.cells_per_side = run.cells_per_side;
+    } else if (!options.cells_per_side) {
+        // Saved before the side was: the model's choice, as its start made it.
+        as_saved.cells_per_side = modelled_cells_per_side(world, run.particles.size(), options.boundary);
+    }
+    return ExactSimulation(std::make_unique<Implementation>(world, std::move(run), as_saved));
 }
 
 void ExactSimulation::save(std::ostream& out) const {
-    out << "exact-engine-state 2\n";
+    out << "exact-engine-state 3\n";
     engine_->save(out);
 }
 
