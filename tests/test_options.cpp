@@ -49,7 +49,7 @@ void stepped_options_are_checked() {
     };
     CHECK(names(stepped({.threads = 0}), "threads"));
     CHECK(names(stepped({.threads = -3}), "threads"));
-    // Each thread keeps buffers: two million of them held 3 GB for a scene of 32000 disks.
+    // Each thread keeps buffers: two million of them would hold 3 GB for a scene of 32000 disks.
     CHECK_EQ(stepped({.threads = max_threads + 1}),
              "particlesim::SteppedOptions: threads must be in [1, 1024], not 1025");
     CHECK(names(stepped({.substeps = 0}), "substeps"));

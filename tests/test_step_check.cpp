@@ -291,8 +291,8 @@ void perf_run() {
 
 // What the caller says of a printing is checked too: an uncertainty that is
 // no distance, or wall marks for some particles only, throw instead of
-// judging (a negative uncertainty made a right step wrong; marks for some
-// particles were silently dropped).
+// judging (a negative uncertainty would make a right step wrong; marks for
+// some particles would be dropped without a word).
 void printings_are_checked() {
     const std::vector<Particle> before{disk(5, 10, 1, 0)};
     const std::vector<Particle> after{disk(6, 10, 1, 0)};

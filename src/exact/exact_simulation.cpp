@@ -215,8 +215,8 @@ public:
         std::int64_t steps_done = 0;
         StepCounts totals;
         CollisionSums sums;  // zero in a version 1 state, which had none
-        // The cells a side it ran with (version 3); before, the cost model's
-        // choice from N, r and L, which restore() makes again.
+        // The cells a side it ran with (version 3); in versions 1 and 2, the
+        // cost model's choice from N, r and L, which restore() makes again.
         std::optional<int> cells_per_side;
         // Both grow with the input, whatever its header says.
         std::vector<Particle> particles;  // each at its own stamp
@@ -1099,7 +1099,7 @@ ExactSimulation ExactSimulation::restore(const World& world, std::istream& saved
         }
         as_saved.cells_per_side = run.cells_per_side;
     } else if (!options.cells_per_side) {
-        // Saved before the side was: the model's choice, as its start made it.
+        // A version that does not save the side: the model's choice, as its start made it.
         as_saved.cells_per_side = modelled_cells_per_side(world, run.particles.size(), options.boundary);
     }
     return ExactSimulation(std::make_unique<Implementation>(world, std::move(run), as_saved));

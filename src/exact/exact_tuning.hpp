@@ -40,7 +40,7 @@ inline constexpr std::uint32_t lines_up_to = 20000;  // particles: the first pre
 // the start's particles probed (evenly spread over the indices), and the
 // cells taken where the probed lines meet more than this many others on
 // average (a cell search tests about 36 disks): simgen's `line` and
-// `cradle` at 20000 disks took 1.64 s and 5.15 s for 10 steps by the
+// `cradle` at 20000 disks take 1.64 s and 5.15 s for 10 steps by the
 // lines, 0.13 s and 0.65 s by 64 x 64 cells.
 inline constexpr std::uint32_t lines_probed = 64;
 inline constexpr double lines_crowd_from_near = 32.0;

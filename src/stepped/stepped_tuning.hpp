@@ -50,7 +50,7 @@ inline constexpr std::size_t paths_up_to = 20000;
 // for the rest of the run (the same candidates; docs/architecture.md,
 // "Handing over to the grid"): a per particle and a floor. Where lines
 // crowd together nearly every pair is watched and tested each micro-step:
-// simgen's `line` (a row moving along itself) watched 132 a particle, and
+// simgen's `line` (a row moving along itself) watches 132 a particle, and
 // 5000 disks piled on one point all 12.5 M pairs (787 MB, 8 s a step
 // against the grid's 6 MB and 0.1 s). The rules' random scenes watch 0.04
 // (the default scene) to 0.22 a particle. Where automatic chose it, past 2
@@ -166,9 +166,10 @@ inline constexpr std::size_t slice_parallel_below = 50000;
 // another, each shared by the threads: a thread a slice searches the second
 // before the first's decisions, with nearly every path still in it. On
 // simgen's `fast` family (30000 disks, area fraction 0.5, paths of several
-// box sides a step), two threads made 2.5 times one thread's pair tests
-// and took 1.4 to 1.7 times its time, 0.55 shared; on the gas at area
-// fraction 0.3 and 30 to 60 r a step, 1.3 to 1.5 times, and shared 1.0.
+// box sides a step), two threads taking a slice each make 2.5 times one
+// thread's pair tests and take 1.4 to 1.7 times its time, 0.55 shared; on
+// the gas at area fraction 0.3 and 30 to 60 r a step, 1.3 to 1.5 times,
+// and shared 1.0.
 // Sparse scenes (the rules' random scene at any speed) keep a thread a slice.
 inline constexpr double slices_shared_from_first_slice_collisions = 0.75;
 // Ranges of cells each worker sums when the threads share a slice's binning.
