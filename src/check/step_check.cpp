@@ -779,9 +779,7 @@ StepChecker::StepChecker(const World& world, const StepCheckOptions& options) {
     if (options.rules != CheckedRules::stepped && options.rules != CheckedRules::exact)
         check.fail("rules must be CheckedRules::stepped or CheckedRules::exact, not " +
                    std::to_string(static_cast<int>(options.rules)));
-    if (options.boundary != Boundary::walls && options.boundary != Boundary::periodic)
-        check.fail("boundary must be Boundary::walls or Boundary::periodic, not " +
-                   std::to_string(static_cast<int>(options.boundary)));
+    check.known_boundary("boundary", options.boundary);
     if (options.boundary == Boundary::periodic && options.rules != CheckedRules::exact)
         check.fail("a periodic box has the exact rules only (rules = exact)");
     impl_ = std::make_unique<Impl>(world, options);

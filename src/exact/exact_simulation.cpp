@@ -88,10 +88,10 @@ bool lines_are_cheaper(const World& world, std::size_t particle_count, int cells
     return with_lines < lines_chosen_below * with_cells;
 }
 
-UniformGrid periodic_neighbour_grid(const World& world, std::size_t particle_count, std::optional<int> cells_per_side) {
+// The periodic box's `side` x `side` cells, or the refusal of a box or a
+// side too small for them.
+UniformGrid periodic_neighbour_grid(const World& world, int side) {
     const double reach = contact_reach(Box::of(world));
-    const int side =
-        cells_per_side.value_or(std::max(cells_per_side_for(world, particle_count), periodic_cells_at_least));
     const std::string at_least = std::to_string(periodic_cells_at_least);
     const std::string needs = "particlesim::ExactSimulation: a periodic box needs at least " + at_least +
                               " cells a side, each wider than a contact distance";
@@ -144,7 +144,7 @@ UniformGrid neighbour_grid(const World& world, std::span<const Particle> particl
         if (*cells_per_side == 1 && lines_crowd(world, particles))
             cells_per_side = cells_per_side_for(world, particles.size());
     }
-    if (options.boundary == Boundary::periodic) return periodic_neighbour_grid(world, particles.size(), cells_per_side);
+    if (options.boundary == Boundary::periodic) return periodic_neighbour_grid(world, *cells_per_side);
     return UniformGrid(world.box_size, *cells_per_side);
 }
 
@@ -1059,9 +1059,7 @@ namespace {
 
 void check_options(const ExactOptions& options) {
     const OptionsCheck check("particlesim::ExactOptions");
-    if (options.boundary != Boundary::walls && options.boundary != Boundary::periodic)
-        check.fail("boundary must be Boundary::walls or Boundary::periodic, not " +
-                   std::to_string(static_cast<int>(options.boundary)));
+    check.known_boundary("boundary", options.boundary);
     if (options.cells_per_side) check.in_range("cells_per_side", *options.cells_per_side, 1, max_grid_cells);
     if (options.max_events_per_step && *options.max_events_per_step == 0)
         check.fail("max_events_per_step must be >= 1");

@@ -2,6 +2,8 @@
 // Checks of an options struct where it enters an engine: a bad value throws
 // std::invalid_argument naming the struct, the option and the value.
 
+#include "particlesim/world.hpp"
+
 #include <stdexcept>
 #include <string>
 
@@ -22,6 +24,13 @@ public:
         if (value < min || value > max) {
             fail(std::string(option) + " must be in [" + std::to_string(min) + ", " + std::to_string(max) + "], not " +
                  std::to_string(value));
+        }
+    }
+    // A Boundary cast from a number that names neither box.
+    void known_boundary(const char* option, Boundary value) const {
+        if (value != Boundary::walls && value != Boundary::periodic) {
+            fail(std::string(option) + " must be Boundary::walls or Boundary::periodic, not " +
+                 std::to_string(static_cast<int>(value)));
         }
     }
 
