@@ -1,8 +1,9 @@
 // simcli under mpirun against simcli in one process: the same bytes on
 // stdout and in -o files, the same --stats counts, the same refusals (one
 // line, exit 2), a checkpoint written at 3 ranks continued at 5 and in one
-// process, an interrupted run that keeps whole blocks and continues, and an
-// unwritable output that stops every rank with one message; and simcli
+// process, an interrupted run that keeps whole blocks and continues (and
+// one on standard output, which mpirun stops forwarding, that still writes
+// its checkpoint), and an unwritable output that stops every rank with one message; and simcli
 // itself free of MPI, running its sibling simcli-mpi under a launcher.
 
 #include "check.hpp"
@@ -194,6 +195,41 @@ void an_interrupted_run_keeps_whole_blocks_and_goes_on() {
     CHECK(first + rest.out == one_process({short_scene}).out);
 }
 
+// The same run with its output on standard output, which mpirun forwards
+// from a terminal it stops reading when it is signalled (and signals the
+// ranks a second later, kills them a second after that): rank 0 may be
+// waiting in a write that nobody reads. The checkpoint is still written and
+// the message says how far the output can be trusted; what arrived is the
+// start of the run's output, and the checkpoint goes on from its step.
+void an_interrupted_run_on_standard_output_still_checkpoints() {
+    const std::string scene = write_file("forwarded.in", "300\n250\n1\n4000\nprint\n");
+    const std::string checkpoint = (work_dir() / "forwarded.checkpoint").string();
+    std::filesystem::remove(checkpoint);
+    const run_process::Result got = on_ranks(3, {"--checkpoint", checkpoint, "--checkpoint-every", "40", scene},
+                                             run_process::Signal{SIGINT, 0, checkpoint});
+    CHECK(got.status != 0);
+    CHECK_EQ(lines_starting(got.err, "simcli: "), 1L);
+    const std::string said = "simcli: interrupted after step ";
+    const std::size_t at = got.err.find(said);
+    CHECK(at != std::string::npos);
+    if (at == std::string::npos) return;
+    const long step = std::stol(got.err.substr(at + said.size()));
+    CHECK(step >= 40 && step < 4000);
+    CHECK(got.err.find("standard output went through the MPI launcher") != std::string::npos);
+    CHECK(got.err.find("the checkpoint holds step " + std::to_string(step)) != std::string::npos);
+    const long end = step + 20;
+    const bool cut_short = checkpoint_text::set_steps(checkpoint, 4000, end);
+    CHECK(cut_short);
+    if (!cut_short) return;
+    const std::string short_scene =
+        write_file("forwarded_short.in", "300\n250\n1\n" + std::to_string(end) + "\nprint\n");
+    const std::string expected = one_process({short_scene}).out;
+    CHECK(got.out.size() < expected.size() && expected.compare(0, got.out.size(), got.out) == 0);
+    const run_process::Result rest = on_ranks(2, {"--resume", checkpoint});
+    CHECK_EQ(rest.status, 0);
+    CHECK(rest.out == after_step(expected, step));
+}
+
 // The run's last periodic checkpoint (step 60 of 70) stands for a run
 // killed after it: the output holds steps past it, and --resume on other
 // ranks cuts it back to the checkpoint's step, so the two parts join.
@@ -259,6 +295,8 @@ int main(int argc, char** argv) {
          {"refusals are one line and exit 2", refusals_are_one_line_and_exit_two},
          {"a checkpoint at 3 ranks resumed at 5", checkpoint_at_three_ranks_resumed_at_five},
          {"an interrupted run keeps whole blocks", an_interrupted_run_keeps_whole_blocks_and_goes_on},
+         {"an interrupted run on standard output still checkpoints",
+          an_interrupted_run_on_standard_output_still_checkpoints},
          {"the last periodic checkpoint cuts the output back", the_last_periodic_checkpoint_cuts_the_output_back},
          {"an unwritable output stops every rank", an_unwritable_output_stops_every_rank},
          {"simcli loads no MPI", simcli_loads_no_mpi}});

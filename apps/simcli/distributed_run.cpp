@@ -3,7 +3,9 @@
 #include "checkpoint.hpp"
 #include "cli_options.hpp"
 #include "first_part.hpp"
+#include "interruptible_output.hpp"
 #include "interrupts.hpp"
+#include "mpi_launch.hpp"
 #include "output_file.hpp"
 #include "progress_line.hpp"
 #include "run_stats.hpp"
@@ -14,6 +16,8 @@
 #include "particlesim/state_writer.hpp"
 
 #include <mpi.h>
+#include <sys/stat.h>
+#include <unistd.h>
 #ifdef __GLIBC__
 #include <malloc.h>
 #endif
@@ -88,13 +92,24 @@ void refuse_on_ranks(const CliOptions& options, int ranks) {
 // Rank 0's output of the states. A write that fails is kept, not thrown,
 // so that every rank still takes part in the gather; the failure is agreed
 // after it.
+//
+// Standard output under an MPI launcher is a pipe or terminal to the
+// launcher, which stops reading it once it is signalled (mpirun signals its
+// ranks a second later and kills them a second after that). There a signal
+// ends the output where it stands (interruptible_output.hpp), so that the
+// checkpoint and the message are not held up behind a write nobody reads.
 class StateOutput {
 public:
     StateOutput(const std::optional<std::string>& path, NumberFormat numbers)
-        : file_(path), writer_(file_.stream(), numbers) {}
+        : file_(path),
+          interruptible_(!path && forwarded_by_launcher() ? open_interruptible_standard_output() : nullptr),
+          writer_(interruptible_ ? interruptible_.get() : file_.stream(), numbers),
+          forwarded_(interruptible_ != nullptr) {
+        if (forwarded_) let_interrupts_end_blocked_writes();
+    }
 
     void write(std::int64_t step, std::size_t first, std::span<const Particle> part, bool final_block) {
-        if (!failure_.empty()) return;
+        if (stopped()) return;
         try {
             if (final_block) {
                 writer_.write_final(step, part, first);
@@ -102,20 +117,20 @@ public:
                 writer_.write_state(step, part, first);
             }
         } catch (const OutputError& e) {
-            failure_ = e.what();
+            fail(e);
         }
     }
     void flush() {
-        if (!failure_.empty()) return;
+        if (stopped()) return;
         try {
             writer_.flush();
         } catch (const OutputError& e) {
-            failure_ = e.what();
+            fail(e);
         }
     }
     void commit() {
         flush();
-        if (!failure_.empty()) return;
+        if (stopped()) return;
         try {
             file_.commit();
         } catch (const OutputError& e) {
@@ -127,7 +142,7 @@ public:
         FirstPart part;
         part.step = step;
         flush();
-        if (!failure_.empty()) return part;
+        if (stopped()) return part;
         try {
             record_kept_file(part, "output", file_.keep_so_far());
         } catch (const OutputError& e) {
@@ -135,11 +150,35 @@ public:
         }
         return part;
     }
+    // On a signal: the launcher's stream is left where it stands, unflushed.
+    void stop_at_signal() {
+        if (forwarded_) ended_ = true;
+    }
+    [[nodiscard]] bool forwarded() const { return forwarded_; }
     [[nodiscard]] const std::string& failure() const { return failure_; }
 
 private:
+    [[nodiscard]] bool stopped() const { return ended_ || !failure_.empty(); }
+
+    // A write that a signal ended is no failure of the output.
+    void fail(const OutputError& e) {
+        if (forwarded_ && interrupt_received()) {
+            ended_ = true;
+        } else {
+            failure_ = e.what();
+        }
+    }
+
+    static bool forwarded_by_launcher() {
+        struct stat standard {};
+        return started_by_mpi_launcher() && fstat(STDOUT_FILENO, &standard) == 0 && !S_ISREG(standard.st_mode);
+    }
+
     OutputFile file_;
+    InterruptibleOutput interruptible_;
     StateWriter writer_;
+    bool forwarded_ = false;
+    bool ended_ = false;
     std::string failure_;
 };
 
@@ -368,6 +407,7 @@ private:
                 const int signal = signals[0];
                 if (signals[1] != 0) agree(failure_status(), failure_message());
                 const bool due = options_.checkpoint_every && step % *options_.checkpoint_every == 0;
+                if (signal != 0 && output) output->stop_at_signal();
                 if (options_.checkpoint_path && (signal != 0 || due)) {
                     FirstPart first_part;
                     first_part.step = step;
@@ -381,10 +421,12 @@ private:
                     if (options_.checkpoint_path && output) output->commit();
                     agree(failure_status(), failure_message());
                     if (on_root()) {
-                        std::fprintf(
-                            stderr, "simcli: %s\n",
-                            interruption_message(step, settings.steps, options_.checkpoint_path, options_.output_path)
-                                .c_str());
+                        const std::string message =
+                            output->forwarded()
+                                ? forwarded_output_interruption_message(step, settings.steps, options_.checkpoint_path)
+                                : interruption_message(step, settings.steps, options_.checkpoint_path,
+                                                       options_.output_path);
+                        std::fprintf(stderr, "simcli: %s\n", message.c_str());
                     }
                     throw Stop{128 + signal};
                 }

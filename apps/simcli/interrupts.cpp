@@ -1,5 +1,6 @@
 #include "interrupts.hpp"
 
+#include <signal.h>
 #include <unistd.h>
 
 #include <csignal>
@@ -62,6 +63,17 @@ int pending_interrupt() {
     return signal;
 }
 
+bool interrupt_received() { return received != 0; }
+
+void let_interrupts_end_blocked_writes() {
+    struct sigaction action {};
+    action.sa_handler = note_signal;
+    sigemptyset(&action.sa_mask);
+    action.sa_flags = 0;  // no SA_RESTART
+    sigaction(SIGINT, &action, nullptr);
+    sigaction(SIGTERM, &action, nullptr);
+}
+
 int list_unfinished_file(const std::string& path) {
     if (path.size() >= longest_temporary) return -1;
     for (int k = 0; k < most_temporaries; ++k) {
@@ -104,6 +116,17 @@ std::string interruption_message(std::int64_t step, std::int64_t steps,
     left.insert(left.end(), side_files.begin(), side_files.end());
     if (left.empty()) return message;
     return message + "; " + listed(left) + (left.size() == 1 ? " left as it was" : " left as they were");
+}
+
+std::string forwarded_output_interruption_message(std::int64_t step, std::int64_t steps,
+                                                  const std::optional<std::string>& checkpoint_path) {
+    const std::string message = "interrupted after step " + std::to_string(step) + " of " + std::to_string(steps) +
+                                "; standard output went through the MPI launcher, which stops forwarding it when "
+                                "it is signalled: it may stop anywhere in the steps up to " +
+                                std::to_string(step) + " (-o FILE keeps whole steps)";
+    if (!checkpoint_path) return message;
+    return message + "; the checkpoint holds step " + std::to_string(step) + ": continue with: simcli --resume " +
+           *checkpoint_path;
 }
 
 }  // namespace simcli

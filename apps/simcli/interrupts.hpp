@@ -18,6 +18,13 @@ void catch_interrupts();
 // The signal received (SIGINT or SIGTERM), or 0. Once it has returned a
 // signal, the run stops in order and a second signal no longer forces it.
 int pending_interrupt();
+// Whether a signal has been received, without marking the run as stopping.
+bool interrupt_received();
+// From now on a signal also ends a write blocked on a pipe or terminal
+// (EINTR) instead of resuming it: for an output whose reader stops reading
+// once it is signalled itself (mpirun stops forwarding its ranks' standard
+// output a second before it signals them, and kills them a second later).
+void let_interrupts_end_blocked_writes();
 
 // Lists a file for a forced stop to remove; returns its slot, or -1 when the
 // path is too long or eight are listed (then it stays behind).
@@ -34,5 +41,10 @@ std::string interruption_message(std::int64_t step, std::int64_t steps,
                                  const std::optional<std::string>& checkpoint_path,
                                  const std::optional<std::string>& output_path,
                                  const std::vector<std::string>& side_files = {});
+
+// The same for an output on standard output that the MPI launcher forwards
+// and stops forwarding when it is signalled: it may end anywhere.
+std::string forwarded_output_interruption_message(std::int64_t step, std::int64_t steps,
+                                                  const std::optional<std::string>& checkpoint_path);
 
 }  // namespace simcli
