@@ -1,7 +1,8 @@
 // Observables: the collision sums on hand-built collisions worked out on
 // paper; the pressure's two routes (virial, walls) agreeing within their
 // error bars in a walled box, and the ideal gas's P A = N kT; |psi6| near 1 on
-// a lattice, near 0 in a gas, unchanged by a rotation; block averages on
+// a lattice, near 0 in a gas, unchanged by a rotation and, in a periodic
+// box, by unwrapped coordinates; refusals of what cannot be measured; block averages on
 // series whose answer is known; and simcli's --observables file and --stats.
 
 #include "check.hpp"
@@ -16,6 +17,7 @@
 #include <complex>
 #include <numbers>
 #include <sstream>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -138,11 +140,63 @@ void hexatic_order_of_lattice_and_gas() {
     CHECK(farthest < 1e-9);
     CHECK_NEAR(std::abs(alike[0]), periodic_order, 1e-9);
     CHECK(hexatic_order(filled.particles, filled.world) < periodic_order - 0.01);
+    // The same disks given whole sides outside the box (unwrapped
+    // coordinates, as a trajectory that follows each disk keeps them): the
+    // same neighbours, the same psi6 each.
+    std::vector<Particle> unwrapped = shifted;
+    for (std::size_t k = 0; k < unwrapped.size(); ++k) {
+        const double sides_x = static_cast<double>(static_cast<int>(k % 7) - 3);
+        const double sides_y = static_cast<double>(static_cast<int>(k % 5) - 2);
+        unwrapped[k].position += filled.world.box_size * Vec2(sides_x, sides_y);
+    }
+    const std::vector<std::complex<double>> wrapped_local =
+        local_hexatic_order(shifted, filled.world, Boundary::periodic);
+    const std::vector<std::complex<double>> unwrapped_local =
+        local_hexatic_order(unwrapped, filled.world, Boundary::periodic);
+    double unwrapped_worst = 0.0;
+    for (std::size_t k = 0; k < wrapped_local.size(); ++k)
+        unwrapped_worst = std::max(unwrapped_worst, std::abs(unwrapped_local[k] - wrapped_local[k]));
+    check::Context unwrapped_context("worst difference of a disk's psi6 unwrapped ", unwrapped_worst);
+    CHECK(unwrapped_worst < 1e-9);
     o.particles = 2000;
     o.area_fraction = 0.3;
     const Scene gas = make_family_scene(SceneFamily::gas, o);
     CHECK(hexatic_order(gas.particles, gas.world) < 0.1);
     CHECK_EQ(hexatic_order(std::vector<Particle>(gas.particles.begin(), gas.particles.begin() + 6), gas.world), 0.0);
+}
+
+// What cannot be measured is refused with the function's name, not
+// answered: a position that is no number, a box of no size, a Boundary cast
+// from a number that names no box.
+void what_cannot_be_measured_is_refused() {
+    SceneFamilyOptions o;
+    o.particles = 200;
+    const Scene gas = make_family_scene(SceneFamily::gas, o);
+    const auto refused = [](auto&& call, const std::string& words) {
+        try {
+            call();
+        } catch (const std::invalid_argument& e) {
+            const std::string message = e.what();
+            check::Context context("message ", message);
+            CHECK(message.find(words) != std::string::npos);
+            return;
+        }
+        CHECK(!"refused");
+    };
+    std::vector<Particle> broken = gas.particles;
+    broken[17].position.x() = std::nan("");
+    refused([&] { return hexatic_order(broken, gas.world); }, "particle 17's position is not a finite number");
+    broken[17].position.x() = INFINITY;
+    refused([&] { return local_hexatic_order(broken, gas.world, Boundary::periodic); }, "particle 17");
+    refused(
+        [&] {
+            return hexatic_order(gas.particles, World{0.0, 1.0}, Boundary::periodic);
+        },
+        "the box size must be finite and positive");
+    refused([&] { return hexatic_order(gas.particles, gas.world, static_cast<Boundary>(9)); },
+            "particlesim::local_hexatic_order: boundary must be Boundary::walls or Boundary::periodic, not 9");
+    refused([&] { return box_pressure(gas.world, static_cast<Boundary>(9), 200, 1.0, CollisionSums{}, 1.0); },
+            "particlesim::box_pressure: boundary must be");
 }
 
 void block_averages_of_known_series() {
@@ -218,6 +272,7 @@ int main(int argc, char** argv) {
                       {{"sums of hand-built collisions", sums_of_hand_built_collisions},
                        {"the two routes agree in a walled box", the_two_routes_agree_in_a_walled_box},
                        {"hexatic order of lattice and gas", hexatic_order_of_lattice_and_gas},
+                       {"what cannot be measured is refused", what_cannot_be_measured_is_refused},
                        {"block averages of known series", block_averages_of_known_series},
                        {"simcli observables file", simcli_observables_file}});
 }

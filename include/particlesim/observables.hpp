@@ -35,7 +35,10 @@ struct CollisionSums {
 //   virial: P A = N kT + sum(r_ij . dp_i) / (2 duration)
 //   walls:  P = sum |dp| / (duration x 4 (L - 2r))
 // Both are the same pressure (the virial theorem with the walls' forces);
-// they differ only by the noise of a finite interval.
+// they differ only by the noise of a finite interval. All zero where there is
+// nothing to measure: no interval (duration not above 0), no disk (fewer
+// than two in a periodic box, whose kT counts N - 1), no kinetic energy, or
+// no room for the centres (2r = L).
 struct Pressure {
     double kT = 0.0;
     double betaP_d2 = 0.0;  // virial route
@@ -52,7 +55,8 @@ Pressure walled_box_pressure(const World& world, std::size_t count, double kinet
 Pressure periodic_box_pressure(const World& world, std::size_t count, double kinetic_energy, const CollisionSums& sums,
                                double duration);
 
-// The one of the two above that the boundary calls for.
+// The one of the two above that the boundary calls for (std::invalid_argument
+// for a Boundary that names neither box).
 Pressure box_pressure(const World& world, Boundary boundary, std::size_t count, double kinetic_energy,
                       const CollisionSums& sums, double duration);
 
@@ -62,7 +66,10 @@ Pressure box_pressure(const World& world, Boundary boundary, std::size_t count, 
 // Voronoi cell of a dense liquid often has five or seven), and the common
 // choice of the hard-disk papers' quick estimates. 1 on a perfect triangular
 // lattice, about 1 / sqrt(N) for a random gas. 0 for fewer than 7 disks. In a
-// periodic box, neighbours are nearest images.
+// periodic box, neighbours are nearest images, and a position may lie whole
+// sides outside the box (unwrapped coordinates). Throws std::invalid_argument
+// for a position that is not a finite number, a box size that is not finite
+// and positive, or a Boundary that names neither box.
 double hexatic_order(std::span<const Particle> particles, const World& world, Boundary boundary = Boundary::walls);
 
 // Each disk's own psi6, (1/6) sum over its six nearest neighbours of

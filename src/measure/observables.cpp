@@ -2,10 +2,12 @@
 
 #include "core/points_by_cell.hpp"
 #include "core/uniform_grid.hpp"
+#include "input/options_check.hpp"
 
 #include <algorithm>
 #include <cmath>
 #include <complex>
+#include <string>
 #include <vector>
 
 namespace particlesim {
@@ -24,6 +26,19 @@ Reported reported(double pressure, double kT, double area, double n, const World
 // The virial route: P A = N kT + sum(r_ij . dp_i) / (2 duration).
 double virial_pressure(double n, double kT, double area, const CollisionSums& sums, double duration) {
     return (n * kT + sums.pair_virial / (2.0 * duration)) / area;
+}
+
+// What a psi6 search needs: a box it can bin, and positions it can place.
+void require_measurable(std::span<const Particle> particles, const World& world, Boundary boundary) {
+    const OptionsCheck check("particlesim::local_hexatic_order");
+    check.known_boundary("boundary", boundary);
+    if (!(std::isfinite(world.box_size) && world.box_size > 0.0))
+        check.fail("the box size must be finite and positive, not " + std::to_string(world.box_size));
+    for (std::size_t k = 0; k < particles.size(); ++k) {
+        const Vec2& at = particles[k].position;
+        if (!std::isfinite(at.x()) || !std::isfinite(at.y()))
+            check.fail("particle " + std::to_string(k) + "'s position is not a finite number");
+    }
 }
 
 }  // namespace
@@ -62,23 +77,35 @@ Pressure periodic_box_pressure(const World& world, std::size_t count, double kin
 
 Pressure box_pressure(const World& world, Boundary boundary, std::size_t count, double kinetic_energy,
                       const CollisionSums& sums, double duration) {
+    OptionsCheck("particlesim::box_pressure").known_boundary("boundary", boundary);
     return boundary == Boundary::periodic ? periodic_box_pressure(world, count, kinetic_energy, sums, duration)
                                           : walled_box_pressure(world, count, kinetic_energy, sums, duration);
 }
 
 std::vector<std::complex<double>> local_hexatic_order(std::span<const Particle> particles, const World& world,
                                                       Boundary boundary) {
+    require_measurable(particles, world, boundary);
     const std::size_t n = particles.size();
     std::vector<std::complex<double>> local(n, std::complex<double>(0.0, 0.0));
     if (n < 7) return local;
+    const bool periodic = boundary == Boundary::periodic;
+    const double side = world.box_size;
+    // In a periodic box a disk is binned where it is inside the box: a
+    // caller's unwrapped coordinates (whole sides away) are the same disks.
+    const auto in_box = [&](double c) {
+        if (!periodic) return c;
+        const double wrapped = c - side * std::floor(c / side);
+        return wrapped < side ? wrapped : 0.0;  // a tiny negative c rounds up to the side
+    };
     // About four disks a cell; rings of cells are searched until the sixth
     // nearest is closer than anything outside them can be.
     const UniformGrid grid(world.box_size,
                            UniformGrid::cells_per_side(world.box_size, 0.0, std::sqrt(static_cast<double>(n) / 4.0)));
     const int per_side = grid.per_side();
     const double cell = grid.cell_size();
-    const PointsByCell by_cell(grid, static_cast<std::uint32_t>(n),
-                               [&](std::uint32_t k) { return particles[k].position; });
+    const PointsByCell by_cell(grid, static_cast<std::uint32_t>(n), [&](std::uint32_t k) {
+        return Vec2(in_box(particles[k].position.x()), in_box(particles[k].position.y()));
+    });
 
     struct Neighbour {
         double distance_sq;
@@ -87,12 +114,10 @@ std::vector<std::complex<double>> local_hexatic_order(std::span<const Particle> 
     std::vector<Neighbour> found;
     // In a periodic box the rings wrap around the edges and every bond is the
     // nearest image's; a ring as wide as the box holds all of it once.
-    const bool periodic = boundary == Boundary::periodic;
-    const double side = world.box_size;
     const auto nearest = [&](double d) { return periodic ? d - side * std::round(d / side) : d; };
     for (std::uint32_t i = 0; i < n; ++i) {
         const Vec2 at = particles[i].position;
-        const int cx = grid.column_of(at.x()), cy = grid.column_of(at.y());
+        const int cx = grid.column_of(in_box(at.x())), cy = grid.column_of(in_box(at.y()));
         for (int ring = 1;; ++ring) {
             found.clear();
             const bool whole_box = periodic ? 2 * ring + 1 >= per_side : ring >= per_side;
