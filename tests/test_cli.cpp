@@ -433,6 +433,19 @@ void write_failures() {
         CHECK(!std::filesystem::exists(checkpoint));
     }
     std::filesystem::remove_all(pictures);
+    // A side file that fills up mid-run is named, whichever it is.
+    for (const std::vector<std::string>& side :
+         std::vector<std::vector<std::string>>{{"--snapshot", "/dev/full"},
+                                               {"--animate", "/dev/full"},
+                                               {"--trajectory", "/dev/full"},
+                                               {"--engine", "exact", "--observables", "/dev/full"},
+                                               {"--checkpoint", "/dev/full", "--checkpoint-every", "10"}}) {
+        check::Context context(side[0], " ", side[1]);
+        const Result filled = simcli_run(side, scene);
+        CHECK_EQ(filled.status, 1);
+        CHECK(one_line(filled.err));
+        CHECK(filled.err.rfind("simcli: /dev/full: cannot write", 0) == 0);
+    }
     // Started with stdout closed (`>&-`), the steps are not written into a file opened later as descriptor 1
     // (the trajectory): a write error, as with stdout a closed pipe.
     char directory[] = "/tmp/particlesim-cli-XXXXXX";

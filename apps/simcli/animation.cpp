@@ -32,7 +32,7 @@ void append_little_endian(std::vector<unsigned char>& out, T value) {
 
 class PageWriter {
 public:
-    explicit PageWriter(std::FILE* out) : out_(out) {}
+    PageWriter(std::FILE* out, std::string path) : out_(out), path_(std::move(path)) {}
 
     void text(std::string_view text) {
         if (std::fwrite(text.data(), 1, text.size(), out_) != text.size()) fail();
@@ -61,10 +61,9 @@ public:
     }
 
 private:
-    [[noreturn]] static void fail() {
-        throw OutputError(std::string("cannot write the page: ") + std::strerror(errno));
-    }
+    [[noreturn]] void fail() const { throw OutputError(path_ + ": cannot write the page: " + std::strerror(errno)); }
     std::FILE* out_;
+    std::string path_;
 };
 
 std::string number(double value) {
@@ -79,6 +78,7 @@ Animation::Animation(const AnimationRequest& request, const particlesim::World& 
                      std::int64_t steps, std::string engine, int substeps, ColourBy colour_by,
                      particlesim::Boundary boundary)
     : file_(std::make_unique<OutputFile>(request.path)),
+      path_(request.path),
       world_(world),
       count_(particles),
       steps_(steps),
@@ -182,7 +182,7 @@ void Animation::add_order(double time, std::span<const Particle> particles, doub
 }
 
 void Animation::write() {
-    PageWriter page(file_->stream());
+    PageWriter page(file_->stream(), path_);
     page.text(page::before_data);
 
     std::uint64_t count_max = 0;
