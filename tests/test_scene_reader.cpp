@@ -123,7 +123,7 @@ void bad_particles() {
     expect_error(header + "0 5 5 0 0\n1 6 6 0 0\n", 7, "expected N = 3 particle lines or none, found 2");
     expect_error(header + "0 5 5 0 0\n1 6 6 0 0\n2 7 7 0 0\n2 8 8 0 0\n", 9, "more than N = 3");
     expect_error("0 20 1 5 perf\n0 5 5 0 0\n", 2, "N = 0, but a particle line follows");
-    expect_error(header + std::string(5000, '1') + "\n", 6, "longer than");
+    expect_error(header + std::string(5000, '1') + "\n", 6, "the line is longer than 4096 characters");
 }
 
 // The accepted range (docs/accepted-range.md).

@@ -79,7 +79,8 @@ private:
             at_ += length + (newline != nullptr ? 1 : 0);
             // The length excludes the line ending: one '\r' may follow a full line.
             if (line_.size() > max_line_length && !(line_.size() == max_line_length + 1 && line_.back() == '\r')) {
-                throw InputError(number_ + 1, "line is longer than " + std::to_string(max_line_length) + " characters");
+                throw InputError(number_ + 1,
+                                 "the line is longer than " + std::to_string(max_line_length) + " characters");
             }
             if (newline != nullptr) break;
         }
