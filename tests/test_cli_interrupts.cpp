@@ -15,6 +15,7 @@
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <sstream>
 #include <string>
 #include <vector>
 
@@ -549,9 +550,28 @@ void bad_usage() {
         0);
     std::string saved = run_process::slurp(exact);
     std::size_t at = saved.find("exact-engine-state");
-    for (int line = 0; line < 2; ++line) at = saved.find('\n', at) + 1;    // past the state's header and counts
-    for (int token = 0; token < 2; ++token) at = saved.find(' ', at) + 1;  // to the first disk's vx
-    saved.replace(at, saved.find(' ', at) - at, "1e12");
+    for (int line = 0; line < 2; ++line) at = saved.find('\n', at) + 1;  // past the state's header and counts
+    // The first disk's line: x y vx vy, its two counters, its time stamp, ...
+    const std::size_t disk_line_end = saved.find('\n', at);
+    std::istringstream disk_line(saved.substr(at, disk_line_end - at));
+    std::vector<std::string> fields;
+    for (std::string field; disk_line >> field;) fields.push_back(field);
+    CHECK(fields.size() > 7);
+    if (fields.size() <= 7) return;
+    // Moved to the saved step (4), stamped there, then sped up: a state whose
+    // disks are all in place, but one far too fast.
+    const double stamp = std::stod(fields[6]);
+    for (int axis = 0; axis < 2; ++axis) {
+        char moved[32];
+        std::snprintf(moved, sizeof moved, "%.17g",
+                      std::stod(fields[axis]) + std::stod(fields[2 + axis]) * (4.0 - stamp));
+        fields[axis] = moved;
+    }
+    fields[6] = "4";
+    fields[2] = "1e12";
+    std::string edited;
+    for (const std::string& field : fields) edited += (edited.empty() ? "" : " ") + field;
+    saved.replace(at, disk_line_end - at, edited);
     write_file(exact, saved);
     rejected({"--resume", exact}, "the exact engine would need about");
 }

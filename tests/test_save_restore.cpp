@@ -1,7 +1,8 @@
 // Saving and restoring an engine: a run saved after any step and restored
 // (even with other searches or thread counts) goes on bit for bit like the
 // uninterrupted run, under both engines and with substeps; a damaged saved
-// state is refused with std::invalid_argument, never trusted.
+// state is refused with std::invalid_argument, never trusted, and so is an
+// exact state whose disks are out of their cells or overlap.
 
 #include "check.hpp"
 #include "random_scenes.hpp"
@@ -214,6 +215,46 @@ void pair_event_of_other_particles_is_refused() {
     CHECK_EQ(ExactSimulation::restore(world, in).steps_done(), 1);  // the undamaged state restores
 }
 
+// A saved state whose disks, moved to the saved step, are out of place is
+// refused, naming them: a disk outside the cell saved for it (the engine
+// would never test it against its neighbours), two disks that overlap.
+void disks_out_of_place_are_refused() {
+    const World world{60.0, 1.0};
+    ExactOptions options;
+    options.cells_per_side = 8;  // cells of 7.5, whatever the cost model would take
+    ExactSimulation exact(world, make_random_particles(300, world, {11, SpeedRange{0.1, 1.0}}), options);
+    exact.step();
+    const std::string good = saved_text(exact);
+    const std::vector<std::string> tokens = tokens_of(good);
+    constexpr std::size_t first_particle = 11, per_particle = 16, cell = 7;
+    const auto refused_saying = [&](const std::string& text, const std::string& words) {
+        check::Context context(words);
+        std::istringstream in(text);
+        std::string message;
+        try {
+            ExactSimulation::restore(world, in);
+        } catch (const std::invalid_argument& e) {
+            message = e.what();
+        }
+        check::Context said("message ", message);
+        CHECK(message.find(words) != std::string::npos);
+    };
+    // Disk 0 saved in the cell four columns and four rows on.
+    const int saved_cell = std::stoi(tokens.at(first_particle + cell));
+    const int elsewhere = ((saved_cell % 8 + 4) % 8) + 8 * ((saved_cell / 8 + 4) % 8);
+    refused_saying(with_token(good, first_particle + cell, std::to_string(elsewhere)),
+                   "disk 0 is not in the cell saved for it");
+    // Disk 1 given disk 0's position, velocity, stamp, cell and events: the two are one.
+    std::string coinciding = good;
+    for (std::size_t k = 0; k <= 10; ++k) {
+        if (k == 4 || k == 5) continue;  // the collision counters
+        coinciding = with_token(coinciding, first_particle + per_particle + k, tokens.at(first_particle + k));
+    }
+    refused_saying(coinciding, "disks 0 and 1 overlap at the saved step");
+    std::istringstream in(good);
+    CHECK_EQ(ExactSimulation::restore(world, in).steps_done(), 1);  // the undamaged state restores
+}
+
 // States saved before the exact engine saved its cells a side (version 2:
 // the same tokens without it) and its collision sums (version 1: without
 // both) still restore, to the same run, the sums of version 1 starting at 0.
@@ -296,5 +337,6 @@ int main(int argc, char** argv) {
                        {"exact states of earlier versions restore", exact_states_of_earlier_versions_restore},
                        {"crowded lines restore with their cells", crowded_lines_restore_with_their_cells},
                        {"damaged states are refused", damaged_states_are_refused},
+                       {"disks out of place are refused", disks_out_of_place_are_refused},
                        {"a pair event of other particles is refused", pair_event_of_other_particles_is_refused}});
 }

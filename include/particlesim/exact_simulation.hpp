@@ -86,7 +86,9 @@ public:
     ExactSimulation& operator=(ExactSimulation&&) noexcept;
 
     // Continues a run saved by save() bit for bit; throws std::invalid_argument
-    // for a saved state that does not fit `world` or is damaged.
+    // for a saved state that does not fit `world` or is damaged (among the
+    // checks: the disks, moved to the saved step, lie in the cells saved for
+    // them and do not overlap).
     static ExactSimulation restore(const World& world, std::istream& saved, const ExactOptions& options = {});
     // Writes the whole state at the last whole step (every particle at its
     // own time stamp, every prediction) as text, exactly.

@@ -275,6 +275,7 @@ public:
             plans_[i].crossing = in.crossing;
             plans_[i].pair = in.pair;
         }
+        reject_disks_out_of_place(fail);
         if (periodic_) {
             // The whole boxes crossed since each stored position: as many as
             // put its path now in the cell it was saved in.
@@ -543,6 +544,49 @@ private:
                 if (overlaps(i, j)) throw OverlappingStart(i, j);
             });
         }
+    }
+
+    // A saved state (damaged, or edited by hand) whose disks, moved to the
+    // saved step, lie outside the cells saved for them (the engine would
+    // never test them against their neighbours) or overlap. Both tolerances
+    // are thousands of times the rounding of moving a disk from its own
+    // stamp, and far below a cell or a radius.
+    template <typename Fail>
+    void reject_disks_out_of_place(Fail&& fail) const {
+        constexpr double rounding = 1e-12;      // of the magnitudes a position is made from
+        constexpr double cell_margin = 1e-9;    // of a cell's width
+        constexpr double overlap_depth = 1e-6;  // of a radius, as at a start (disks_overlap())
+        const UniformGrid& grid = cells_.grid();
+        std::vector<Vec2> now_at(count());
+        std::vector<double> carried(count());  // the magnitude whose rounding a position carries
+        for (std::uint32_t i = 0; i < count(); ++i) {
+            const Body& b = body(i);
+            const Vec2 moved = position_at(i, now_);
+            carried[i] = rounding * (b.position.cwiseAbs().maxCoeff() +
+                                     b.velocity.cwiseAbs().maxCoeff() * (now_ - b.stamp) + world_.box_size);
+            now_at[i] = periodic_ ? Vec2(wrap_into_periodic_box(moved.x(), world_.box_size),
+                                         wrap_into_periodic_box(moved.y(), world_.box_size))
+                                  : moved;
+            if (by_lines()) continue;
+            const std::uint32_t cell = cells_.cell_of_particle(i);
+            const Vec2 centre((grid.column(cell) + 0.5) * grid.cell_size(), (grid.row(cell) + 0.5) * grid.cell_size());
+            Vec2 from_centre = now_at[i] - centre;
+            if (periodic_) from_centre = nearest_image(from_centre);
+            if (from_centre.cwiseAbs().maxCoeff() > grid.cell_size() * (0.5 + cell_margin) + carried[i])
+                fail("disk " + std::to_string(i) + " is not in the cell saved for it");
+        }
+        CellList cells(periodic_ ? grid : UniformGrid(world_.box_size, cells_per_side_for(world_, count())), count());
+        for (std::uint32_t i = 0; i < count(); ++i) cells.insert(i, cells.grid().cell_of(now_at[i]));
+        cells.for_each_by_cell([&](std::uint32_t i) {
+            for_each_neighbour(cells, i, periodic_, [&](std::uint32_t j) {
+                if (j < i) return;
+                Vec2 separation = now_at[j] - now_at[i];
+                if (periodic_) separation = nearest_image(separation);
+                const double contact = 2.0 * world_.radius - overlap_depth * world_.radius - carried[i] - carried[j];
+                if (contact > 0.0 && separation.squaredNorm() < contact * contact)
+                    fail("disks " + std::to_string(i) + " and " + std::to_string(j) + " overlap at the saved step");
+            });
+        });
     }
 
     // In a large scene nearly every line an event reads is a miss to memory,
