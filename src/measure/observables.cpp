@@ -1,5 +1,6 @@
 #include "particlesim/observables.hpp"
 
+#include "core/physics.hpp"
 #include "core/points_by_cell.hpp"
 #include "core/uniform_grid.hpp"
 #include "input/options_check.hpp"
@@ -92,11 +93,7 @@ std::vector<std::complex<double>> local_hexatic_order(std::span<const Particle> 
     const double side = world.box_size;
     // In a periodic box a disk is binned where it is inside the box: a
     // caller's unwrapped coordinates (whole sides away) are the same disks.
-    const auto in_box = [&](double c) {
-        if (!periodic) return c;
-        const double wrapped = c - side * std::floor(c / side);
-        return wrapped < side ? wrapped : 0.0;  // a tiny negative c rounds up to the side
-    };
+    const auto in_box = [&](double c) { return periodic ? wrap_into_periodic_box(c, side) : c; };
     // About four disks a cell; rings of cells are searched until the sixth
     // nearest is closer than anything outside them can be.
     const UniformGrid grid(world.box_size,
