@@ -59,6 +59,7 @@ class RunRecorder {
 public:
     RunRecorder(const World& world, std::span<const Particle> start, std::span<const std::int64_t> checkpoint_steps);
     ~RunRecorder();
+    // Movable; a moved-from RunRecorder may only be assigned to or destroyed.
     RunRecorder(RunRecorder&&) noexcept;
     RunRecorder& operator=(RunRecorder&&) noexcept;
 

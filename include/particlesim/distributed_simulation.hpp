@@ -50,6 +50,7 @@ public:
     DistributedSimulation(MPI_Comm comm, const World& world, std::vector<Particle> particles_on_root,
                           const SteppedOptions& options = {});
     ~DistributedSimulation();
+    // Movable; a moved-from DistributedSimulation may only be assigned to or destroyed.
     DistributedSimulation(DistributedSimulation&&) noexcept;
     DistributedSimulation& operator=(DistributedSimulation&&) noexcept;
 

@@ -82,6 +82,7 @@ public:
     // overlap (touching is allowed).
     ExactSimulation(const World& world, std::vector<Particle> particles, const ExactOptions& options = {});
     ~ExactSimulation();
+    // Movable; a moved-from ExactSimulation may only be assigned to or destroyed.
     ExactSimulation(ExactSimulation&&) noexcept;
     ExactSimulation& operator=(ExactSimulation&&) noexcept;
 

@@ -100,6 +100,7 @@ public:
     // Throws std::invalid_argument for a bad world or option.
     explicit StepChecker(const World& world, const StepCheckOptions& options = {});
     ~StepChecker();
+    // Movable; a moved-from StepChecker may only be assigned to or destroyed.
     StepChecker(StepChecker&&) noexcept;
     StepChecker& operator=(StepChecker&&) noexcept;
 

@@ -64,6 +64,7 @@ public:
     // rules.md "World", and for a bad option.
     SteppedSimulation(const World& world, std::vector<Particle> particles, const SteppedOptions& options = {});
     ~SteppedSimulation();
+    // Movable; a moved-from SteppedSimulation may only be assigned to or destroyed.
     SteppedSimulation(SteppedSimulation&&) noexcept;
     SteppedSimulation& operator=(SteppedSimulation&&) noexcept;
 
