@@ -282,6 +282,11 @@ void exact_engine_between_steps() {
     CHECK_EQ(run_process::run(simcli, {scene, "--animate-every", "2"}).status, 2);
     CHECK_EQ(run_process::run(simcli, {scene, "--engine", "exact", "--animate", page, "--animate-every", "0.3"}).status,
              2);
+    // 1/k of a step for k up to 1000, and the refusal says so.
+    const run_process::Result finer =
+        run_process::run(simcli, {scene, "--engine", "exact", "--animate", page, "--animate-every", "0.0005"});
+    CHECK_EQ(finer.status, 2);
+    CHECK(finer.err.find("1/k of a step for k up to 1000") != std::string::npos);
 }
 
 void large_runs_stay_in_budget() {

@@ -57,7 +57,7 @@ Simulates N hard disks bouncing elastically in a square box, in discrete steps.
       --animate-every K            one frame every K steps (default: automatic, the page
                                    under about 50 MB, or only the first and the last frame
                                    where those pass it); with --engine exact also 0.5, 0.25,
-                                   ... (1/k): frames between whole steps
+                                   ..., 0.001 (1/k): frames between whole steps
       --snapshot FILE.svg          also write one state as an SVG picture
       --snapshot-step N              the state after step N (default: the last)
       --colour-by speed|psi6       what --animate and --snapshot colour the disks by (default
@@ -134,7 +134,8 @@ double parse_animate_every(std::string_view text) {
         number && value > 0.0 && value < 1.0 && parts <= 1000.5 && std::fabs(parts - std::round(parts)) < 1e-9 * parts;
     if (!whole && !fraction) {
         throw BadInput(
-            "--animate-every: expected a whole number of steps, or 1/k of a step (0.5, 0.25, 0.1, ...), "
+            "--animate-every: expected a whole number of steps, or 1/k of a step for k up to 1000 (0.5, 0.25, ..., "
+            "0.001), "
             "found \"" +
             std::string(text) + "\"");
     }
