@@ -285,6 +285,16 @@ void refuses_overlaps_and_bad_scenes() {
     pair[1].position = Vec2(7, 5);  // touching is allowed
     ExactSimulation touching(params, pair);
     CHECK_EQ(touching.particles().size(), 2U);
+    // In a box of 2^50 r a coordinate near the middle is known to 1/8 r
+    // (2^-51 L is four units in its last place): a contact two units closer
+    // than 2r is touching, one five units closer an overlap.
+    const World vast{0x1p50, 1.0};
+    std::vector<Particle> far_out(2);
+    far_out[0].position = Vec2(0x1p49 + 0.5, 0x1p49);
+    far_out[1].position = Vec2(0x1p49 + 0.5 + 2.0 - 0.25, 0x1p49);
+    CHECK(!named_overlap(vast, far_out));
+    far_out[1].position = Vec2(0x1p49 + 0.5 + 2.0 - 0.625, 0x1p49);
+    CHECK(named_overlap(vast, far_out) == first_and_second);
     pair[1].position = Vec2(25, 5);
     bool outside = false;
     try {

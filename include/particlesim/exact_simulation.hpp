@@ -79,7 +79,8 @@ class ExactSimulation {
 public:
     // Throws std::invalid_argument for a world or particles that break
     // rules.md "World" or a bad option, and OverlappingStart when two disks
-    // overlap (touching is allowed).
+    // overlap (touching is allowed: closer than 2r by under 1e-6 of r, or by
+    // under 2^-51 L, a few units in the last place of a coordinate).
     ExactSimulation(const World& world, std::vector<Particle> particles, const ExactOptions& options = {});
     ~ExactSimulation();
     // Movable; a moved-from ExactSimulation may only be assigned to or destroyed.

@@ -526,12 +526,18 @@ private:
         reject_overlaps(cells);
     }
 
+    // Touching is allowed, and a contact is known only to its coordinates'
+    // rounding: a start's disks overlap where they are closer than
+    // disks_overlap()'s tolerance allows by more than 2^-51 L, a few units in
+    // the last place of a coordinate (far below r unless L passes about
+    // 1e11 r, where the engine's own printed states would otherwise be refused).
     template <typename Cells>
     void reject_overlaps(const Cells& cells) const {
+        const double contact = std::sqrt(box_.contact_dist_sq * (1.0 - overlap_tolerance)) - 0x1p-51 * world_.box_size;
         const auto overlaps = [&](std::uint32_t i, std::uint32_t j) {
             Vec2 separation = body(j).position - body(i).position;
             if (periodic_) separation = nearest_image(separation);
-            return j > i && disks_overlap(separation, box_.contact_dist_sq);
+            return j > i && contact > 0.0 && separation.squaredNorm() < contact * contact;
         };
         bool found = false;
         cells.for_each_by_cell([&](std::uint32_t i) {
