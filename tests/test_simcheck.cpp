@@ -322,6 +322,28 @@ void exact_engine_outputs_pass() {
         CHECK(exact_numbers.first_line.find("; printed numbers read as the exact doubles") != std::string::npos);
         CHECK(exact_numbers.out.find("within 0") == std::string::npos);
     }
+    // In a box of 1e12 r a coordinate's rounding is most of r, and copies of
+    // a printed state within it are other scenes: the steps are not judged
+    // (the engine's own output was called wrong at its first collision).
+    Scene vast;
+    vast.world = World{1e12, 1.0};
+    vast.steps = 12;
+    vast.mode = OutputMode::print;
+    for (int k = 0; k < 100; ++k) {  // pairs aimed at each other, grazing to head on
+        const double angle = 0.37 * k, along = 1.5 + 0.4 * (k % 30), speed = along * (0.3 + 0.017 * (k % 100));
+        const Vec2 centre(1e12 * (0.2 + 0.006 * k), 1e12 * (0.8 - 0.005 * k));
+        const Vec2 unit(std::cos(angle), std::sin(angle)),
+            offset = Vec2(-unit.y(), unit.x()) * (0.019 * (k % 100) - 0.95);
+        vast.particles.push_back(Particle{centre - along * unit + offset, speed * unit});
+        vast.particles.push_back(Particle{centre + along * unit - offset, -speed * unit});
+    }
+    vast.particle_count = vast.particles.size();
+    const std::string vast_text = scene_text(vast);
+    const Verdict own =
+        run_simcheck(vast_text, run_simcli(vast_text, {"--engine", "exact", "--exact-numbers"}), {"--engine", "exact"});
+    if (own.status != 0) std::fprintf(stderr, "exact, 1e12 r: %s\n", own.out.c_str());
+    CHECK_EQ(own.status, 0);
+    CHECK(own.out.find("is not small beside r = 1: the step is not judged") != std::string::npos);
     // The stepped rules are not hard disks: a crowded stepped output fails the exact check.
     const Scene gas = family_scene(SceneFamily::lattice, 7, 200, 20);
     const Verdict stepped = run_simcheck(scene_text(gas), run_simcli(scene_text(gas), {}), {"--engine", "exact"});

@@ -35,6 +35,10 @@ constexpr double judged_spread = 1e-3;
 // step) a collision a few 1e-9 from grazing may go either way, and a handful
 // of samples cannot say which way the program's own state went.
 constexpr double judged_amplification = 1e3;
+// The largest shift of the copies, in r, at which a step is judged: beyond
+// it (a box of about 1e11 r and more, or 8 decimals for r below about 5e-8)
+// the copies are other scenes, not the printed one within its rounding.
+constexpr double judged_shift = 0.1;
 
 }  // namespace
 
@@ -49,6 +53,7 @@ void ExactStepCheck::run_ensemble(const PrintedState& start, std::int64_t steps,
     const auto moved = [&](double value) { return value + (2.0 * random.uniform() - 1.0) * shift(value); };
     std::vector<ExactSimulation> runs;
     std::string refusal;
+    refused_copy_.clear();
     for (int member = 0; member < members; ++member) {
         std::vector<Particle> copy(start.particles.begin(), start.particles.end());
         for (Particle& p : copy) {
@@ -74,6 +79,7 @@ void ExactStepCheck::run_ensemble(const PrintedState& start, std::int64_t steps,
         }
     }
     if (runs.empty()) throw std::invalid_argument("the exact engine cannot start from this state: " + refusal);
+    refused_copy_ = refusal;
     states_.resize(runs.size());
     for (std::int64_t s = 1; s <= steps; ++s) {
         for (std::size_t m = 0; m < runs.size(); ++m) {
@@ -157,7 +163,26 @@ StepCheck ExactStepCheck::check(const PrintedState& before, const PrintedState& 
         return result;
     }
 
+    const double shift = std::max(before.uncertainty, 0x1p-40 * world_.box_size);
+    if (shift > judged_shift * box_.lower) {
+        result.within_rounding.push_back("the printed numbers' rounding (" + format_brief(shift) +
+                                         ") is not small beside r = " + format_short(box_.lower) +
+                                         ": the step is not judged");
+        result.collisions.assign(after.particles.size(), {0, std::numeric_limits<std::uint64_t>::max(), 0,
+                                                          std::numeric_limits<std::uint64_t>::max()});
+        return result;
+    }
     run_ensemble(before, 1, ensemble_size, [](std::int64_t) { return true; });
+    if (!refused_copy_.empty()) {
+        // Fewer copies would bound the step too narrowly: the printing's
+        // rounding is no longer small beside r (a box of 1e12 r and more).
+        result.within_rounding.push_back("hard disks within the printing's rounding of the printed state overlap (" +
+                                         refused_copy_ +
+                                         "): its rounding is not small beside r; the step is not judged");
+        result.collisions.assign(after.particles.size(), {0, std::numeric_limits<std::uint64_t>::max(), 0,
+                                                          std::numeric_limits<std::uint64_t>::max()});
+        return result;
+    }
     measure_bounds(before);
     if (bounds_.unjudged.empty() && bounds_.amplification > amplifying) {
         run_ensemble(before, 1, amplifying_ensemble_size, [](std::int64_t) { return true; });
@@ -212,7 +237,20 @@ StepCheck ExactStepCheck::check(const PrintedState& before, const PrintedState& 
 
 StepChecker::Run ExactStepCheck::run(const PrintedState& start, std::int64_t steps) {
     StepChecker::Run result;
+    const double shift = std::max(start.uncertainty, 0x1p-40 * world_.box_size);
+    if (steps > 0 && shift > judged_shift * box_.lower) {
+        result.undecided_from = 1;
+        result.undecided_why = "the printed numbers' rounding (" + format_brief(shift) +
+                               ") is not small beside r = " + format_short(box_.lower);
+        return result;
+    }
     run_ensemble(start, steps, ensemble_size, [&](std::int64_t s) {
+        if (!refused_copy_.empty()) {
+            result.undecided_from = s;
+            result.undecided_why = "hard disks within the printing's rounding of the initial state overlap (" +
+                                   refused_copy_ + "): its rounding is not small beside r";
+            return false;
+        }
         measure_bounds(start);
         if (bounds_.widest <= judged_spread * box_.lower) return true;
         result.undecided_from = s;

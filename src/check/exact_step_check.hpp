@@ -9,6 +9,7 @@
 #include "particlesim/step_check.hpp"
 
 #include <cstdint>
+#include <string>
 #include <vector>
 
 namespace particlesim {
@@ -37,6 +38,9 @@ private:
     Box box_;
     Boundary boundary_;
     std::vector<std::vector<Particle>> states_;  // of each run that could start
+    // Why a copy within the printing's rounding could not start (two disks
+    // overlap): empty when every copy started.
+    std::string refused_copy_;
     std::vector<Vec2> positions_;
     Bounds bounds_;
 };
