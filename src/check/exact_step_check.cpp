@@ -11,6 +11,7 @@
 #include <limits>
 #include <stdexcept>
 #include <string>
+#include <utility>
 
 namespace particlesim {
 
@@ -39,6 +40,15 @@ constexpr double judged_amplification = 1e3;
 // it (a box of about 1e11 r and more, or 8 decimals for r below about 5e-8)
 // the copies are other scenes, not the printed one within its rounding.
 constexpr double judged_shift = 0.1;
+
+// A step that is not judged, and why: any collision counts are accepted.
+StepCheck not_judged(std::string why, std::size_t particles) {
+    StepCheck result;
+    result.within_rounding.push_back(std::move(why));
+    constexpr std::uint64_t any = std::numeric_limits<std::uint64_t>::max();
+    result.collisions.assign(particles, {0, any, 0, any});
+    return result;
+}
 
 }  // namespace
 
@@ -165,23 +175,17 @@ StepCheck ExactStepCheck::check(const PrintedState& before, const PrintedState& 
 
     const double shift = std::max(before.uncertainty, 0x1p-40 * world_.box_size);
     if (shift > judged_shift * box_.lower) {
-        result.within_rounding.push_back("the printed numbers' rounding (" + format_brief(shift) +
-                                         ") is not small beside r = " + format_short(box_.lower) +
-                                         ": the step is not judged");
-        result.collisions.assign(after.particles.size(), {0, std::numeric_limits<std::uint64_t>::max(), 0,
-                                                          std::numeric_limits<std::uint64_t>::max()});
-        return result;
+        return not_judged("the printed numbers' rounding (" + format_brief(shift) +
+                              ") is not small beside r = " + format_short(box_.lower) + ": the step is not judged",
+                          after.particles.size());
     }
     run_ensemble(before, 1, ensemble_size, [](std::int64_t) { return true; });
     if (!refused_copy_.empty()) {
-        // Fewer copies would bound the step too narrowly: the printing's
-        // rounding is no longer small beside r (a box of 1e12 r and more).
-        result.within_rounding.push_back("hard disks within the printing's rounding of the printed state overlap (" +
-                                         refused_copy_ +
-                                         "): its rounding is not small beside r; the step is not judged");
-        result.collisions.assign(after.particles.size(), {0, std::numeric_limits<std::uint64_t>::max(), 0,
-                                                          std::numeric_limits<std::uint64_t>::max()});
-        return result;
+        // Fewer copies would bound the step too narrowly (copies within
+        // the rounding overlap where it is not small beside r).
+        return not_judged("hard disks within the printing's rounding of the printed state overlap (" + refused_copy_ +
+                              "): its rounding is not small beside r; the step is not judged",
+                          after.particles.size());
     }
     measure_bounds(before);
     if (bounds_.unjudged.empty() && bounds_.amplification > amplifying) {
@@ -190,14 +194,12 @@ StepCheck ExactStepCheck::check(const PrintedState& before, const PrintedState& 
     }
     if (!bounds_.unjudged.empty()) {
         // One chaotic particle may have met any other in the step: none is judged.
-        result.within_rounding.push_back(
-            "particle " + std::to_string(bounds_.unjudged.front()) + " (and " +
-            std::to_string(bounds_.unjudged.size() - 1) +
-            " more): hard disks started within rounding of the printed state part by over " +
-            format_brief(judged_amplification) + " times the rounding in this step (chaos); the step is not judged");
-        result.collisions.assign(after.particles.size(), {0, std::numeric_limits<std::uint64_t>::max(), 0,
-                                                          std::numeric_limits<std::uint64_t>::max()});
-        return result;
+        return not_judged("particle " + std::to_string(bounds_.unjudged.front()) + " (and " +
+                              std::to_string(bounds_.unjudged.size() - 1) +
+                              " more): hard disks started within rounding of the printed state part by over " +
+                              format_brief(judged_amplification) +
+                              " times the rounding in this step (chaos); the step is not judged",
+                          after.particles.size());
     }
     for (std::uint32_t p = 0; p < after.particles.size(); ++p) {
         const Particle& printed = after.particles[p];
