@@ -145,7 +145,12 @@ void what_cannot_be_grown() {
     }
     SceneFamilyOptions cold = compression(100, 0.5);
     cold.temperature = -1.0;
-    CHECK(!refusal(cold).empty());
+    CHECK(refusal(cold).find("the temperature must be in [0, 1e116]") != std::string::npos);
+    // So hot that the fastest disks would leave the accepted range: the temperature is named, not a disk.
+    SceneFamilyOptions hot = compression(100, 0.5);
+    hot.temperature = 1e308;
+    CHECK(refusal(hot).find("the temperature must be in [0, 1e116] (speeds within the accepted range), not 1e+308") !=
+          std::string::npos);
 }
 
 }  // namespace

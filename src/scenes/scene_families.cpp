@@ -344,11 +344,18 @@ void give_maxwell_velocities(std::vector<Particle>& particles, double kT, std::u
     for (Particle& p : particles) p.velocity *= scale;
 }
 
+// The Maxwell velocities' spread is sqrt(kT) a component; the largest of
+// ten million draws is under 6 spreads, so up to 1e116 every component stays
+// inside the accepted range (1e60).
+constexpr double highest_temperature = 1e116;
+
 double checked_temperature(const SceneFamilyOptions& o) {
     const double kT = o.temperature.value_or(0.25 * o.radius * o.radius);
-    if (!(kT >= 0.0 && std::isfinite(kT))) {
-        throw std::invalid_argument("particlesim::make_family_scene: the temperature must be >= 0, not " +
-                                    format_short(kT));
+    if (!(kT >= 0.0 && kT <= highest_temperature)) {
+        throw std::invalid_argument(
+            "particlesim::make_family_scene: the temperature must be in [0, 1e116] (speeds "
+            "within the accepted range), not " +
+            format_short(kT));
     }
     return kT;
 }
