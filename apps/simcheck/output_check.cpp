@@ -198,6 +198,8 @@ Report check_output(const Scene& scene, LineSource& output, const StepCheckOptio
     std::vector<OnWall> previous_on_wall;
     std::int64_t loose_steps = 0, first_loose_step = 0;
     std::string first_loose_why;
+    std::int64_t judged_steps = 0;
+    std::string first_unjudged_why;
     const auto compare = [&](std::int64_t step, const StepCheck& check) -> std::optional<Finding> {
         if (check.violation) {
             const RuleViolation& v = *check.violation;
@@ -208,6 +210,11 @@ Report check_output(const Scene& scene, LineSource& output, const StepCheckOptio
                 first_loose_step = step;
                 first_loose_why = *check.loose;
             }
+        }
+        if (check.judged) {
+            ++judged_steps;
+        } else if (first_unjudged_why.empty() && !check.within_rounding.empty()) {
+            first_unjudged_why = check.within_rounding.front();
         }
         add_notes(report, step, check.within_rounding);
         for (std::size_t i = 0; i < count; ++i) {
@@ -232,7 +239,12 @@ Report check_output(const Scene& scene, LineSource& output, const StepCheckOptio
             if (auto wrong = check_counters(block, last, totals, steps)) return broken(report, *wrong);
         }
         if (auto wrong = block.expect_end(steps)) return broken(report, *wrong);
-        if (loose_steps > 0) {
+        if (judged_steps == 0) {
+            // Every state was accepted: a wrong output would have passed as well.
+            report.verdict = Verdict::no_verdict;
+            report.reason =
+                "no step could be judged (the first: " + first_unjudged_why + "); a wrong output would pass as well";
+        } else if (loose_steps > 0) {
             // Bounds that sound never reject a correct state, but too wide to
             // catch every wrong one: no mistake found is not "conforms".
             report.verdict = Verdict::no_verdict;

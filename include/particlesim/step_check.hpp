@@ -75,6 +75,10 @@ struct StepCheck {
     std::optional<RuleViolation> violation;  // the first particle the step gets wrong
     // Decisions within the uncertainty, where either outcome was accepted.
     std::vector<std::string> within_rounding;
+    // False when the step could not be judged at all (its within_rounding
+    // note says why: chaos, or a printing too coarse beside r): any state
+    // was accepted.
+    bool judged = true;
     // Per particle (when there is no violation).
     std::vector<CollisionRange> collisions;
     // Per particle (stepped rules, when there is no violation): the

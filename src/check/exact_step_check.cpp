@@ -44,6 +44,7 @@ constexpr double judged_shift = 0.1;
 // A step that is not judged, and why: any collision counts are accepted.
 StepCheck not_judged(std::string why, std::size_t particles) {
     StepCheck result;
+    result.judged = false;
     result.within_rounding.push_back(std::move(why));
     constexpr std::uint64_t any = std::numeric_limits<std::uint64_t>::max();
     result.collisions.assign(particles, {0, any, 0, any});
