@@ -106,6 +106,28 @@ void same_events_for_every_cell_size() {
     CHECK(compared >= 20);  // the comparison saw collisions
 }
 
+// A start that crowds the cells (Newton's cradle: a row of touching disks,
+// as many to a cell of an even spread's grid as fit along it) gets a finer
+// grid than its count alone calls for, and the same events for far fewer
+// pair tests.
+void crowded_starts_refine_the_cells() {
+    SceneFamilyOptions row;
+    row.particles = 2000;
+    const Scene cradle = make_family_scene(SceneFamily::cradle, row);
+    const int four_a_cell = static_cast<int>(std::ceil(std::sqrt(2000.0 / 4.0)));  // an even spread's grid
+    ExactSimulation refined(cradle.world, cradle.particles);
+    ExactSimulation even(cradle.world, cradle.particles, {.cells_per_side = four_a_cell});
+    check::Context context("cells a side ", refined.cells_per_side(), " against ", four_a_cell);
+    CHECK(refined.cells_per_side() >= 8 * four_a_cell);
+    for (int k = 0; k < 10; ++k) {
+        refined.step();
+        even.step();
+        CHECK_EQ(state_hash::hash(refined.particles()), state_hash::hash(even.particles()));
+    }
+    check::Context tests("pair tests ", refined.totals().pair_tests, " against ", even.totals().pair_tests);
+    CHECK(refined.totals().pair_tests * 8 < even.totals().pair_tests);
+}
+
 // The look ahead only prefetches: on or off, in a scene large enough to
 // have it on by default (a dense gas: events of every kind, many stale
 // pair predictions), the same events and states.
@@ -334,6 +356,7 @@ int main(int argc, char** argv) {
          {"estimates events", estimates_events},
          {"counts events", counts_events},
          {"look ahead changes no event", look_ahead_changes_no_event},
+         {"crowded starts refine the cells", crowded_starts_refine_the_cells},
          {"the state read late is the state read every step", state_read_late_is_the_state_read_every_step},
          {"both queues give the same events", both_queues_give_the_same_events}});
 }
