@@ -335,6 +335,31 @@ void exact_engine_outputs_pass() {
         CHECK(exact_numbers.first_line.find("; printed numbers read as the exact doubles") != std::string::npos);
         CHECK(exact_numbers.out.find("within 0") == std::string::npos);
     }
+    // The default scene's speeds (thousands of r a step) stretch the
+    // printing's rounding over 1000 times in most collisions; where the
+    // copies still agree on every collision and stay far closer than r, the
+    // step is judged. Disk 500's velocity printed 0.001 off from step 20 on
+    // is caught at the first of those steps that is judged.
+    const std::string default_text = "1000 20000 1 60 print\n";
+    const std::string default_out = run_simcli(default_text, {"--engine", "exact"});
+    CHECK_EQ(run_simcheck(default_text, default_out, {"--engine", "exact"}).status, 0);
+    std::string off = default_out;
+    std::size_t line_start = 0;
+    for (int line = 0; line < 60 * 1000; ++line) {
+        if (line >= 20 * 1000 && line % 1000 == 500) {
+            std::size_t field = line_start;
+            for (int k = 0; k < 4; ++k) field = off.find(' ', field) + 1;  // to vx
+            const std::size_t field_end = off.find(' ', field);
+            char shifted[32];
+            std::snprintf(shifted, sizeof shifted, "%.8f", std::stod(off.substr(field, field_end - field)) + 0.001);
+            off.replace(field, field_end - field, shifted);
+        }
+        line_start = off.find('\n', line_start) + 1;
+    }
+    const Verdict caught = run_simcheck(default_text, off, {"--engine", "exact"});
+    check::Context caught_context("verdict ", caught.first_line);
+    CHECK_EQ(caught.status, 1);
+    CHECK(caught.first_line.find(": particle 500: ") != std::string::npos);
     // In a box of 1e12 r a coordinate's rounding is most of r, and copies of
     // a printed state within it are other scenes: no step is judged, and
     // there is no verdict (the engine's own output was called wrong at its
