@@ -78,7 +78,6 @@ Animation::Animation(const AnimationRequest& request, const particlesim::World& 
                      std::int64_t steps, std::string engine, int substeps, ColourBy colour_by,
                      particlesim::Boundary boundary)
     : file_(std::make_unique<OutputFile>(request.path)),
-      path_(request.path),
       world_(world),
       count_(particles),
       steps_(steps),
@@ -182,7 +181,7 @@ void Animation::add_order(double time, std::span<const Particle> particles, doub
 }
 
 void Animation::write() {
-    PageWriter page(file_->stream(), path_);
+    PageWriter page(file_->stream(), file_->path());
     page.text(page::before_data);
 
     std::uint64_t count_max = 0;

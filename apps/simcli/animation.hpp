@@ -73,7 +73,6 @@ private:
                    const particlesim::CollisionSums* sums);
 
     std::unique_ptr<OutputFile> file_;
-    std::string path_;  // for messages
     particlesim::World world_;
     std::size_t count_;
     std::int64_t steps_;

@@ -50,12 +50,20 @@ extern "C" void note_signal(int signal) {
     std::raise(signal);
 }
 
+// note_signal() for SIGINT and SIGTERM; `flags` say whether a write the
+// signal cut short is resumed (SA_RESTART).
+void note_interrupts(int flags) {
+    struct sigaction action {};
+    action.sa_handler = note_signal;
+    sigemptyset(&action.sa_mask);
+    action.sa_flags = flags;
+    sigaction(SIGINT, &action, nullptr);
+    sigaction(SIGTERM, &action, nullptr);
+}
+
 }  // namespace
 
-void catch_interrupts() {
-    std::signal(SIGINT, note_signal);
-    std::signal(SIGTERM, note_signal);
-}
+void catch_interrupts() { note_interrupts(SA_RESTART); }
 
 int pending_interrupt() {
     const int signal = received;
@@ -65,14 +73,7 @@ int pending_interrupt() {
 
 bool interrupt_received() { return received != 0; }
 
-void let_interrupts_end_blocked_writes() {
-    struct sigaction action {};
-    action.sa_handler = note_signal;
-    sigemptyset(&action.sa_mask);
-    action.sa_flags = 0;  // no SA_RESTART
-    sigaction(SIGINT, &action, nullptr);
-    sigaction(SIGTERM, &action, nullptr);
-}
+void let_interrupts_end_blocked_writes() { note_interrupts(0); }
 
 int list_unfinished_file(const std::string& path) {
     if (path.size() >= longest_temporary) return -1;

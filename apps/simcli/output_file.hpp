@@ -29,6 +29,8 @@ public:
     OutputFile& operator=(const OutputFile&) = delete;
 
     [[nodiscard]] std::FILE* stream() const { return stream_; }
+    // The path it writes, as given (empty for stdout).
+    [[nodiscard]] const std::string& path() const { return path_; }
     // Writes all of `text`; throws particlesim::OutputError naming the file and `what` it holds.
     void write(std::string_view text, const char* what);
     // Closes the output and puts it in place. Throws particlesim::OutputError.

@@ -45,6 +45,14 @@ constexpr double judged_amplification = 1e3;
 // the copies are other scenes, not the printed one within its rounding.
 constexpr double judged_shift = 0.1;
 
+// How far the copies of a printed number are moved at most: its printing's
+// uncertainty, and at least 2^-40 of it (another correct program rounds
+// otherwise even from exact numbers).
+constexpr double copies_relative_shift = 0x1p-40;
+double copy_shift(double uncertainty, double value) {
+    return std::max(uncertainty, copies_relative_shift * std::fabs(value));
+}
+
 // A step that is not judged, and why: any collision counts are accepted.
 StepCheck not_judged(std::string why, std::size_t particles) {
     StepCheck result;
@@ -62,8 +70,7 @@ ExactStepCheck::ExactStepCheck(const World& world, Boundary boundary)
 
 template <typename AfterStep>
 void ExactStepCheck::run_ensemble(const PrintedState& start, std::int64_t steps, int members, AfterStep after_step) {
-    // Even from exact numbers another correct program rounds differently.
-    const auto shift = [&](double value) { return std::max(start.uncertainty, 0x1p-40 * std::fabs(value)); };
+    const auto shift = [&](double value) { return copy_shift(start.uncertainty, value); };
     SplitMix64 random(0x5eedULL);
     const auto moved = [&](double value) { return value + (2.0 * random.uniform() - 1.0) * shift(value); };
     std::vector<ExactSimulation> runs;
@@ -115,7 +122,7 @@ void ExactStepCheck::measure_bounds(const PrintedState& start) {
     bounds_.amplification = 0.0;
     bounds_.unjudged.clear();
     const double base = 4.0 * start.uncertainty;
-    const double shift = std::max(start.uncertainty, 0x1p-40 * world_.box_size);
+    const double shift = copy_shift(start.uncertainty, world_.box_size);
     for (std::size_t p = 0; p < count; ++p) {
         Particle& lower = bounds_.lower[p];
         Particle& upper = bounds_.upper[p];
@@ -180,7 +187,7 @@ StepCheck ExactStepCheck::check(const PrintedState& before, const PrintedState& 
         return result;
     }
 
-    const double shift = std::max(before.uncertainty, 0x1p-40 * world_.box_size);
+    const double shift = copy_shift(before.uncertainty, world_.box_size);
     if (shift > judged_shift * box_.lower) {
         return not_judged("the printed numbers' rounding (" + format_brief(shift) +
                               ") is not small beside r = " + format_short(box_.lower) + ": the step is not judged",
@@ -204,8 +211,9 @@ StepCheck ExactStepCheck::check(const PrintedState& before, const PrintedState& 
         return not_judged("particle " + std::to_string(bounds_.unjudged.front()) + " (and " +
                               std::to_string(bounds_.unjudged.size() - 1) +
                               " more): hard disks started within rounding of the printed state part by over " +
-                              format_brief(judged_amplification) +
-                              " times the rounding in this step (chaos); the step is not judged",
+                              format_brief(judged_amplification) + " times the rounding in this step and either " +
+                              "disagree on its collisions or part by over " + format_brief(judged_spread) +
+                              " r (chaos); the step is not judged",
                           after.particles.size());
     }
     for (std::uint32_t p = 0; p < after.particles.size(); ++p) {
@@ -246,7 +254,7 @@ StepCheck ExactStepCheck::check(const PrintedState& before, const PrintedState& 
 
 StepChecker::Run ExactStepCheck::run(const PrintedState& start, std::int64_t steps) {
     StepChecker::Run result;
-    const double shift = std::max(start.uncertainty, 0x1p-40 * world_.box_size);
+    const double shift = copy_shift(start.uncertainty, world_.box_size);
     if (steps > 0 && shift > judged_shift * box_.lower) {
         result.undecided_from = 1;
         result.undecided_why = "the printed numbers' rounding (" + format_brief(shift) +

@@ -544,9 +544,27 @@ private:
             reject_overlaps(cells_);
             return;
         }
-        CellList cells(UniformGrid(world_.box_size, cells_per_side_for(world_, count())), count());
-        for (std::uint32_t i = 0; i < count(); ++i) cells.insert(i, cells.grid().cell_of(body(i).position));
-        reject_overlaps(cells);
+        reject_overlaps(cells_holding([&](std::uint32_t i) { return body(i).position; }));
+    }
+
+    // Cells holding each disk at at(i), for a search of overlaps where the
+    // engine's own cells are one (the lines) or not yet trusted (a saved
+    // state): of the rule's size, or in a periodic box (never the lines) the
+    // engine's own grid, which wraps.
+    template <typename At>
+    CellList cells_holding(At&& at) const {
+        CellList cells(periodic_ ? cells_.grid() : UniformGrid(world_.box_size, cells_per_side_for(world_, count())),
+                       count());
+        for (std::uint32_t i = 0; i < count(); ++i) cells.insert(i, cells.grid().cell_of(at(i)));
+        return cells;
+    }
+
+    // Whether disks at `a` and `b` (the nearest images in a periodic box) are
+    // closer than `contact`; none is closer than a contact below 0.
+    bool closer_than(const Vec2& a, const Vec2& b, double contact) const {
+        Vec2 separation = b - a;
+        if (periodic_) separation = nearest_image(separation);
+        return contact > 0.0 && separation.squaredNorm() < contact * contact;
     }
 
     // Touching is allowed, and a contact is known only to its coordinates'
@@ -558,9 +576,7 @@ private:
     void reject_overlaps(const Cells& cells) const {
         const double contact = std::sqrt(box_.contact_dist_sq * (1.0 - overlap_tolerance)) - 0x1p-51 * world_.box_size;
         const auto overlaps = [&](std::uint32_t i, std::uint32_t j) {
-            Vec2 separation = body(j).position - body(i).position;
-            if (periodic_) separation = nearest_image(separation);
-            return j > i && contact > 0.0 && separation.squaredNorm() < contact * contact;
+            return j > i && closer_than(body(i).position, body(j).position, contact);
         };
         bool found = false;
         cells.for_each_by_cell([&](std::uint32_t i) {
@@ -604,15 +620,12 @@ private:
             if (from_centre.cwiseAbs().maxCoeff() > grid.cell_size() * (0.5 + cell_margin) + carried[i])
                 fail("disk " + std::to_string(i) + " is not in the cell saved for it");
         }
-        CellList cells(periodic_ ? grid : UniformGrid(world_.box_size, cells_per_side_for(world_, count())), count());
-        for (std::uint32_t i = 0; i < count(); ++i) cells.insert(i, cells.grid().cell_of(now_at[i]));
+        const CellList cells = cells_holding([&](std::uint32_t i) { return now_at[i]; });
         cells.for_each_by_cell([&](std::uint32_t i) {
             for_each_neighbour(cells, i, periodic_, [&](std::uint32_t j) {
                 if (j < i) return;
-                Vec2 separation = now_at[j] - now_at[i];
-                if (periodic_) separation = nearest_image(separation);
                 const double contact = 2.0 * world_.radius - overlap_depth * world_.radius - carried[i] - carried[j];
-                if (contact > 0.0 && separation.squaredNorm() < contact * contact)
+                if (closer_than(now_at[i], now_at[j], contact))
                     fail("disks " + std::to_string(i) + " and " + std::to_string(j) + " overlap at the saved step");
             });
         });

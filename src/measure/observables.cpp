@@ -4,6 +4,7 @@
 #include "core/points_by_cell.hpp"
 #include "core/uniform_grid.hpp"
 #include "input/options_check.hpp"
+#include "io/number_format.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -34,7 +35,7 @@ void require_measurable(std::span<const Particle> particles, const World& world,
     const OptionsCheck check("particlesim::local_hexatic_order");
     check.known_boundary("boundary", boundary);
     if (!(std::isfinite(world.box_size) && world.box_size > 0.0))
-        check.fail("the box size must be finite and positive, not " + std::to_string(world.box_size));
+        check.fail("the box size must be finite and positive, not " + format_short(world.box_size));
     for (std::size_t k = 0; k < particles.size(); ++k) {
         const Vec2& at = particles[k].position;
         if (!std::isfinite(at.x()) || !std::isfinite(at.y()))
