@@ -215,6 +215,16 @@ void simcli_boundary() {
                               {"--engine", "exact", "--boundary", "periodic", dir + "/edges.in", dir + "/edges.out"})
                  .status,
              0);
+    // Printed disks that overlap across an edge: named as an overlap, 1.7 apart.
+    std::ofstream(dir + "/across.in") << "2 20 1 1 print\n0 0.5 5 1 0\n1 18.5 5 1 0\n";
+    std::ofstream(dir + "/across.out") << "0 0 0.50000000 5.00000000 1.00000000 0.00000000\n"
+                                          "0 1 18.50000000 5.00000000 1.00000000 0.00000000\n"
+                                          "1 0 1.50000000 5.00000000 1.00000000 0.00000000 0 0\n"
+                                          "1 1 19.80000000 5.00000000 1.00000000 0.00000000 0 0\n";
+    const run_process::Result overlapping = run_process::run(
+        SIMCHECK_PATH, {"--engine", "exact", "--boundary", "periodic", dir + "/across.in", dir + "/across.out"});
+    CHECK_EQ(overlapping.status, 1);
+    CHECK(overlapping.out.rfind("step 1: particles 0 and 1 overlap: their centres are 1.7 apart", 0) == 0);
     const run_process::Result walled = run_process::run(simcli, {"--engine", "exact"}, near_edges);
     CHECK_EQ(walled.status, 2);
     CHECK(walled.err.find("x = 0.25 is outside [1, 19]") != std::string::npos);

@@ -5,12 +5,17 @@
 #include "check.hpp"
 #include "disk.hpp"
 
+#include "check/close_pairs.hpp"
 #include "check/uncertain_step.hpp"
 #include "particlesim/step_check.hpp"
 
+#include <algorithm>
+#include <cmath>
 #include <limits>
+#include <random>
 #include <stdexcept>
 #include <string>
+#include <utility>
 #include <vector>
 
 using namespace particlesim;
@@ -328,6 +333,57 @@ void printings_are_checked() {
     }
 }
 
+// The checker's overlap and candidate search against every pair, with
+// points on the sides and corners and grids of one to many cells a side: in
+// a periodic square, pairs across the sides are as close as they look there.
+void close_pairs_against_every_pair() {
+    std::mt19937_64 random(7);
+    for (int trial = 0; trial < 300; ++trial) {
+        const double extent = trial % 3 == 0 ? 1.0 : 100.0;
+        const double reach = extent * std::pow(10.0, -2.0 + 2.3 * static_cast<double>(trial % 11) / 10.0);
+        const int count = 1 + static_cast<int>(random() % 120);
+        std::uniform_real_distribution<double> anywhere(0.0, extent);
+        std::vector<Vec2> points;
+        for (int k = 0; k < count; ++k) {
+            Vec2 p(anywhere(random), anywhere(random));
+            if (random() % 5 == 0) p.x() = random() % 2 == 0 ? 0.0 : std::nextafter(extent, 0.0);
+            if (random() % 5 == 0) p.y() = random() % 2 == 0 ? 0.0 : std::nextafter(extent, 0.0);
+            points.push_back(p);
+        }
+        for (const CloseIn space : {CloseIn::square, CloseIn::periodic_square}) {
+            const bool periodic = space == CloseIn::periodic_square;
+            const check::Context context("trial ", trial, periodic ? ", periodic" : ", walls", ", ", count,
+                                         " points, reach ", reach);
+            std::vector<std::pair<std::uint32_t, std::uint32_t>> found, every;
+            for_each_close_pair(points, extent, reach, space,
+                                [&](std::uint32_t i, std::uint32_t j) { found.emplace_back(i, j); });
+            for (std::uint32_t i = 0; i < points.size(); ++i) {
+                for (std::uint32_t j = i + 1; j < points.size(); ++j) {
+                    Vec2 d = points[j] - points[i];
+                    if (periodic) d = d.cwiseAbs().cwiseMin((Vec2::Constant(extent) - d.cwiseAbs()));
+                    if (d.squaredNorm() <= reach * reach) every.emplace_back(i, j);
+                }
+            }
+            const std::size_t visits = found.size();
+            std::sort(found.begin(), found.end());
+            CHECK(std::unique(found.begin(), found.end()) == found.end());  // each pair once
+            CHECK_EQ(visits, every.size());
+            CHECK(found == every);
+        }
+    }
+    // Two disks either side of a periodic square's edge, worked out by hand.
+    const std::vector<Vec2> across{Vec2(0.5, 5.0), Vec2(19.8, 5.0), Vec2(10.0, 19.9), Vec2(10.0, 0.2)};
+    std::vector<std::pair<std::uint32_t, std::uint32_t>> found;
+    for_each_close_pair(across, 20.0, 2.0, CloseIn::periodic_square,
+                        [&](std::uint32_t i, std::uint32_t j) { found.emplace_back(i, j); });
+    CHECK(found == (std::vector<std::pair<std::uint32_t, std::uint32_t>>{{0, 1}, {2, 3}}));
+    CHECK(std::abs(separation_in(CloseIn::periodic_square, 20.0, across[0], across[1]).x() + 0.7) < 1e-12);
+    found.clear();
+    for_each_close_pair(across, 20.0, 2.0, CloseIn::square,
+                        [&](std::uint32_t i, std::uint32_t j) { found.emplace_back(i, j); });
+    CHECK(found.empty());
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -348,5 +404,6 @@ int main(int argc, char** argv) {
                        {"outside the box", outside_the_box},
                        {"exact rules", exact_rules},
                        {"perf run", perf_run},
-                       {"printings are checked", printings_are_checked}});
+                       {"printings are checked", printings_are_checked},
+                       {"close pairs against every pair", close_pairs_against_every_pair}});
 }

@@ -173,12 +173,13 @@ StepCheck ExactStepCheck::check(const PrintedState& before, const PrintedState& 
     const double diameter = 2.0 * box_.lower;
     const double closest = diameter * (1.0 - overlap_tolerance) - 3.0 * after.uncertainty - 0x1p-50 * world_.box_size;
     std::optional<std::pair<std::uint32_t, std::uint32_t>> overlap;
-    for_each_close_pair(positions_, world_.box_size, closest, [&](std::uint32_t i, std::uint32_t j) {
+    const CloseIn space = boundary_ == Boundary::periodic ? CloseIn::periodic_square : CloseIn::square;
+    for_each_close_pair(positions_, world_.box_size, closest, space, [&](std::uint32_t i, std::uint32_t j) {
         if (!overlap || std::make_pair(i, j) < *overlap) overlap = std::make_pair(i, j);
     });
     if (overlap) {
         const auto [i, j] = *overlap;
-        const double distance = (positions_[j] - positions_[i]).norm();
+        const double distance = separation_in(space, world_.box_size, positions_[i], positions_[j]).norm();
         result.violation = RuleViolation{
             i,
             "particles " + std::to_string(i) + " and " + std::to_string(j) + " overlap: their centres are " +

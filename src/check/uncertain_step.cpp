@@ -263,7 +263,7 @@ void UncertainStep::find_candidate_pairs(std::span<const UncertainParticle> befo
     // or resting overlap may be approaching within rounding).
     positions_.resize(count);
     for (std::size_t p = 0; p < count; ++p) positions_[p] = midpoints_[p].position;
-    for_each_close_pair(positions_, box_.side, reach,
+    for_each_close_pair(positions_, box_.side, reach, CloseIn::square,
                         [&](std::uint32_t i, std::uint32_t j) { pair_keys_.push_back(key(i, j)); });
     std::sort(pair_keys_.begin(), pair_keys_.end());
     pair_keys_.erase(std::unique(pair_keys_.begin(), pair_keys_.end()), pair_keys_.end());
