@@ -13,12 +13,14 @@
 #include "particlesim/observables.hpp"
 #include "particlesim/scene_families.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <complex>
 #include <numbers>
 #include <sstream>
 #include <stdexcept>
 #include <string>
+#include <utility>
 #include <vector>
 
 using namespace particlesim;
@@ -165,6 +167,101 @@ void hexatic_order_of_lattice_and_gas() {
     CHECK_EQ(hexatic_order(std::vector<Particle>(gas.particles.begin(), gas.particles.begin() + 6), gas.world), 0.0);
 }
 
+// Each disk's psi6 against a search of every disk (the six nearest, ties to
+// the lower index; bonds to the nearest image in a periodic box): the same
+// bits, on every family, in a periodic box, on square lattices (where the
+// sixth nearest ties with two more), and on a crowded cluster in a corner of
+// a large box (where the search refines its cells).
+std::vector<std::complex<double>> psi6_of_every_pair(const std::vector<Particle>& particles, double side,
+                                                     bool periodic) {
+    const auto nearest = [&](double d) { return periodic ? d - side * std::round(d / side) : d; };
+    std::vector<std::complex<double>> local(particles.size());
+    if (particles.size() < 7) return local;
+    for (std::size_t i = 0; i < particles.size(); ++i) {
+        std::vector<std::pair<std::pair<double, std::size_t>, Vec2>> bonds;
+        for (std::size_t j = 0; j < particles.size(); ++j) {
+            if (j == i) continue;
+            const Vec2 d = particles[j].position - particles[i].position;
+            const Vec2 bond(nearest(d.x()), nearest(d.y()));
+            bonds.push_back({{bond.squaredNorm(), j}, bond});
+        }
+        std::sort(bonds.begin(), bonds.end(), [](const auto& a, const auto& b) { return a.first < b.first; });
+        std::complex<double> psi(0.0, 0.0);
+        for (int k = 0; k < 6; ++k) {
+            const Vec2 bond = bonds[static_cast<std::size_t>(k)].second;
+            const double length = std::sqrt(bonds[static_cast<std::size_t>(k)].first.first);
+            if (!(length > 0.0)) continue;
+            const std::complex<double> u(bond.x() / length, bond.y() / length);
+            const std::complex<double> u2 = u * u;
+            psi += u2 * u2 * u2;
+        }
+        local[i] = psi / 6.0;
+    }
+    return local;
+}
+
+void hexatic_order_against_every_pair() {
+    struct Case {
+        std::string name;
+        std::vector<Particle> particles;
+        World world;
+        Boundary boundary;
+    };
+    std::vector<Case> cases;
+    for (const SceneFamilyInfo& info : scene_families()) {
+        SceneFamilyOptions o;
+        o.particles = 300;
+        try {
+            const Scene scene = make_family_scene(info.family, o);
+            cases.push_back({info.name, scene.particles, scene.world, Boundary::walls});
+        } catch (const std::invalid_argument&) {
+        }
+    }
+    for (const SceneFamily family : {SceneFamily::crystal, SceneFamily::compressed}) {
+        SceneFamilyOptions o;
+        o.particles = 400;
+        o.boundary = Boundary::periodic;
+        const Scene scene = make_family_scene(family, o);
+        cases.push_back({"periodic", scene.particles, scene.world, Boundary::periodic});
+    }
+    // Square lattices, 9 x 9 and 12 x 12, spacing 3: four second neighbours tie.
+    for (const int rows : {9, 12}) {
+        std::vector<Particle> square;
+        for (int k = 0; k < rows * rows; ++k)
+            square.push_back(disk(1.5 + 3.0 * (k % rows), 1.5 + 3.0 * (k / rows), 0, 0));
+        cases.push_back({"square lattice", square, World{3.0 * rows, 1.0}, Boundary::walls});
+        cases.push_back({"square lattice", square, World{3.0 * rows, 1.0}, Boundary::periodic});
+    }
+    // 2500 touching disks in a corner of a box 20 000 wide, 30 strewn far away.
+    std::vector<Particle> cluster;
+    for (int k = 0; k < 2500; ++k) {
+        const int row = k / 50, column = k % 50;
+        cluster.push_back(disk(10.0 + 2.0 * column + (row % 2 == 0 ? 0.0 : 1.0), 10.0 + std::sqrt(3.0) * row, 0, 0));
+    }
+    for (int k = 0; k < 30; ++k) cluster.push_back(disk(5000.0 + 450.0 * k, 19000.0 - 97.0 * k, 0, 0));
+    cases.push_back({"cluster", cluster, World{20000.0, 1.0}, Boundary::walls});
+    cases.push_back({"cluster", cluster, World{20000.0, 1.0}, Boundary::periodic});
+    for (std::size_t count = 1; count <= 12; ++count) {
+        std::vector<Particle> few;
+        for (std::size_t k = 0; k < count; ++k)
+            few.push_back(
+                disk(2.0 + 3.7 * static_cast<double>(k * 7 % 11), 2.0 + 5.3 * static_cast<double>(k * 3 % 7), 0, 0));
+        cases.push_back({"few", few, World{60.0, 1.0}, Boundary::walls});
+        cases.push_back({"few", few, World{60.0, 1.0}, Boundary::periodic});
+    }
+    CHECK(cases.size() >= 40);
+    for (const Case& c : cases) {
+        const check::Context context(c.name, ", ", c.particles.size(), " disks, ",
+                                     c.boundary == Boundary::periodic ? "periodic" : "walls");
+        const std::vector<std::complex<double>> searched = local_hexatic_order(c.particles, c.world, c.boundary);
+        const std::vector<std::complex<double>> every =
+            psi6_of_every_pair(c.particles, c.world.box_size, c.boundary == Boundary::periodic);
+        std::size_t differ = 0;
+        for (std::size_t i = 0; i < every.size(); ++i) differ += searched[i] != every[i];
+        CHECK_EQ(differ, 0U);
+    }
+}
+
 // What cannot be measured is refused with the function's name, not
 // answered: a position that is no number, a box of no size, a Boundary cast
 // from a number that names no box.
@@ -272,6 +369,7 @@ int main(int argc, char** argv) {
                       {{"sums of hand-built collisions", sums_of_hand_built_collisions},
                        {"the two routes agree in a walled box", the_two_routes_agree_in_a_walled_box},
                        {"hexatic order of lattice and gas", hexatic_order_of_lattice_and_gas},
+                       {"hexatic order against every pair", hexatic_order_against_every_pair},
                        {"what cannot be measured is refused", what_cannot_be_measured_is_refused},
                        {"block averages of known series", block_averages_of_known_series},
                        {"simcli observables file", simcli_observables_file}});

@@ -64,8 +64,11 @@ Pressure box_pressure(const World& world, Boundary boundary, std::size_t count, 
 // of exp(6 i theta), theta the bond's angle. Six nearest rather than Voronoi
 // neighbours: no tessellation to build, the same count at every disk (a
 // Voronoi cell of a dense liquid often has five or seven), and the common
-// choice of the hard-disk papers' quick estimates. 1 on a perfect triangular
-// lattice, about 1 / sqrt(N) for a random gas. 0 for fewer than 7 disks. In a
+// choice of the hard-disk papers' quick estimates; of neighbours at equal
+// distance (a square lattice's second shell), the lower indices. The search
+// refines its cells where disks crowd, so that a cluster in an empty box
+// costs about what a spread does. 1 on a perfect triangular lattice, about
+// 1 / sqrt(N) for a random gas. 0 for fewer than 7 disks. In a
 // periodic box, neighbours are nearest images, and a position may lie whole
 // sides outside the box (unwrapped coordinates). Throws std::invalid_argument
 // for a position that is not a finite number, a box size that is not finite

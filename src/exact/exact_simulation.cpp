@@ -3,6 +3,7 @@
 
 #include "core/assert.hpp"
 #include "core/box.hpp"
+#include "core/crowded_grid.hpp"
 #include "core/huge_page_allocator.hpp"
 #include "core/physics.hpp"
 #include "core/prefetch.hpp"
@@ -130,23 +131,15 @@ bool lines_crowd(const World& world, std::span<const Particle> particles) {
 // The side refined for a start that crowds the cells (exact_tuning's
 // crowded_cell_mates): doubled while the disks' mean count of cell mates
 // (the sum of each cell's count squared, over N) stays above it.
-int refined_for_crowding(const World& world, std::span<const Particle> particles, int side) {
+int refined_for_crowded_start(const World& world, std::span<const Particle> particles, int side) {
     using namespace exact_tuning;
     const double count = static_cast<double>(particles.size());
     const int finest =
         std::min(UniformGrid::cells_per_side(world.box_size, contact_reach(Box::of(world)), max_grid_cells),
                  static_cast<int>(std::sqrt(crowded_cells_per_particle * count)));
-    std::vector<std::uint32_t> counts;
-    while (side < finest) {
-        const UniformGrid grid(world.box_size, side);
-        counts.assign(grid.cell_count(), 0);
-        for (const Particle& p : particles) ++counts[grid.cell_of(p.position)];
-        double mates = 0.0;
-        for (const std::uint32_t c : counts) mates += static_cast<double>(c) * static_cast<double>(c);
-        if (mates <= crowded_cell_mates * count) break;
-        side = std::min(2 * side, finest);
-    }
-    return side;
+    return refined_for_crowding(
+        world.box_size, static_cast<std::uint32_t>(particles.size()),
+        [&](std::uint32_t k) { return particles[k].position; }, side, finest, crowded_cell_mates);
 }
 
 // The cells a side that the cost model alone chooses from N, r and L.
@@ -165,7 +158,7 @@ UniformGrid neighbour_grid(const World& world, std::span<const Particle> particl
         cells_per_side = modelled_cells_per_side(world, particles.size(), options.boundary);
         if (*cells_per_side == 1 && lines_crowd(world, particles))
             cells_per_side = cells_per_side_for(world, particles.size());
-        if (*cells_per_side > 1) cells_per_side = refined_for_crowding(world, particles, *cells_per_side);
+        if (*cells_per_side > 1) cells_per_side = refined_for_crowded_start(world, particles, *cells_per_side);
     }
     if (options.boundary == Boundary::periodic) return periodic_neighbour_grid(world, *cells_per_side);
     return UniformGrid(world.box_size, *cells_per_side);
