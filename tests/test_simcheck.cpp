@@ -342,7 +342,19 @@ void exact_engine_outputs_pass() {
     // is caught at the first of those steps that is judged.
     const std::string default_text = "1000 20000 1 60 print\n";
     const std::string default_out = run_simcli(default_text, {"--engine", "exact"});
-    CHECK_EQ(run_simcheck(default_text, default_out, {"--engine", "exact"}).status, 0);
+    const Verdict judged = run_simcheck(default_text, default_out, {"--engine", "exact"});
+    CHECK_EQ(judged.status, 0);
+    // The verdict says how many steps were judged, and the JSON the same count.
+    const std::size_t count_at = judged.first_line.find(" (");
+    const int judged_steps = count_at == std::string::npos ? -1 : std::atoi(judged.first_line.c_str() + count_at + 2);
+    check::Context judged_context("verdict ", judged.first_line);
+    CHECK(judged_steps > 0 && judged_steps < 60);
+    CHECK(judged.first_line.find(" of the 60 steps judged; below, why not the others)") != std::string::npos);
+    const Verdict as_json = run_simcheck(default_text, default_out, {"--engine", "exact", "--json"});
+    CHECK(as_json.out.find("\"steps_checked\": 60, \"steps_judged\": " + std::to_string(judged_steps) + ",") !=
+          std::string::npos);
+    const Verdict step_rules = run_simcheck(default_text, run_simcli(default_text, {}), {"--json"});
+    CHECK(step_rules.out.find("\"steps_checked\": 60, \"steps_judged\": 60,") != std::string::npos);
     std::string off = default_out;
     std::size_t line_start = 0;
     for (int line = 0; line < 60 * 1000; ++line) {

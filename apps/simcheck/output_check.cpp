@@ -234,6 +234,7 @@ Report check_output(const Scene& scene, LineSource& output, const StepCheckOptio
             previous_on_wall.swap(check.on_wall);
             report.steps_checked = step;
         }
+        report.steps_judged = judged_steps;
         const std::span<const Particle> last = previous;
         if (judge_counters) {
             if (auto wrong = check_counters(block, last, totals, steps)) return broken(report, *wrong);

@@ -118,6 +118,10 @@ void write_text_report(std::FILE* out, const Judgement& judgement, const ReportC
     std::fprintf(out, " %zu particles, %lld steps, checked against %s", report.particles,
                  static_cast<long long>(report.steps), context.rules.c_str());
     std::fprintf(out, report.steps_checked > 0 ? " step by step" : " from the initial state");
+    if (report.steps_checked > 0 && report.steps_judged < report.steps_checked) {
+        std::fprintf(out, " (%lld of the %lld steps judged; below, why not the others)",
+                     static_cast<long long>(report.steps_judged), static_cast<long long>(report.steps_checked));
+    }
     std::fprintf(out, "; printed numbers read as %s\n", how_numbers_are_read(report.uncertainty).c_str());
     if (report.within_rounding_count > 0) {
         std::fprintf(out, "%zu decision(s) of the rules were within %s; either outcome was accepted:\n",
@@ -137,6 +141,7 @@ void write_json_report(std::FILE* out, const Judgement& judgement, const ReportC
     json += ", \"particles\": " + std::to_string(report.particles);
     json += ", \"steps\": " + std::to_string(report.steps);
     json += ", \"steps_checked\": " + std::to_string(report.steps_checked);
+    json += ", \"steps_judged\": " + std::to_string(report.steps_judged);
     json += ", \"uncertainty\": " + json_number(report.uncertainty);
     if (report.finding) {
         const Finding& f = *report.finding;
