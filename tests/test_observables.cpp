@@ -316,6 +316,22 @@ void block_averages_of_known_series() {
     CHECK_NEAR(u.mean, 0.5, 4.0 / std::sqrt(12.0) / 64.0);
     CHECK(u.error > 0.5 / std::sqrt(12.0) / 64.0 && u.error < 2.0 / std::sqrt(12.0) / 64.0);
     CHECK_EQ(block_average(std::vector<double>{1.0, 2.0}).blocks, std::size_t{0});
+    // The same series at any power-of-two scale, up to next to the largest
+    // double and down to the smallest normal ones: the same bits, scaled.
+    const auto scaled_by = [&](int exponent, std::size_t count) {
+        std::vector<double> scaled;
+        for (std::size_t k = 0; k < count; ++k) scaled.push_back(std::ldexp(uniform[k] + 0.25, exponent));
+        return block_average(scaled);
+    };
+    const MeanWithError unscaled = scaled_by(0, uniform.size()), few = scaled_by(0, 20);
+    CHECK_EQ(few.blocks, std::size_t{0});  // too few for blocks: the mean alone
+    for (const int exponent : {-1000, -300, 300, 1020}) {
+        check::Context context("scaled by 2^", exponent);
+        const MeanWithError s = scaled_by(exponent, uniform.size());
+        CHECK_EQ(s.mean, std::ldexp(unscaled.mean, exponent));
+        CHECK_EQ(s.error, std::ldexp(unscaled.error, exponent));
+        CHECK_EQ(scaled_by(exponent, 20).mean, std::ldexp(few.mean, exponent));
+    }
 }
 
 void simcli_observables_file() {

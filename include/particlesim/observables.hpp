@@ -90,8 +90,8 @@ double mean_hexatic_order(std::span<const std::complex<double>> local);
 
 // The mean of a series and its standard error from `blocks` block averages
 // (the error of correlated samples: blocks longer than the correlation time
-// are independent). Needs at least 2 samples a block: fewer samples give
-// error 0 and blocks 0.
+// are independent), for samples of any finite magnitude. Needs at least 2
+// samples a block: fewer samples give error 0 and blocks 0.
 struct MeanWithError {
     double mean = 0.0;
     double error = 0.0;

@@ -200,17 +200,25 @@ double hexatic_order(std::span<const Particle> particles, const World& world, Bo
 
 MeanWithError block_average(std::span<const double> samples, std::size_t blocks) {
     MeanWithError result;
+    if (samples.empty()) return result;
+    // Summed in units of the largest sample's power of two, which is exact,
+    // so that samples near the largest double sum and square without
+    // overflowing, and the same bits as unscaled sums everywhere else.
+    double largest = 0.0;
+    for (const double s : samples) largest = std::max(largest, std::fabs(s));
+    int exponent = 0;
+    if (std::isfinite(largest) && largest > 0.0) std::frexp(largest, &exponent);
+    const auto scaled = [&](double s) { return std::ldexp(s, -exponent); };
     if (blocks < 2 || samples.size() < 2 * blocks) {
-        if (samples.empty()) return result;
         double sum = 0.0;
-        for (const double s : samples) sum += s;
-        result.mean = sum / static_cast<double>(samples.size());
+        for (const double s : samples) sum += scaled(s);
+        result.mean = std::ldexp(sum / static_cast<double>(samples.size()), exponent);
         return result;
     }
     const std::size_t per_block = samples.size() / blocks;
     std::vector<double> means(blocks, 0.0);
     for (std::size_t b = 0; b < blocks; ++b) {
-        for (std::size_t k = 0; k < per_block; ++k) means[b] += samples[b * per_block + k];
+        for (std::size_t k = 0; k < per_block; ++k) means[b] += scaled(samples[b * per_block + k]);
         means[b] /= static_cast<double>(per_block);
     }
     double mean = 0.0;
@@ -218,8 +226,9 @@ MeanWithError block_average(std::span<const double> samples, std::size_t blocks)
     mean /= static_cast<double>(blocks);
     double spread = 0.0;
     for (const double m : means) spread += (m - mean) * (m - mean);
-    result.mean = mean;
-    result.error = std::sqrt(spread / static_cast<double>(blocks - 1) / static_cast<double>(blocks));
+    result.mean = std::ldexp(mean, exponent);
+    result.error =
+        std::ldexp(std::sqrt(spread / static_cast<double>(blocks - 1) / static_cast<double>(blocks)), exponent);
     result.blocks = blocks;
     return result;
 }
