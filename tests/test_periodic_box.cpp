@@ -225,6 +225,34 @@ void simcli_boundary() {
         SIMCHECK_PATH, {"--engine", "exact", "--boundary", "periodic", dir + "/across.in", dir + "/across.out"});
     CHECK_EQ(overlapping.status, 1);
     CHECK(overlapping.out.rfind("step 1: particles 0 and 1 overlap: their centres are 1.7 apart", 0) == 0);
+    // A disk that ends a step 2e-10 short of the edge is printed at 0: its
+    // printed position lies in [0, L), simcheck takes it as the same place,
+    // and the block reads back as a periodic scene.
+    const std::string to_the_edge = "2 20 1 2 print\n0 10 5 4.9999999999 0\n1 10 15 0 0\n";
+    std::ofstream(dir + "/edge.in") << to_the_edge;
+    const run_process::Result edge =
+        run_process::run(simcli, {"--engine", "exact", "--boundary", "periodic"}, to_the_edge);
+    CHECK_EQ(edge.status, 0);
+    CHECK(edge.out.find("\n2 0 0.00000000 5.00000000 5.00000000 0.00000000 0 0\n") != std::string::npos);
+    std::ofstream(dir + "/edge.out") << edge.out;
+    CHECK_EQ(run_process::run(SIMCHECK_PATH,
+                              {"--engine", "exact", "--boundary", "periodic", dir + "/edge.in", dir + "/edge.out"})
+                 .status,
+             0);
+    // So too a scene's own position 4e-10 short of the edge, printed at step 0.
+    const std::string listed_at_the_edge = "2 20 1 1 print\n0 19.9999999996 5 0 0\n1 10 5 0 0\n";
+    std::ofstream(dir + "/listed.in") << listed_at_the_edge;
+    const run_process::Result listed =
+        run_process::run(simcli, {"--engine", "exact", "--boundary", "periodic"}, listed_at_the_edge);
+    CHECK(listed.out.rfind("0 0 0.00000000 5.00000000 0.00000000 0.00000000\n", 0) == 0);
+    std::ofstream(dir + "/listed.out") << listed.out;
+    CHECK_EQ(run_process::run(SIMCHECK_PATH,
+                              {"--engine", "exact", "--boundary", "periodic", dir + "/listed.in", dir + "/listed.out"})
+                 .status,
+             0);
+    const run_process::Result from_the_edge = run_process::run(simcli, {"--engine", "exact", "--boundary", "periodic"},
+                                                               "2 20 1 1 print\n0 0.00000000 5 1 0\n1 10 15 0 0\n");
+    CHECK_EQ(from_the_edge.status, 0);
     const run_process::Result walled = run_process::run(simcli, {"--engine", "exact"}, near_edges);
     CHECK_EQ(walled.status, 2);
     CHECK(walled.err.find("x = 0.25 is outside [1, 19]") != std::string::npos);

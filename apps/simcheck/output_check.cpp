@@ -79,11 +79,18 @@ private:
 };
 
 std::optional<Finding> check_initial_block(const Scene& scene, const BlockReader& block,
-                                           std::span<const Particle> printed, double uncertainty) {
+                                           std::span<const Particle> printed, double uncertainty, Boundary boundary) {
+    const World& world = scene.world;
     const auto fits = [&](double value, double wanted) {
         return std::fabs(value - wanted) <= slack(value, uncertainty);
     };
-    const World& world = scene.world;
+    // In a periodic box a position may be printed as its image a side away
+    // (19.9999999996 in a box of 20 as 0.00000000): the same place.
+    const auto fits_position = [&](double value, double wanted) {
+        if (fits(value, wanted)) return true;
+        return boundary == Boundary::periodic &&
+               (fits(value, wanted - world.box_size) || fits(value, wanted + world.box_size));
+    };
     const SpeedRange speeds = default_speed_range(world);
     for (std::size_t i = 0; i < printed.size(); ++i) {
         const Particle& p = printed[i];
@@ -92,8 +99,9 @@ std::optional<Finding> check_initial_block(const Scene& scene, const BlockReader
         };
         if (!scene.is_random()) {
             const Particle& given = scene.particles[i];
-            if (!(fits(p.position.x(), given.position.x()) && fits(p.position.y(), given.position.y()) &&
-                  fits(p.velocity.x(), given.velocity.x()) && fits(p.velocity.y(), given.velocity.y()))) {
+            if (!(fits_position(p.position.x(), given.position.x()) &&
+                  fits_position(p.position.y(), given.position.y()) && fits(p.velocity.x(), given.velocity.x()) &&
+                  fits(p.velocity.y(), given.velocity.y()))) {
                 return finding("the initial state is not the scene's", given);
             }
             continue;
@@ -184,7 +192,8 @@ Report check_output(const Scene& scene, LineSource& output, const StepCheckOptio
     if (auto wrong = block.read(0, false)) return broken(report, *wrong);
     report.uncertainty = output.uncertainty();
     std::vector<Particle> previous = block.particles();
-    if (auto wrong = check_initial_block(scene, block, previous, report.uncertainty)) return broken(report, *wrong);
+    if (auto wrong = check_initial_block(scene, block, previous, report.uncertainty, options.boundary))
+        return broken(report, *wrong);
     // The first step starts from the scene's own numbers where it lists them.
     double previous_uncertainty = report.uncertainty;
     if (!scene.is_random()) {

@@ -168,6 +168,7 @@ RunStats write_run(E& engine, const RunSettings& settings, const CliOptions& opt
     stats.steps_run = settings.steps - first_step;
     OutputFile output(options.output_path);
     StateWriter writer(output.stream(), settings.numbers);
+    if (settings.boundary == Boundary::periodic) writer.wrap_positions_into(settings.world.box_size);
     // A resumed run goes on where the first part of its output ends.
     if (first_step == 0) writer.write_state(0, engine.particles());
     pictures.start(first_step, engine, settings.world);

@@ -34,14 +34,22 @@ public:
     void write_final(std::int64_t step, std::span<const Particle> particles, std::size_t first_index = 0);
     // Hands everything buffered to the FILE and flushes it; throws OutputError.
     void flush();
+    // For a periodic box of side `side` (positions in [0, side)): a position
+    // that 8 decimals would round up to `side` (19.9999999996 in a box of
+    // 20) is written as 0.00000000, the same place within the printing's
+    // rounding, so that printed positions stay in [0, side) and read back as
+    // a periodic scene. Throws std::invalid_argument unless 0 < side < inf.
+    void wrap_positions_into(double side);
 
 private:
     void write_block(std::int64_t step, std::span<const Particle> particles, std::size_t first_index,
                      bool with_counters);
     void drain();
+    char* write_position(char* out, double value) const;
 
     std::FILE* out_;
     NumberFormat format_;
+    double wrap_side_ = 0.0;  // wrap_positions_into()'s side; 0: positions as they are
     // Left uninitialised: a page is touched only when output reaches it (a
     // first touch of a page is slow in a virtual machine, and most runs
     // write far less than the buffer holds).

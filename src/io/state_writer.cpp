@@ -4,6 +4,7 @@
 
 #include <cerrno>
 #include <charconv>
+#include <cmath>
 #include <cstring>
 #include <stdexcept>
 #include <string>
@@ -44,7 +45,11 @@ void StateWriter::write_block(std::int64_t step, std::span<const Particle> parti
         *out++ = ' ';
         out = std::to_chars(out, out + 21, first_index + i).ptr;
         const Particle& p = particles[i];
-        for (const double value : {p.position.x(), p.position.y(), p.velocity.x(), p.velocity.y()}) {
+        for (const double value : {p.position.x(), p.position.y()}) {
+            *out++ = ' ';
+            out = write_position(out, value);
+        }
+        for (const double value : {p.velocity.x(), p.velocity.y()}) {
             *out++ = ' ';
             out = format_ == NumberFormat::fixed8 ? write_fixed8(out, value) : write_shortest(out, value);
         }
@@ -57,6 +62,27 @@ void StateWriter::write_block(std::int64_t step, std::span<const Particle> parti
         *out++ = '\n';
         used_ = static_cast<std::size_t>(out - buffer_.get());
     }
+}
+
+void StateWriter::wrap_positions_into(double side) {
+    if (!(side > 0.0 && std::isfinite(side)))
+        throw std::invalid_argument(
+            "particlesim::StateWriter::wrap_positions_into: the side must be finite and "
+            "positive, not " +
+            format_short(side));
+    wrap_side_ = side;
+}
+
+char* StateWriter::write_position(char* out, double value) const {
+    if (format_ == NumberFormat::shortest) return write_shortest(out, value);
+    char* const end = write_fixed8(out, value);
+    // Only a position within a printed place of the side can round up to it.
+    if (wrap_side_ > 0.0 && value >= wrap_side_ - 1e-8) {
+        double printed = 0.0;
+        std::from_chars(out, end, printed);
+        if (printed >= wrap_side_) return write_fixed8(out, 0.0);
+    }
+    return end;
 }
 
 void StateWriter::drain() {
