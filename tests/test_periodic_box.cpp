@@ -250,6 +250,31 @@ void simcli_boundary() {
                               {"--engine", "exact", "--boundary", "periodic", dir + "/listed.in", dir + "/listed.out"})
                  .status,
              0);
+    // A disk that ends step 1 on the edge: simcheck's copies of it, moved
+    // within the rounding, end either side of it, a hair apart, not a box.
+    // Every step is judged, and in perf mode the final state too; a final
+    // state half a unit off is caught.
+    for (const std::string mode : {"print", "perf"}) {
+        check::Context mode_context(mode, " mode, a disk ending step 1 on the edge");
+        const std::string on_the_edge = "2 20 1 2 " + mode + "\n0 10 5 10 0\n1 10 15 0 0\n";
+        std::ofstream(dir + "/on_edge.in") << on_the_edge;
+        const std::string out =
+            run_process::run(simcli, {"--engine", "exact", "--boundary", "periodic"}, on_the_edge).out;
+        std::ofstream(dir + "/on_edge.out") << out;
+        const run_process::Result judged_run = run_process::run(
+            SIMCHECK_PATH, {"--engine", "exact", "--boundary", "periodic", dir + "/on_edge.in", dir + "/on_edge.out"});
+        CHECK_EQ(judged_run.status, 0);
+        CHECK(judged_run.out.find("steps judged") == std::string::npos);  // every step
+        std::string off = out;
+        const std::size_t at = off.find("\n2 0 10.00000000");
+        CHECK(at != std::string::npos);
+        off.replace(at + 5, 11, "10.50000000");
+        std::ofstream(dir + "/on_edge_off.out") << off;
+        CHECK_EQ(run_process::run(SIMCHECK_PATH, {"--engine", "exact", "--boundary", "periodic", dir + "/on_edge.in",
+                                                  dir + "/on_edge_off.out"})
+                     .status,
+                 1);
+    }
     const run_process::Result from_the_edge = run_process::run(simcli, {"--engine", "exact", "--boundary", "periodic"},
                                                                "2 20 1 1 print\n0 0.00000000 5 1 0\n1 10 15 0 0\n");
     CHECK_EQ(from_the_edge.status, 0);

@@ -290,7 +290,13 @@ Report check_output(const Scene& scene, LineSource& output, const StepCheckOptio
                 return low - slack(value, report.uncertainty) <= value &&
                        value <= high + slack(value, report.uncertainty);
             };
-            fine = fine && inside(p.position[axis], run.lower[i].position[axis], run.upper[i].position[axis]);
+            const double low = run.lower[i].position[axis], high = run.upper[i].position[axis];
+            double position = p.position[axis];
+            if (options.boundary == Boundary::periodic) {  // the image nearest where the runs went
+                const double middle = 0.5 * (low + high), side = scene.world.box_size;
+                position -= side * std::round((position - middle) / side);
+            }
+            fine = fine && inside(position, low, high);
             fine = fine && inside(p.velocity[axis], run.lower[i].velocity[axis], run.upper[i].velocity[axis]);
         }
         if (!fine) {

@@ -129,10 +129,17 @@ void ExactStepCheck::measure_bounds(const PrintedState& start) {
         CollisionRange& counts = bounds_.collisions[p];
         lower = upper = states_[0][p];
         counts = {lower.particle_collisions, lower.particle_collisions, lower.wall_collisions, lower.wall_collisions};
+        const Vec2 reference = lower.position;
         for (const auto& state : states_) {
             const Particle& q = state[p];
-            lower.position = lower.position.cwiseMin(q.position);
-            upper.position = upper.position.cwiseMax(q.position);
+            // In a periodic box, copies either side of an edge (at 19.99999999
+            // and 0.00000001 in a box of 20) are a hair apart, not a box.
+            const Vec2 position =
+                boundary_ == Boundary::periodic
+                    ? reference + separation_in(CloseIn::periodic_square, world_.box_size, reference, q.position)
+                    : q.position;
+            lower.position = lower.position.cwiseMin(position);
+            upper.position = upper.position.cwiseMax(position);
             lower.velocity = lower.velocity.cwiseMin(q.velocity);
             upper.velocity = upper.velocity.cwiseMax(q.velocity);
             counts.particle_min = std::min(counts.particle_min, q.particle_collisions);
