@@ -185,6 +185,19 @@ void reference_conforms_everywhere() {
     // No more ran side by side than there are scenes.
     const Graded wide = grade(small_suite(), {"--jobs", "8", "--no-reference"}, {"/bin/true"});
     CHECK(wide.result.out.find("(4 scenes ran side by side") != std::string::npos);
+    // Under the exact rules the default scene's steps are judged only where
+    // they are not too chaotic within rounding: the row says how many were.
+    const fs::path default_suite = work() / "default-suite";
+    fs::create_directories(default_suite);
+    std::ofstream(default_suite / "default.in") << "1000 20000 1 60 print\n";
+    const Graded exact = grade(default_suite, {"--engine", "exact"}, {simcli, "--engine", "exact", "{}"});
+    CHECK_EQ(exact.result.status, 0);
+    CHECK_EQ(scenes(exact)[0]["verdict"].text, std::string("conforms"));
+    const std::string judged = scenes(exact)[0]["message"].text;
+    check::Context judged_context("message \"", judged, "\"");
+    const int count = std::atoi(judged.c_str());
+    CHECK(count > 0 && count < 60);
+    CHECK_EQ(judged, std::to_string(count) + " of the 60 steps judged");
 }
 
 // The verdicts alone: no reference simcli is timed (--no-reference).

@@ -312,7 +312,13 @@ void judge_into(Row& row, const SceneCase& c, const fs::path& output, const part
     std::fclose(file);
     row.deviations = j.deviations;
     switch (j.outcome) {
-    case Outcome::conforms: row.verdict = "conforms"; break;
+    case Outcome::conforms:
+        row.verdict = "conforms";
+        if (j.report.steps_judged < j.report.steps_checked) {  // the rest too chaotic to judge within rounding
+            row.message = std::to_string(j.report.steps_judged) + " of the " + std::to_string(j.report.steps_checked) +
+                          " steps judged";
+        }
+        break;
     case Outcome::shape:
         row.verdict = "shape";
         row.message = "the physics conforms; the shape deviates: " + j.deviations.front() +
