@@ -61,7 +61,9 @@ struct SceneFamilyOptions {
 // Throws std::invalid_argument for options the family cannot honour (a
 // crystal denser than its lattice fits: the message names the densest; a
 // compression above close packing, or one that jams first or runs out of
-// events still growing: the message names the fraction reached; a cradle
+// events still growing: the message names the fraction reached; a periodic
+// start in a box too narrow for the exact engine's periodic box, 5 contact
+// distances (a crystal of a few disks); a cradle
 // of fewer than 2 disks; more particles than this machine can hold,
 // as the scene reader counts them; a radius outside the accepted range,
 // world.hpp), and SceneTooFull when random disks do not fit.

@@ -4,6 +4,8 @@
 
 #include "particlesim/world.hpp"
 
+#include <cmath>
+
 namespace particlesim {
 
 struct Box {
@@ -17,5 +19,14 @@ struct Box {
         return {world.box_size, world.lower(), world.upper(), diameter * diameter};
     }
 };
+
+// The distance a pair must be kept within, for a contact distance of 2r:
+// above 2r by far more than the rounding of a double-precision pair test
+// (a few ulps of L in dp) and of free motion along a line over 1024 steps
+// (at most 2^-51 L a step and coordinate while a particle stays in the box).
+// The searches' reach, and the exact engine's smallest cell.
+inline double contact_reach(const Box& box) {
+    return std::sqrt(box.contact_dist_sq) * (1.0 + 0x1p-30) + 0x1p-36 * box.side;
+}
 
 }  // namespace particlesim

@@ -1,7 +1,9 @@
 #include "particlesim/scene_families.hpp"
 
+#include "core/box.hpp"
 #include "core/physics.hpp"
 #include "core/random.hpp"
+#include "core/uniform_grid.hpp"
 #include "input/scene_checks.hpp"
 #include "io/number_format.hpp"
 #include "scenes/growth_packing.hpp"
@@ -372,10 +374,11 @@ Scene periodic_crystal(const SceneFamilyOptions& o, std::size_t count) {
     // The factorisation whose spacing between neighbours is widest for its box.
     std::size_t columns = count, rows = 1;
     bool shifted = false;
-    double best = 0.0;  // the closest neighbours' distance, in units of L
-    for (std::size_t c = 1; c <= count; ++c) {
-        if (count % c != 0) continue;
-        const std::size_t n_rows = count / c;
+    double best = 0.0;                                          // the closest neighbours' distance, in units of L
+    const std::size_t sized = std::max<std::size_t>(count, 1);  // no disks: the box of one
+    for (std::size_t c = 1; c <= sized; ++c) {
+        if (sized % c != 0) continue;
+        const std::size_t n_rows = sized / c;
         const bool shift = n_rows % 2 == 0;
         const double along = 1.0 / static_cast<double>(c), between = 1.0 / static_cast<double>(n_rows);
         const double across = shift ? std::hypot(0.5 * along, between) : between;
@@ -389,10 +392,8 @@ Scene periodic_crystal(const SceneFamilyOptions& o, std::size_t count) {
         }
     }
     const double densest_box = 2.0 * r * (1.0 + crystal_clearance) / best;
-    // (No disks: the box of one.)
-    const double densest = std::min(
-        static_cast<double>(std::max<std::size_t>(count, 1)) * std::numbers::pi * r * r / (densest_box * densest_box),
-        close_packing_fraction);
+    const double densest = std::min(static_cast<double>(sized) * std::numbers::pi * r * r / (densest_box * densest_box),
+                                    close_packing_fraction);
     const double fraction =
         o.area_fraction ? area_fraction_or(o, 0.7, close_packing_fraction) : std::min(0.7, 0.95 * densest);
     const double box = side_for(count, r, fraction);
@@ -400,6 +401,14 @@ Scene periodic_crystal(const SceneFamilyOptions& o, std::size_t count) {
         throw std::invalid_argument("particlesim::make_family_scene: " + std::to_string(count) +
                                     " disks do not fit a lattice in a periodic box at area fraction " +
                                     format_short(fraction) + "; the densest that fits is " + format_short(densest));
+    }
+    // The exact engine's periodic box holds 5 cells of a contact distance.
+    const double reach = contact_reach(Box::of(World{box, r}));
+    if (!(box > periodic_cells_at_least * reach)) {
+        throw std::invalid_argument("particlesim::make_family_scene: a periodic box must be wider than " +
+                                    std::to_string(periodic_cells_at_least) + " contact distances (" +
+                                    format_short(periodic_cells_at_least * reach) + "), not " + format_short(box) +
+                                    ": more disks or a lower fraction");
     }
     const double along = box / static_cast<double>(columns), between = box / static_cast<double>(rows);
     std::vector<Particle> particles;

@@ -37,14 +37,6 @@ namespace particlesim {
 
 struct LineQuery;  // one line's test against all (path_lines.cpp)
 
-// The distance a pair must be kept within, for a contact distance of 2r:
-// above 2r by far more than the rounding of a double-precision pair test
-// (a few ulps of L in dp) and of free motion along a line over 1024 steps
-// (at most 2^-51 L a step and coordinate while a particle stays in the box).
-inline double contact_reach(const Box& box) {
-    return std::sqrt(box.contact_dist_sq) * (1.0 + 0x1p-30) + 0x1p-36 * box.side;
-}
-
 class PathLines {
 public:
     // Tests `lanes` lines at a time: 4 (any processor), 8 (x86-64 with AVX2
