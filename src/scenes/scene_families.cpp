@@ -402,9 +402,9 @@ Scene periodic_crystal(const SceneFamilyOptions& o, std::size_t count) {
                                     " disks do not fit a lattice in a periodic box at area fraction " +
                                     format_short(fraction) + "; the densest that fits is " + format_short(densest));
     }
-    // The exact engine's periodic box holds 5 cells of a contact distance.
+    // The exact engine's periodic box holds 5 cells of a contact distance (its own test).
     const double reach = contact_reach(Box::of(World{box, r}));
-    if (!(box > periodic_cells_at_least * reach)) {
+    if (!(box / periodic_cells_at_least >= reach)) {
         throw std::invalid_argument("particlesim::make_family_scene: a periodic box must be wider than " +
                                     std::to_string(periodic_cells_at_least) + " contact distances (" +
                                     format_short(periodic_cells_at_least * reach) + "), not " + format_short(box) +
