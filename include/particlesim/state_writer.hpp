@@ -6,6 +6,7 @@
 
 #include <cstdint>
 #include <cstdio>
+#include <limits>
 #include <memory>
 #include <span>
 #include <stdexcept>
@@ -45,11 +46,13 @@ private:
     void write_block(std::int64_t step, std::span<const Particle> particles, std::size_t first_index,
                      bool with_counters);
     void drain();
-    char* write_position(char* out, double value) const;
+    // `position`, or 0 where its 8 decimals read as the side or more.
+    [[nodiscard]] double printed_in_box(double position) const;
 
     std::FILE* out_;
     NumberFormat format_;
     double wrap_side_ = 0.0;  // wrap_positions_into()'s side; 0: positions as they are
+    double wrap_from_ = std::numeric_limits<double>::infinity();  // positions from here on may round up to it
     // Left uninitialised: a page is touched only when output reaches it (a
     // first touch of a page is slow in a virtual machine, and most runs
     // write far less than the buffer holds).

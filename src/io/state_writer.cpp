@@ -45,11 +45,10 @@ void StateWriter::write_block(std::int64_t step, std::span<const Particle> parti
         *out++ = ' ';
         out = std::to_chars(out, out + 21, first_index + i).ptr;
         const Particle& p = particles[i];
-        for (const double value : {p.position.x(), p.position.y()}) {
-            *out++ = ' ';
-            out = write_position(out, value);
-        }
-        for (const double value : {p.velocity.x(), p.velocity.y()}) {
+        double x = p.position.x(), y = p.position.y();
+        if (x >= wrap_from_) x = printed_in_box(x);
+        if (y >= wrap_from_) y = printed_in_box(y);
+        for (const double value : {x, y, p.velocity.x(), p.velocity.y()}) {
             *out++ = ' ';
             out = format_ == NumberFormat::fixed8 ? write_fixed8(out, value) : write_shortest(out, value);
         }
@@ -71,18 +70,15 @@ void StateWriter::wrap_positions_into(double side) {
             "positive, not " +
             format_short(side));
     wrap_side_ = side;
+    // Only 8 decimals round up, and only a position within a printed place of the side.
+    if (format_ == NumberFormat::fixed8) wrap_from_ = side - 1e-8;
 }
 
-char* StateWriter::write_position(char* out, double value) const {
-    if (format_ == NumberFormat::shortest) return write_shortest(out, value);
-    char* const end = write_fixed8(out, value);
-    // Only a position within a printed place of the side can round up to it.
-    if (wrap_side_ > 0.0 && value >= wrap_side_ - 1e-8) {
-        double printed = 0.0;
-        std::from_chars(out, end, printed);
-        if (printed >= wrap_side_) return write_fixed8(out, 0.0);
-    }
-    return end;
+double StateWriter::printed_in_box(double position) const {
+    char text[max_fixed8_length + 1];
+    double printed = 0.0;
+    std::from_chars(text, write_fixed8(text, position), printed);
+    return printed >= wrap_side_ ? 0.0 : position;
 }
 
 void StateWriter::drain() {
