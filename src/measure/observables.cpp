@@ -23,6 +23,7 @@ namespace {
 // so refined; 64 cells a disk took longer, clearing and faulting in cells).
 constexpr double psi6_most_cell_mates = 16.0;
 constexpr double psi6_most_cells_per_disk = 16.0;
+constexpr double psi6_most_cells_a_side = 4096.0;  // 64 MiB of counts at most
 
 // What both boxes report of a pressure P: beta P (2r)^2 and Z = beta P A / N.
 struct Reported {
@@ -110,8 +111,9 @@ std::vector<std::complex<double>> local_hexatic_order(std::span<const Particle> 
     // empty box), so that a search looks at a few dozen disks, not thousands.
     const auto count = static_cast<std::uint32_t>(n);
     const int spread_side = UniformGrid::cells_per_side(side, 0.0, std::sqrt(static_cast<double>(n) / 4.0));
-    const int finest = std::max(
-        spread_side, static_cast<int>(std::min(65536.0, std::sqrt(psi6_most_cells_per_disk * static_cast<double>(n)))));
+    const int finest =
+        std::max(spread_side, static_cast<int>(std::min(psi6_most_cells_a_side,
+                                                        std::sqrt(psi6_most_cells_per_disk * static_cast<double>(n)))));
     const UniformGrid grid(side,
                            refined_for_crowding(side, count, binned_at, spread_side, finest, psi6_most_cell_mates));
     const int per_side = grid.per_side();
