@@ -207,7 +207,6 @@ Report check_output(const Scene& scene, LineSource& output, const StepCheckOptio
     std::vector<OnWall> previous_on_wall;
     std::int64_t loose_steps = 0, first_loose_step = 0;
     std::string first_loose_why;
-    std::int64_t judged_steps = 0;
     std::string first_unjudged_why;
     const auto compare = [&](std::int64_t step, const StepCheck& check) -> std::optional<Finding> {
         if (check.violation) {
@@ -221,7 +220,7 @@ Report check_output(const Scene& scene, LineSource& output, const StepCheckOptio
             }
         }
         if (check.judged) {
-            ++judged_steps;
+            ++report.steps_judged;
         } else if (first_unjudged_why.empty() && !check.within_rounding.empty()) {
             first_unjudged_why = check.within_rounding.front();
         }
@@ -243,13 +242,12 @@ Report check_output(const Scene& scene, LineSource& output, const StepCheckOptio
             previous_on_wall.swap(check.on_wall);
             report.steps_checked = step;
         }
-        report.steps_judged = judged_steps;
         const std::span<const Particle> last = previous;
         if (judge_counters) {
             if (auto wrong = check_counters(block, last, totals, steps)) return broken(report, *wrong);
         }
         if (auto wrong = block.expect_end(steps)) return broken(report, *wrong);
-        if (judged_steps == 0) {
+        if (report.steps_judged == 0) {
             // Every state was accepted: a wrong output would have passed as well.
             report.verdict = Verdict::no_verdict;
             report.reason =

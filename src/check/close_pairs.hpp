@@ -3,6 +3,7 @@
 // cells at least `reach` wide: the checker's candidate pairs at the start of
 // a step, and the overlaps it looks for in a printed state.
 
+#include "core/physics.hpp"
 #include "core/points_by_cell.hpp"
 #include "core/uniform_grid.hpp"
 #include "particlesim/particle.hpp"
@@ -24,7 +25,7 @@ enum class CloseIn { square, periodic_square };
 inline Vec2 separation_in(CloseIn space, double extent, const Vec2& a, const Vec2& b) {
     Vec2 d = b - a;
     if (space == CloseIn::periodic_square) {
-        for (int axis = 0; axis < 2; ++axis) d[axis] -= extent * std::nearbyint(d[axis] / extent);
+        for (int axis = 0; axis < 2; ++axis) d[axis] = nearest_image(d[axis], extent);
     }
     return d;
 }

@@ -234,11 +234,8 @@ StepCheck ExactStepCheck::check(const PrintedState& before, const PrintedState& 
         for (int axis = 0; axis < 2; ++axis) {
             const double lower = bounds_.lower[p].position[axis], upper = bounds_.upper[p].position[axis];
             double position = printed.position[axis];
-            if (boundary_ == Boundary::periodic) {  // the image nearest where the runs went
-                const double middle = 0.5 * (lower + upper);
-                if (position - middle > 0.5 * world_.box_size) position -= world_.box_size;
-                if (position - middle < -0.5 * world_.box_size) position += world_.box_size;
-            }
+            if (boundary_ == Boundary::periodic)  // the image nearest where the runs went
+                position = image_nearest(position, 0.5 * (lower + upper), world_.box_size);
             fine = fine && fits(position, lower, upper);
             fine =
                 fine && fits(printed.velocity[axis], bounds_.lower[p].velocity[axis], bounds_.upper[p].velocity[axis]);

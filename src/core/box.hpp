@@ -29,4 +29,10 @@ inline double contact_reach(const Box& box) {
     return std::sqrt(box.contact_dist_sq) * (1.0 + 0x1p-30) + 0x1p-36 * box.side;
 }
 
+// Whether a periodic box of this world holds `cells` cells a side, each at
+// least a contact reach wide (uniform_grid.hpp's periodic_cells_at_least).
+inline bool holds_contact_cells(const World& world, int cells) {
+    return !(world.box_size / cells < contact_reach(Box::of(world)));
+}
+
 }  // namespace particlesim

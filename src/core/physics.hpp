@@ -119,6 +119,15 @@ inline bool disks_overlap(const Vec2& dp, double contact_dist_sq) {
     return dp.dot(dp) < contact_dist_sq * (1.0 - overlap_tolerance);
 }
 
+// The image of `coordinate` a whole number of sides away that lies nearest
+// `reference`, in a periodic box of side `side`.
+inline double image_nearest(double coordinate, double reference, double side) {
+    return coordinate - side * std::round((coordinate - reference) / side);
+}
+
+// A separation along one axis of a periodic box, to the nearest image.
+inline double nearest_image(double separation, double side) { return image_nearest(separation, 0.0, side); }
+
 // A coordinate of a periodic box of side `side` wrapped into [0, side): a
 // hair below 0 that rounds up to `side` becomes 0.
 inline double wrap_into_periodic_box(double coordinate, double side) {

@@ -96,7 +96,7 @@ UniformGrid periodic_neighbour_grid(const World& world, int side) {
     const std::string at_least = std::to_string(periodic_cells_at_least);
     const std::string needs = "particlesim::ExactSimulation: a periodic box needs at least " + at_least +
                               " cells a side, each wider than a contact distance";
-    if (world.box_size / periodic_cells_at_least < reach) {
+    if (!holds_contact_cells(world, periodic_cells_at_least)) {
         throw std::invalid_argument(needs + " (2r and a margin for rounding, " + format_short(reach) +
                                     "): L must exceed " + at_least + " x " + format_short(reach) + " = " +
                                     format_short(periodic_cells_at_least * reach) + ", not " +

@@ -133,7 +133,7 @@ std::vector<std::complex<double>> local_hexatic_order(std::span<const Particle> 
     std::vector<Neighbour> found;
     // In a periodic box the rings wrap around the edges and every bond is the
     // nearest image's.
-    const auto nearest = [&](double d) { return periodic ? d - side * std::round(d / side) : d; };
+    const auto nearest = [&](double d) { return periodic ? nearest_image(d, side) : d; };
     for (std::uint32_t i = 0; i < n; ++i) {
         const Vec2 at = particles[i].position;
         const int cx = grid.column_of(in_box(at.x())), cy = grid.column_of(in_box(at.y()));

@@ -160,7 +160,7 @@ private:
     Vec2 separation(std::uint32_t i, std::uint32_t j) const {
         Vec2 d = position_at(j, now_) - position_at(i, now_);
         if (request_.periodic) {
-            for (int axis = 0; axis < 2; ++axis) d[axis] -= box_ * std::round(d[axis] / box_);
+            for (int axis = 0; axis < 2; ++axis) d[axis] = nearest_image(d[axis], box_);
         }
         return d;
     }

@@ -403,8 +403,9 @@ Scene periodic_crystal(const SceneFamilyOptions& o, std::size_t count) {
                                     format_short(fraction) + "; the densest that fits is " + format_short(densest));
     }
     // The exact engine's periodic box holds 5 cells of a contact distance (its own test).
-    const double reach = contact_reach(Box::of(World{box, r}));
-    if (!(box / periodic_cells_at_least >= reach)) {
+    const World world{box, r};
+    if (!holds_contact_cells(world, periodic_cells_at_least)) {
+        const double reach = contact_reach(Box::of(world));
         throw std::invalid_argument("particlesim::make_family_scene: a periodic box must be wider than " +
                                     std::to_string(periodic_cells_at_least) + " contact distances (" +
                                     format_short(periodic_cells_at_least * reach) + "), not " + format_short(box) +
