@@ -122,10 +122,9 @@ std::vector<std::complex<double>> local_hexatic_order(std::span<const Particle> 
     const double reach_per_ring = grid.cell_size() * (1.0 - 1e-9);
     const PointsByCell by_cell(grid, count, binned_at);
 
-    struct Neighbour {
+    struct Neighbour {  // the bond itself is made again for the six nearest only
         double distance_sq;
         std::uint32_t index;
-        Vec2 bond;
         bool operator<(const Neighbour& other) const {  // ties by index: the same six for any grid
             return distance_sq < other.distance_sq || (distance_sq == other.distance_sq && index < other.index);
         }
@@ -134,15 +133,17 @@ std::vector<std::complex<double>> local_hexatic_order(std::span<const Particle> 
     // In a periodic box the rings wrap around the edges and every bond is the
     // nearest image's.
     const auto nearest = [&](double d) { return periodic ? nearest_image(d, side) : d; };
+    const auto bond_to = [&](const Vec2& at, std::uint32_t j) {
+        const Vec2 d = particles[j].position - at;
+        return Vec2(nearest(d.x()), nearest(d.y()));
+    };
     for (std::uint32_t i = 0; i < n; ++i) {
         const Vec2 at = particles[i].position;
         const int cx = grid.column_of(in_box(at.x())), cy = grid.column_of(in_box(at.y()));
         const auto visit_cell = [&](int x, int y) {
             by_cell.for_each_in(x, y, [&](std::uint32_t j) {
                 if (j == i) return;
-                const Vec2 d = particles[j].position - at;
-                const Vec2 bond(nearest(d.x()), nearest(d.y()));
-                found.push_back({bond.squaredNorm(), j, bond});
+                found.push_back({bond_to(at, j).squaredNorm(), j});
             });
         };
         // The square of rings 0 to `ring` around the disk's cell is searched
@@ -177,7 +178,7 @@ std::vector<std::complex<double>> local_hexatic_order(std::span<const Particle> 
         }
         std::complex<double> psi(0.0, 0.0);
         for (int k = 0; k < 6; ++k) {
-            const Vec2 bond = found[static_cast<std::size_t>(k)].bond;
+            const Vec2 bond = bond_to(at, found[static_cast<std::size_t>(k)].index);
             const double length = std::sqrt(found[static_cast<std::size_t>(k)].distance_sq);
             if (!(length > 0.0)) continue;
             const std::complex<double> u(bond.x() / length, bond.y() / length);
