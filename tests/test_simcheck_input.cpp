@@ -73,6 +73,12 @@ void unreadable_lines_name_their_line() {
          "out.txt:1: the step is not a whole number"},
         {"0 -1 5.00000000 10.00000000 2.00000000 0.00000000\n", "out.txt:1: the particle index is not a whole number"},
         {"0 0 5.0000000\x01 10.00000000 2.00000000 0.00000000\n", "out.txt:1: x is not a finite number"},
+        // printf's "%+.8f": named as the sign it is, not as "not a number".
+        {"0 0 +5.00000000 10.00000000 2.00000000 0.00000000\n",
+         "out.txt:1: x = \"+5.00000000\" has a '+' sign, which io.md's numbers never carry"},
+        {"0 0 5.00000000 10.00000000 2.00000000 +0.00000000\n", "out.txt:1: vy = \"+0.00000000\" has a '+' sign"},
+        {"+0 0 5.00000000 10.00000000 2.00000000 0.00000000\n", "out.txt:1: the step = \"+0\" has a '+' sign"},
+        {"0 0 ++5.00000000 10.00000000 2.00000000 0.00000000\n", "out.txt:1: x is not a finite number"},
         {with_nul, "out.txt:1: "},
         {pair_output.substr(0, pair_output.rfind("1 0\n")) + "1 99999999999999999999\n",
          "out.txt:6: wc is not a whole number"},

@@ -5,6 +5,7 @@
 #include <cmath>
 #include <cstring>
 #include <stdexcept>
+#include <string>
 #include <string_view>
 #include <system_error>
 #include <vector>
@@ -44,6 +45,21 @@ OutputReader::OutputReader(std::FILE* in, std::string name) : in_(in), name_(std
 }
 
 // Refills the window of the input from the FILE in large blocks.
+namespace {
+
+// A number written with a sign the format never prints (printf's "%+.8f"):
+// readable to a person, but not io.md's form, so named as such rather than
+// as "not a number".
+bool has_plus_sign(std::string_view token) {
+    return token.size() > 1 && token.front() == '+' && token[1] != '+' && token[1] != '-';
+}
+
+std::string plus_sign_message(std::string_view what, std::string_view token) {
+    return std::string(what) + " = \"" + std::string(token) + "\" has a '+' sign, which io.md's numbers never carry";
+}
+
+}  // namespace
+
 bool OutputReader::fill() {
     if (begin_ > 0) {
         window_.erase(window_.begin(), window_.begin() + static_cast<std::ptrdiff_t>(begin_));
@@ -101,6 +117,7 @@ bool OutputReader::next(OutputLine& out) {
     const auto integer = [&](std::string_view token, auto& value, const char* what) {
         const auto [end, error] = std::from_chars(token.data(), token.data() + token.size(), value);
         if (error != std::errc() || end != token.data() + token.size()) {
+            if (has_plus_sign(token)) throw InputError(line_, plus_sign_message(what, token));
             throw InputError(line_, std::string(what) + " is not a whole number: \"" + std::string(token) + "\"");
         }
     };
@@ -118,6 +135,7 @@ bool OutputReader::next(OutputLine& out) {
         const std::string_view token = tokens[k + 2];
         const auto [end, error] = std::from_chars(token.data(), token.data() + token.size(), values[k]);
         if (error != std::errc() || end != token.data() + token.size() || !std::isfinite(values[k])) {
+            if (has_plus_sign(token)) throw InputError(line_, plus_sign_message(names[k], token));
             throw InputError(line_, std::string(names[k]) + " is not a finite number: \"" + std::string(token) + "\"");
         }
         if (format_ == NumberFormat::fixed8 && !is_fixed8(token)) {
