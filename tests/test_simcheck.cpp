@@ -575,7 +575,7 @@ void every_family_checks_cleanly() {
         {{"compressed", "-n", "300", "--fraction", "0.89", "--growth-rate", "0.3"}, "jammed at area fraction"},
         {{"compressed", "-n", "10", "--boundary", "periodic"}, "at least 5 diameters wide"},
         {{"compressed", "--growth-rate", "0"}, "growth rate"},
-        {{"crystal", "--fraction", "0.95"}, "area fraction"},
+        {{"crystal", "--fraction", "0.95"}, "simgen: crystal: the area fraction must be in (0, 0.90689968"},
         {{"fast", "-r", "0"}, "the radius must lie in [1e-60, 1e60] (the accepted range), not 0"},
         {{"gas", "-r", "-1"}, "the radius must lie in [1e-60, 1e60] (the accepted range), not -1"},
         {{"line", "-n", "1000", "-L", "10"}, "1000 disks 4r apart in a row need L >= 4 r N = 4000, not 10"},
@@ -598,6 +598,8 @@ void every_family_checks_cleanly() {
         CHECK(no.out.empty());
         CHECK(no.err.find(why) != std::string::npos);
         CHECK_EQ(std::count(no.err.begin(), no.err.end(), '\n'), 1);
+        // The family that refused is named; the library function that refused is not.
+        CHECK(no.err.find("particlesim::") == std::string::npos);
     }
     // A suite directory that cannot be made (a file stands there): a failure while running, in one line.
     const std::string file = work_dir() + "/a-file";

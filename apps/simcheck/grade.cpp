@@ -1,6 +1,7 @@
 #include "grade.hpp"
 
 #include "command_line.hpp"
+#include "common/library_message.hpp"
 
 #include "judge.hpp"
 #include "own_user.hpp"
@@ -683,7 +684,7 @@ int grade_main(int argc, char** argv) {
                     break;
                 } catch (const std::exception& e) {
                     const std::lock_guard<std::mutex> lock(failure_lock);
-                    failure = cases[k].name + ": " + e.what();
+                    failure = cases[k].name + ": " + apps_common::without_library_names(e.what());
                 }
             }
         };
@@ -719,10 +720,10 @@ int grade_main(int argc, char** argv) {
         }
         return conforming == static_cast<int>(rows.size()) ? 0 : 1;
     } catch (const BadUsage& e) {
-        std::fprintf(stderr, "simcheck grade: %s\n", e.what());
+        std::fprintf(stderr, "simcheck grade: %s\n", apps_common::without_library_names(e.what()).c_str());
         return 2;
     } catch (const std::exception& e) {
-        std::fprintf(stderr, "simcheck grade: %s\n", e.what());
+        std::fprintf(stderr, "simcheck grade: %s\n", apps_common::without_library_names(e.what()).c_str());
         return 2;
     }
 }

@@ -1,5 +1,7 @@
 #include "judge.hpp"
 
+#include "common/library_message.hpp"
+
 #include "output_shape.hpp"
 
 #include "particlesim/output_reader.hpp"
@@ -31,7 +33,7 @@ Report checked(const particlesim::Scene& scene, LineSource& lines, const particl
     } catch (const std::exception& e) {
         Report report;
         report.verdict = Verdict::no_verdict;
-        report.reason = e.what();
+        report.reason = apps_common::without_library_names(e.what());
         return report;
     }
 }

@@ -7,6 +7,7 @@
 
 #include "command_line.hpp"
 #include "common/input_path.hpp"
+#include "common/library_message.hpp"
 #include "common/standard_streams.hpp"
 #include "grade.hpp"
 #include "judge.hpp"
@@ -233,11 +234,11 @@ int main(int argc, char** argv) {
         if (!args) return exit_conforms;
         return run(*args);
     } catch (const BadUsage& e) {
-        if (json) write_json_unreadable(stdout, e.what());
-        std::fprintf(stderr, "simcheck: %s\n", e.what());
+        if (json) write_json_unreadable(stdout, apps_common::without_library_names(e.what()));
+        std::fprintf(stderr, "simcheck: %s\n", apps_common::without_library_names(e.what()).c_str());
         return exit_bad_input;
     } catch (const std::exception& e) {
-        std::fprintf(stderr, "simcheck: %s\n", e.what());
+        std::fprintf(stderr, "simcheck: %s\n", apps_common::without_library_names(e.what()).c_str());
         return exit_bad_input;
     }
 }

@@ -2,6 +2,7 @@
 
 #include "checkpoint.hpp"
 #include "cli_options.hpp"
+#include "common/library_message.hpp"
 #include "first_part.hpp"
 #include "interruptible_output.hpp"
 #include "interrupts.hpp"
@@ -72,7 +73,8 @@ struct Stop {
 // A failure only this rank has, in the middle of a collective step: nothing
 // can be agreed any more, so the whole run is stopped.
 [[noreturn]] void abort_run(MPI_Comm comm, int rank, const char* what) {
-    std::fprintf(stderr, "simcli: rank %d: %s; stopping every rank\n", rank, what);
+    std::fprintf(stderr, "simcli: rank %d: %s; stopping every rank\n", rank,
+                 apps_common::without_library_names(what).c_str());
     std::fflush(stderr);
     MPI_Abort(comm, exit_failure);
     std::abort();
@@ -306,7 +308,9 @@ private:
             return make();
         } catch (const std::invalid_argument& e) {
             const std::string prefix = options_.resume_path ? *options_.resume_path + ": " : std::string();
-            if (on_root()) std::fprintf(stderr, "simcli: %s%s\n", prefix.c_str(), e.what());
+            if (on_root())
+                std::fprintf(stderr, "simcli: %s%s\n", prefix.c_str(),
+                             apps_common::without_library_names(e.what()).c_str());
             throw Stop{exit_bad_input};
         }
     }
@@ -464,7 +468,7 @@ int run_ranks(int argc, char** argv, MPI_Comm comm) {
         if (options) refuse_on_ranks(*options, ranks);
     } catch (const BadInput& e) {
         // Every rank parsed the same arguments: all refuse, rank 0 says why.
-        if (rank == root) std::fprintf(stderr, "simcli: %s\n", e.what());
+        if (rank == root) std::fprintf(stderr, "simcli: %s\n", apps_common::without_library_names(e.what()).c_str());
         return exit_bad_input;
     }
     if (!options) return 0;

@@ -6,6 +6,7 @@
 #include "animation.hpp"
 #include "checkpoint.hpp"
 #include "cli_options.hpp"
+#include "common/library_message.hpp"
 #include "common/standard_streams.hpp"
 #include "distributed_run.hpp"
 #include "first_part.hpp"
@@ -420,13 +421,13 @@ int run_one_process(int argc, char** argv) {
     try {
         return run_cli(argc, argv);
     } catch (const BadInput& e) {
-        std::fprintf(stderr, "simcli: %s\n", e.what());
+        std::fprintf(stderr, "simcli: %s\n", apps_common::without_library_names(e.what()).c_str());
         return exit_bad_input;
     } catch (const Interrupted& e) {
-        std::fprintf(stderr, "simcli: %s\n", e.what());
+        std::fprintf(stderr, "simcli: %s\n", apps_common::without_library_names(e.what()).c_str());
         return 128 + e.signal();
     } catch (const std::exception& e) {  // OutputError, TooManyEvents and any other failure while running
-        std::fprintf(stderr, "simcli: %s\n", e.what());
+        std::fprintf(stderr, "simcli: %s\n", apps_common::without_library_names(e.what()).c_str());
         return exit_failure;
     }
 }

@@ -3,6 +3,7 @@
 //   simgen suite DIR          a graded suite with expected outputs and a manifest
 // Thin by design: the families live in the library (scene_families.hpp).
 
+#include "common/library_message.hpp"
 #include "common/standard_streams.hpp"
 #include "suite.hpp"
 
@@ -189,9 +190,9 @@ int run(int argc, char** argv) {
     try {
         scene = make_family_scene(*family, options);
     } catch (const std::invalid_argument& e) {
-        throw BadUsage(e.what());
+        throw BadUsage(first + ": " + e.what());
     } catch (const SceneTooFull& e) {
-        throw BadUsage(e.what());
+        throw BadUsage(first + ": " + e.what());
     }
     write_scene(std::cout, scene);
     std::cout.flush();
@@ -210,13 +211,13 @@ int main(int argc, char** argv) {
     try {
         return run(argc, argv);
     } catch (const BadUsage& e) {
-        std::fprintf(stderr, "simgen: %s\n", e.what());
+        std::fprintf(stderr, "simgen: %s\n", apps_common::without_library_names(e.what()).c_str());
         return exit_bad_usage;
     } catch (const std::bad_alloc&) {
         std::fprintf(stderr, "simgen: not enough memory for the scene asked for\n");
         return exit_failure;
     } catch (const std::exception& e) {
-        std::fprintf(stderr, "simgen: %s\n", e.what());
+        std::fprintf(stderr, "simgen: %s\n", apps_common::without_library_names(e.what()).c_str());
         return exit_failure;
     }
 }
