@@ -68,10 +68,17 @@ std::vector<Particle> make_random_particles(std::size_t count, const World& worl
     const SpeedRange speeds = options.speeds.value_or(default_speed_range(world));
     require_valid_scene("particlesim::make_random_particles", world, {});
     if (!(0.0 <= speeds.min && speeds.min <= speeds.max && speeds.max <= max_magnitude)) {
-        throw std::invalid_argument(
-            "particlesim::make_random_particles: speed range must satisfy 0 <= min <= max <= 1e60 (the accepted "
-            "range); the default range reaches L/(8r) = " +
-            format_brief(default_speed_range(world).max));
+        // Name the range that was refused: the caller's, or the default one, which reaches L/(8r).
+        std::string message = "particlesim::make_random_particles: the speed range ";
+        if (!options.speeds) message += "by default, [0, L/(8r)] = ";
+        message += '[';
+        message += format_brief(speeds.min);
+        message += ", ";
+        message += format_brief(speeds.max);
+        message += ']';
+        if (!options.speeds) message += ",";
+        message += " must satisfy 0 <= min <= max <= 1e60 (the accepted range)";
+        throw std::invalid_argument(message);
     }
     const Box box = Box::of(world);
     const double area_fraction =
