@@ -5,10 +5,9 @@
 # checks compiled in (any report fails the run). The Release pass also
 # cross-checks the bytes on aarch64 under qemu, runs the parallel stages under
 # ThreadSanitizer (clang's OpenMP) and fuzzes for 10 seconds.
-# 8 min 33 s to 9 min 21 s (three runs; up to 10 min 27 s in a slow hour) from a clean clone on one host of the
-# project's 2-core machine with the tools already installed (OpenMPI's tests included), 16.1 to 17.6 min of CPU time
-# for the same work, a quarter of it in the kernel (a first touch of memory is slow there); installing the tools on
-# a fresh machine comes on top (1 min 24 s).
+# 9 min 54 s and 10 min 26 s (two runs) from a clean clone on one host of the project's 2-core machine with the
+# tools already installed (OpenMPI's tests included), 18.6 and 19.6 min of CPU time, a quarter of it in the kernel
+# (a first touch of memory is slow there); installing the tools on a fresh machine comes on top (1 min 24 s).
 set -euo pipefail
 cd "$(dirname "$0")/.."
 scripts/ensure-deps.sh clang-format
