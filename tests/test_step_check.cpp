@@ -12,6 +12,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <optional>
 #include <random>
 #include <stdexcept>
 #include <string>
@@ -292,6 +293,66 @@ void perf_run() {
     CHECK(!run.undecided_from);
     CHECK_EQ(run.lower[0].position.x(), 1.0);  // x = 5, then bounced: 5 -> 3 -> 1 (stopped on the wall)
     CHECK_EQ(run.collisions[0].particle_min, 1U);
+    CHECK_EQ(run.steps, 3);
+
+    // A perf-mode output's last block against the run: the run's own state
+    // passes, in %.8f too; a coordinate 1e-6 off is caught at its particle,
+    // with the run's state as the expected one.
+    const std::vector<Particle> final_state = run.lower;
+    CHECK(!checker.final_state_violation(run, {final_state, 0.0}));
+    CHECK(!checker.final_state_violation(run, {final_state, fixed8_uncertainty}));
+    std::vector<Particle> off = final_state;
+    off[1].position.y() += 1e-6;
+    const std::optional<RuleViolation> caught = checker.final_state_violation(run, {off, fixed8_uncertainty});
+    CHECK(caught && caught->particle == 1);
+    CHECK(caught && caught->what ==
+                        "particle 1: the final state is not where the rules take it after 3 steps "
+                        "(every decision on the way is decided)");
+    CHECK(caught && caught->expected.position == final_state[1].position);
+    CHECK(caught && caught->printed.position == off[1].position);
+    off = final_state;
+    off[0].velocity.x() = -off[0].velocity.x();  // a wall hit the other way
+    CHECK(checker.final_state_violation(run, {off, fixed8_uncertainty}).has_value());
+    off = final_state;
+    off[1].position.y() += 3e-9;  // within the printing
+    CHECK(!checker.final_state_violation(run, {off, fixed8_uncertainty}));
+
+    // What cannot be compared throws: a run that went more than one way,
+    // a state of another size, an uncertainty that is no distance.
+    const auto refusal = [&](const StepChecker::Run& compared, const PrintedState& state) {
+        try {
+            (void)checker.final_state_violation(compared, state);
+        } catch (const std::invalid_argument& e) {
+            return std::string(e.what());
+        }
+        return std::string();
+    };
+    StepChecker::Run undecided = run;
+    undecided.undecided_from = 2;
+    CHECK_EQ(refusal(undecided, {final_state, 0.0}),
+             "StepChecker::final_state_violation: the run may go more than one way from step 2, so no final state "
+             "is certain");
+    CHECK_EQ(refusal(run, {std::vector{final_state[0]}, 0.0}),
+             "StepChecker::final_state_violation: the run has 2 particles and the final state 1");
+    CHECK_EQ(refusal(run, {final_state, -1.0}),
+             "StepChecker: the state after the step has an uncertainty that is not a distance in [0, 1e60]: -1");
+}
+
+// In a periodic box the final state is compared at the image nearest the
+// run's bounds: a disk at x = 10 moving 10 a step ends one step later on the
+// edge, x = 20, printed as its image 0.
+void perf_run_across_the_periodic_edge() {
+    StepChecker checker(World{20, 1.0}, {.rules = CheckedRules::exact, .boundary = Boundary::periodic});
+    const StepChecker::Run run = checker.run({std::vector{disk(10, 10, 10, 0)}, 0.0}, 1);
+    CHECK(!run.undecided_from);
+    const double end = run.lower[0].position.x();
+    CHECK(std::fabs(end - 20.0) < 1e-9 || std::fabs(end) < 1e-9);  // either side of the edge, within the run's rounding
+    CHECK(!checker.final_state_violation(run, {std::vector{disk(0, 10, 10, 0)}, fixed8_uncertainty}));
+    CHECK(!checker.final_state_violation(run, {std::vector{disk(19.999999999, 10, 10, 0)}, fixed8_uncertainty}));
+    const std::optional<RuleViolation> half_off =
+        checker.final_state_violation(run, {std::vector{disk(0.5, 10, 10, 0)}, fixed8_uncertainty});
+    CHECK(half_off && half_off->particle == 0);
+    CHECK(checker.final_state_violation(run, {std::vector{disk(19.5, 10, 10, 0)}, fixed8_uncertainty}).has_value());
 }
 
 // What the caller says of a printing is checked too: an uncertainty that is
@@ -404,6 +465,7 @@ int main(int argc, char** argv) {
                        {"outside the box", outside_the_box},
                        {"exact rules", exact_rules},
                        {"perf run", perf_run},
+                       {"perf run across the periodic edge", perf_run_across_the_periodic_edge},
                        {"printings are checked", printings_are_checked},
                        {"close pairs against every pair", close_pairs_against_every_pair}});
 }

@@ -280,33 +280,9 @@ Report check_output(const Scene& scene, LineSource& output, const StepCheckOptio
         return report;
     }
     const std::vector<Particle>& last = block.particles();
-    for (std::size_t i = 0; i < count; ++i) {
-        const Particle& p = last[i];
-        bool fine = true;
-        for (int axis = 0; axis < 2; ++axis) {
-            const auto inside = [&](double value, double low, double high) {
-                return low - slack(value, report.uncertainty) <= value &&
-                       value <= high + slack(value, report.uncertainty);
-            };
-            const double low = run.lower[i].position[axis], high = run.upper[i].position[axis];
-            double position = p.position[axis];
-            if (options.boundary == Boundary::periodic) {  // the image nearest where the runs went
-                const double middle = 0.5 * (low + high), side = scene.world.box_size;
-                position -= side * std::round((position - middle) / side);
-            }
-            fine = fine && inside(position, low, high);
-            fine = fine && inside(p.velocity[axis], run.lower[i].velocity[axis], run.upper[i].velocity[axis]);
-        }
-        if (!fine) {
-            Particle expected;
-            expected.position = 0.5 * (run.lower[i].position + run.upper[i].position);
-            expected.velocity = 0.5 * (run.lower[i].velocity + run.upper[i].velocity);
-            return broken(report, Finding{steps, block.line_of(i),
-                                          "particle " + std::to_string(i) +
-                                              ": the final state is not where the rules take it after " +
-                                              std::to_string(steps) + " steps (every decision on the way is decided)",
-                                          expected, p});
-        }
+    if (auto violation = checker.final_state_violation(run, {last, report.uncertainty})) {
+        return broken(report, Finding{steps, block.line_of(violation->particle), violation->what, violation->expected,
+                                      violation->printed});
     }
     if (judge_counters) {
         if (auto wrong = check_counters(block, last, run.collisions, steps)) return broken(report, *wrong);

@@ -127,8 +127,20 @@ public:
         std::vector<CollisionRange> collisions;  // totals over the run
         std::optional<std::int64_t> undecided_from;
         std::string undecided_why;
+        std::int64_t steps = 0;  // as asked of run()
     };
     [[nodiscard]] Run run(const PrintedState& start, std::int64_t steps);
+
+    // Whether `final_state` (a perf-mode output's last block) is where `run`
+    // (run() from the output's first block) takes the start: the first
+    // particle outside the run's bounds, within the final state's
+    // uncertainty, or none. In a periodic box a position is compared at its
+    // image nearest the bounds. Throws std::invalid_argument when the run
+    // went more than one way (undecided_from: no final state is certain),
+    // when the two hold different numbers of particles, and for an
+    // uncertainty as check() does.
+    [[nodiscard]] std::optional<RuleViolation> final_state_violation(const Run& run,
+                                                                     const PrintedState& final_state) const;
 
 private:
     class Impl;

@@ -3,6 +3,7 @@
 #include "check/exact_step_check.hpp"
 #include "check/uncertain_step.hpp"
 #include "core/box.hpp"
+#include "core/physics.hpp"
 #include "input/options_check.hpp"
 #include "input/scene_checks.hpp"
 #include "io/number_format.hpp"
@@ -91,8 +92,13 @@ public:
         if (steps < 0)
             throw std::invalid_argument("StepChecker::run: steps must be >= 0, not " + std::to_string(steps));
         require_printed_state(start);
-        if (options_.rules == CheckedRules::exact) return exact_.run(start, steps);
+        if (options_.rules == CheckedRules::exact) {
+            Run result = exact_.run(start, steps);
+            result.steps = steps;
+            return result;
+        }
         Run result;
+        result.steps = steps;
         const std::size_t count = start.particles.size();
         state_.resize(count);
         for (std::size_t p = 0; p < count; ++p) state_[p] = uncertain_particle(start.particles[p], start.uncertainty);
@@ -112,6 +118,52 @@ public:
             result.upper[p].velocity = Vec2(state_[p].vx.hi, state_[p].vy.hi);
         }
         return result;
+    }
+
+    std::optional<RuleViolation> final_state_violation(const Run& run, const PrintedState& final_state) const {
+        require_printing(final_state, "after");
+        if (run.undecided_from) {
+            throw std::invalid_argument(
+                "StepChecker::final_state_violation: the run may go more than one way from "
+                "step " +
+                std::to_string(*run.undecided_from) + ", so no final state is certain");
+        }
+        if (final_state.particles.size() != run.lower.size() || run.upper.size() != run.lower.size()) {
+            throw std::invalid_argument("StepChecker::final_state_violation: the run has " +
+                                        std::to_string(run.lower.size()) + " particles and the final state " +
+                                        std::to_string(final_state.particles.size()));
+        }
+        const auto inside = [&](double value, double low, double high) {
+            const double slack = tolerance(value, final_state.uncertainty);
+            return low - slack <= value && value <= high + slack;
+        };
+        for (std::uint32_t i = 0; i < final_state.particles.size(); ++i) {
+            const Particle& printed = final_state.particles[i];
+            const Particle& low = run.lower[i];
+            const Particle& high = run.upper[i];
+            bool fine = true;
+            for (int axis = 0; axis < 2 && fine; ++axis) {
+                double position = printed.position[axis];
+                if (options_.boundary == Boundary::periodic) {  // the image nearest where the run went
+                    position =
+                        image_nearest(position, 0.5 * (low.position[axis] + high.position[axis]), world_.box_size);
+                }
+                fine = inside(position, low.position[axis], high.position[axis]) &&
+                       inside(printed.velocity[axis], low.velocity[axis], high.velocity[axis]);
+            }
+            if (!fine) {
+                RuleViolation violation;
+                violation.particle = i;
+                violation.what = "particle " + std::to_string(i) +
+                                 ": the final state is not where the rules take it after " + std::to_string(run.steps) +
+                                 " steps (every decision on the way is decided)";
+                violation.expected.position = 0.5 * (low.position + high.position);
+                violation.expected.velocity = 0.5 * (low.velocity + high.velocity);
+                violation.printed = printed;
+                return violation;
+            }
+        }
+        return std::nullopt;
     }
 
 private:
@@ -794,5 +846,9 @@ StepCheck StepChecker::check(const PrintedState& before, const PrintedState& aft
 }
 
 StepChecker::Run StepChecker::run(const PrintedState& start, std::int64_t steps) { return impl_->run(start, steps); }
+
+std::optional<RuleViolation> StepChecker::final_state_violation(const Run& run, const PrintedState& final_state) const {
+    return impl_->final_state_violation(run, final_state);
+}
 
 }  // namespace particlesim
