@@ -9,6 +9,7 @@
 #include "disk.hpp"
 #include "run_process.hpp"
 
+#include "particlesim/accuracy.hpp"
 #include "particlesim/exact_simulation.hpp"
 #include "particlesim/observables.hpp"
 #include "particlesim/scene_families.hpp"
@@ -16,6 +17,7 @@
 #include <algorithm>
 #include <cmath>
 #include <complex>
+#include <filesystem>
 #include <numbers>
 #include <sstream>
 #include <stdexcept>
@@ -292,8 +294,9 @@ void what_cannot_be_measured_is_refused() {
         "the box size must be finite and positive");
     refused([&] { return hexatic_order(gas.particles, gas.world, static_cast<Boundary>(9)); },
             "particlesim::local_hexatic_order: boundary must be Boundary::walls or Boundary::periodic, not 9");
-    refused([&] { return box_pressure(gas.world, static_cast<Boundary>(9), 200, 1.0, CollisionSums{}, 1.0); },
-            "particlesim::box_pressure: boundary must be");
+    refused(
+        [&] { return box_pressure(gas.world, static_cast<Boundary>(9), 200, 1.0, Vec2::Zero(), CollisionSums{}, 1.0); },
+        "particlesim::box_pressure: boundary must be");
 }
 
 void block_averages_of_known_series() {
@@ -332,6 +335,90 @@ void block_averages_of_known_series() {
         CHECK_EQ(s.error, std::ldexp(unscaled.error, exponent));
         CHECK_EQ(scaled_by(exponent, 20).mean, std::ldexp(few.mean, exponent));
     }
+}
+
+// A periodic box that drifts has the pressure of one at rest: kT counts the
+// motion in the centre of mass's frame (with its 2N - 2 degrees of freedom).
+void a_drifting_periodic_box_has_the_same_pressure() {
+    // On paper: two disks moving together carry no heat (nothing to
+    // measure: all zero); two moving apart at 1 have E = 1 and P = 0, so kT = 1.
+    const World world{20.0, 1.0};
+    const CollisionSums none{};
+    const Pressure together = periodic_box_pressure(world, 2, 1.0, Vec2(2.0, 0.0), none, 1.0);
+    CHECK_EQ(together.kT, 0.0);
+    CHECK_EQ(together.Z, 0.0);
+    const Pressure apart = periodic_box_pressure(world, 2, 1.0, Vec2::Zero(), none, 1.0);
+    CHECK_EQ(apart.kT, 1.0);
+    CHECK_EQ(apart.Z, 1.0);  // no collisions: the ideal gas
+
+    // A crystal's run in a periodic box, and the same run boosted by V: the
+    // same collisions to rounding, the same kT and Z.
+    SceneFamilyOptions options;
+    options.particles = 120;
+    options.area_fraction = 0.6;
+    options.boundary = Boundary::periodic;
+    const Scene scene = make_family_scene(SceneFamily::crystal, options);
+    const Vec2 drift(0.7, -0.3);
+    std::vector<Particle> boosted = scene.particles;
+    for (Particle& p : boosted) p.velocity += drift;
+    ExactOptions periodic;
+    periodic.boundary = Boundary::periodic;
+    ExactSimulation at_rest(scene.world, scene.particles, periodic);
+    ExactSimulation drifting(scene.world, boosted, periodic);
+    for (int s = 0; s < 3; ++s) {
+        at_rest.step();
+        drifting.step();
+    }
+    const auto pressure_of = [&](const ExactSimulation& engine) {
+        return periodic_box_pressure(scene.world, scene.particles.size(), total_kinetic_energy(engine.particles()),
+                                     total_momentum(engine.particles()), engine.collision_sums(), 3.0);
+    };
+    const Pressure rest = pressure_of(at_rest);
+    const Pressure moving = pressure_of(drifting);
+    check::Context context("Z at rest ", rest.Z, ", drifting ", moving.Z);
+    CHECK(rest.Z > 1.5);  // a dense crystal: far from the ideal gas
+    CHECK(std::abs(moving.kT - rest.kT) <= 1e-9 * rest.kT);
+    CHECK(std::abs(moving.Z - rest.Z) <= 1e-9 * rest.Z);
+    // The drift's momentum is the boosted state's, conserved by the box.
+    const Vec2 momentum = total_momentum(drifting.particles());
+    CHECK(std::abs(momentum.x() - 120 * 0.7) < 1e-9 && std::abs(momentum.y() + 120 * 0.3) < 1e-9);
+
+    // simcli's observables file: the same Z for the drifting scene.
+    const std::string simcli = SIMCLI_PATH;
+    char dir_template[] = "/tmp/particlesim-drift-XXXXXX";
+    const std::string dir = mkdtemp(dir_template);
+    const auto z_column = [&](const std::vector<Particle>& particles, const std::string& name) {
+        Scene written = scene;
+        written.particles = particles;
+        written.steps = 3;
+        std::ostringstream text;
+        write_scene(text, written);
+        const std::string csv = dir + "/" + name + ".csv";
+        const run_process::Result r = run_process::run(
+            simcli, {"--engine", "exact", "--boundary", "periodic", "--observables", csv, "-o", "/dev/null"},
+            text.str());
+        CHECK_EQ(r.status, 0);
+        std::istringstream rows(run_process::slurp(csv));
+        std::string line;
+        std::getline(rows, line);
+        std::vector<double> z;
+        while (std::getline(rows, line)) {
+            std::istringstream fields(line);
+            std::string field;
+            for (int k = 0; k <= 6; ++k) std::getline(fields, field, ',');
+            z.push_back(std::stod(field));
+        }
+        return z;
+    };
+    const std::vector<double> z_rest = z_column(scene.particles, "rest");
+    const std::vector<double> z_moving = z_column(boosted, "moving");
+    CHECK_EQ(z_rest.size(), 3U);
+    CHECK_EQ(z_moving.size(), z_rest.size());
+    for (std::size_t k = 0; k < std::min(z_rest.size(), z_moving.size()); ++k) {
+        CHECK(z_rest[k] > 1.5);
+        CHECK(std::abs(z_moving[k] - z_rest[k]) <= 1e-9 * z_rest[k]);
+    }
+    std::filesystem::remove_all(dir);
 }
 
 void simcli_observables_file() {
@@ -388,5 +475,6 @@ int main(int argc, char** argv) {
                        {"hexatic order against every pair", hexatic_order_against_every_pair},
                        {"what cannot be measured is refused", what_cannot_be_measured_is_refused},
                        {"block averages of known series", block_averages_of_known_series},
+                       {"a drifting periodic box has the same pressure", a_drifting_periodic_box_has_the_same_pressure},
                        {"simcli observables file", simcli_observables_file}});
 }

@@ -146,7 +146,9 @@ void pressure_against_henderson() {
         for (int k = 0; k < 10; ++k) engine.step();
         double kinetic = 0.0;
         for (const Particle& p : engine.particles()) kinetic += 0.5 * p.velocity.squaredNorm();
-        z.push_back(periodic_box_pressure(scene.world, 400, kinetic, engine.collision_sums() - before, 10.0).Z);
+        z.push_back(periodic_box_pressure(scene.world, 400, kinetic, total_momentum(engine.particles()),
+                                          engine.collision_sums() - before, 10.0)
+                        .Z);
         before = engine.collision_sums();
     }
     const MeanWithError measured = block_average(z);

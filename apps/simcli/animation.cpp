@@ -172,9 +172,9 @@ void Animation::add_order(double time, std::span<const Particle> particles, doub
     double pressure = std::numeric_limits<double>::quiet_NaN();
     if (sums && last_sums_ && time > last_time_) {
         const particlesim::CollisionSums interval = *sums - *last_sums_;
-        pressure =
-            particlesim::box_pressure(world_, boundary_, particles.size(), kinetic_energy, interval, time - last_time_)
-                .betaP_d2;
+        pressure = particlesim::box_pressure(world_, boundary_, particles.size(), kinetic_energy,
+                                             particlesim::total_momentum(particles), interval, time - last_time_)
+                       .betaP_d2;
     }
     pressure_.push_back(pressure);
     if (sums) last_sums_ = *sums;

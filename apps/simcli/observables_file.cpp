@@ -43,7 +43,8 @@ void ObservablesFile::write_row(std::int64_t step, std::span<const particlesim::
     for (const particlesim::Particle& p : particles) kinetic += 0.5 * p.velocity.squaredNorm();
     const double duration = static_cast<double>(step - previous_step_);
     const particlesim::Pressure pressure =
-        particlesim::box_pressure(world_, boundary_, particles.size(), kinetic, sums - previous_sums_, duration);
+        particlesim::box_pressure(world_, boundary_, particles.size(), kinetic, particlesim::total_momentum(particles),
+                                  sums - previous_sums_, duration);
     text_.clear();
     text_ += std::to_string(step) + ',';
     append_shortest(text_, static_cast<double>(step));

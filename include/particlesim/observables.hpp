@@ -6,8 +6,9 @@
 // Conventions (docs/physics.md): mass 1; in a walled box the centres move in
 // the square of side L - 2r, whose area A = (L - 2r)^2 enters both routes, and
 // total momentum is not conserved (the walls take it), so all 2N degrees of
-// freedom are thermal: kT = E_kin / N. In a periodic box A = L^2 and
-// kT = E_kin / (N - 1).
+// freedom are thermal: kT = E_kin / N. In a periodic box A = L^2 and the
+// total momentum P is conserved: the centre of mass's motion is not thermal,
+// and kT = (E_kin - |P|^2 / 2N) / (N - 1), the same for a box that drifts.
 
 #include "particlesim/particle.hpp"
 #include "particlesim/world.hpp"
@@ -51,14 +52,19 @@ Pressure walled_box_pressure(const World& world, std::size_t count, double kinet
 
 // The same in a periodic box (ExactOptions::boundary): the virial route
 // alone (no walls; the walls' fields stay 0), with A = L^2 and, as the total
-// momentum is conserved, kT = E_kin / (N - 1).
-Pressure periodic_box_pressure(const World& world, std::size_t count, double kinetic_energy, const CollisionSums& sums,
-                               double duration);
+// momentum (`total_momentum`, conserved) is not thermal,
+// kT = (E_kin - |P|^2 / 2N) / (N - 1): the state in its centre of mass's frame.
+Pressure periodic_box_pressure(const World& world, std::size_t count, double kinetic_energy, const Vec2& total_momentum,
+                               const CollisionSums& sums, double duration);
 
 // The one of the two above that the boundary calls for (std::invalid_argument
-// for a Boundary that names neither box).
+// for a Boundary that names neither box); the walled box ignores the
+// momentum, which its walls do not conserve.
 Pressure box_pressure(const World& world, Boundary boundary, std::size_t count, double kinetic_energy,
-                      const CollisionSums& sums, double duration);
+                      const Vec2& total_momentum, const CollisionSums& sums, double duration);
+
+// The sum of the particles' velocities (mass 1), for the periodic box's kT.
+Vec2 total_momentum(std::span<const Particle> particles);
 
 // |<psi6>|: the mean over disks of (1/6) sum over its six nearest neighbours
 // of exp(6 i theta), theta the bond's angle. Six nearest rather than Voronoi

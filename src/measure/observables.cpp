@@ -72,13 +72,14 @@ Pressure walled_box_pressure(const World& world, std::size_t count, double kinet
     return p;
 }
 
-Pressure periodic_box_pressure(const World& world, std::size_t count, double kinetic_energy, const CollisionSums& sums,
-                               double duration) {
+Pressure periodic_box_pressure(const World& world, std::size_t count, double kinetic_energy, const Vec2& total_momentum,
+                               const CollisionSums& sums, double duration) {
     Pressure p;
     if (count < 2 || !(duration > 0.0)) return p;
     const double n = static_cast<double>(count);
     const double area = world.box_size * world.box_size;
-    p.kT = kinetic_energy / (n - 1.0);
+    const double centre_of_mass_energy = total_momentum.squaredNorm() / (2.0 * n);
+    p.kT = (kinetic_energy - centre_of_mass_energy) / (n - 1.0);
     if (!(p.kT > 0.0)) return p;
     const Reported virial = reported(virial_pressure(n, p.kT, area, sums, duration), p.kT, area, n, world);
     p.betaP_d2 = virial.betaP_d2;
@@ -87,10 +88,17 @@ Pressure periodic_box_pressure(const World& world, std::size_t count, double kin
 }
 
 Pressure box_pressure(const World& world, Boundary boundary, std::size_t count, double kinetic_energy,
-                      const CollisionSums& sums, double duration) {
+                      const Vec2& total_momentum, const CollisionSums& sums, double duration) {
     OptionsCheck("particlesim::box_pressure").known_boundary("boundary", boundary);
-    return boundary == Boundary::periodic ? periodic_box_pressure(world, count, kinetic_energy, sums, duration)
-                                          : walled_box_pressure(world, count, kinetic_energy, sums, duration);
+    return boundary == Boundary::periodic
+               ? periodic_box_pressure(world, count, kinetic_energy, total_momentum, sums, duration)
+               : walled_box_pressure(world, count, kinetic_energy, sums, duration);
+}
+
+Vec2 total_momentum(std::span<const Particle> particles) {
+    Vec2 sum = Vec2::Zero();
+    for (const Particle& p : particles) sum += p.velocity;
+    return sum;
 }
 
 std::vector<std::complex<double>> local_hexatic_order(std::span<const Particle> particles, const World& world,
