@@ -616,9 +616,23 @@ bool pid_namespace_with_its_proc_works(bool as_nobody) {
     return child > 0 && waitpid(child, &status, 0) == child && WIFEXITED(status) && WEXITSTATUS(status) == 0;
 }
 
+// Whether every user may pass through each directory from / to `place`:
+// a program run as another user (nobody) reaches it only then (a root
+// whose $HOME is /root, mode 0700, does not qualify).
+bool reachable_by_any_user(const fs::path& place) {
+    fs::path walked;
+    for (const fs::path& part : place) {
+        walked /= part;
+        struct stat info {};
+        if (stat(walked.c_str(), &info) != 0 || (info.st_mode & S_IXOTH) == 0) return false;
+    }
+    return true;
+}
+
 // A directory that any user may write, outside the scratch places (/tmp,
-// /var/tmp, /dev/shm, $TMPDIR): beside this test or in $HOME. Empty where
-// every candidate lies in one.
+// /var/tmp, /dev/shm, $TMPDIR): beside this test or in $HOME, where every
+// user can reach it. Empty where every candidate lies in one, or out of
+// other users' reach.
 fs::path writable_outside_scratch_places() {
     std::vector<fs::path> scratch{"/tmp", "/var/tmp", "/dev/shm"};
     if (const char* tmpdir = std::getenv("TMPDIR"); tmpdir && *tmpdir) scratch.emplace_back(tmpdir);
@@ -635,7 +649,7 @@ fs::path writable_outside_scratch_places() {
             return !ignored && text.compare(0, prefix.size(), prefix) == 0 &&
                    (text.size() == prefix.size() || text[prefix.size()] == '/' || prefix == "/");
         });
-        if (in_scratch) continue;
+        if (in_scratch || !reachable_by_any_user(place)) continue;
         std::string path = (place / "particlesim-grade-outside-XXXXXX").string();
         if (!mkdtemp(path.data())) continue;
         chmod(path.c_str(), 01777);
@@ -677,7 +691,8 @@ void programs_cannot_read_the_answers() {
     const fs::path outside = writable_outside_scratch_places();
     if (outside.empty())
         std::printf(
-            "no directory outside /tmp, /var/tmp, /dev/shm and $TMPDIR to write: read-only files not checked\n");
+            "no directory outside /tmp, /var/tmp, /dev/shm and $TMPDIR that every user can reach and write: "
+            "read-only files not checked\n");
     // Each run notes, by its pid, how many bytes of the suite's answers and of the kept outputs it read,
     // whether it wrote outside the scratch places and in its working directory, and whether it reached the
     // listener; then it runs simcli, its streams opened again by their names (/dev/stdout: a pipe that a user of
