@@ -1015,6 +1015,19 @@ void bad_usage() {
                                     (work() / "marking.json").string(), "--", marking});
     CHECK_EQ(writable.status, 1);  // no output: every scene malformed
     CHECK(fs::exists(marker));
+    // A report that fails once the grade is done (a full disk): named with
+    // its option, exit 2, and the summary and the other report still written.
+    const fs::path after_markdown = work() / "after-full.md";
+    fs::remove(after_markdown);
+    const run_process::Result full =
+        run_process::run(simcheck, {"grade", small_suite().string(), "--no-reference", "--json", "/dev/full",
+                                    "--markdown", after_markdown.string(), "--", marking});
+    check::Context full_context(full.err);
+    CHECK_EQ(full.status, 2);
+    CHECK(full.err.find("simcheck grade: --json /dev/full: cannot write: No space left on device (the grade is "
+                        "done: its summary is on stdout)\n") != std::string::npos);
+    CHECK(full.out.find("scenes conform") != std::string::npos);
+    CHECK(fs::exists(after_markdown) && fs::file_size(after_markdown) > 0);
     // A directory is not a program; a scene the grader cannot read is named, before any run.
     const run_process::Result directory =
         run_process::run(simcheck, {"grade", small_suite().string(), "--", work().string()});

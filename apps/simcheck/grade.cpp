@@ -587,11 +587,22 @@ void require_can_write(const std::string& option, const std::string& path) {
     if (!existed) std::remove(path.c_str());
 }
 
-void write_report_file(const std::string& path, const std::function<void(std::FILE*)>& write) {
+// Writes one report after the grade; a failure (a full disk) is said on
+// stderr, naming the option, and the other report is still written.
+bool write_report_file(const std::string& option, const std::string& path,
+                       const std::function<void(std::FILE*)>& write) {
     std::FILE* file = std::fopen(path.c_str(), "wb");
-    if (!file) throw std::runtime_error(path + ": cannot write: " + std::strerror(errno));
-    write(file);
-    if (std::fclose(file) != 0) throw std::runtime_error(path + ": cannot write: " + std::strerror(errno));
+    bool written = file != nullptr;
+    if (file) {
+        write(file);
+        written = std::fflush(file) == 0 && !std::ferror(file);
+        written = std::fclose(file) == 0 && written;
+    }
+    if (!written) {
+        std::fprintf(stderr, "simcheck grade: %s %s: cannot write: %s (the grade is done: its summary is on stdout)\n",
+                     option.c_str(), path.c_str(), std::strerror(errno));
+    }
+    return written;
 }
 
 }  // namespace
@@ -709,15 +720,23 @@ int grade_main(int argc, char** argv) {
         const int conforming = static_cast<int>(
             std::count_if(rows.begin(), rows.end(), [](const Row& r) { return r.verdict == "conforms"; }));
         write_text(stdout, o, cases, rows, conforming);
-        if (!o.json_path.empty()) write_report_file(o.json_path, [&](std::FILE* f) { write_json(f, o, cases, rows); });
+        bool reports_written = true;
+        if (!o.json_path.empty()) {
+            reports_written =
+                write_report_file("--json", o.json_path, [&](std::FILE* f) { write_json(f, o, cases, rows); }) &&
+                reports_written;
+        }
         if (!o.markdown_path.empty()) {
-            write_report_file(o.markdown_path, [&](std::FILE* f) { write_markdown(f, o, cases, rows, conforming); });
+            reports_written = write_report_file("--markdown", o.markdown_path,
+                                                [&](std::FILE* f) { write_markdown(f, o, cases, rows, conforming); }) &&
+                              reports_written;
         }
         if (std::fflush(stdout) != 0 || std::ferror(stdout)) {
             std::fprintf(stderr, "simcheck grade: cannot write the summary to stdout: %s (the reports are written)\n",
                          std::strerror(errno));
             return 2;
         }
+        if (!reports_written) return 2;
         return conforming == static_cast<int>(rows.size()) ? 0 : 1;
     } catch (const BadUsage& e) {
         std::fprintf(stderr, "simcheck grade: %s\n", apps_common::without_library_names(e.what()).c_str());
