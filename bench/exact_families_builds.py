@@ -17,13 +17,14 @@ import subprocess
 import tempfile
 import time
 
-from simcli_runs import beside_busy_process, command_line, load_name, median, pin_to_cpu_option
+from simcli_runs import alternating_rounds, beside_busy_process, command_line, load_name, median, pin_to_cpu_option
 
 arguments, options = command_line(__doc__, 6)
 new_simcli, old_simcli, simgen = arguments[0], arguments[1], arguments[2]
 particles, steps, rounds = arguments[3], arguments[4], int(arguments[5])
 busy = "--busy" in options
 cpu = pin_to_cpu_option(options)
+simclis = {"new": new_simcli, "old": old_simcli}
 families = ["cradle", "line", "walls", "clusters", "gas", "crystal", "random"]
 
 
@@ -45,16 +46,8 @@ with tempfile.TemporaryDirectory() as directory, beside_busy_process(busy, cpu):
         scene = os.path.join(directory, family + ".in")
         with open(scene, "w") as out:
             subprocess.run([simgen, family, "-n", particles, "-s", steps, "--mode", "perf"], stdout=out, check=True)
-        results = {"new": [], "old": []}
-        ratios = []
-        for round_number in range(rounds):
-            order = [("new", new_simcli), ("old", old_simcli)]
-            if round_number % 2:
-                order.reverse()
-            this_round = {name: run(simcli, scene) for name, simcli in order}
-            for name in results:
-                results[name].append(this_round[name])
-            ratios.append(this_round["new"][0] / this_round["old"][0])
+        results = alternating_rounds(lambda build: run(simclis[build], scene), ("new", "old"), rounds)
+        ratios = [new[0] / old[0] for new, old in zip(results["new"], results["old"])]
         whole = {name: median([r[0] for r in results[name]]) for name in results}
         step = {name: median([r[1] for r in results[name]]) for name in results}
         print(f"{family},{particles},{steps},{load_name(busy)},{rounds},{whole['new']:.4f},{whole['old']:.4f},"

@@ -17,13 +17,15 @@ import subprocess
 import tempfile
 import time
 
-from simcli_runs import beside_busy_process, command_line, load_name, median, pin_to_cpu_option, write_gas
+from simcli_runs import (alternating_rounds, beside_busy_process, command_line, load_name, median,
+                         pin_to_cpu_option, write_gas)
 
 arguments, options = command_line(__doc__, 6)
 new_simcli, old_simcli, simgen = arguments[0], arguments[1], arguments[2]
 particles, steps, rounds = int(arguments[3]), int(arguments[4]), int(arguments[5])
 busy = "--busy" in options
 cpu = pin_to_cpu_option(options)
+simclis = {"new": new_simcli, "old": old_simcli}
 
 
 def write_corner_patch(path):
@@ -51,20 +53,14 @@ with tempfile.TemporaryDirectory() as directory, beside_busy_process(busy, cpu):
     write_corner_patch(scenes["corner patch"])
     observables = os.path.join(directory, "rows.csv")
     for name, scene in scenes.items():
-        times = {"new": [], "old": []}
-        ratios = []
-        for round_number in range(rounds):
-            order = [("new", new_simcli), ("old", old_simcli)]
-            if round_number % 2:
-                order.reverse()
-            this_round = {}
-            for build, simcli in order:
-                plain = seconds([simcli, "--engine", "exact", "-o", os.devnull, scene])
-                measured = seconds([simcli, "--engine", "exact", "-o", os.devnull, "--observables", observables,
-                                    "--observe-every", "1", scene])
-                this_round[build] = (measured - plain) / steps
-            for build in times:
-                times[build].append(this_round[build])
-            ratios.append(this_round["new"] / this_round["old"])
+        def measurement_time(build):
+            simcli = simclis[build]
+            plain = seconds([simcli, "--engine", "exact", "-o", os.devnull, scene])
+            measured = seconds([simcli, "--engine", "exact", "-o", os.devnull, "--observables", observables,
+                                "--observe-every", "1", scene])
+            return (measured - plain) / steps
+
+        times = alternating_rounds(measurement_time, ("new", "old"), rounds)
+        ratios = [new / old for new, old in zip(times["new"], times["old"])]
         print(f"{name},{particles},{steps},{load_name(busy)},{rounds},{median(times['new']):.4f},"
               f"{median(times['old']):.4f},{median(ratios):.3f},{min(ratios):.3f},{max(ratios):.3f}", flush=True)

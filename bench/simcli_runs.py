@@ -41,20 +41,25 @@ def step_time(command):
     return seconds, int(counts.group(1)), int(counts.group(2))
 
 
+def alternating_rounds(measure, names, rounds):
+    """MEASURE(name) for each of the two NAMES, alternately: the first name first in even rounds, the
+    second in odd ones. Returns {name: [its result in each round]}."""
+    first, second = names
+    results = {first: [], second: []}
+    for round_number in range(rounds):
+        for name in [first, second] if round_number % 2 == 0 else [second, first]:
+            results[name].append(measure(name))
+    return results
+
+
 def alternate(commands, rounds):
     """Runs the two commands {name: command} alternately; returns each one's times, its last
     step_time() counts, and the per-round ratios second / first."""
     first, second = commands
-    times = {first: [], second: []}
-    counts = {}
-    ratios = []
-    for round_number in range(rounds):
-        order = [first, second] if round_number % 2 == 0 else [second, first]
-        this_round = {}
-        for name in order:
-            this_round[name], *counts[name] = step_time(commands[name])
-            times[name].append(this_round[name])
-        ratios.append(this_round[second] / this_round[first])
+    results = alternating_rounds(lambda name: step_time(commands[name]), (first, second), rounds)
+    times = {name: [r[0] for r in results[name]] for name in results}
+    counts = {name: list(results[name][-1][1:]) for name in results}
+    ratios = [b / a for a, b in zip(times[first], times[second])]
     return times, counts, ratios
 
 
