@@ -11,14 +11,9 @@
 set -euo pipefail
 cd "$(dirname "$0")/.."
 scripts/ensure-deps.sh clang-format
-# The heavier test tools: the aarch64 cross compiler and qemu (the same bytes
-# on another architecture), clang with libFuzzer, its OpenMP and Archer (fuzzing,
-# ThreadSanitizer over OpenMP), chromium (the animation page), python3-ase
-# (simcli's trajectory files as ASE reads them), OpenMPI (the distributed
-# engine: the Release build then has PARTICLESIM_MPI on, and simcli runs
-# under mpirun), pkgconf (the installed pkg-config files).
-scripts/ensure-deps.sh --optional g++-aarch64-linux-gnu qemu-user clang libclang-rt-dev libomp-dev chromium python3-ase \
-  libopenmpi-dev openmpi-bin pkgconf
+# OpenMPI decides the Release build's configuration (the distributed engine:
+# PARTICLESIM_MPI on, and simcli runs under mpirun), so it comes first.
+scripts/ensure-deps.sh --optional libopenmpi-dev openmpi-bin
 jobs=$(nproc)
 mpi=OFF
 if command -v mpicxx >/dev/null 2>&1 && command -v mpirun >/dev/null 2>&1; then
@@ -26,10 +21,26 @@ if command -v mpicxx >/dev/null 2>&1 && command -v mpirun >/dev/null 2>&1; then
 else
   echo "OpenMPI is missing: the distributed engine is not built, and its tests will say SKIPPED"
 fi
+# The heavier test tools, which only the tests use: the aarch64 cross compiler
+# and qemu (the same bytes on another architecture), clang with libFuzzer, its
+# OpenMP and Archer (fuzzing, ThreadSanitizer over OpenMP), chromium (the
+# animation page), python3-ase (simcli's trajectory files as ASE reads them),
+# pkgconf (the installed pkg-config files). Installed while the Release build
+# compiles: on a fresh machine apt alone took 107 s, with 118 CPU-s spread over
+# both cores and waits on downloads and disk. Never stopped halfway: an
+# interrupted dpkg leaves the machine's packages broken.
+mkdir -p build
+tools_log=build/test-tools-install.log
+scripts/ensure-deps.sh --optional g++-aarch64-linux-gnu qemu-user clang libclang-rt-dev libomp-dev chromium \
+  python3-ase pkgconf >"$tools_log" 2>&1 &
+tools_install=$!
 
 echo "== Release build (at ${SECONDS} s)"
 cmake --preset release -DPARTICLESIM_MPI=$mpi
 cmake --build --preset release -j "$jobs"
+echo "== The test tools' install (at ${SECONDS} s)"
+wait "$tools_install"
+cat "$tools_log"
 
 # The sanitized build compiles at the lowest priority while the release tests
 # run: it takes only the CPU they leave idle (waiting on mpirun, Chromium,
