@@ -5,9 +5,9 @@
 # checks compiled in (any report fails the run). The Release pass also
 # cross-checks the bytes on aarch64 under qemu, runs the parallel stages under
 # ThreadSanitizer (clang's OpenMP) and fuzzes for 10 seconds.
-# 9 min 54 s to 11 min 8 s (five runs) from a clean clone on one host of the project's 2-core machine with the
-# tools already installed (OpenMPI's tests included), 18.6 to 21.0 min of CPU time, a quarter of it in the kernel
-# (a first touch of memory is slow there); installing the tools on a fresh machine comes on top (1 min 24 s).
+# 9 min 54 s to 12 min 9 s (seven runs) from a clean clone on one host of the project's 2-core machine with the
+# tools already installed (OpenMPI's tests included), 18.6 to 21.5 min of CPU time, a quarter of it in the kernel
+# (a first touch of memory is slow there); 12 min 3 s on a fresh machine, where it installs the tools.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 scripts/ensure-deps.sh clang-format
