@@ -266,7 +266,7 @@ void hexatic_order_against_every_pair() {
 
 // What cannot be measured is refused with the function's name, not
 // answered: a position that is no number, a box of no size, a Boundary cast
-// from a number that names no box.
+// from a number that names no box, and a pressure's inputs that no run gives.
 void what_cannot_be_measured_is_refused() {
     SceneFamilyOptions o;
     o.particles = 200;
@@ -297,6 +297,29 @@ void what_cannot_be_measured_is_refused() {
     refused(
         [&] { return box_pressure(gas.world, static_cast<Boundary>(9), 200, 1.0, Vec2::Zero(), CollisionSums{}, 1.0); },
         "particlesim::box_pressure: boundary must be");
+    // A pressure's inputs that no run gives: a box that holds no disk, a
+    // kinetic energy that is none, a momentum that is not these disks'.
+    const CollisionSums some{3.0, 2.0};
+    refused(
+        [&] {
+            return walled_box_pressure(World{1.0, 1.0}, 3, 5.0, some, 1.0);
+        },
+        "particlesim::walled_box_pressure: the radius must be finite, not negative, and fit the box (2r <= L = 1), "
+        "not 1");
+    refused(
+        [&] {
+            return walled_box_pressure(World{INFINITY, 1.0}, 3, 5.0, some, 1.0);
+        },
+        "the box size must be finite and positive, not inf");
+    refused([&] { return walled_box_pressure(gas.world, 3, -5.0, some, 1.0); },
+            "the kinetic energy must be finite and not negative, not -5");
+    refused([&] { return box_pressure(gas.world, Boundary::periodic, 3, std::nan(""), Vec2::Zero(), some, 1.0); },
+            "particlesim::periodic_box_pressure: the kinetic energy must be finite and not negative, not nan");
+    refused([&] { return periodic_box_pressure(gas.world, 10, 1.0, Vec2(10.0, 0.0), some, 1.0); },
+            "the total momentum's energy |P|^2 / 2N = 5 exceeds the kinetic energy 1: not the momentum of these 10 "
+            "disks");
+    refused([&] { return periodic_box_pressure(gas.world, 10, 1.0, Vec2(0.0, INFINITY), some, 1.0); },
+            "the total momentum must be finite, not (0, inf)");
 }
 
 void block_averages_of_known_series() {
@@ -347,6 +370,13 @@ void a_drifting_periodic_box_has_the_same_pressure() {
     const Pressure together = periodic_box_pressure(world, 2, 1.0, Vec2(2.0, 0.0), none, 1.0);
     CHECK_EQ(together.kT, 0.0);
     CHECK_EQ(together.Z, 0.0);
+    // The same, its momentum's energy rounded a little above the kinetic
+    // energy (as summing a pure drift's velocities may): all zero, kT too.
+    const Pressure rounded = periodic_box_pressure(world, 2, 1.0, Vec2(2.0 + 1e-12, 0.0), none, 1.0);
+    CHECK_EQ(rounded.kT, 0.0);
+    CHECK_EQ(rounded.betaP_d2, 0.0);
+    // No kinetic energy in a walled box: all zero.
+    CHECK_EQ(walled_box_pressure(world, 5, 0.0, CollisionSums{1.0, 1.0}, 1.0).kT, 0.0);
     const Pressure apart = periodic_box_pressure(world, 2, 1.0, Vec2::Zero(), none, 1.0);
     CHECK_EQ(apart.kT, 1.0);
     CHECK_EQ(apart.Z, 1.0);  // no collisions: the ideal gas

@@ -39,6 +39,19 @@ double virial_pressure(double n, double kT, double area, const CollisionSums& su
     return (n * kT + sums.pair_virial / (2.0 * duration)) / area;
 }
 
+// What a pressure needs: a box that holds a disk, and a kinetic energy that
+// is one (finite, not negative).
+void require_pressure_inputs(const OptionsCheck& check, const World& world, double kinetic_energy) {
+    if (!(std::isfinite(world.box_size) && world.box_size > 0.0))
+        check.fail("the box size must be finite and positive, not " + format_short(world.box_size));
+    if (!(std::isfinite(world.radius) && world.radius >= 0.0 && 2.0 * world.radius <= world.box_size)) {
+        check.fail("the radius must be finite, not negative, and fit the box (2r <= L = " +
+                   format_short(world.box_size) + "), not " + format_short(world.radius));
+    }
+    if (!(std::isfinite(kinetic_energy) && kinetic_energy >= 0.0))
+        check.fail("the kinetic energy must be finite and not negative, not " + format_short(kinetic_energy));
+}
+
 // What a psi6 search needs: a box it can bin, and positions it can place.
 void require_measurable(std::span<const Particle> particles, const World& world, Boundary boundary) {
     const OptionsCheck check("particlesim::local_hexatic_order");
@@ -56,13 +69,14 @@ void require_measurable(std::span<const Particle> particles, const World& world,
 
 Pressure walled_box_pressure(const World& world, std::size_t count, double kinetic_energy, const CollisionSums& sums,
                              double duration) {
+    require_pressure_inputs(OptionsCheck("particlesim::walled_box_pressure"), world, kinetic_energy);
     Pressure p;
     if (count == 0 || !(duration > 0.0)) return p;
     const double n = static_cast<double>(count);
     const double side = world.box_size - 2.0 * world.radius;
     const double area = side * side;
+    if (!(kinetic_energy > 0.0) || !(area > 0.0)) return p;
     p.kT = kinetic_energy / n;
-    if (!(p.kT > 0.0) || !(area > 0.0)) return p;
     const Reported virial = reported(virial_pressure(n, p.kT, area, sums, duration), p.kT, area, n, world);
     const Reported walls = reported(sums.wall_impulse / (duration * 4.0 * side), p.kT, area, n, world);
     p.betaP_d2 = virial.betaP_d2;
@@ -74,13 +88,27 @@ Pressure walled_box_pressure(const World& world, std::size_t count, double kinet
 
 Pressure periodic_box_pressure(const World& world, std::size_t count, double kinetic_energy, const Vec2& total_momentum,
                                const CollisionSums& sums, double duration) {
+    const OptionsCheck check("particlesim::periodic_box_pressure");
+    require_pressure_inputs(check, world, kinetic_energy);
+    if (!std::isfinite(total_momentum.x()) || !std::isfinite(total_momentum.y())) {
+        check.fail("the total momentum must be finite, not (" + format_short(total_momentum.x()) + ", " +
+                   format_short(total_momentum.y()) + ")");
+    }
     Pressure p;
     if (count < 2 || !(duration > 0.0)) return p;
     const double n = static_cast<double>(count);
     const double area = world.box_size * world.box_size;
     const double centre_of_mass_energy = total_momentum.squaredNorm() / (2.0 * n);
-    p.kT = (kinetic_energy - centre_of_mass_energy) / (n - 1.0);
-    if (!(p.kT > 0.0)) return p;
+    // |P|^2 / 2N <= E_kin for any N velocities (Cauchy-Schwarz); summing N
+    // terms rounds by about N units in the last place, far below 1e-6 of it.
+    if (centre_of_mass_energy > kinetic_energy * (1.0 + 1e-6)) {
+        check.fail("the total momentum's energy |P|^2 / 2N = " + format_short(centre_of_mass_energy) +
+                   " exceeds the kinetic energy " + format_short(kinetic_energy) + ": not the momentum of these " +
+                   std::to_string(count) + " disks");
+    }
+    const double thermal_kT = (kinetic_energy - centre_of_mass_energy) / (n - 1.0);
+    if (!(thermal_kT > 0.0)) return p;  // a box that only drifts (or rounding of one): nothing to measure
+    p.kT = thermal_kT;
     const Reported virial = reported(virial_pressure(n, p.kT, area, sums, duration), p.kT, area, n, world);
     p.betaP_d2 = virial.betaP_d2;
     p.Z = virial.Z;
