@@ -2,9 +2,9 @@
 // every start keeps the dense starts' promises in either box; it is random
 // (a liquid's |psi6|, not a lattice's) and reproducible from its seed; the
 // same packing at any radius, scaled exactly; the exact engine accepts and
-// runs it; and what cannot be grown is refused with the reason: above
-// close packing, a jam (naming the fraction reached), a periodic box too
-// narrow.
+// runs it; its progress is reported as it grows; and what cannot be grown
+// is refused with the reason: above close packing, a jam (naming the
+// fraction reached), a periodic box too narrow.
 
 #include "check.hpp"
 #include "dense_start_checks.hpp"
@@ -13,6 +13,7 @@
 #include "particlesim/observables.hpp"
 #include "particlesim/scene_families.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdlib>
 #include <numbers>
@@ -90,6 +91,32 @@ void random_and_reproducible() {
     CHECK(compressed(o).particles[123].position != scene.particles[123].position);
 }
 
+// A compression's progress: the fractions it passes on rise towards the one
+// asked for, the target comes with each, and the scene is the one made
+// without anyone watching.
+void its_progress_rises_to_the_fraction() {
+    SceneFamilyOptions o = compression(500, 0.72, Boundary::periodic);
+    const Scene unwatched = compressed(o);
+    std::vector<double> reached;
+    bool target_named = true;
+    o.compression_progress = [&](double fraction, double target) {
+        reached.push_back(fraction);
+        target_named = target_named && target == 0.72;
+    };
+    const Scene watched = compressed(o);
+    check::Context context(reached.size(), " reports, the last ", reached.empty() ? 0.0 : reached.back());
+    CHECK(reached.size() >= 10);
+    CHECK(target_named);
+    CHECK(std::is_sorted(reached.begin(), reached.end()));
+    CHECK(!reached.empty() && reached.front() < 0.1 && reached.back() > 0.5 && reached.back() <= 0.72);
+    bool same = watched.particles.size() == unwatched.particles.size();
+    for (std::size_t i = 0; same && i < watched.particles.size(); ++i) {
+        same = watched.particles[i].position == unwatched.particles[i].position &&
+               watched.particles[i].velocity == unwatched.particles[i].velocity;
+    }
+    CHECK(same);
+}
+
 // The packing is grown in units of its own; the radius asked for only
 // scales it, by a power of two exactly.
 void the_same_packing_at_any_radius() {
@@ -159,6 +186,7 @@ int main(int argc, char** argv) {
     return check::run(argc, argv, "test_compressed_start",
                       {{"every start keeps its promises", every_start_keeps_its_promises},
                        {"random and reproducible", random_and_reproducible},
+                       {"its progress rises to the fraction", its_progress_rises_to_the_fraction},
                        {"the same packing at any radius", the_same_packing_at_any_radius},
                        {"the exact engine runs it", the_exact_engine_runs_it},
                        {"what cannot be grown", what_cannot_be_grown}});

@@ -564,6 +564,28 @@ void every_family_checks_cleanly() {
         if (info.family != SceneFamily::ties) CHECK_EQ(scene.particle_count, std::size_t{0});
         CHECK(scene.world.box_size <= 20000.0);
     }
+    // A compression's progress on stderr, off a terminal only when asked for:
+    // the fraction reached rising towards the one asked for; the same scene.
+    const std::vector<std::string> grown{"compressed", "-n", "1500", "--fraction", "0.7", "--seed", "4"};
+    const run_process::Result silent = run_process::run(simgen, grown);
+    CHECK_EQ(silent.err, std::string());
+    std::vector<std::string> watched_arguments = grown;
+    watched_arguments.insert(watched_arguments.end(), {"--progress-every", "0.01"});
+    const run_process::Result watched = run_process::run(simgen, watched_arguments);
+    CHECK_EQ(watched.status, 0);
+    CHECK(watched.out == silent.out);
+    std::istringstream progress_lines(watched.err);
+    std::vector<double> reached;
+    for (std::string line; std::getline(progress_lines, line);) {
+        check::Context context("progress line ", line);
+        const std::string start = "simgen: compressed: area fraction ";
+        CHECK(line.rfind(start, 0) == 0);
+        CHECK(line.find(" of 0.7, ") != std::string::npos && line.ends_with(" s so far"));
+        reached.push_back(std::atof(line.c_str() + start.size()));
+    }
+    CHECK(reached.size() >= 2);
+    CHECK(std::is_sorted(reached.begin(), reached.end()));
+    CHECK(!reached.empty() && reached.back() <= 0.7);
     // The random family is the scene simcli draws for the same header and seed.
     const run_process::Result gen =
         run_process::run(simgen, {"random", "-n", "300", "-L", "900", "-s", "20", "--seed", "42"});
@@ -590,6 +612,9 @@ void every_family_checks_cleanly() {
         {{"suite", work_dir() + "/never-written", "--only", "cradle,nope"}, "no suite case \"nope\""},
         {{"gas", "--only", "cradle"}, "belongs to simgen suite"},
         {{"suite", "--seed", "3"}, "not the option --seed"},
+        {{"compressed", "--progress", "--quiet"}, "--progress and --quiet contradict each other"},
+        {{"compressed", "--quiet", "--progress-every", "5"}, "--progress-every and --quiet contradict each other"},
+        {{"compressed", "--progress-every", "0"}, "--progress-every needs seconds from 0.001 to 3.2e7, not \"0\""},
         // More disks than any machine holds (32-bit indices): refused before anything is allocated.
         {{"gas", "-n", "99999999999"}, "particles are more than this machine can hold (at most "},
         {{"crystal", "-n", "4294967295", "--fraction", "0.5"}, "more than this machine can hold"},

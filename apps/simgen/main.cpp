@@ -5,6 +5,7 @@
 
 #include "common/library_message.hpp"
 #include "common/standard_streams.hpp"
+#include "compression_progress.hpp"
 #include "suite.hpp"
 
 #include "particlesim/particlesim.hpp"
@@ -81,6 +82,11 @@ void print_usage() {
         "                         periodic box (run it with simcli --engine exact --boundary periodic)\n"
         "      --growth-rate G    compressed: the diameter's growth per unit time in thermal speeds\n"
         "                         (default 0.01; faster jams sooner into a random packing)\n"
+        "      --progress / --quiet\n"
+        "                         compressed: force / silence the area fraction reached, on stderr\n"
+        "                         (default: on a terminal, for compressions longer than about 2 s)\n"
+        "      --progress-every SECONDS\n"
+        "                         compressed: a progress line every SECONDS, the first after SECONDS\n"
         "  -h, --help             this text\n"
         "      --version          the version\n");
 }
@@ -119,6 +125,8 @@ int run(int argc, char** argv) {
     }
     SceneFamilyOptions options;
     std::optional<double> speed_min, speed_max;
+    bool progress = false, quiet = false;
+    std::optional<double> progress_every;
     std::optional<std::string> suite_directory;
     std::vector<std::string> only_cases;
     int k = 2;
@@ -167,6 +175,16 @@ int run(int argc, char** argv) {
             options.temperature = parse_number<double>(arg, value());
         } else if (arg == "--growth-rate") {
             options.growth_rate = parse_number<double>(arg, value());
+        } else if (arg == "--progress") {
+            progress = true;
+        } else if (arg == "--quiet") {
+            quiet = true;
+        } else if (arg == "--progress-every") {
+            const std::string text = value();
+            const double seconds = parse_number<double>(arg, text);
+            if (!(seconds >= 0.001 && seconds <= 3.2e7))
+                throw BadUsage("--progress-every needs seconds from 0.001 to 3.2e7, not \"" + text + "\"");
+            progress_every = seconds;
         } else if (arg == "--boundary") {
             const std::string name = value();
             const std::optional<Boundary> boundary = boundary_named(name);
@@ -182,6 +200,19 @@ int run(int argc, char** argv) {
     }
     const std::optional<SceneFamily> family = scene_family_named(first);
     if (!family) throw BadUsage("unknown family \"" + first + "\" (simgen --help lists them)");
+    if (quiet && progress) throw BadUsage("--progress and --quiet contradict each other");
+    if (quiet && progress_every) throw BadUsage("--progress-every and --quiet contradict each other");
+    using apps_common::ProgressChoice;
+    const ProgressChoice choice = quiet                        ? ProgressChoice::silenced
+                                  : progress || progress_every ? ProgressChoice::forced
+                                                               : ProgressChoice::automatic;
+    std::optional<simgen::CompressionProgress> shown;
+    if (*family == SceneFamily::compressed) {
+        shown.emplace(choice, progress_every);
+        if (shown->enabled()) {
+            options.compression_progress = [&shown](double reached, double target) { shown->update(reached, target); };
+        }
+    }
     if (speed_min || speed_max) {
         const double low = speed_min.value_or(speed_max.value_or(0.0));
         options.speeds = SpeedRange{low, speed_max.value_or(low)};
@@ -194,6 +225,7 @@ int run(int argc, char** argv) {
     } catch (const SceneTooFull& e) {
         throw BadUsage(first + ": " + e.what());
     }
+    shown.reset();  // the line cleared before the scene is written
     write_scene(std::cout, scene);
     std::cout.flush();
     if (!std::cout) {

@@ -9,6 +9,7 @@
 #include "particlesim/scene.hpp"
 
 #include <cstdint>
+#include <functional>
 #include <optional>
 #include <ostream>
 #include <string>
@@ -56,6 +57,10 @@ struct SceneFamilyOptions {
     Boundary boundary = Boundary::walls;  // crystal, compressed: a periodic box instead
     // compressed: the diameter's growth per unit time, in units of the thermal speed sqrt(kT / m).
     std::optional<double> growth_rate;
+    // compressed: called now and then (every N events of the growth) with the
+    // area fraction the growing disks fill and the one they grow to: to show
+    // a long compression's progress. It does not change the scene.
+    std::function<void(double reached, double target)> compression_progress;
 };
 
 // Throws std::invalid_argument for options the family cannot honour (a

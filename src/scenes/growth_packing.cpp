@@ -104,6 +104,7 @@ public:
             if (++since_rescale >= std::max<std::uint32_t>(count_, 64)) {
                 since_rescale = 0;
                 rescale_speeds();
+                if (request_.progress) request_.progress(fraction_reached(), request_.area_fraction);
             }
         }
         now_ = end_;

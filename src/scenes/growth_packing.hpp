@@ -9,6 +9,7 @@
 #include "particlesim/particle.hpp"
 
 #include <cstdint>
+#include <functional>
 #include <numbers>
 #include <vector>
 
@@ -26,6 +27,10 @@ struct GrowthRequest {
     double growth_rate = default_growth_rate;
     bool periodic = false;
     std::uint64_t seed = 1;
+    // Called every N events (at least 64) with the area fraction the disks
+    // fill then, rising towards area_fraction, and area_fraction: to show
+    // progress. It does not change the packing.
+    std::function<void(double reached, double target)> progress;
 };
 
 // The densest packing of disks in the plane, the triangular lattice's: pi / (2 sqrt 3).

@@ -473,8 +473,8 @@ Scene compressed(const SceneFamilyOptions& o) {
     const double fraction = o.area_fraction.value_or(0.7);
     const double kT = checked_temperature(o);
     const bool periodic = o.boundary == Boundary::periodic;
-    const GrownPacking grown =
-        grow_packing({count, fraction, o.growth_rate.value_or(default_growth_rate), periodic, o.seed});
+    const GrownPacking grown = grow_packing(
+        {count, fraction, o.growth_rate.value_or(default_growth_rate), periodic, o.seed, o.compression_progress});
     const double box = side_for(count, o.radius, fraction);
     const double scale = box / std::max(grown.box_size, 1.0);
     std::vector<Particle> particles;
