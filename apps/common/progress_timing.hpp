@@ -15,6 +15,23 @@ namespace apps_common {
 
 enum class ProgressChoice { automatic, forced, silenced };
 
+// --progress-every's range: a millisecond to a year.
+inline bool is_progress_interval(double seconds) { return seconds >= 0.001 && seconds <= 3.2e7; }
+
+// Why --progress, --quiet and --progress-every cannot be given together, or
+// nullptr where they can.
+inline const char* progress_contradiction(bool progress, bool quiet, bool every) {
+    if (quiet && progress) return "--progress and --quiet contradict each other";
+    if (quiet && every) return "--progress-every and --quiet contradict each other";
+    return nullptr;
+}
+
+// What they choose together (progress_contradiction() first).
+inline ProgressChoice progress_choice(bool progress, bool quiet, bool every) {
+    if (quiet) return ProgressChoice::silenced;
+    return progress || every ? ProgressChoice::forced : ProgressChoice::automatic;
+}
+
 class ProgressTiming {
 public:
     using Clock = std::chrono::steady_clock;

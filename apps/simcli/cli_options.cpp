@@ -147,7 +147,7 @@ double parse_progress_every(std::string_view text) {
     double value = 0.0;
     const auto [end, error] = std::from_chars(text.data(), text.data() + text.size(), value);
     const bool number = !text.empty() && error == std::errc{} && end == text.data() + text.size();
-    if (!number || !(value >= 0.001 && value <= 3.2e7)) {
+    if (!number || !apps_common::is_progress_interval(value)) {
         throw BadInput("--progress-every: expected seconds from 0.001 to 3.2e7, found \"" + std::string(text) + "\"");
     }
     return value;
@@ -184,9 +184,9 @@ void check_combinations(CliOptions& options, const Given& given) {
     }
     options.stepped.pair_search =
         options.stepped.grid_cells ? PairSearch::grid : given.pair_search.value_or(PairSearch::automatic);
-    if (given.progress && given.quiet) throw BadInput("--progress and --quiet contradict each other");
-    if (options.progress_every && given.quiet) throw BadInput("--progress-every and --quiet contradict each other");
-    if (options.progress_every) options.progress = ProgressChoice::forced;
+    const bool every = options.progress_every.has_value();
+    if (const char* why = apps_common::progress_contradiction(given.progress, given.quiet, every)) throw BadInput(why);
+    options.progress = apps_common::progress_choice(given.progress, given.quiet, every);
     if (options.checkpoint_every && !options.checkpoint_path) {
         throw BadInput("--checkpoint-every K needs --checkpoint FILE");
     }
@@ -309,15 +309,9 @@ std::optional<CliOptions> parse_arguments(int argc, char** argv) {
                 static_cast<std::int64_t>(parse_unsigned("--checkpoint-every", value, 1, INT64_MAX));
             break;
         case opt_resume: options.resume_path = std::string(value); break;
-        case opt_progress:
-            given.progress = true;
-            options.progress = ProgressChoice::forced;
-            break;
+        case opt_progress: given.progress = true; break;
         case opt_progress_every: options.progress_every = parse_progress_every(value); break;
-        case opt_quiet:
-            given.quiet = true;
-            options.progress = ProgressChoice::silenced;
-            break;
+        case opt_quiet: given.quiet = true; break;
         case opt_animate: options.animation = AnimationRequest{std::string(value), std::nullopt}; break;
         case opt_animate_every: given.animate_every = parse_animate_every(value); break;
         case opt_snapshot: options.snapshot_path = std::string(value); break;

@@ -182,7 +182,7 @@ int run(int argc, char** argv) {
         } else if (arg == "--progress-every") {
             const std::string text = value();
             const double seconds = parse_number<double>(arg, text);
-            if (!(seconds >= 0.001 && seconds <= 3.2e7))
+            if (!apps_common::is_progress_interval(seconds))
                 throw BadUsage("--progress-every needs seconds from 0.001 to 3.2e7, not \"" + text + "\"");
             progress_every = seconds;
         } else if (arg == "--boundary") {
@@ -200,15 +200,11 @@ int run(int argc, char** argv) {
     }
     const std::optional<SceneFamily> family = scene_family_named(first);
     if (!family) throw BadUsage("unknown family \"" + first + "\" (simgen --help lists them)");
-    if (quiet && progress) throw BadUsage("--progress and --quiet contradict each other");
-    if (quiet && progress_every) throw BadUsage("--progress-every and --quiet contradict each other");
-    using apps_common::ProgressChoice;
-    const ProgressChoice choice = quiet                        ? ProgressChoice::silenced
-                                  : progress || progress_every ? ProgressChoice::forced
-                                                               : ProgressChoice::automatic;
+    if (const char* why = apps_common::progress_contradiction(progress, quiet, progress_every.has_value()))
+        throw BadUsage(why);
     std::optional<simgen::CompressionProgress> shown;
     if (*family == SceneFamily::compressed) {
-        shown.emplace(choice, progress_every);
+        shown.emplace(apps_common::progress_choice(progress, quiet, progress_every.has_value()), progress_every);
         if (shown->enabled()) {
             options.compression_progress = [&shown](double reached, double target) { shown->update(reached, target); };
         }
