@@ -297,20 +297,19 @@ void what_cannot_be_measured_is_refused() {
     refused(
         [&] { return box_pressure(gas.world, static_cast<Boundary>(9), 200, 1.0, Vec2::Zero(), CollisionSums{}, 1.0); },
         "particlesim::box_pressure: boundary must be");
-    // A pressure's inputs that no run gives: a box that holds no disk, a
-    // kinetic energy that is none, a momentum that is not these disks'.
+    // A pressure's inputs that no run gives: a world the engines refuse (their
+    // check), a kinetic energy that is none, a momentum that is not these disks'.
     const CollisionSums some{3.0, 2.0};
     refused(
         [&] {
             return walled_box_pressure(World{1.0, 1.0}, 3, 5.0, some, 1.0);
         },
-        "particlesim::walled_box_pressure: the radius must be finite, not negative, and fit the box (2r <= L = 1), "
-        "not 1");
+        "particlesim::walled_box_pressure: 2 * radius must be <= box size");
     refused(
         [&] {
             return walled_box_pressure(World{INFINITY, 1.0}, 3, 5.0, some, 1.0);
         },
-        "the box size must be finite and positive, not inf");
+        "particlesim::walled_box_pressure: box size must lie in [1e-60, 1e60] (the accepted range)");
     refused([&] { return walled_box_pressure(gas.world, 3, -5.0, some, 1.0); },
             "the kinetic energy must be finite and not negative, not -5");
     refused([&] { return box_pressure(gas.world, Boundary::periodic, 3, std::nan(""), Vec2::Zero(), some, 1.0); },

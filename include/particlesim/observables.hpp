@@ -40,11 +40,11 @@ struct CollisionSums {
 // there is nothing to measure: no interval (duration not above 0), no disk
 // (fewer than two in a periodic box, whose kT counts N - 1), no kinetic
 // energy (in a periodic box: none beside the centre of mass's), or no room
-// for the centres (2r = L). Throws std::invalid_argument for a box size that
-// is not finite and positive, a radius that is negative, not finite or does
-// not fit the box (2r > L), or a kinetic energy that is negative or not
-// finite; the periodic box also for a total momentum that is not finite or
-// whose energy |P|^2 / 2N exceeds the kinetic energy (not these disks').
+// for the centres (2r = L). Throws std::invalid_argument for a world the
+// engines refuse (L or r outside the accepted range of world.hpp, or 2r > L)
+// and a kinetic energy that is negative or not finite; the periodic box also
+// for a total momentum that is not finite or whose energy |P|^2 / 2N exceeds
+// the kinetic energy (not these disks').
 struct Pressure {
     double kT = 0.0;
     double betaP_d2 = 0.0;  // virial route

@@ -5,6 +5,7 @@
 #include "core/points_by_cell.hpp"
 #include "core/uniform_grid.hpp"
 #include "input/options_check.hpp"
+#include "input/scene_checks.hpp"
 #include "io/number_format.hpp"
 
 #include <algorithm>
@@ -39,17 +40,14 @@ double virial_pressure(double n, double kT, double area, const CollisionSums& su
     return (n * kT + sums.pair_virial / (2.0 * duration)) / area;
 }
 
-// What a pressure needs: a box that holds a disk, and a kinetic energy that
-// is one (finite, not negative).
-void require_pressure_inputs(const OptionsCheck& check, const World& world, double kinetic_energy) {
-    if (!(std::isfinite(world.box_size) && world.box_size > 0.0))
-        check.fail("the box size must be finite and positive, not " + format_short(world.box_size));
-    if (!(std::isfinite(world.radius) && world.radius >= 0.0 && 2.0 * world.radius <= world.box_size)) {
-        check.fail("the radius must be finite, not negative, and fit the box (2r <= L = " +
-                   format_short(world.box_size) + "), not " + format_short(world.radius));
+// What a pressure needs: a world the engines accept (the same check), and a
+// kinetic energy that is one (finite, not negative).
+void require_pressure_inputs(const char* function, const World& world, double kinetic_energy) {
+    require_valid_scene(function, world, {});
+    if (!(std::isfinite(kinetic_energy) && kinetic_energy >= 0.0)) {
+        OptionsCheck(function).fail("the kinetic energy must be finite and not negative, not " +
+                                    format_short(kinetic_energy));
     }
-    if (!(std::isfinite(kinetic_energy) && kinetic_energy >= 0.0))
-        check.fail("the kinetic energy must be finite and not negative, not " + format_short(kinetic_energy));
 }
 
 // What a psi6 search needs: a box it can bin, and positions it can place.
@@ -69,7 +67,7 @@ void require_measurable(std::span<const Particle> particles, const World& world,
 
 Pressure walled_box_pressure(const World& world, std::size_t count, double kinetic_energy, const CollisionSums& sums,
                              double duration) {
-    require_pressure_inputs(OptionsCheck("particlesim::walled_box_pressure"), world, kinetic_energy);
+    require_pressure_inputs("particlesim::walled_box_pressure", world, kinetic_energy);
     Pressure p;
     if (count == 0 || !(duration > 0.0)) return p;
     const double n = static_cast<double>(count);
@@ -88,8 +86,9 @@ Pressure walled_box_pressure(const World& world, std::size_t count, double kinet
 
 Pressure periodic_box_pressure(const World& world, std::size_t count, double kinetic_energy, const Vec2& total_momentum,
                                const CollisionSums& sums, double duration) {
-    const OptionsCheck check("particlesim::periodic_box_pressure");
-    require_pressure_inputs(check, world, kinetic_energy);
+    const char* const function = "particlesim::periodic_box_pressure";
+    require_pressure_inputs(function, world, kinetic_energy);
+    const OptionsCheck check(function);
     if (!std::isfinite(total_momentum.x()) || !std::isfinite(total_momentum.y())) {
         check.fail("the total momentum must be finite, not (" + format_short(total_momentum.x()) + ", " +
                    format_short(total_momentum.y()) + ")");
