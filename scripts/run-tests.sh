@@ -49,10 +49,10 @@ echo "== Sanitized build (address, undefined) beside the release tests, at nice 
 cmake --preset sanitize
 sanitize_log=build-sanitize/build.log
 # In a process group of its own (setsid), so that a failing release test stops its compilers too.
-# A new session is also a new scheduling group where Linux groups sessions
-# (autogroup, on in Debian's kernels), and groups share the CPU equally
-# whatever their processes' nice: the group's own nice is set as well, or the
-# build would take half the CPU from the tests.
+# setsid also gives it a scheduling group of its own where Linux groups
+# processes that way (autogroup, on in Debian's kernels), and groups share
+# the CPU equally whatever their processes' nice: the group's own nice is set
+# as well, or the build would take half the CPU from the tests.
 setsid sh -c 'echo 19 >/proc/self/autogroup 2>/dev/null || true; exec nice -n 19 cmake --build --preset sanitize -j "$1"' \
   sanitize-build "$jobs" >"$sanitize_log" 2>&1 &
 sanitize_build=$!
