@@ -145,7 +145,7 @@ void signals_checkpoint_and_resume() {
     const ScratchDir dir;
     const std::string scene = "1500 250 1 100000 print\n";
     for (const std::string engine : {"step", "exact"}) {
-        for (const int signal : {SIGINT, SIGTERM}) {
+        for (const int signal : {SIGINT, SIGTERM, SIGHUP}) {
             check::Context context(engine, " engine, signal ", signal);
             const std::string out = dir / "first.out", checkpoint = dir / "run.checkpoint";
             const Result first =
@@ -464,12 +464,55 @@ void second_signal_stops_at_once() {
     CHECK_EQ(scene.status, 0);
     const std::string out = dir / "out.txt";
     write_file(out, "the previous result\n");
-    const Result forced = simcli_run({"--engine", "exact", "-o", out}, scene.out, {SIGINT, 300, "", 300});
+    // The signals count from the output's temporary file, so that a slow start on a busy machine is not signalled.
+    const Result forced =
+        simcli_run({"--engine", "exact", "-o", out}, scene.out, {SIGINT, 300, dir / ".out.txt.simcli-{pid}.tmp", 300});
     CHECK_EQ(forced.status, 128 + SIGINT);
     CHECK(forced.err.find("simcli: stopped at once by a second signal") == 0);
     CHECK(forced.err.find("interrupted after step") == std::string::npos);  // not the step's end
     CHECK(run_process::slurp(out) == "the previous result\n");
     CHECK_EQ(dir.file_count(), 1U);
+}
+
+// A signal as soon as the output's temporary file exists, while step 0 of a
+// large scene is being written: the run goes on to the end of its first
+// step, stops there as from any step, and leaves no temporary file behind.
+void signal_while_the_start_is_written() {
+    const ScratchDir dir;
+    const Result scene = run_process::run(SIMGEN_PATH, {"gas", "-n", "100000", "-s", "3", "--mode", "print"});
+    CHECK_EQ(scene.status, 0);
+    const std::string out = dir / "out.txt";
+    write_file(out, "the previous result\n");
+    const Result early = simcli_run({"-t", "1", "-o", out}, scene.out, {SIGINT, 0, dir / ".out.txt.simcli-{pid}.tmp"});
+    CHECK_EQ(early.status, 128 + SIGINT);
+    CHECK(early.err.find("simcli: interrupted after step 1 of 3; " + out + " left as it was") == 0);
+    CHECK(run_process::slurp(out) == "the previous result\n");
+    CHECK_EQ(dir.file_count(), 1U);
+}
+
+// A signal simcli was started ignoring (nohup; a shell's background job and
+// SIGINT) stays ignored: the run goes on to its end.
+void signal_started_ignored_stays_ignored() {
+    const ScratchDir dir;
+    const Result scene = run_process::run(SIMGEN_PATH, {"gas", "-n", "100000", "-s", "3", "--mode", "print"});
+    CHECK_EQ(scene.status, 0);
+    const Result whole = simcli_run({"-t", "1"}, scene.out);
+    CHECK_EQ(whole.status, 0);
+    const std::string out = dir / "out.txt";
+    for (const int signal : {SIGINT, SIGHUP}) {
+        check::Context context("signal ", signal);
+        struct sigaction ignore {};
+        struct sigaction before {};
+        ignore.sa_handler = SIG_IGN;
+        sigemptyset(&ignore.sa_mask);
+        sigaction(signal, &ignore, &before);  // inherited by the child
+        const Result ignored =
+            simcli_run({"-t", "1", "-o", out}, scene.out, {signal, 0, dir / ".out.txt.simcli-{pid}.tmp"});
+        sigaction(signal, &before, nullptr);
+        CHECK_EQ(ignored.status, 0);
+        CHECK(ignored.err.empty());
+        CHECK(run_process::slurp(out) == whole.out);
+    }
 }
 
 void progress_line() {
@@ -592,6 +635,8 @@ int main(int argc, char** argv) {
                        {"output file replaced only on success", output_file_replaced_only_on_success},
                        {"exact numbers", exact_numbers},
                        {"second signal stops at once", second_signal_stops_at_once},
+                       {"signal while the start is written", signal_while_the_start_is_written},
+                       {"signal started ignored stays ignored", signal_started_ignored_stays_ignored},
                        {"progress line", progress_line},
                        {"bad usage", bad_usage}});
 }

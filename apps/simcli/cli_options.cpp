@@ -42,9 +42,9 @@ Simulates N hard disks bouncing elastically in a square box, in discrete steps.
                                    exact: nearest images meet, printed positions in [0, L)
       --exact-numbers              numbers in the shortest form that reads back to the
                                    same double, instead of 8 decimals
-      --checkpoint FILE            write the run's exact state to FILE on SIGINT/SIGTERM
-                                   (then exit 130 / 143, keeping the output, trajectory and
-                                   observables written so far)
+      --checkpoint FILE            write the run's exact state to FILE on SIGINT/SIGTERM/SIGHUP
+                                   (then exit 130 / 143 / 129, keeping the output, trajectory
+                                   and observables written so far)
       --checkpoint-every K           and after every K steps
       --resume FILE                continue a checkpointed run bit for bit ('-': stdin); writes
                                    the steps after the checkpoint (append them to the first
@@ -74,7 +74,7 @@ Simulates N hard disks bouncing elastically in a square box, in discrete steps.
       --version                    the version, exit 0
 
 Exit status: 0 success, 1 failure while running (output not writable, a runaway
-exact step), 2 bad usage or bad input, 130 / 143 interrupted by SIGINT / SIGTERM.
+exact step), 2 bad usage or bad input, 130 / 143 / 129 interrupted by SIGINT / SIGTERM / SIGHUP.
 )";
 
 std::uint64_t parse_unsigned(std::string_view option, std::string_view text, std::uint64_t min, std::uint64_t max) {

@@ -18,7 +18,7 @@ struct ClosesStream {
 using InterruptibleOutput = std::unique_ptr<std::FILE, ClosesStream>;
 
 // An unbuffered stream onto file descriptor 1 (which it leaves open): a write
-// returns short, as a failed write, once SIGINT or SIGTERM has been received
+// returns short, as a failed write, once SIGINT, SIGTERM or SIGHUP has been received
 // (interrupts.hpp) and the descriptor does not take all of it. Null where the
 // C library cannot make such a stream (then stdout is all there is).
 InterruptibleOutput open_interruptible_standard_output();

@@ -50,15 +50,20 @@ extern "C" void note_signal(int signal) {
     std::raise(signal);
 }
 
-// note_signal() for SIGINT and SIGTERM; `flags` say whether a write the
-// signal cut short is resumed (SA_RESTART).
+// note_signal() for SIGINT, SIGTERM and SIGHUP, except one the process was
+// started ignoring (nohup; a shell's background job ignores SIGINT): that
+// stays ignored. `flags` say whether a write the signal cut short is resumed
+// (SA_RESTART).
 void note_interrupts(int flags) {
     struct sigaction action {};
     action.sa_handler = note_signal;
     sigemptyset(&action.sa_mask);
     action.sa_flags = flags;
-    sigaction(SIGINT, &action, nullptr);
-    sigaction(SIGTERM, &action, nullptr);
+    for (const int signal : {SIGINT, SIGTERM, SIGHUP}) {
+        struct sigaction current {};
+        sigaction(signal, nullptr, &current);
+        if (current.sa_handler != SIG_IGN) sigaction(signal, &action, nullptr);
+    }
 }
 
 }  // namespace

@@ -1,5 +1,5 @@
 #pragma once
-// SIGINT and SIGTERM do not kill simcli mid-write: they set a flag that the
+// SIGINT, SIGTERM and SIGHUP do not kill simcli mid-write: they set a flag that the
 // run checks after every step, so that it can stop cleanly (flush, write a
 // checkpoint, remove an unfinished output) and exit 128 + the signal. A
 // second signal before the run has seen the first (a step that takes too
@@ -15,7 +15,7 @@
 namespace simcli {
 
 void catch_interrupts();
-// The signal received (SIGINT or SIGTERM), or 0. Once it has returned a
+// The signal received (SIGINT, SIGTERM or SIGHUP), or 0. Once it has returned a
 // signal, the run stops in order and a second signal no longer forces it.
 int pending_interrupt();
 // Whether a signal has been received, without marking the run as stopping.

@@ -38,7 +38,7 @@ using namespace simcli;
 constexpr int exit_failure = 1;
 constexpr int exit_bad_input = 2;
 
-// A run stopped by SIGINT or SIGTERM, after a clean flush: exit 128 + signal.
+// A run stopped by SIGINT, SIGTERM or SIGHUP, after a clean flush: exit 128 + signal.
 class Interrupted : public std::runtime_error {
 public:
     Interrupted(int signal, const std::string& message) : std::runtime_error(message), signal_(signal) {}
@@ -167,6 +167,9 @@ RunStats write_run(E& engine, const RunSettings& settings, const CliOptions& opt
     stats.initial_energy = total_kinetic_energy(engine.particles());
     const std::int64_t first_step = engine.steps_done();
     stats.steps_run = settings.steps - first_step;
+    // Caught before any file is made: a signal while the start is written is
+    // then seen after the first step, and never leaves a temporary file behind.
+    catch_interrupts();
     OutputFile output(options.output_path);
     StateWriter writer(output.stream(), settings.numbers);
     if (settings.boundary == Boundary::periodic) writer.wrap_positions_into(settings.world.box_size);
@@ -177,7 +180,6 @@ RunStats write_run(E& engine, const RunSettings& settings, const CliOptions& opt
     const auto start = std::chrono::steady_clock::now();
     {
         ProgressLine progress(options.progress, first_step, settings.steps, options.progress_every);
-        catch_interrupts();
         for (std::int64_t step = first_step; step < settings.steps;) {
             engine.step();
             ++step;

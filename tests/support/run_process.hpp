@@ -84,7 +84,7 @@ struct Signal {
 
     int number = 0;
     int after_ms = 0;
-    std::string once_exists;
+    std::string once_exists;  // "{pid}" in it stands for the child's process id
     int again_after_ms = -1;  // when 0 or more: the same signal once more, this long after the first
 };
 
@@ -135,7 +135,12 @@ inline Result run(const std::string& program, const std::vector<std::string>& ar
         int status = 0;
         bool running = true;
         if (signal.number != 0) {
-            if (!signal.once_exists.empty()) running = wait_for_file(pid, signal.once_exists, &status);
+            if (!signal.once_exists.empty()) {
+                std::string path = signal.once_exists;
+                const std::size_t at = path.find("{pid}");
+                if (at != std::string::npos) path.replace(at, 5, std::to_string(pid));
+                running = wait_for_file(pid, path, &status);
+            }
             if (running) {
                 usleep(static_cast<useconds_t>(signal.after_ms) * 1000);
                 kill(pid, signal.number);
