@@ -474,18 +474,25 @@ void second_signal_stops_at_once() {
     CHECK_EQ(dir.file_count(), 1U);
 }
 
-// A signal as soon as the output's temporary file exists, while step 0 of a
-// large scene is being written: the run goes on to the end of its first
-// step, stops there as from any step, and leaves no temporary file behind.
-void signal_while_the_start_is_written() {
+// A signal as soon as the first temporary file exists: the trajectory's,
+// made before the engine, or the output's, made before step 0 of a large
+// scene is written. The run goes on to the end of its first step, stops
+// there as from any step, and leaves no temporary file behind.
+void signal_while_the_run_starts() {
     const ScratchDir dir;
     const Result scene = run_process::run(SIMGEN_PATH, {"gas", "-n", "100000", "-s", "3", "--mode", "print"});
     CHECK_EQ(scene.status, 0);
-    const std::string out = dir / "out.txt";
+    const std::string out = dir / "out.txt", trajectory = dir / "t.xyz";
     write_file(out, "the previous result\n");
-    const Result early = simcli_run({"-t", "1", "-o", out}, scene.out, {SIGINT, 0, dir / ".out.txt.simcli-{pid}.tmp"});
-    CHECK_EQ(early.status, 128 + SIGINT);
-    CHECK(early.err.find("simcli: interrupted after step 1 of 3; " + out + " left as it was") == 0);
+    const Result at_output =
+        simcli_run({"-t", "1", "-o", out}, scene.out, {SIGINT, 0, dir / ".out.txt.simcli-{pid}.tmp"});
+    CHECK_EQ(at_output.status, 128 + SIGINT);
+    CHECK(at_output.err.find("simcli: interrupted after step 1 of 3; " + out + " left as it was") == 0);
+    const Result at_trajectory = simcli_run({"-t", "1", "-o", out, "--trajectory", trajectory}, scene.out,
+                                            {SIGINT, 0, dir / ".t.xyz.simcli-{pid}.tmp"});
+    CHECK_EQ(at_trajectory.status, 128 + SIGINT);
+    CHECK(at_trajectory.err.find("simcli: interrupted after step 1 of 3; " + out + " and " + trajectory +
+                                 " left as they were") == 0);
     CHECK(run_process::slurp(out) == "the previous result\n");
     CHECK_EQ(dir.file_count(), 1U);
 }
@@ -635,7 +642,7 @@ int main(int argc, char** argv) {
                        {"output file replaced only on success", output_file_replaced_only_on_success},
                        {"exact numbers", exact_numbers},
                        {"second signal stops at once", second_signal_stops_at_once},
-                       {"signal while the start is written", signal_while_the_start_is_written},
+                       {"signal while the run starts", signal_while_the_run_starts},
                        {"signal started ignored stays ignored", signal_started_ignored_stays_ignored},
                        {"progress line", progress_line},
                        {"bad usage", bad_usage}});

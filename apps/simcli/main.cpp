@@ -167,9 +167,6 @@ RunStats write_run(E& engine, const RunSettings& settings, const CliOptions& opt
     stats.initial_energy = total_kinetic_energy(engine.particles());
     const std::int64_t first_step = engine.steps_done();
     stats.steps_run = settings.steps - first_step;
-    // Caught before any file is made: a signal while the start is written is
-    // then seen after the first step, and never leaves a temporary file behind.
-    catch_interrupts();
     OutputFile output(options.output_path);
     StateWriter writer(output.stream(), settings.numbers);
     if (settings.boundary == Boundary::periodic) writer.wrap_positions_into(settings.world.box_size);
@@ -338,6 +335,10 @@ void run_scene(const CliOptions& options) {
         throw BadInput(at_line(name, lines.steps) + "--measure-from " + std::to_string(options.measure_from) +
                        " is beyond the scene's S = " + std::to_string(scene.steps) + " steps");
     }
+    // Caught before any file is made: a signal while the run starts (the
+    // engine made, step 0 written) is seen after the first step, and never
+    // leaves a temporary file behind.
+    catch_interrupts();
     pictures.open_files(options, scene.world, options.boundary, scene.steps);
     const bool exact = options.engine == EngineChoice::exact;
     if (options.animation) {
@@ -382,6 +383,7 @@ void resume_run(const CliOptions& options) {
     // The trajectory and the observables go on after the checkpoint's step
     // (--animate and --snapshot need the whole run).
     Pictures pictures;
+    catch_interrupts();  // before any file is made, as for a scene
     pictures.open_files(options, settings.world, settings.boundary, settings.steps);
     try {
         if (settings.engine == EngineChoice::exact) {
