@@ -474,21 +474,26 @@ void second_signal_stops_at_once() {
     CHECK_EQ(dir.file_count(), 1U);
 }
 
+// 100 000 disks for 3 steps in print mode: writing a state takes a while.
+std::string large_print_scene() {
+    const Result scene = run_process::run(SIMGEN_PATH, {"gas", "-n", "100000", "-s", "3", "--mode", "print"});
+    CHECK_EQ(scene.status, 0);
+    return scene.out;
+}
+
 // A signal as soon as the first temporary file exists: the trajectory's,
 // made before the engine, or the output's, made before step 0 of a large
 // scene is written. The run goes on to the end of its first step, stops
 // there as from any step, and leaves no temporary file behind.
 void signal_while_the_run_starts() {
     const ScratchDir dir;
-    const Result scene = run_process::run(SIMGEN_PATH, {"gas", "-n", "100000", "-s", "3", "--mode", "print"});
-    CHECK_EQ(scene.status, 0);
+    const std::string scene = large_print_scene();
     const std::string out = dir / "out.txt", trajectory = dir / "t.xyz";
     write_file(out, "the previous result\n");
-    const Result at_output =
-        simcli_run({"-t", "1", "-o", out}, scene.out, {SIGINT, 0, dir / ".out.txt.simcli-{pid}.tmp"});
+    const Result at_output = simcli_run({"-t", "1", "-o", out}, scene, {SIGINT, 0, dir / ".out.txt.simcli-{pid}.tmp"});
     CHECK_EQ(at_output.status, 128 + SIGINT);
     CHECK(at_output.err.find("simcli: interrupted after step 1 of 3; " + out + " left as it was") == 0);
-    const Result at_trajectory = simcli_run({"-t", "1", "-o", out, "--trajectory", trajectory}, scene.out,
+    const Result at_trajectory = simcli_run({"-t", "1", "-o", out, "--trajectory", trajectory}, scene,
                                             {SIGINT, 0, dir / ".t.xyz.simcli-{pid}.tmp"});
     CHECK_EQ(at_trajectory.status, 128 + SIGINT);
     CHECK(at_trajectory.err.find("simcli: interrupted after step 1 of 3; " + out + " and " + trajectory +
@@ -501,9 +506,8 @@ void signal_while_the_run_starts() {
 // SIGINT) stays ignored: the run goes on to its end.
 void signal_started_ignored_stays_ignored() {
     const ScratchDir dir;
-    const Result scene = run_process::run(SIMGEN_PATH, {"gas", "-n", "100000", "-s", "3", "--mode", "print"});
-    CHECK_EQ(scene.status, 0);
-    const Result whole = simcli_run({"-t", "1"}, scene.out);
+    const std::string scene = large_print_scene();
+    const Result whole = simcli_run({"-t", "1"}, scene);
     CHECK_EQ(whole.status, 0);
     const std::string out = dir / "out.txt";
     for (const int signal : {SIGINT, SIGHUP}) {
@@ -514,7 +518,7 @@ void signal_started_ignored_stays_ignored() {
         sigemptyset(&ignore.sa_mask);
         sigaction(signal, &ignore, &before);  // inherited by the child
         const Result ignored =
-            simcli_run({"-t", "1", "-o", out}, scene.out, {signal, 0, dir / ".out.txt.simcli-{pid}.tmp"});
+            simcli_run({"-t", "1", "-o", out}, scene, {signal, 0, dir / ".out.txt.simcli-{pid}.tmp"});
         sigaction(signal, &before, nullptr);
         CHECK_EQ(ignored.status, 0);
         CHECK(ignored.err.empty());
