@@ -85,10 +85,11 @@ Scene as_scene(const NamedScene& t, OutputMode mode = OutputMode::print) {
     return scene;
 }
 
+// `particles` goes to every family but ties, which has its own.
 Scene family_scene(SceneFamily family, std::uint64_t seed, std::size_t particles, std::int64_t steps) {
     SceneFamilyOptions options;
     options.seed = seed;
-    options.particles = particles;
+    if (family != SceneFamily::ties) options.particles = particles;
     options.steps = steps;
     return make_family_scene(family, options);
 }
@@ -488,9 +489,55 @@ void exact_ties_are_decided() {
     CHECK(right.out.find("\n  step 1: ") == std::string::npos);
 }
 
+// Each family takes the settings simgen --help names for it, and refuses
+// the others in one line instead of ignoring them (gas with -L 500 gave a
+// box of another side without a word).
+void families_refuse_settings_they_have_no_use_for() {
+    struct Setting {
+        std::vector<std::string> arguments;
+        const char* words;
+        std::vector<SceneFamily> takers;
+    };
+    using enum SceneFamily;
+    const std::vector<SceneFamily> all_but_ties{random,   gas,  lattice, line,    cradle,
+                                                clusters, fast, walls,   crystal, compressed};
+    const std::vector<Setting> settings{
+        {{"-n", "30"}, "a particle count", all_but_ties},
+        {{"-L", "400"}, "a box size", {random, line, fast, walls}},
+        {{"--fraction", "0.2"}, "an area fraction", {gas, clusters, crystal, compressed}},
+        {{"--speed-max", "1"}, "speeds", {random, gas, lattice, line, cradle, clusters, fast, walls}},
+        {{"--temperature", "0.3"}, "a temperature", {crystal, compressed}},
+        {{"--boundary", "periodic"}, "a periodic box", {crystal, compressed}},
+        {{"--growth-rate", "0.02"}, "a growth rate", {compressed}},
+    };
+    for (const SceneFamilyInfo& info : scene_families()) {
+        for (const Setting& setting : settings) {
+            std::vector<std::string> arguments{info.name, "-s", "1"};
+            arguments.insert(arguments.end(), setting.arguments.begin(), setting.arguments.end());
+            if (setting.words != std::string("a particle count") && info.family != ties)
+                arguments.insert(arguments.end(), {"-n", "30"});
+            const run_process::Result made = run_process::run(simgen, arguments);
+            check::Context context(info.name, " ", setting.arguments[0], ": ", made.err);
+            if (std::find(setting.takers.begin(), setting.takers.end(), info.family) != setting.takers.end()) {
+                CHECK_EQ(made.status, 0);
+                continue;
+            }
+            CHECK_EQ(made.status, 2);
+            CHECK(made.out.empty());
+            const std::string line = "simgen: " + std::string(info.name) + ": this family has no use for " +
+                                     setting.words +
+                                     (info.family == ties ? "; its particles and box are its own" : "; it takes ");
+            CHECK(made.err.rfind(line, 0) == 0);
+            CHECK_EQ(std::count(made.err.begin(), made.err.end(), '\n'), 1L);
+        }
+    }
+}
+
 void every_family_checks_cleanly() {
     for (const SceneFamilyInfo& info : scene_families()) {
-        const run_process::Result gen = run_process::run(simgen, {info.name, "-n", "40", "-s", "25", "--seed", "11"});
+        std::vector<std::string> arguments{info.name, "-s", "25", "--seed", "11"};
+        if (info.family != SceneFamily::ties) arguments.insert(arguments.end(), {"-n", "40"});
+        const run_process::Result gen = run_process::run(simgen, arguments);
         CHECK_EQ(gen.status, 0);
         // Every particle listed, every number the shortest text of its double.
         std::istringstream in(gen.out);
@@ -516,6 +563,7 @@ void every_family_checks_cleanly() {
     // walls family's box must hold the disks along its walls as well as the
     // pairs inside, and the fast family's must grow past 100 r.
     for (const SceneFamilyInfo& info : scene_families()) {
+        if (info.family == SceneFamily::ties) continue;  // its fixed set of tied collisions
         std::vector<std::string> arguments{info.name, "-n", "2000", "-s", "1"};
         if (info.family == SceneFamily::compressed) arguments.insert(arguments.end(), {"--fraction", "0.3"});
         const run_process::Result many = run_process::run(simgen, arguments);
@@ -524,8 +572,7 @@ void every_family_checks_cleanly() {
         if (many.status != 0) continue;
         std::istringstream in(many.out);
         const Scene scene = read_scene(in);
-        // The ties family is its fixed set of tied collisions.
-        if (info.family != SceneFamily::ties) CHECK_EQ(scene.particle_count, std::size_t{2000});
+        CHECK_EQ(scene.particle_count, std::size_t{2000});
     }
     // Clusters of a few disks each, at the default fraction and at the
     // highest: random placement fills them, drawn wider where it must (a
@@ -550,6 +597,7 @@ void every_family_checks_cleanly() {
     // the random family's 20000), or, for the cradle, which needs two, a
     // refusal that says so.
     for (const SceneFamilyInfo& info : scene_families()) {
+        if (info.family == SceneFamily::ties) continue;  // it takes no count (below)
         const run_process::Result none = run_process::run(simgen, {info.name, "-n", "0", "-s", "1"});
         check::Context context(info.name, " -n 0: ", none.err);
         if (info.family == SceneFamily::cradle) {
@@ -561,7 +609,7 @@ void every_family_checks_cleanly() {
         if (none.status != 0) continue;
         std::istringstream in(none.out);
         const Scene scene = read_scene(in);
-        if (info.family != SceneFamily::ties) CHECK_EQ(scene.particle_count, std::size_t{0});
+        CHECK_EQ(scene.particle_count, std::size_t{0});
         CHECK(scene.world.box_size <= 20000.0);
     }
     // A compression's progress on stderr, off a terminal only when asked for:
@@ -781,16 +829,18 @@ void report_forms() {
 }  // namespace
 
 int main(int argc, char** argv) {
-    const int status = check::run(argc, argv, "test_simcheck",
-                                  {{"correct outputs pass", correct_outputs_pass},
-                                   {"substeps beyond a diameter", substeps_beyond_a_diameter},
-                                   {"substeps follow each way", substeps_follow_each_way},
-                                   {"exact engine outputs pass", exact_engine_outputs_pass},
-                                   {"mistakes are caught where they show", mistakes_are_caught_where_they_show},
-                                   {"exact ties are decided", exact_ties_are_decided},
-                                   {"every family checks cleanly", every_family_checks_cleanly},
-                                   {"the suite checks cleanly", suite_checks_cleanly},
-                                   {"report forms", report_forms}});
+    const int status =
+        check::run(argc, argv, "test_simcheck",
+                   {{"correct outputs pass", correct_outputs_pass},
+                    {"substeps beyond a diameter", substeps_beyond_a_diameter},
+                    {"substeps follow each way", substeps_follow_each_way},
+                    {"exact engine outputs pass", exact_engine_outputs_pass},
+                    {"mistakes are caught where they show", mistakes_are_caught_where_they_show},
+                    {"exact ties are decided", exact_ties_are_decided},
+                    {"every family checks cleanly", every_family_checks_cleanly},
+                    {"families refuse settings they have no use for", families_refuse_settings_they_have_no_use_for},
+                    {"the suite checks cleanly", suite_checks_cleanly},
+                    {"report forms", report_forms}});
     std::filesystem::remove_all(work_dir());
     return status;
 }

@@ -67,15 +67,15 @@ void print_usage() {
     for (const SceneFamilyInfo& info : scene_families()) std::printf("  %-9s %s\n", info.name, info.description);
     std::printf(
         "\n"
-        "options (each family uses those it has a use for):\n"
-        "  -n, --particles N      number of disks\n"
+        "options (a family refuses one it has no use for; --seed goes to every family):\n"
+        "  -n, --particles N      number of disks (every family but ties)\n"
         "  -s, --steps S          steps (default 100)\n"
         "      --mode print|perf  output mode (default print)\n"
         "      --seed K           seed (default 3210)\n"
         "  -r, --radius R         radius (default 1)\n"
         "  -L, --box L            side of the box (random, line, fast, walls)\n"
         "      --fraction F       area fraction (gas, clusters; crystal, compressed: below close packing)\n"
-        "      --speed-min V      lowest speed, length per step\n"
+        "      --speed-min V      lowest speed, length per step (not ties, crystal, compressed)\n"
         "      --speed-max V      highest speed\n"
         "      --temperature T    crystal, compressed: kT of the Maxwell velocities, mass 1 (default r^2/4)\n"
         "      --boundary B       crystal, compressed: walls (default) or periodic, a start that fills a\n"

@@ -27,9 +27,10 @@ struct SuiteCase {
     const char* exercises;
 };
 
+// `particles` 0: the family's own count (ties, which takes none).
 SceneFamilyOptions with(std::size_t particles, std::int64_t steps, OutputMode mode = OutputMode::print) {
     SceneFamilyOptions options;
-    options.particles = particles;
+    if (particles > 0) options.particles = particles;
     options.steps = steps;
     options.mode = mode;
     return options;

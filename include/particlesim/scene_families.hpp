@@ -42,18 +42,21 @@ struct SceneFamilyInfo {
 const std::vector<SceneFamilyInfo>& scene_families();
 std::optional<SceneFamily> scene_family_named(std::string_view name);
 
-// What a family may be asked for; each leaves what it fixes itself alone
-// (the ties family, for example, has its own particles and box).
+// What a family may be asked for. The radius, steps, mode and seed go to
+// every family (those without randomness ignore the seed); each optional
+// setting only to the families named beside it, and make_family_scene()
+// refuses one given to another family (the ties family, for example, has its
+// own particles and box).
 struct SceneFamilyOptions {
-    std::optional<std::size_t> particles;  // N
+    std::optional<std::size_t> particles;  // N: every family but ties
     std::int64_t steps = 100;
     OutputMode mode = OutputMode::print;
     std::uint64_t seed = default_seed;
     double radius = 1.0;
-    std::optional<double> box_size;       // random, fast, walls
-    std::optional<double> area_fraction;  // gas, clusters
-    std::optional<SpeedRange> speeds;     // length per step
-    std::optional<double> temperature;    // crystal: kT, mass 1, in (length per step)^2
+    std::optional<double> box_size;       // random, line, fast, walls
+    std::optional<double> area_fraction;  // gas, clusters, crystal, compressed
+    std::optional<SpeedRange> speeds;     // length per step: not ties, crystal, compressed
+    std::optional<double> temperature;    // crystal, compressed: kT, mass 1, in (length per step)^2
     Boundary boundary = Boundary::walls;  // crystal, compressed: a periodic box instead
     // compressed: the diameter's growth per unit time, in units of the thermal speed sqrt(kT / m).
     std::optional<double> growth_rate;
@@ -63,7 +66,8 @@ struct SceneFamilyOptions {
     std::function<void(double reached, double target)> compression_progress;
 };
 
-// Throws std::invalid_argument for options the family cannot honour (a
+// Throws std::invalid_argument for a setting the family has no use for, for
+// options the family cannot honour (a
 // crystal denser than its lattice fits: the message names the densest; a
 // compression above close packing, or one that jams first or runs out of
 // events still growing: the message names the fraction reached; a periodic

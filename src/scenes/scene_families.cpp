@@ -13,6 +13,8 @@
 #include <numbers>
 #include <stdexcept>
 #include <string>
+#include <utility>
+#include <vector>
 
 namespace particlesim {
 
@@ -490,6 +492,65 @@ Scene compressed(const SceneFamilyOptions& o) {
     return scene_of(o, box, std::move(particles), periodic ? CentresIn::periodic_box : CentresIn::walled_box);
 }
 
+// The settings of SceneFamilyOptions that a family takes, beyond the radius,
+// steps, mode and seed that every family accepts. One it has no use for is
+// refused rather than ignored: `gas` with a box size would otherwise give a
+// box of another side without a word.
+struct SettingsTaken {
+    bool particles = true;
+    bool box_size = false;
+    bool area_fraction = false;
+    bool speeds = true;
+    bool temperature = false;  // with a periodic box and a growth rate below
+    bool periodic = false;
+    bool growth_rate = false;
+};
+
+SettingsTaken settings_taken(SceneFamily family) {
+    switch (family) {
+    case SceneFamily::random:
+    case SceneFamily::line:
+    case SceneFamily::fast:
+    case SceneFamily::walls: return {.box_size = true};
+    case SceneFamily::gas:
+    case SceneFamily::clusters: return {.area_fraction = true};
+    case SceneFamily::lattice:
+    case SceneFamily::cradle: return {};
+    case SceneFamily::ties: return {.particles = false, .speeds = false};
+    case SceneFamily::crystal: return {.area_fraction = true, .speeds = false, .temperature = true, .periodic = true};
+    case SceneFamily::compressed:
+        return {.area_fraction = true, .speeds = false, .temperature = true, .periodic = true, .growth_rate = true};
+    }
+    return {};
+}
+
+void refuse_settings_not_taken(SceneFamily family, const SceneFamilyOptions& o) {
+    const SettingsTaken taken = settings_taken(family);
+    const std::pair<bool, const char*> settings[] = {
+        {taken.particles, "a particle count"},     {taken.box_size, "a box size"},
+        {taken.area_fraction, "an area fraction"}, {taken.speeds, "speeds"},
+        {taken.temperature, "a temperature"},      {taken.periodic, "a periodic box"},
+        {taken.growth_rate, "a growth rate"},
+    };
+    const bool given[] = {o.particles.has_value(),  o.box_size.has_value(),    o.area_fraction.has_value(),
+                          o.speeds.has_value(),     o.temperature.has_value(), o.boundary == Boundary::periodic,
+                          o.growth_rate.has_value()};
+    for (std::size_t k = 0; k < std::size(settings); ++k) {
+        if (!given[k] || settings[k].first) continue;
+        std::vector<const char*> takes;
+        for (const auto& [is_taken, name] : settings) {
+            if (is_taken) takes.push_back(name);
+        }
+        std::string list;
+        for (std::size_t j = 0; j < takes.size(); ++j) {
+            list += (j == 0 ? "" : j + 1 == takes.size() ? " and " : ", ") + std::string(takes[j]);
+        }
+        throw std::invalid_argument(
+            "particlesim::make_family_scene: this family has no use for " + std::string(settings[k].second) +
+            (takes.empty() ? std::string("; its particles and box are its own") : "; it takes " + list));
+    }
+}
+
 }  // namespace
 
 const std::vector<SceneFamilyInfo>& scene_families() {
@@ -536,6 +597,7 @@ Scene make_family_scene(SceneFamily family, const SceneFamilyOptions& options) {
                                     " particles are more than this machine can hold (at most " +
                                     std::to_string(max_particle_count()) + ")");
     }
+    refuse_settings_not_taken(family, options);
     switch (family) {
     case SceneFamily::random: return random_scene(options);
     case SceneFamily::gas: return gas(options);
