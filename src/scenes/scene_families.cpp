@@ -501,7 +501,7 @@ struct SettingsTaken {
     bool box_size = false;
     bool area_fraction = false;
     bool speeds = true;
-    bool temperature = false;  // with a periodic box and a growth rate below
+    bool temperature = false;
     bool periodic = false;
     bool growth_rate = false;
 };
