@@ -68,7 +68,7 @@ public:
     [[nodiscard]] const char* line_end() const { return on_terminal_ ? "" : "\n"; }
     // Takes a line drawn on a terminal away again.
     void clear() {
-        if (shown_ && on_terminal_) std::fputs("\r\033[K", stderr);
+        if (shown_ && on_terminal_) std::fputs(line_start(), stderr);
         shown_ = false;
     }
 

@@ -13,7 +13,6 @@
 #include <numbers>
 #include <stdexcept>
 #include <string>
-#include <utility>
 #include <vector>
 
 namespace particlesim {
@@ -525,28 +524,33 @@ SettingsTaken settings_taken(SceneFamily family) {
 }
 
 void refuse_settings_not_taken(SceneFamily family, const SceneFamilyOptions& o) {
-    const SettingsTaken taken = settings_taken(family);
-    const std::pair<bool, const char*> settings[] = {
-        {taken.particles, "a particle count"},     {taken.box_size, "a box size"},
-        {taken.area_fraction, "an area fraction"}, {taken.speeds, "speeds"},
-        {taken.temperature, "a temperature"},      {taken.periodic, "a periodic box"},
-        {taken.growth_rate, "a growth rate"},
+    struct Setting {
+        bool given;
+        bool taken;
+        const char* words;
     };
-    const bool given[] = {o.particles.has_value(),  o.box_size.has_value(),    o.area_fraction.has_value(),
-                          o.speeds.has_value(),     o.temperature.has_value(), o.boundary == Boundary::periodic,
-                          o.growth_rate.has_value()};
-    for (std::size_t k = 0; k < std::size(settings); ++k) {
-        if (!given[k] || settings[k].first) continue;
+    const SettingsTaken taken = settings_taken(family);
+    const Setting settings[] = {
+        {o.particles.has_value(), taken.particles, "a particle count"},
+        {o.box_size.has_value(), taken.box_size, "a box size"},
+        {o.area_fraction.has_value(), taken.area_fraction, "an area fraction"},
+        {o.speeds.has_value(), taken.speeds, "speeds"},
+        {o.temperature.has_value(), taken.temperature, "a temperature"},
+        {o.boundary == Boundary::periodic, taken.periodic, "a periodic box"},
+        {o.growth_rate.has_value(), taken.growth_rate, "a growth rate"},
+    };
+    for (const Setting& refused : settings) {
+        if (!refused.given || refused.taken) continue;
         std::vector<const char*> takes;
-        for (const auto& [is_taken, name] : settings) {
-            if (is_taken) takes.push_back(name);
+        for (const Setting& setting : settings) {
+            if (setting.taken) takes.push_back(setting.words);
         }
-        std::string list;
+        std::string list;  // "a, b and c"
         for (std::size_t j = 0; j < takes.size(); ++j) {
             list += (j == 0 ? "" : j + 1 == takes.size() ? " and " : ", ") + std::string(takes[j]);
         }
         throw std::invalid_argument(
-            "particlesim::make_family_scene: this family has no use for " + std::string(settings[k].second) +
+            "particlesim::make_family_scene: this family has no use for " + std::string(refused.words) +
             (takes.empty() ? std::string("; its particles and box are its own") : "; it takes " + list));
     }
 }
