@@ -19,8 +19,12 @@
 #include <netinet/in.h>
 #include <sched.h>
 #include <signal.h>
+#include <sys/ipc.h>
 #include <sys/mount.h>
+#include <sys/msg.h>
 #include <sys/prctl.h>
+#include <sys/sem.h>
+#include <sys/shm.h>
 #include <sys/socket.h>
 #include <sys/stat.h>
 #include <sys/syscall.h>
@@ -31,6 +35,7 @@
 #include <cerrno>
 #include <chrono>
 #include <cstddef>
+#include <cstdio>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
@@ -918,6 +923,60 @@ void an_interrupted_grade_leaves_nothing_behind() {
     }
 }
 
+constexpr char leave_ipc_option[] = "--leave-ipc";
+
+// test_grade --leave-ipc KEY ANSWER: a graded program that makes a System V
+// shared memory segment, semaphore set and message queue under KEY, then
+// prints ANSWER (conforms) and leaves them behind.
+int leave_ipc_and_answer(const char* key_text, const char* answer) {
+    const auto key = static_cast<key_t>(std::strtol(key_text, nullptr, 10));
+    if (shmget(key, 1 << 16, IPC_CREAT | 0600) < 0 || semget(key, 1, IPC_CREAT | 0600) < 0 ||
+        msgget(key, IPC_CREAT | 0600) < 0)
+        return 125;
+    std::fputs(run_process::slurp(answer).c_str(), stdout);
+    return 0;
+}
+
+// What a program leaves in System V IPC, which outlives its processes, is
+// gone when its run ends: isolated, with its IPC namespace; run by root
+// without namespaces (no CAP_SYS_ADMIN, as in a container), removed by its
+// own user's id and counted in left_ipc.
+void programs_leave_no_ipc_behind() {
+    const std::string self = fs::read_symlink("/proc/self/exe").string();
+    const auto key = static_cast<key_t>(0x50530000 | (getpid() & 0xffff));
+    struct Mode {
+        std::string name;
+        std::vector<std::string> launcher;
+    };
+    std::vector<Mode> modes{{geteuid() == 0 ? "root" : "this user", {}}};
+    if (geteuid() == 0)
+        modes.push_back({"root without CAP_SYS_ADMIN",
+                         {"/usr/bin/setpriv", "--inh-caps", "-all", "--bounding-set", "-sys_admin", "--"}});
+    for (const Mode& mode : modes) {
+        check::Context context(mode.name);
+        const Graded g =
+            grade(one_scene_suite(), {}, {self, leave_ipc_option, std::to_string(key), cradle_answer()}, mode.launcher);
+        CHECK_EQ(g.result.status, 0);
+        if (g.json.kind != mini_json::Value::Kind::object) continue;
+        CHECK_EQ(scenes(g)[0]["verdict"].text, std::string("conforms"));
+        const bool isolated = g.json["isolated"].number == 1.0, own_users = g.json["own_users"].number == 1.0;
+        const int segment = shmget(key, 0, 0), semaphores = semget(key, 0, 0), queue = msgget(key, 0);
+        if (!isolated && !own_users) {
+            // Neither isolated nor a user of its own: nothing tells the program's objects from its grader's.
+            std::printf("%s: not isolated and not root: System V IPC left behind not checked\n", mode.name.c_str());
+            if (segment >= 0) shmctl(segment, IPC_RMID, nullptr);
+            if (semaphores >= 0) semctl(semaphores, 0, IPC_RMID);
+            if (queue >= 0) msgctl(queue, IPC_RMID, nullptr);
+            continue;
+        }
+        CHECK_EQ(segment, -1);
+        CHECK_EQ(semaphores, -1);
+        CHECK_EQ(queue, -1);
+        CHECK_EQ(scenes(g)[0]["left_ipc"].number, isolated ? 0.0 : 3.0);
+        if (!isolated) CHECK(scenes(g)[0]["message"].text.find("it left 3 System V IPC objects") != std::string::npos);
+    }
+}
+
 void each_run_has_a_fresh_empty_directory() {
     const fs::path seen = work() / "directories.txt";
     fs::remove(seen);
@@ -1061,6 +1120,7 @@ int main(int argc, char** argv) {
         return run_as_nobody_without_user_namespaces(argv + 2);
     if (argc > 3 && std::string(argv[1]) == without_system_calls_option)
         return run_without_system_calls(argv[2], argv + 3);
+    if (argc == 4 && std::string(argv[1]) == leave_ipc_option) return leave_ipc_and_answer(argv[2], argv[3]);
     run_process::children_without_leak_checks();
     const int status = check::run(
         argc, argv, "test_grade",
@@ -1074,6 +1134,7 @@ int main(int argc, char** argv) {
          {"programs cannot read the answers", programs_cannot_read_the_answers},
          {"programs under mpirun are graded", programs_under_mpirun_are_graded},
          {"an interrupted grade leaves nothing behind", an_interrupted_grade_leaves_nothing_behind},
+         {"programs leave no System V IPC behind", programs_leave_no_ipc_behind},
          {"each run has a fresh empty directory", each_run_has_a_fresh_empty_directory},
          {"a grade with its streams closed", a_grade_with_its_streams_closed},
          {"bad usage", bad_usage}});

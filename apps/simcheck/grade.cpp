@@ -283,6 +283,7 @@ struct Row {
     std::optional<int> signal;
     int left_running = 0;  // processes found running after the program ended (killed)
     int left_files = 0;    // entries it made in /tmp and the like (removed)
+    int left_ipc = 0;      // System V IPC objects it left (removed)
 };
 
 std::string signal_name(int number) {
@@ -422,6 +423,7 @@ Row grade_scene(const SceneCase& c, const Options& o, const std::optional<std::s
     }
     row.left_running = run.left_running;
     row.left_files = run.left_files;
+    row.left_ipc = run.left_ipc;
     // "it left 2 files in ...", after what the message says already.
     const auto tell_left = [&](int count, const std::string& one, const std::string& many, const std::string& rest) {
         if (count == 0) return;
@@ -430,6 +432,8 @@ Row grade_scene(const SceneCase& c, const Options& o, const std::optional<std::s
     };
     tell_left(run.left_files, "file", "files", "in /tmp, /var/tmp or /dev/shm (removed)");
     tell_left(run.left_running, "process", "processes", "running after it ended (killed)");
+    tell_left(run.left_ipc, "System V IPC object", "System V IPC objects",
+              "(shared memory, semaphores, queues; removed)");
     if (!o.outputs_dir.empty()) {
         std::error_code ignored;
         fs::copy_file(output, fs::path(o.outputs_dir) / (c.name + ".out"), fs::copy_options::overwrite_existing,
@@ -557,6 +561,7 @@ void write_json(std::FILE* out, const Options& o, const std::vector<SceneCase>& 
         json += ", \"exit_status\": " + optional_number(r.exit_status) + ", \"signal\": " + optional_number(r.signal);
         json += ", \"left_running\": " + std::to_string(r.left_running);
         json += ", \"left_files\": " + std::to_string(r.left_files);
+        json += ", \"left_ipc\": " + std::to_string(r.left_ipc);
         json += ", \"deviations\": [";
         for (std::size_t d = 0; d < r.deviations.size(); ++d)
             json += (d > 0 ? ", " : "") + json_string(r.deviations[d]);

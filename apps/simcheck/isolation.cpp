@@ -172,7 +172,9 @@ bool isolates_in_user_namespace() { return geteuid() != 0; }
 bool HiddenPaths::isolate(bool read_only, bool own_processes) const {
     const bool own_user_namespace = isolates_in_user_namespace();
     if (own_user_namespace && !enter_user_namespace(own_processes)) return false;
-    if (unshare(CLONE_NEWNS | CLONE_NEWNET) != 0) return false;
+    // An IPC namespace too: the System V shared memory, semaphores and queues
+    // it makes go with its last process (ipc_objects.hpp).
+    if (unshare(CLONE_NEWNS | CLONE_NEWNET | CLONE_NEWIPC) != 0) return false;
     // Nothing mounted here reaches the grader's namespace.
     if (mount(nullptr, "/", nullptr, MS_REC | MS_PRIVATE, nullptr) != 0) return false;
     if (read_only) {

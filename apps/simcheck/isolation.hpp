@@ -1,6 +1,6 @@
 #pragma once
-// The grader gives each program a mount namespace, a network namespace and
-// a PID namespace of its own: run by root, with CAP_SYS_ADMIN; run by
+// The grader gives each program a mount namespace, a network namespace, an
+// IPC namespace and a PID namespace of its own: run by root, with CAP_SYS_ADMIN; run by
 // another user, inside a user namespace whose only user is the grader's
 // own. In the PID namespace, with a /proc of its own, the program sees and
 // signals its own processes alone (namespace_init.hpp). In the mount
@@ -12,7 +12,8 @@
 // read-only there too, so a program cannot change the suite, the grader's
 // files or anyone's that its user may write. In the network namespace,
 // only loopback exists (brought up, for programs that talk to themselves,
-// as mpirun does): no network.
+// as mpirun does): no network. In the IPC namespace, the System V objects
+// it makes go with its last process (ipc_objects.hpp).
 //
 // Where the kernel refuses (a container without CAP_SYS_ADMIN, or whose
 // seccomp filter forbids unshare; unprivileged user namespaces turned
@@ -67,7 +68,7 @@ public:
                          const std::vector<std::string>& read_only_directories = {});
 
     // In a child between fork and exec (async-signal-safe calls only):
-    // enters new mount and network namespaces, hides the paths, makes every
+    // enters new mount, network and IPC namespaces, hides the paths, makes every
     // file but the scratch places read-only (if `read_only`), and brings
     // loopback up. `own_processes`: the child of fork_into_pid_namespace(),
     // which also gets a /proc of its PID namespace. False if any step fails.

@@ -1,5 +1,6 @@
 #include "sandbox.hpp"
 
+#include "ipc_objects.hpp"
 #include "landlock_domain.hpp"
 #include "namespace_init.hpp"
 #include "own_user.hpp"
@@ -479,7 +480,10 @@ SandboxRun run_sandboxed(const std::vector<std::string>& arguments, const std::s
     const int escaped = unregister.finish();
     if (!stopped && (limits.runs_alone || user != 0)) run.left_running += escaped;
     // Nothing of its user runs any more: what it wrote outside its directory goes too.
-    if (user != 0) run.left_files = remove_files_of(user, directory);
+    if (user != 0) {
+        run.left_files = remove_files_of(user, directory);
+        run.left_ipc = remove_ipc_objects_of(user);
+    }
     // Its directory is removed, and its user released, as the exception leaves.
     if (interrupted) throw SandboxInterrupted();
     return run;

@@ -58,6 +58,10 @@ struct SandboxRun {
     // Run as a user of its own: the entries it left in /tmp, /var/tmp,
     // /dev/shm or $TMPDIR, all removed.
     int left_files = 0;
+    // Run as a user of its own without namespaces: the System V shared
+    // memory segments, semaphore sets and message queues it left, all
+    // removed (isolated, its IPC namespace takes them).
+    int left_ipc = 0;
 };
 
 // Whether programs run as users of their own: this process is root, may
