@@ -294,6 +294,38 @@ int running_with_argument(const std::string& argument) {
     return running;
 }
 
+// Each file a program writes is capped (RLIMIT_FSIZE), and so are its
+// files together: twelve files of 100 MiB (1.2 GiB allocated, past the
+// smallest cap of 1 GiB) in its working directory, or, run as a user of
+// its own, in $TMPDIR, stop it with output-limit long before its timeout,
+// and nothing of them is left. fallocate allocates without writing, where
+// the file system can.
+void files_together_are_capped() {
+    for (const std::string place : {"its directory", "$TMPDIR"}) {
+        check::Context context(place);
+        const std::string directory = place == "$TMPDIR" ? "\"${TMPDIR:-/tmp}\"" : ".";
+        const std::string body = "i=0\nwhile [ $i -lt 12 ]; do\n  f=" + directory +
+                                 "/filler-$$-$i\n"
+                                 "  fallocate -l 100M \"$f\" 2>/dev/null || head -c 104857600 /dev/zero > \"$f\"\n"
+                                 "  i=$((i + 1))\ndone\nexec sleep 1000.3\n";
+        const Graded g = grade(one_scene_suite(), {"--timeout", "60"}, {script("files.sh", body)});
+        if (g.json.kind != mini_json::Value::Kind::object) continue;
+        if (place == "$TMPDIR" && g.json["own_users"].number != 1.0) {
+            std::printf("not run by root: files outside its directory are not counted, not checked\n");
+            continue;
+        }
+        CHECK_EQ(g.result.status, 1);
+        CHECK_EQ(scenes(g)[0]["verdict"].text, std::string("output-limit"));
+        CHECK(scenes(g)[0]["message"].text.find("stopped when its files together held") != std::string::npos);
+        CHECK(scenes(g)[0]["seconds"].number < 30.0);
+        CHECK_EQ(running_with_argument("1000.3"), 0);
+        std::size_t fillers = 0;
+        for (const fs::directory_entry& entry : fs::directory_iterator(fs::temp_directory_path()))
+            fillers += entry.path().filename().string().rfind("filler-", 0) == 0;
+        CHECK_EQ(fillers, std::size_t{0});
+    }
+}
+
 // A name for each run of a grade, for the files a program notes: its
 // working directory's (a fresh one each run), not its pid, which in a PID
 // namespace of its own is the same in every run.
@@ -1127,6 +1159,7 @@ int main(int argc, char** argv) {
         {{"reference conforms everywhere", reference_conforms_everywhere},
          {"textbook mistakes are wrong at their step", textbook_mistakes_are_wrong_at_their_step},
          {"misbehaving programs get their verdicts", misbehaving_programs_get_their_verdicts},
+         {"files together are capped", files_together_are_capped},
          {"a child holding stdout does not hang the grader", a_child_holding_stdout_does_not_hang_the_grader},
          {"processes that leave the group are killed", processes_that_leave_the_group_are_killed},
          {"programs run by root are users of their own", programs_run_by_root_are_users_of_their_own},

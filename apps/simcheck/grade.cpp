@@ -53,8 +53,9 @@ Each run gets a fresh empty working directory, its own process group (killed
 as a whole when it ends), and limits:
       --timeout S        wall-clock seconds per scene (default: 50 times
                          simcli's time on the scene, at least 10; 60 without simcli)
-      --output-factor K  stdout (and any file it writes) capped at K times the
-                         expected output's size, plus 1 MiB (default 4)
+      --output-factor K  stdout capped at K times the expected output's size,
+                         plus 1 MiB (default 4); each file it writes, and its
+                         files together, too, but at least 1 GiB
       --memory MB        address space (default 4096; 0: no limit, for programs
                          built with AddressSanitizer, which reserves terabytes)
       --processes N      processes and threads it may add (default 256)
@@ -404,6 +405,13 @@ Row grade_scene(const SceneCase& c, const Options& o, const std::optional<std::s
         row.verdict = "output-limit";
         row.message =
             "stopped after writing more than " + std::to_string(limits.output_bytes) + " bytes (--output-factor)";
+        break;
+    case SandboxRun::End::files_limit:
+        row.verdict = "output-limit";
+        row.message =
+            "stopped when its files together held " + std::to_string(run.files_bytes) +
+            " bytes, more than the largest file it may write (" + std::to_string(run.files_limit) + "; counted in " +
+            (runs_programs_as_own_users() ? "its directory, /tmp, /var/tmp and /dev/shm" : "its directory") + ")";
         break;
     case SandboxRun::End::signalled:
         row.verdict = "crashed";

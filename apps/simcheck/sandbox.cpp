@@ -1,5 +1,6 @@
 #include "sandbox.hpp"
 
+#include "files_held.hpp"
 #include "ipc_objects.hpp"
 #include "landlock_domain.hpp"
 #include "namespace_init.hpp"
@@ -47,6 +48,12 @@ constexpr double drain_seconds = 1.0;
 // /dev/shm and /tmp whatever the output's size, and an mpirun run under a
 // smaller limit dies of SIGXFSZ.
 constexpr std::int64_t smallest_file_limit = std::int64_t{1} << 30;
+// How often the bytes its files hold are measured while it runs (a walk of
+// its directory and the scratch places' top level): a program writing at
+// a few GB/s passes the cap by at most a few hundred megabytes. Less often
+// where one walk takes longer (a program that makes very many files).
+constexpr double files_check_seconds = 0.1;
+constexpr double files_check_share = 0.05;  // the most of the grader's time the walks take
 
 class Fd {
 public:
@@ -411,6 +418,9 @@ SandboxRun run_sandboxed(const std::vector<std::string>& arguments, const std::s
     char buffer[1 << 16];
     bool ended_by_limit = false;
     bool interrupted = false;
+    // Its files together get the cap each of them has (RLIMIT_FSIZE).
+    run.files_limit = std::max(limits.output_bytes, smallest_file_limit);
+    Clock::time_point next_files_check = start;
     while (!ended_by_limit) {
         // Noticed within a second: no poll below waits longer.
         if (runs_interrupted() != 0) {
@@ -427,9 +437,24 @@ SandboxRun run_sandboxed(const std::vector<std::string>& arguments, const std::s
             ended_by_limit = true;
             break;
         }
+        if (!reaped && Clock::now() >= next_files_check) {
+            const Clock::time_point walk_start = Clock::now();
+            run.files_bytes = bytes_held(user, directory);
+            if (run.files_bytes > run.files_limit) {
+                stop(SandboxRun::End::files_limit);
+                ended_by_limit = true;
+                break;
+            }
+            const double walk = seconds_since(walk_start);
+            next_files_check = Clock::now() + std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double>(
+                                                  std::max(files_check_seconds, walk / files_check_share)));
+        }
         pollfd fds[3] = {
             {out_read.get(), POLLIN, 0}, {err_read.get(), POLLIN, 0}, {reaped ? -1 : exited.get(), POLLIN, 0}};
-        const int wait_ms = exited.get() >= 0 && !reaped ? static_cast<int>(std::min(left, 1.0) * 1000.0) + 1 : 10;
+        const double until_files_check =
+            std::max(0.0, std::chrono::duration<double>(next_files_check - Clock::now()).count());
+        const int wait_ms =
+            exited.get() >= 0 && !reaped ? static_cast<int>(std::min({left, 1.0, until_files_check}) * 1000.0) + 1 : 10;
         if (poll(fds, 3, wait_ms) < 0 && errno != EINTR) break;
         if (fds[0].revents != 0) {
             const ssize_t got = read(out_read.get(), buffer, sizeof buffer);

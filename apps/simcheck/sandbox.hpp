@@ -29,8 +29,9 @@
 namespace simcheck {
 
 struct SandboxLimits {
-    double seconds = 10.0;                              // wall clock
-    std::int64_t output_bytes = std::int64_t{1} << 30;  // stdout, and any file it writes (at least 1 GiB)
+    double seconds = 10.0;  // wall clock
+    // Its stdout; also each file it writes, and its files together, but those at least 1 GiB.
+    std::int64_t output_bytes = std::int64_t{1} << 30;
     std::int64_t memory_bytes = std::int64_t{4} << 30;  // address space (RLIMIT_AS); 0: none
     int processes = 256;                                // tasks it may add (RLIMIT_NPROC)
     // No other program runs beside it (grade --jobs 1): what left its group
@@ -44,13 +45,17 @@ struct SandboxLimits {
 };
 
 struct SandboxRun {
-    enum class End { exited, signalled, timeout, output_limit };
+    // output_limit: its stdout passed limits.output_bytes; files_limit: the
+    // files it held (files_held.hpp) passed the largest a file may be.
+    enum class End { exited, signalled, timeout, output_limit, files_limit };
     End end = End::exited;
     int exit_status = 0;  // exited
     int signal = 0;       // signalled
     double seconds = 0.0;
     std::int64_t output_bytes = 0;
-    std::string stderr_head;  // the first few kilobytes of its standard error
+    std::int64_t files_bytes = 0;  // what its files held when last measured
+    std::int64_t files_limit = 0;  // the cap on them
+    std::string stderr_head;       // the first few kilobytes of its standard error
     // Processes of the program still running when it had ended by itself,
     // all killed: its group's, and, run alone, as a user of its own or in a
     // PID namespace of its own, what had left the group.

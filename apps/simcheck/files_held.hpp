@@ -1,0 +1,22 @@
+#pragma once
+// The bytes a graded program's files hold on disk (or in memory, in
+// /dev/shm). RLIMIT_FSIZE caps each file, not how many: a program writing
+// a thousand files of a megabyte each would fill the disk, or the memory
+// behind /dev/shm, within its time limit. The grader measures these bytes
+// while the program runs and stops it once they pass its cap.
+
+#include <sys/types.h>
+
+#include <cstdint>
+#include <string>
+
+namespace simcheck {
+
+// The bytes allocated to the files under `directory` (the program's
+// working directory), and, for a user of its own (`user` not 0), to every
+// entry it owns in the scratch places (scratch_places.hpp), whole. Links
+// are not followed; a file that goes while it is measured counts nothing.
+// Allocated, not apparent: a sparse file counts what it holds.
+std::int64_t bytes_held(uid_t user, const std::string& directory);
+
+}  // namespace simcheck
