@@ -4,6 +4,7 @@
 
 #include <sys/stat.h>
 
+#include <algorithm>
 #include <filesystem>
 #include <system_error>
 
@@ -12,9 +13,14 @@ namespace {
 
 namespace fs = std::filesystem;
 
+// Every entry at least a page: an empty file still takes an inode (memory,
+// in /dev/shm), so a million of them count 4 GB.
+constexpr std::int64_t least_per_entry = 4096;
+
 std::int64_t allocated(const fs::path& path) {
     struct stat info {};
-    return lstat(path.c_str(), &info) == 0 ? static_cast<std::int64_t>(info.st_blocks) * 512 : 0;
+    if (lstat(path.c_str(), &info) != 0) return 0;
+    return std::max(static_cast<std::int64_t>(info.st_blocks) * 512, least_per_entry);
 }
 
 // `path` and, if it is a directory (not a link to one), everything below it.

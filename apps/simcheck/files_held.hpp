@@ -16,7 +16,8 @@ namespace simcheck {
 // working directory), and, for a user of its own (`user` not 0), to every
 // entry it owns in the scratch places (scratch_places.hpp), whole. Links
 // are not followed; a file that goes while it is measured counts nothing.
-// Allocated, not apparent: a sparse file counts what it holds.
+// Allocated, not apparent: a sparse file counts what it holds; but every
+// entry at least 4 KiB, so that a flood of empty files counts too.
 std::int64_t bytes_held(uid_t user, const std::string& directory);
 
 }  // namespace simcheck
