@@ -297,21 +297,35 @@ int running_with_argument(const std::string& argument) {
 // Each file a program writes is capped (RLIMIT_FSIZE), and so are its
 // files together: twelve files of 100 MiB (1.2 GiB allocated, past the
 // smallest cap of 1 GiB) in its working directory, or, run as a user of
-// its own, in $TMPDIR, stop it with output-limit long before its timeout,
-// and nothing of them is left. fallocate allocates without writing, where
-// the file system can.
+// its own, in $TMPDIR, and two of 600 MiB that it holds open after
+// removing them (as a memfd is), stop it with output-limit long before its
+// timeout, and nothing of them is left. fallocate allocates without
+// writing, where the file system can.
 void files_together_are_capped() {
-    for (const std::string place : {"its directory", "$TMPDIR"}) {
+    const std::string many =
+        "i=0\nwhile [ $i -lt 12 ]; do\n  f={place}/filler-$$-$i\n"
+        "  fallocate -l 100M \"$f\" 2>/dev/null || head -c 104857600 /dev/zero > \"$f\"\n"
+        "  i=$((i + 1))\ndone\nexec sleep 1000.3\n";
+    const std::string held_open =
+        "t=\"${TMPDIR:-/tmp}\"/filler-$$\nexec 3>\"$t-1\" 4>\"$t-2\"\nrm \"$t-1\" \"$t-2\"\n"
+        "for fd in 3 4; do\n"
+        "  fallocate -l 600M /proc/self/fd/$fd 2>/dev/null || head -c 629145600 /dev/zero >&$fd\n"
+        "done\nexec sleep 1000.3\n";
+    const auto in = [](std::string body, const std::string& place) {
+        body.replace(body.find("{place}"), 7, place);
+        return body;
+    };
+    const std::vector<std::pair<std::string, std::string>> cases{{"its directory", in(many, ".")},
+                                                                 {"$TMPDIR", in(many, "\"${TMPDIR:-/tmp}\"")},
+                                                                 {"held open, named nowhere", held_open}};
+    for (const auto& [place, body] : cases) {
         check::Context context(place);
-        const std::string directory = place == "$TMPDIR" ? "\"${TMPDIR:-/tmp}\"" : ".";
-        const std::string body = "i=0\nwhile [ $i -lt 12 ]; do\n  f=" + directory +
-                                 "/filler-$$-$i\n"
-                                 "  fallocate -l 100M \"$f\" 2>/dev/null || head -c 104857600 /dev/zero > \"$f\"\n"
-                                 "  i=$((i + 1))\ndone\nexec sleep 1000.3\n";
         const Graded g = grade(one_scene_suite(), {"--timeout", "60"}, {script("files.sh", body)});
         if (g.json.kind != mini_json::Value::Kind::object) continue;
         if (place == "$TMPDIR" && g.json["own_users"].number != 1.0) {
             std::printf("not run by root: files outside its directory are not counted, not checked\n");
+            for (const fs::directory_entry& entry : fs::directory_iterator(fs::temp_directory_path()))
+                if (entry.path().filename().string().rfind("filler-", 0) == 0) fs::remove(entry.path());
             continue;
         }
         CHECK_EQ(g.result.status, 1);

@@ -14,10 +14,14 @@ namespace simcheck {
 
 // The bytes allocated to the files under `directory` (the program's
 // working directory), and, for a user of its own (`user` not 0), to every
-// entry it owns in the scratch places (scratch_places.hpp), whole. Links
-// are not followed; a file that goes while it is measured counts nothing.
-// Allocated, not apparent: a sparse file counts what it holds; but every
-// entry at least 4 KiB, so that a flood of empty files counts too.
-std::int64_t bytes_held(uid_t user, const std::string& directory);
+// entry it owns in the scratch places (scratch_places.hpp), whole; and to
+// the files its processes hold open that no directory names any more (a
+// memfd, an unlinked temporary), which hold memory or disk as long as they
+// are open: its processes are its user's, or, without one, its process
+// group `group`'s. Links are not followed; a file that goes while it is
+// measured counts nothing. Allocated, not apparent: a sparse file counts
+// what it holds; but every entry at least 4 KiB, so that a flood of empty
+// files counts too.
+std::int64_t bytes_held(uid_t user, pid_t group, const std::string& directory);
 
 }  // namespace simcheck

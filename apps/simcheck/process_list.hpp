@@ -4,6 +4,8 @@
 #include <dirent.h>
 #include <sys/stat.h>
 
+#include <cstdio>
+#include <fstream>
 #include <optional>
 #include <string>
 
@@ -26,6 +28,27 @@ inline std::optional<uid_t> process_owner(const char* pid) {
     struct stat info {};
     if (stat((std::string("/proc/") + pid).c_str(), &info) != 0) return std::nullopt;
     return info.st_uid;
+}
+
+struct ProcessStat {
+    char state = 0;
+    pid_t parent = 0;
+    pid_t group = 0;
+};
+
+// From /proc/PID/stat, after the command's closing parenthesis (the command
+// may itself hold spaces and parentheses).
+inline bool read_process_stat(const char* pid, ProcessStat& stat) {
+    std::ifstream file(std::string("/proc/") + pid + "/stat");
+    std::string line;
+    if (!std::getline(file, line)) return false;
+    const std::size_t name_end = line.rfind(')');
+    if (name_end == std::string::npos) return false;
+    long parent = 0, group = 0;
+    if (std::sscanf(line.c_str() + name_end + 1, " %c %ld %ld", &stat.state, &parent, &group) != 3) return false;
+    stat.parent = static_cast<pid_t>(parent);
+    stat.group = static_cast<pid_t>(group);
+    return true;
 }
 
 }  // namespace simcheck

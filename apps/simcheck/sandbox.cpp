@@ -162,27 +162,6 @@ void become_subreaper() {
     std::call_once(once, [] { prctl(PR_SET_CHILD_SUBREAPER, 1, 0, 0, 0); });
 }
 
-struct ProcessStat {
-    char state = 0;
-    pid_t parent = 0;
-    pid_t group = 0;
-};
-
-// From /proc/PID/stat, after the command's closing parenthesis (the command
-// may itself hold spaces and parentheses).
-bool read_process_stat(const char* pid, ProcessStat& stat) {
-    std::ifstream file(std::string("/proc/") + pid + "/stat");
-    std::string line;
-    if (!std::getline(file, line)) return false;
-    const std::size_t name_end = line.rfind(')');
-    if (name_end == std::string::npos) return false;
-    long parent = 0, group = 0;
-    if (std::sscanf(line.c_str() + name_end + 1, " %c %ld %ld", &stat.state, &parent, &group) != 3) return false;
-    stat.parent = static_cast<pid_t>(parent);
-    stat.group = static_cast<pid_t>(group);
-    return true;
-}
-
 // The processes of process group `group` that are not yet zombies.
 int live_members(pid_t group) {
     int members = 0;
@@ -439,7 +418,7 @@ SandboxRun run_sandboxed(const std::vector<std::string>& arguments, const std::s
         }
         if (!reaped && Clock::now() >= next_files_check) {
             const Clock::time_point walk_start = Clock::now();
-            run.files_bytes = bytes_held(user, directory);
+            run.files_bytes = bytes_held(user, pid, directory);
             if (run.files_bytes > run.files_limit) {
                 stop(SandboxRun::End::files_limit);
                 ended_by_limit = true;
