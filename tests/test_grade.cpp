@@ -17,8 +17,10 @@
 #include <linux/filter.h>
 #include <linux/seccomp.h>
 #include <netinet/in.h>
+#include <poll.h>
 #include <sched.h>
 #include <signal.h>
+#include <sys/ioctl.h>
 #include <sys/ipc.h>
 #include <sys/mount.h>
 #include <sys/msg.h>
@@ -1023,6 +1025,74 @@ void programs_leave_no_ipc_behind() {
     }
 }
 
+constexpr char reach_terminal_option[] = "--reach-terminal";
+
+// test_grade --reach-terminal NOTE ANSWER: a graded program that tries to
+// write on its controlling terminal and to push input into it (TIOCSTI,
+// which the shell reading that terminal would run after the grade), notes
+// in NOTE what it managed, and prints ANSWER (conforms).
+int reach_terminal_and_answer(const char* note, const char* answer) {
+    std::string reached = "no terminal";
+    const int terminal = open("/dev/tty", O_RDWR | O_NOCTTY);
+    if (terminal >= 0) {
+        reached = "opened";
+        constexpr char text[] = "INJECTED-TEXT\n";
+        if (write(terminal, text, sizeof text - 1) > 0) reached += ", wrote";
+        const char pushed = '#';
+        if (ioctl(terminal, TIOCSTI, &pushed) == 0) reached += ", pushed input";
+        close(terminal);
+    }
+    std::ofstream(note) << reached;
+    std::fputs(run_process::slurp(answer).c_str(), stdout);
+    return 0;
+}
+
+// Graded from a terminal (the grader's controlling terminal a pseudo-
+// terminal here), a program reaches neither it nor its input: it runs with
+// no controlling terminal (setsid).
+void a_program_cannot_reach_the_graders_terminal() {
+    const std::string self = fs::read_symlink("/proc/self/exe").string();
+    fresh_shared_directory(work() / "terminal");
+    const fs::path note_path = work() / "terminal" / "note";
+    const int master = posix_openpt(O_RDWR | O_NOCTTY);
+    CHECK(master >= 0 && grantpt(master) == 0 && unlockpt(master) == 0);
+    if (master < 0) return;
+    const std::string terminal = ptsname(master);
+    const std::string answer = cradle_answer();
+    const std::string suite = one_scene_suite().string();
+    const pid_t grader = fork();
+    if (grader == 0) {
+        const int tty = setsid() >= 0 ? open(terminal.c_str(), O_RDWR) : -1;
+        if (tty < 0 || ioctl(tty, TIOCSCTTY, 0) != 0 || dup2(tty, 0) < 0 || dup2(tty, 1) < 0 || dup2(tty, 2) < 0)
+            _exit(125);
+        execl(simcheck.c_str(), simcheck.c_str(), "grade", suite.c_str(),
+#if defined(__SANITIZE_ADDRESS__)
+              "--memory", "0",
+#endif
+              "--", self.c_str(), reach_terminal_option, note_path.c_str(), answer.c_str(),
+              static_cast<char*>(nullptr));
+        _exit(127);
+    }
+    // The terminal's output read as it comes (a full terminal would stop the grader).
+    std::string shown;
+    int status = -1;
+    for (bool ended = false; !ended;) {
+        ended = waitpid(grader, &status, WNOHANG) == grader;
+        pollfd ready{master, POLLIN, 0};
+        while (poll(&ready, 1, ended ? 0 : 50) > 0) {
+            char buffer[4096];
+            const ssize_t got = read(master, buffer, sizeof buffer);
+            if (got <= 0) break;
+            shown.append(buffer, static_cast<std::size_t>(got));
+        }
+    }
+    close(master);
+    CHECK(WIFEXITED(status) && WEXITSTATUS(status) == 0);
+    CHECK(shown.find("1 of 1 scenes conform") != std::string::npos);
+    CHECK_EQ(first_line(note_path), std::string("no terminal"));
+    CHECK(shown.find("INJECTED-TEXT") == std::string::npos);
+}
+
 void each_run_has_a_fresh_empty_directory() {
     const fs::path seen = work() / "directories.txt";
     fs::remove(seen);
@@ -1167,6 +1237,7 @@ int main(int argc, char** argv) {
     if (argc > 3 && std::string(argv[1]) == without_system_calls_option)
         return run_without_system_calls(argv[2], argv + 3);
     if (argc == 4 && std::string(argv[1]) == leave_ipc_option) return leave_ipc_and_answer(argv[2], argv[3]);
+    if (argc == 4 && std::string(argv[1]) == reach_terminal_option) return reach_terminal_and_answer(argv[2], argv[3]);
     run_process::children_without_leak_checks();
     const int status = check::run(
         argc, argv, "test_grade",
@@ -1182,6 +1253,7 @@ int main(int argc, char** argv) {
          {"programs under mpirun are graded", programs_under_mpirun_are_graded},
          {"an interrupted grade leaves nothing behind", an_interrupted_grade_leaves_nothing_behind},
          {"programs leave no System V IPC behind", programs_leave_no_ipc_behind},
+         {"a program cannot reach the grader's terminal", a_program_cannot_reach_the_graders_terminal},
          {"each run has a fresh empty directory", each_run_has_a_fresh_empty_directory},
          {"a grade with its streams closed", a_grade_with_its_streams_closed},
          {"bad usage", bad_usage}});

@@ -49,8 +49,8 @@ against simcli on the same scene, and prints a table. simgen's manifest.tsv
 names what each scene exercises; an expected output NAME.out sets the cap on
 output size.
 
-Each run gets a fresh empty working directory, its own process group (killed
-as a whole when it ends), and limits:
+Each run gets a fresh empty working directory, its own process group with no
+controlling terminal (killed as a whole when it ends), and limits:
       --timeout S        wall-clock seconds per scene (default: 50 times
                          simcli's time on the scene, at least 10; 60 without simcli)
       --output-factor K  stdout capped at K times the expected output's size,

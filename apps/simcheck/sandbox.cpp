@@ -92,7 +92,11 @@ void set_limit(int resource, rlim_t value) {
                               const SandboxLimits& limits, rlim_t tasks, uid_t user, int capability,
                               const HiddenPaths* hidden, bool read_only, int init_report,
                               const LandlockDomain& domain) {
-    setpgid(0, 0);
+    // setsid(), not just setpgid(): it then has no controlling terminal,
+    // so it can neither write on the grader's (open /dev/tty) nor push
+    // input into it for the shell to run after the grade (TIOCSTI). Its
+    // process group is numbered by its pid all the same.
+    setsid();
     dup2(err, 2);
     dup2(out, 1);
     const int in = open(stdin_path, O_RDONLY);
@@ -361,7 +365,9 @@ SandboxRun run_sandboxed(const std::vector<std::string>& arguments, const std::s
             if (!done) finish();
         }
     } unregister{pid, user};
-    setpgid(pid, pid);  // as the child does: whichever runs first
+    // No setpgid(pid, pid) here as well (the usual guard against the race):
+    // a group leader cannot call setsid(). Until the child's setsid(), a
+    // kill of its group misses it; stop() kills it by its pid too.
     out_write.close();
     err_write.close();
     report_write.close();

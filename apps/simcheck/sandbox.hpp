@@ -1,7 +1,9 @@
 #pragma once
 // Runs a program the grader does not trust: in a fresh empty working
-// directory, in a process group of its own that is killed as a whole at the
-// end (so a child left holding stdout open cannot hang the grader), and
+// directory, in a process group of its own with no controlling terminal
+// (setsid: it can neither write on the grader's nor push input into it),
+// killed as a whole at the end (so a child left holding stdout open cannot
+// hang the grader), and
 // whatever left that group (setsid, a daemon's double fork) killed too, once
 // adopted (simcheck is their subreaper, Linux's PR_SET_CHILD_SUBREAPER); with a
 // wall-clock limit, a cap on the bytes it writes to stdout, and setrlimit
