@@ -301,8 +301,9 @@ int running_with_argument(const std::string& argument) {
 // smallest cap of 1 GiB) in its working directory, or, run as a user of
 // its own, in $TMPDIR, and two of 600 MiB that it holds open after
 // removing them (as a memfd is), stop it with output-limit long before its
-// timeout, and nothing of them is left. fallocate allocates without
-// writing, where the file system can.
+// timeout, and nothing of them is left; so do directories nested deeper
+// than the grader walks. fallocate allocates without writing, where the
+// file system can.
 void files_together_are_capped() {
     const std::string many =
         "i=0\nwhile [ $i -lt 12 ]; do\n  f={place}/filler-$$-$i\n"
@@ -317,9 +318,14 @@ void files_together_are_capped() {
         body.replace(body.find("{place}"), 7, place);
         return body;
     };
+    // Deeper than the grader walks: stopped as well, however little the directories hold.
+    const std::string nested =
+        "i=0\nwhile [ $i -lt 200 ]; do mkdir d && cd d || exit 1; i=$((i + 1)); done\n"
+        "exec sleep 1000.3\n";
     const std::vector<std::pair<std::string, std::string>> cases{{"its directory", in(many, ".")},
                                                                  {"$TMPDIR", in(many, "\"${TMPDIR:-/tmp}\"")},
-                                                                 {"held open, named nowhere", held_open}};
+                                                                 {"held open, named nowhere", held_open},
+                                                                 {"nested 200 deep", nested}};
     for (const auto& [place, body] : cases) {
         check::Context context(place);
         const Graded g = grade(one_scene_suite(), {"--timeout", "60"}, {script("files.sh", body)});
@@ -332,7 +338,10 @@ void files_together_are_capped() {
         }
         CHECK_EQ(g.result.status, 1);
         CHECK_EQ(scenes(g)[0]["verdict"].text, std::string("output-limit"));
-        CHECK(scenes(g)[0]["message"].text.find("stopped when its files together held") != std::string::npos);
+        const std::string stopped_when = place == "nested 200 deep"
+                                             ? "stopped when it nested directories more than 64 deep"
+                                             : "stopped when its files together held";
+        CHECK(scenes(g)[0]["message"].text.find(stopped_when) != std::string::npos);
         CHECK(scenes(g)[0]["seconds"].number < 30.0);
         CHECK_EQ(running_with_argument("1000.3"), 0);
         std::size_t fillers = 0;

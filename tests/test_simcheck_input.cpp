@@ -10,6 +10,8 @@
 #include <sys/resource.h>
 #include <sys/wait.h>
 
+#include <cstdlib>
+#include <filesystem>
 #include <fstream>
 #include <string>
 #include <utility>
@@ -19,12 +21,23 @@ namespace {
 
 const std::string simcheck = SIMCHECK_PATH;
 
-std::string write_file(const std::string& name, const std::string& text) {
-    static const std::string dir = [] {
+// The files the checks write, in a directory of this run's that goes when it ends.
+struct TemporaryDirectory {
+    std::string path;
+    TemporaryDirectory() {
         char name_template[] = "/tmp/particlesim-simcheck-input-XXXXXX";
-        return std::string(mkdtemp(name_template));
-    }();
-    const std::string path = dir + "/" + name;
+        if (!mkdtemp(name_template)) std::abort();
+        path = name_template;
+    }
+    ~TemporaryDirectory() {
+        std::error_code ignored;
+        std::filesystem::remove_all(path, ignored);
+    }
+};
+
+std::string write_file(const std::string& name, const std::string& text) {
+    static const TemporaryDirectory dir;
+    const std::string path = dir.path + "/" + name;
     std::ofstream(path, std::ios::binary) << text;
     return path;
 }

@@ -3,11 +3,15 @@
 #include "process_list.hpp"
 #include "scratch_places.hpp"
 
+#include <dirent.h>
+#include <fcntl.h>
 #include <sys/stat.h>
+#include <unistd.h>
 
 #include <algorithm>
 #include <filesystem>
 #include <set>
+#include <string_view>
 #include <system_error>
 #include <utility>
 
@@ -20,21 +24,46 @@ namespace fs = std::filesystem;
 // in /dev/shm), so a million of them count 4 GB.
 constexpr std::int64_t least_per_entry = 4096;
 
-std::int64_t allocated(const fs::path& path) {
-    struct stat info {};
-    if (lstat(path.c_str(), &info) != 0) return 0;
+std::int64_t allocated(const struct stat& info) {
     return std::max(static_cast<std::int64_t>(info.st_blocks) * 512, least_per_entry);
 }
 
-// `path` and, if it is a directory (not a link to one), everything below it.
-std::int64_t bytes_below(const fs::path& path) {
-    std::int64_t bytes = allocated(path);
-    std::error_code error;
-    if (!fs::is_directory(fs::symlink_status(path, error))) return bytes;
-    for (fs::recursive_directory_iterator entry(path, fs::directory_options::skip_permission_denied, error), end;
-         !error && entry != end; entry.increment(error))
-        bytes += allocated(entry->path());
-    return bytes;
+// Everything below the open directory `directory` (closed here), by
+// descriptors relative to it: no path is built, so a tree nested
+// thousands deep costs neither memory nor PATH_MAX, and each level holds
+// one descriptor (recursion at most max_files_depth deep).
+void add_below(int directory, int depth, FilesHeld& held) {
+    DIR* listing = fdopendir(directory);
+    if (!listing) {
+        close(directory);
+        return;
+    }
+    while (const dirent* entry = readdir(listing)) {
+        const std::string_view name = entry->d_name;
+        if (name == "." || name == "..") continue;
+        struct stat info {};
+        if (fstatat(dirfd(listing), entry->d_name, &info, AT_SYMLINK_NOFOLLOW) != 0) continue;
+        held.bytes += allocated(info);
+        if (!S_ISDIR(info.st_mode)) continue;
+        if (depth == max_files_depth) {
+            held.too_deep = true;
+            continue;
+        }
+        const int below = openat(dirfd(listing), entry->d_name, O_RDONLY | O_DIRECTORY | O_NOFOLLOW | O_CLOEXEC);
+        if (below >= 0) add_below(below, depth + 1, held);
+    }
+    closedir(listing);
+}
+
+// `name` in the open directory `parent` (or a path, with AT_FDCWD) and, if
+// it is a directory (not a link to one), everything below it.
+void add_entry(int parent, const char* name, FilesHeld& held) {
+    struct stat info {};
+    if (fstatat(parent, name, &info, AT_SYMLINK_NOFOLLOW) != 0) return;
+    held.bytes += allocated(info);
+    if (!S_ISDIR(info.st_mode)) return;
+    const int directory = openat(parent, name, O_RDONLY | O_DIRECTORY | O_NOFOLLOW | O_CLOEXEC);
+    if (directory >= 0) add_below(directory, 1, held);
 }
 
 // The files that the program's processes hold open and no directory names:
@@ -55,8 +84,7 @@ std::int64_t bytes_open_unnamed(uid_t user, pid_t group) {
             struct stat info {};
             // stat, not lstat: the open file itself.
             if (stat(entry->path().c_str(), &info) != 0 || !S_ISREG(info.st_mode) || info.st_nlink != 0) continue;
-            if (counted.insert({info.st_dev, info.st_ino}).second)
-                bytes += std::max(static_cast<std::int64_t>(info.st_blocks) * 512, least_per_entry);
+            if (counted.insert({info.st_dev, info.st_ino}).second) bytes += allocated(info);
         }
     });
     return bytes;
@@ -64,18 +92,30 @@ std::int64_t bytes_open_unnamed(uid_t user, pid_t group) {
 
 }  // namespace
 
-std::int64_t bytes_held(uid_t user, pid_t group, const std::string& directory) {
-    if (user == 0) return bytes_below(directory) + bytes_open_unnamed(user, group);
-    // Its working directory is its own too, in one of the places.
-    std::int64_t bytes = bytes_open_unnamed(user, group);
-    for (const std::string& place : scratch_places()) {
-        std::error_code error;
-        for (fs::directory_iterator entry(place, error), end; !error && entry != end; entry.increment(error)) {
-            struct stat info {};
-            if (lstat(entry->path().c_str(), &info) == 0 && info.st_uid == user) bytes += bytes_below(entry->path());
-        }
+FilesHeld files_held(uid_t user, pid_t group, const std::string& directory) {
+    FilesHeld held;
+    held.bytes = bytes_open_unnamed(user, group);
+    if (user == 0) {
+        add_entry(AT_FDCWD, directory.c_str(), held);
+        return held;
     }
-    return bytes;
+    // Its working directory is its own too, in one of the places.
+    for (const std::string& place : scratch_places()) {
+        const int places = open(place.c_str(), O_RDONLY | O_DIRECTORY | O_CLOEXEC);
+        DIR* listing = places >= 0 ? fdopendir(places) : nullptr;
+        if (!listing) {
+            if (places >= 0) close(places);
+            continue;
+        }
+        while (const dirent* entry = readdir(listing)) {
+            struct stat info {};
+            if (fstatat(dirfd(listing), entry->d_name, &info, AT_SYMLINK_NOFOLLOW) == 0 && info.st_uid == user &&
+                std::string_view(entry->d_name) != "." && std::string_view(entry->d_name) != "..")
+                add_entry(dirfd(listing), entry->d_name, held);
+        }
+        closedir(listing);
+    }
+    return held;
 }
 
 }  // namespace simcheck

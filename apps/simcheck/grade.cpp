@@ -2,7 +2,7 @@
 
 #include "command_line.hpp"
 #include "common/library_message.hpp"
-
+#include "files_held.hpp"
 #include "judge.hpp"
 #include "own_user.hpp"
 #include "report.hpp"
@@ -408,6 +408,11 @@ Row grade_scene(const SceneCase& c, const Options& o, const std::optional<std::s
         break;
     case SandboxRun::End::files_limit:
         row.verdict = "output-limit";
+        if (run.files_too_deep) {
+            row.message = "stopped when it nested directories more than " + std::to_string(max_files_depth) +
+                          " deep, deeper than its files are measured";
+            break;
+        }
         row.message =
             "stopped when its files together held " + std::to_string(run.files_bytes) +
             " bytes, more than the largest file it may write (" + std::to_string(run.files_limit) + "; counted in " +

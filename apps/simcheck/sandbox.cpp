@@ -424,8 +424,10 @@ SandboxRun run_sandboxed(const std::vector<std::string>& arguments, const std::s
         }
         if (!reaped && Clock::now() >= next_files_check) {
             const Clock::time_point walk_start = Clock::now();
-            run.files_bytes = bytes_held(user, pid, directory);
-            if (run.files_bytes > run.files_limit) {
+            const FilesHeld held = files_held(user, pid, directory);
+            run.files_bytes = held.bytes;
+            run.files_too_deep = held.too_deep;
+            if (run.files_bytes > run.files_limit || run.files_too_deep) {
                 stop(SandboxRun::End::files_limit);
                 ended_by_limit = true;
                 break;

@@ -48,7 +48,8 @@ struct SandboxLimits {
 
 struct SandboxRun {
     // output_limit: its stdout passed limits.output_bytes; files_limit: the
-    // files it held (files_held.hpp) passed the largest a file may be.
+    // files it held (files_held.hpp) passed the largest a file may be, or
+    // nested deeper than they are measured.
     enum class End { exited, signalled, timeout, output_limit, files_limit };
     End end = End::exited;
     int exit_status = 0;  // exited
@@ -57,6 +58,7 @@ struct SandboxRun {
     std::int64_t output_bytes = 0;
     std::int64_t files_bytes = 0;  // what its files held when last measured
     std::int64_t files_limit = 0;  // the cap on them
+    bool files_too_deep = false;   // it nested directories deeper than the grader walks (max_files_depth)
     std::string stderr_head;       // the first few kilobytes of its standard error
     // Processes of the program still running when it had ended by itself,
     // all killed: its group's, and, run alone, as a user of its own or in a
