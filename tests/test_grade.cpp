@@ -1102,6 +1102,70 @@ void a_program_cannot_reach_the_graders_terminal() {
     CHECK(shown.find("INJECTED-TEXT") == std::string::npos);
 }
 
+// A program gets PATH, the locale, OpenMP's, MPI's and the sanitizers'
+// settings and HOME as its working directory, not the grader's secrets;
+// more by --env NAME or NAME=VALUE, everything by --full-env.
+void programs_get_a_chosen_environment() {
+    const fs::path notes = work() / "environment";
+    fresh_shared_directory(notes);
+    setenv("PARTICLESIM_GRADE_SECRET", "hidden-value", 1);
+    setenv("OMP_PARTICLESIM_SETTING", "kept", 1);
+    const std::string body =
+        "env > '" + (notes / "seen").string() + "'\npwd > '" + (notes / "pwd").string() + "'\nexec '" + simcli + "'\n";
+    const auto seen = [&] {
+        std::ifstream in(notes / "seen");
+        std::vector<std::string> lines;
+        for (std::string line; std::getline(in, line);) lines.push_back(line);
+        return lines;
+    };
+    const auto has = [](const std::vector<std::string>& lines, const std::string& line) {
+        return std::find(lines.begin(), lines.end(), line) != lines.end();
+    };
+    const std::string grader_home = std::getenv("HOME") ? std::getenv("HOME") : "";
+    struct Case {
+        std::string name;
+        std::vector<std::string> options;
+        bool secret, home_is_directory;
+        std::string assigned;
+    };
+    const std::vector<Case> cases{
+        {"default", {}, false, true, ""},
+        {"--env NAME", {"--env", "PARTICLESIM_GRADE_SECRET"}, true, true, ""},
+        {"--env NAME=VALUE",
+         {"--env", "PARTICLESIM_GRADE_OTHER=given", "--env", "OMP_PARTICLESIM_SETTING=replaced"},
+         false,
+         true,
+         "PARTICLESIM_GRADE_OTHER=given"},
+        {"--full-env", {"--full-env"}, true, false, ""}};
+    for (const Case& c : cases) {
+        check::Context context(c.name);
+        const Graded g = grade(one_scene_suite(), c.options, {script("environment.sh", body)});
+        CHECK_EQ(g.result.status, 0);
+        const std::vector<std::string> lines = seen();
+        CHECK(!lines.empty());
+        CHECK_EQ(has(lines, "PARTICLESIM_GRADE_SECRET=hidden-value"), c.secret);
+        CHECK(has(lines, "PATH=" + std::string(std::getenv("PATH"))));
+        const bool replaced = c.name == "--env NAME=VALUE";
+        CHECK(has(lines, replaced ? "OMP_PARTICLESIM_SETTING=replaced" : "OMP_PARTICLESIM_SETTING=kept"));
+        CHECK(!has(lines, "OMP_PARTICLESIM_SETTING=kept") || !replaced);
+        if (!c.assigned.empty()) CHECK(has(lines, c.assigned));
+        const std::string directory = first_line(notes / "pwd");
+        CHECK_EQ(has(lines, "HOME=" + directory), c.home_is_directory);
+        if (!c.home_is_directory && !grader_home.empty()) CHECK(has(lines, "HOME=" + grader_home));
+    }
+    unsetenv("PARTICLESIM_GRADE_SECRET");
+    unsetenv("OMP_PARTICLESIM_SETTING");
+    // A name not set here, or not a name, is refused before any run.
+    for (const std::string bad : {"PARTICLESIM_GRADE_UNSET", "=value", "1NAME", "NA-ME=x"}) {
+        check::Context context("--env ", bad);
+        const run_process::Result refused =
+            run_process::run(simcheck, {"grade", one_scene_suite().string(), "--env", bad, "--", simcli});
+        CHECK_EQ(refused.status, 2);
+        CHECK(refused.err.rfind("simcheck grade: --env: ", 0) == 0);
+        CHECK(refused.out.empty());
+    }
+}
+
 void each_run_has_a_fresh_empty_directory() {
     const fs::path seen = work() / "directories.txt";
     fs::remove(seen);
@@ -1263,6 +1327,7 @@ int main(int argc, char** argv) {
          {"an interrupted grade leaves nothing behind", an_interrupted_grade_leaves_nothing_behind},
          {"programs leave no System V IPC behind", programs_leave_no_ipc_behind},
          {"a program cannot reach the grader's terminal", a_program_cannot_reach_the_graders_terminal},
+         {"programs get a chosen environment", programs_get_a_chosen_environment},
          {"each run has a fresh empty directory", each_run_has_a_fresh_empty_directory},
          {"a grade with its streams closed", a_grade_with_its_streams_closed},
          {"bad usage", bad_usage}});

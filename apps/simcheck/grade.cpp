@@ -5,6 +5,7 @@
 #include "files_held.hpp"
 #include "judge.hpp"
 #include "own_user.hpp"
+#include "program_environment.hpp"
 #include "report.hpp"
 #include "sandbox.hpp"
 
@@ -71,6 +72,12 @@ Reports:
       --json FILE        {"program", "scenes": [{"scene", "verdict", "step", ...}]}
       --markdown FILE    a table and the details, for pasting
       --outputs DIR      keep each output as DIR/NAME.out (DIR not the suite)
+Environment: not the grader's whole one (it may hold secrets the program could
+print): PATH, the locale (LANG, LC_*), TZ, TMPDIR, LD_LIBRARY_PATH, OpenMP's,
+MPI's and the sanitizers' settings (OMP_*, OMPI_*, PMIX_*, *SAN_OPTIONS, ...),
+and HOME set to its working directory.
+      --env NAME         also pass NAME (set here); --env NAME=VALUE: set it
+      --full-env         pass the grader's whole environment, HOME too
 Other:
       --jobs N           run N scenes side by side (the times then say so)
       --reference PATH   the simcli to time against (default: beside simcheck,
@@ -98,6 +105,7 @@ struct Options {
     std::string reference;
     bool no_reference = false;
     std::string program_text;  // as given, for the reports
+    EnvironmentChoice environment;
     particlesim::StepCheckOptions check;
 };
 
@@ -161,6 +169,14 @@ std::optional<Options> parse(int argc, char** argv) {
             o.reference = value();
         } else if (arg == "--no-reference") {
             o.no_reference = true;
+        } else if (arg == "--env") {
+            try {
+                add_environment_option(value(), o.environment);
+            } catch (const std::invalid_argument& e) {
+                throw BadUsage("--env: " + std::string(e.what()));
+            }
+        } else if (arg == "--full-env") {
+            o.environment.full = true;
         } else if (read_rules_option(arg, value, o.check)) {
             substeps_given = substeps_given || arg == "--substeps";
         } else if (arg.size() > 1 && arg[0] == '-') {
@@ -363,6 +379,7 @@ Row grade_scene(const SceneCase& c, const Options& o, const std::optional<std::s
     limits.processes = o.processes;
     limits.runs_alone = o.jobs == 1;
     limits.hidden = &o.hidden;
+    limits.environment = &o.environment;
     const double expected_bytes = c.expected_path ? static_cast<double>(fs::file_size(*c.expected_path))
                                                   : static_cast<double>(estimated_output_bytes(c.scene));
     limits.output_bytes = static_cast<std::int64_t>(std::min(o.output_factor * expected_bytes + 1048576.0, 1e17));

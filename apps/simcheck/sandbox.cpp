@@ -90,8 +90,8 @@ void set_limit(int resource, rlim_t value) {
 // namespace's init and tells its end there (namespace_init.hpp); else -1.
 [[noreturn]] void start_child(char* const* argv, const char* directory, const char* stdin_path, int out, int err,
                               const SandboxLimits& limits, rlim_t tasks, uid_t user, int capability,
-                              const HiddenPaths* hidden, bool read_only, int init_report,
-                              const LandlockDomain& domain) {
+                              const HiddenPaths* hidden, bool read_only, int init_report, const LandlockDomain& domain,
+                              char* const* environment) {
     // setsid(), not just setpgid(): it then has no controlling terminal,
     // so it can neither write on the grader's (open /dev/tty) nor push
     // input into it for the shell to run after the grade (TIOCSTI). Its
@@ -133,7 +133,11 @@ void set_limit(int resource, rlim_t value) {
         [[maybe_unused]] const auto written = write(2, message, sizeof message - 1);
         _exit(127);
     }
-    execvp(argv[0], argv);
+    if (environment) {
+        execvpe(argv[0], argv, environment);
+    } else {
+        execvp(argv[0], argv);
+    }
     constexpr char message[] = "simcheck grade: cannot run the program\n";
     [[maybe_unused]] const auto written = write(2, message, sizeof message - 1);
     _exit(127);
@@ -334,6 +338,15 @@ SandboxRun run_sandboxed(const std::vector<std::string>& arguments, const std::s
     const rlim_t tasks = static_cast<rlim_t>(user != 0 || in_user_namespace ? counted_before_it_adds + limits.processes
                                                                             : tasks_of_this_user() + limits.processes);
 
+    // Its environment, made before the fork: the child may not allocate.
+    std::vector<std::string> environment_entries;
+    std::vector<char*> environment;
+    if (limits.environment) {
+        environment_entries = program_environment(*limits.environment, directory);
+        for (std::string& entry : environment_entries) environment.push_back(entry.data());
+        environment.push_back(nullptr);
+    }
+
     become_subreaper();
     const Clock::time_point start = Clock::now();
     pid_t pid = 0;
@@ -343,7 +356,8 @@ SandboxRun run_sandboxed(const std::vector<std::string>& arguments, const std::s
         pid = own_processes ? fork_into_pid_namespace() : fork();
         if (pid == 0) {
             start_child(argv.data(), directory.c_str(), stdin_path.c_str(), out_write.get(), err_write.get(), limits,
-                        tasks, user, capability, hidden, read_only, own_processes ? report_write.get() : -1, domain);
+                        tasks, user, capability, hidden, read_only, own_processes ? report_write.get() : -1, domain,
+                        limits.environment ? environment.data() : nullptr);
         }
         if (pid > 0) running_leaders.insert(pid);
     }

@@ -22,6 +22,7 @@
 // runs side by side.
 
 #include "isolation.hpp"
+#include "program_environment.hpp"
 
 #include <cstdint>
 #include <stdexcept>
@@ -44,6 +45,8 @@ struct SandboxLimits {
     // other runs' outputs), hidden where it runs isolated; the caller's, made
     // once for every run. None: nothing hidden.
     const HiddenPaths* hidden = nullptr;
+    // Its environment (program_environment.hpp); none: this process's whole one.
+    const EnvironmentChoice* environment = nullptr;
 };
 
 struct SandboxRun {
