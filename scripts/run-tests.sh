@@ -10,9 +10,9 @@
 # 11 min 24 s (21.3 min of CPU time) on a fresh machine, where it installs the tools.
 set -euo pipefail
 cd "$(dirname "$0")/.."
-scripts/ensure-deps.sh clang-format
 # OpenMPI decides the Release build's configuration (the distributed engine:
-# PARTICLESIM_MPI on, and simcli runs under mpirun), so it comes first.
+# PARTICLESIM_MPI on, and simcli runs under mpirun), so it comes first, in
+# the one apt run that also brings what the build needs (Ninja, Eigen).
 scripts/ensure-deps.sh --optional libopenmpi-dev openmpi-bin
 jobs=$(nproc)
 mpi=OFF
@@ -25,14 +25,15 @@ fi
 # and qemu (the same bytes on another architecture), clang with libFuzzer, its
 # OpenMP and Archer (fuzzing, ThreadSanitizer over OpenMP), chromium (the
 # animation page), python3-ase (simcli's trajectory files as ASE reads them),
-# pkgconf (the installed pkg-config files). Installed while the Release build
+# pkgconf (the installed pkg-config files), clang-format (the code's format,
+# which code_format looks for when it runs). Installed while the Release build
 # compiles: on a fresh machine apt alone took 107 s, with 118 CPU-s spread over
 # both cores and waits on downloads and disk. Never stopped halfway: an
 # interrupted dpkg leaves the machine's packages broken.
 mkdir -p build
 tools_log=build/test-tools-install.log
 scripts/ensure-deps.sh --optional g++-aarch64-linux-gnu qemu-user clang libclang-rt-dev libomp-dev chromium \
-  python3-ase pkgconf >"$tools_log" 2>&1 &
+  python3-ase pkgconf clang-format >"$tools_log" 2>&1 &
 tools_install=$!
 
 echo "== Release build (at ${SECONDS} s)"

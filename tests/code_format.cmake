@@ -1,5 +1,11 @@
 # The code follows .clang-format: clang-format reports no change to any source.
-# Inputs: SOURCE_DIR, CLANG_FORMAT (the program; empty when not found).
+# Inputs: SOURCE_DIR, CLANG_FORMAT (the program; empty when not found at
+# configure time: looked for again here, since the test command installs it
+# while the build compiles).
+if(NOT CLANG_FORMAT)
+  find_program(found_clang_format NAMES clang-format clang-format-14 clang-format-15 clang-format-16)
+  set(CLANG_FORMAT "${found_clang_format}")
+endif()
 if(NOT CLANG_FORMAT)
   message(FATAL_ERROR "clang-format not found: install Debian's clang-format (scripts/run-tests.sh does, as root)")
 endif()
