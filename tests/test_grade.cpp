@@ -274,6 +274,20 @@ void misbehaving_programs_get_their_verdicts() {
         }
         if (c.verdict == "timeout") CHECK(scenes(g)[0]["seconds"].number < 5.0);
     }
+    // Its stderr's escape sequences (clear the screen, retitle the window, return to the line's start to
+    // overwrite the verdict) reach neither the grader's terminal nor the reports: shown as \xNN.
+    const std::string escapes = "printf '\\033[2J\\033]0;title\\007\\rconforms\\r\\n' >&2\nexit 3\n";
+    const Graded g = grade(suite, {"--no-reference"}, {script("escapes.sh", escapes)});
+    CHECK_EQ(scenes(g)[0]["verdict"].text, std::string("exit-status"));
+    CHECK(scenes(g)[0]["message"].text.find("stderr: \\x1B[2J\\x1B]0;title\\x07\\x0Dconforms") != std::string::npos);
+    const auto shows = [](const std::string& text) {
+        return std::none_of(text.begin(), text.end(), [](char c) {
+            const auto byte = static_cast<unsigned char>(c);
+            return (byte < 0x20 && c != '\n') || byte == 0x7f;
+        });
+    };
+    CHECK(shows(g.result.out));
+    CHECK(shows(scenes(g)[0]["message"].text));
 }
 
 // The processes still running (not zombies: killed but not yet reaped by

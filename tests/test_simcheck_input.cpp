@@ -10,6 +10,7 @@
 #include <sys/resource.h>
 #include <sys/wait.h>
 
+#include <algorithm>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
@@ -85,7 +86,12 @@ void unreadable_lines_name_their_line() {
         {"99999999999999999999 0 5.00000000 10.00000000 2.00000000 0.00000000\n",
          "out.txt:1: the step is not a whole number"},
         {"0 -1 5.00000000 10.00000000 2.00000000 0.00000000\n", "out.txt:1: the particle index is not a whole number"},
-        {"0 0 5.0000000\x01 10.00000000 2.00000000 0.00000000\n", "out.txt:1: x is not a finite number"},
+        {"0 0 5.0000000\x01 10.00000000 2.00000000 0.00000000\n",
+         "out.txt:1: x is not a finite number: \"5.0000000\\x01\""},
+        // A terminal's escape sequences are shown, not sent: the message cannot clear or retitle the screen.
+        {"0 0 5.0\x1b[2J\x1b]0;title\x07 10.00000000 2.00000000 0.00000000\n",
+         "out.txt:1: x is not a finite number: \"5.0\\x1B[2J\\x1B]0;title\\x07\""},
+        {"0 0 \xc3\xa9 10.00000000 2.00000000 0.00000000\n", "out.txt:1: x is not a finite number: \"\\xC3\\xA9\""},
         // printf's "%+.8f": named as the sign it is, not as "not a number".
         {"0 0 +5.00000000 10.00000000 2.00000000 0.00000000\n",
          "out.txt:1: x = \"+5.00000000\" has a '+' sign, which io.md's numbers never carry"},
@@ -101,7 +107,11 @@ void unreadable_lines_name_their_line() {
         const run_process::Result r = check(pair_scene, output);
         CHECK_EQ(r.status, 2);
         CHECK(r.out.empty());
-        const bool named = r.err.find("simcheck: ") == 0 && r.err.find(message) != std::string::npos;
+        const bool named = r.err.find("simcheck: ") == 0 && r.err.find(message) != std::string::npos &&
+                           std::none_of(r.err.begin(), r.err.end() - 1, [](char c) {
+                               const auto byte = static_cast<unsigned char>(c);
+                               return byte < 0x20 || byte >= 0x7f;
+                           });
         if (!named) std::fprintf(stderr, "expected \"%s\", got: %s", message.c_str(), r.err.c_str());
         CHECK(named);
     }

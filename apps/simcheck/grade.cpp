@@ -311,6 +311,7 @@ std::string signal_name(int number) {
 std::string first_line(const std::string& text) {
     const std::size_t end = text.find('\n');
     std::string line = text.substr(0, std::min<std::size_t>(end, 200));
+    if (!line.empty() && line.back() == '\r') line.pop_back();  // a line ended CR LF
     return line;
 }
 
@@ -409,7 +410,8 @@ Row grade_scene(const SceneCase& c, const Options& o, const std::optional<std::s
     const SandboxRun run =
         run_sandboxed(argv, path_argument ? "/dev/null" : c.scene_path.string(), output.string(), limits);
     row.seconds = run.seconds;
-    const std::string stderr_line = first_line(run.stderr_head);
+    // Shown on the grader's terminal and in the reports: no escape sequence of the program's passes.
+    const std::string stderr_line = particlesim::printable_text(first_line(run.stderr_head));
     switch (run.end) {
     case SandboxRun::End::timeout: {
         char text[64];

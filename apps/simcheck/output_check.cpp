@@ -39,8 +39,8 @@ public:
             }
             if (line.step != step || line.index != i) {
                 return Finding{step, line.line,
-                               "line " + std::to_string(line.line) + " reads \"" + line.text + "\" where particle " +
-                                   std::to_string(i) + " of step " + std::to_string(step) +
+                               "line " + std::to_string(line.line) + " reads " + particlesim::quoted_text(line.text) +
+                                   " where particle " + std::to_string(i) + " of step " + std::to_string(step) +
                                    " belongs: a line is missing, repeated or out of order",
                                std::nullopt, std::nullopt};
             }
@@ -62,8 +62,8 @@ public:
         particlesim::OutputLine line;
         if (!output_.next(line)) return std::nullopt;
         return Finding{last_step, line.line,
-                       "the output goes on after the final block: line " + std::to_string(line.line) + " reads \"" +
-                           line.text + "\"",
+                       "the output goes on after the final block: line " + std::to_string(line.line) + " reads " +
+                           particlesim::quoted_text(line.text),
                        std::nullopt, std::nullopt};
     }
 

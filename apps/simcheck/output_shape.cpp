@@ -84,8 +84,9 @@ std::optional<OutputLine> parse_line(std::string_view text, long number, std::ve
         fine = whole(tokens[6], line.particle.particle_collisions) && whole(tokens[7], line.particle.wall_collisions);
     }
     if (!fine) {
-        why = "line " + std::to_string(number) +
-              " is not \"s i x y vx vy\" with whole s, i (pc, wc) and finite numbers: \"" + std::string(text) + "\"";
+        why =
+            "line " + std::to_string(number) +
+            " is not \"s i x y vx vy\" with whole s, i (pc, wc) and finite numbers: " + particlesim::quoted_text(text);
         return std::nullopt;
     }
     line.particle.position = particlesim::Vec2(values[0], values[1]);
@@ -117,7 +118,7 @@ public:
         if (!particlesim::is_fixed8(token)) {
             all_fixed8_ = false;
             if (first_other_.empty())
-                first_other_ = "line " + std::to_string(line) + ": \"" + std::string(token) + "\"";
+                first_other_ = "line " + std::to_string(line) + ": " + particlesim::quoted_text(token);
         }
         if (token == "-0.00000000" && negative_zero_line_ == 0) negative_zero_line_ = line;
         all_shortest_ = all_shortest_ && is_shortest(token, value);

@@ -14,6 +14,7 @@
 #include <istream>
 #include <stdexcept>
 #include <string>
+#include <string_view>
 #include <vector>
 
 namespace particlesim {
@@ -53,6 +54,15 @@ private:
 };
 
 inline constexpr std::size_t max_line_length = 4096;
+
+// Text of an input (a token, a line, a program's stderr) as a message shows
+// it: every byte that would not show as itself (controls such as a
+// terminal's escape sequences, DEL, anything outside ASCII) and backslash
+// written as \xNN, so that no input can move, clear or retitle the terminal
+// a message is printed on.
+std::string printable_text(std::string_view text);
+// The same in double quotes, a quote inside written as \x22.
+std::string quoted_text(std::string_view text);
 
 // Throws InputError naming the first problem found. `lines`, when given,
 // receives where the header values were read. Listed centres lie in

@@ -55,7 +55,7 @@ bool has_plus_sign(std::string_view token) {
 }
 
 std::string plus_sign_message(std::string_view what, std::string_view token) {
-    return std::string(what) + " = \"" + std::string(token) + "\" has a '+' sign, which io.md's numbers never carry";
+    return std::string(what) + " = " + quoted_text(token) + " has a '+' sign, which io.md's numbers never carry";
 }
 
 }  // namespace
@@ -118,7 +118,7 @@ bool OutputReader::next(OutputLine& out) {
         const auto [end, error] = std::from_chars(token.data(), token.data() + token.size(), value);
         if (error != std::errc() || end != token.data() + token.size()) {
             if (has_plus_sign(token)) throw InputError(line_, plus_sign_message(what, token));
-            throw InputError(line_, std::string(what) + " is not a whole number: \"" + std::string(token) + "\"");
+            throw InputError(line_, std::string(what) + " is not a whole number: " + quoted_text(token));
         }
     };
     integer(tokens[0], out.step, "the step");
@@ -136,11 +136,11 @@ bool OutputReader::next(OutputLine& out) {
         const auto [end, error] = std::from_chars(token.data(), token.data() + token.size(), values[k]);
         if (error != std::errc() || end != token.data() + token.size() || !std::isfinite(values[k])) {
             if (has_plus_sign(token)) throw InputError(line_, plus_sign_message(names[k], token));
-            throw InputError(line_, std::string(names[k]) + " is not a finite number: \"" + std::string(token) + "\"");
+            throw InputError(line_, std::string(names[k]) + " is not a finite number: " + quoted_text(token));
         }
         if (format_ == NumberFormat::fixed8 && !is_fixed8(token)) {
-            throw InputError(line_, std::string(names[k]) + " = \"" + std::string(token) +
-                                        "\" is not printed with 8 decimals (%.8f) like the first line");
+            throw InputError(line_, std::string(names[k]) + " = " + quoted_text(token) +
+                                        " is not printed with 8 decimals (%.8f) like the first line");
         }
         if (format_ == NumberFormat::fixed8 && token == "-0.00000000") {
             throw InputError(line_,

@@ -19,24 +19,6 @@ namespace {
 
 using Text = std::string;
 
-// A token as it appears in a message: in quotes, with every byte that would
-// not show (controls, NUL, anything outside ASCII) written as \xNN.
-Text quoted(std::string_view token) {
-    Text text = "\"";
-    for (const char c : token) {
-        const auto byte = static_cast<unsigned char>(c);
-        if (byte >= 0x20 && byte < 0x7f && c != '"' && c != '\\') {
-            text += c;
-        } else {
-            constexpr char digits[] = "0123456789ABCDEF";
-            text += "\\x";
-            text += digits[byte >> 4];
-            text += digits[byte & 15];
-        }
-    }
-    return text + "\"";
-}
-
 // Accepts one leading '+', as C's strtod and Python's float() do.
 std::string_view without_plus(std::string_view token) {
     return token.size() > 1 && token[0] == '+' && token[1] != '-' && token[1] != '+' ? token.substr(1) : token;
@@ -157,7 +139,8 @@ std::uint64_t parse_count(std::string_view text, std::string_view what, long lin
     const bool digits_only =
         !token.empty() && std::all_of(token.begin(), token.end(), [](char c) { return c >= '0' && c <= '9'; });
     const auto [end, error] = std::from_chars(token.data(), token.data() + token.size(), value);
-    if (!digits_only) throw InputError(line, Text(what) + ": expected a non-negative integer, found " + quoted(text));
+    if (!digits_only)
+        throw InputError(line, Text(what) + ": expected a non-negative integer, found " + quoted_text(text));
     if (error != std::errc{} || end != token.data() + token.size()) {
         throw InputError(line, Text(what) + " = " + Text(token) + " is too large");
     }
@@ -178,7 +161,7 @@ double parse_real(std::string_view text, const Name& name, long line) {
                                    "at most 1e60)");
     }
     if (error != std::errc{} || !whole_token || !std::isfinite(value))
-        throw InputError(line, Text(name()) + ": expected a finite number, found " + quoted(text));
+        throw InputError(line, Text(name()) + ": expected a finite number, found " + quoted_text(text));
     if (std::fabs(value) > max_magnitude) {
         throw InputError(line, Text(name()) + " = " + Text(token) +
                                    " is beyond the accepted range (magnitudes at most 1e60; docs/accepted-range.md)");
@@ -236,7 +219,7 @@ void read_header(HeaderTokens& header, Scene& scene, SceneLines& lines) {
     } else if (mode == "perf") {
         scene.mode = OutputMode::perf;
     } else {
-        throw InputError(header.line(), "output mode: expected print or perf, found " + quoted(mode));
+        throw InputError(header.line(), "output mode: expected print or perf, found " + quoted_text(mode));
     }
 }
 
