@@ -1186,6 +1186,52 @@ void programs_get_a_chosen_environment() {
     }
 }
 
+// What others may not read in /etc and in the homes (the grader's own here,
+// a directory of this test's as HOME) reads as empty to a program that runs
+// isolated, though run by root it keeps the right to read every file: a
+// private file and a private directory's file, not a public one; and
+// /etc/shadow where it is private.
+void programs_cannot_read_private_files() {
+    const fs::path home = work() / "grader-home";
+    fs::create_directories(home / "private");
+    fs::create_directories(home / "public");
+    std::ofstream(home / "secret.txt") << "secret\n";
+    std::ofstream(home / "private" / "key") << "key\n";
+    std::ofstream(home / "public" / "notes") << "notes\n";
+    chmod((home / "secret.txt").c_str(), 0600);
+    chmod((home / "private").c_str(), 0700);
+    chmod(home.c_str(), 0755);
+    const fs::path notes = work() / "private-notes";
+    fresh_shared_directory(notes);
+    const auto bytes_of = [&](const std::string& name, const fs::path& path) {
+        return "wc -c < '" + path.string() + "' > '" + (notes / name).string() + "' 2>/dev/null\n";
+    };
+    const std::string body = bytes_of("secret", home / "secret.txt") + bytes_of("key", home / "private" / "key") +
+                             bytes_of("notes", home / "public" / "notes") + bytes_of("shadow", "/etc/shadow") +
+                             "cat '" + cradle_answer() + "'\n";
+    const std::string grader_home = std::getenv("HOME") ? std::getenv("HOME") : "";
+    setenv("HOME", home.c_str(), 1);
+    const Graded g = grade(one_scene_suite(), {"--no-reference"}, {script("private.sh", body)});
+    if (grader_home.empty()) {
+        unsetenv("HOME");
+    } else {
+        setenv("HOME", grader_home.c_str(), 1);
+    }
+    CHECK_EQ(g.result.status, 0);
+    if (g.json.kind != mini_json::Value::Kind::object) return;
+    if (g.json["isolated"].number != 1.0) {
+        std::printf("not isolated: private files not hidden, not checked\n");
+        return;
+    }
+    const auto noted = [&](const std::string& name) { return first_line(notes / name); };
+    CHECK_EQ(noted("secret"), std::string("0"));
+    CHECK(noted("key") != std::string("4"));  // its directory is empty: no such file
+    CHECK_EQ(noted("notes"), std::string("6"));
+    struct stat shadow {};
+    if (stat("/etc/shadow", &shadow) == 0 && (shadow.st_mode & S_IROTH) == 0)
+        CHECK(noted("shadow").empty() || noted("shadow") == std::string("0"));
+}
+
 void each_run_has_a_fresh_empty_directory() {
     const fs::path seen = work() / "directories.txt";
     fs::remove(seen);
@@ -1348,6 +1394,7 @@ int main(int argc, char** argv) {
          {"programs leave no System V IPC behind", programs_leave_no_ipc_behind},
          {"a program cannot reach the grader's terminal", a_program_cannot_reach_the_graders_terminal},
          {"programs get a chosen environment", programs_get_a_chosen_environment},
+         {"programs cannot read private files", programs_cannot_read_private_files},
          {"each run has a fresh empty directory", each_run_has_a_fresh_empty_directory},
          {"a grade with its streams closed", a_grade_with_its_streams_closed},
          {"bad usage", bad_usage}});

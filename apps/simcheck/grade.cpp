@@ -5,6 +5,7 @@
 #include "files_held.hpp"
 #include "judge.hpp"
 #include "own_user.hpp"
+#include "private_files.hpp"
 #include "program_environment.hpp"
 #include "report.hpp"
 #include "sandbox.hpp"
@@ -64,7 +65,8 @@ Run by root, each program runs as a user of its own (an unused user id that
 may read every file but write only in its directory and where anyone may).
 Where the kernel lets it make namespaces (root's, or a user namespace for
 anyone else), each runs without network, sees only its own processes, and
-has the suite's expected outputs and the other outputs hidden. Each may
+has the suite's expected outputs, the other outputs and what only owners may
+read in /etc and the homes hidden. Each may
 write only in /tmp, /var/tmp, /dev/shm and $TMPDIR (its directory is there),
 and signal only its own processes, where the kernel has the means
 (docs/checking.md).
@@ -699,6 +701,13 @@ int grade_main(int argc, char** argv) {
         if (!o.outputs_dir.empty() && !lies_within(o.suite, o.outputs_dir) &&
             !lies_within(o.program.front(), o.outputs_dir) && !lies_within(work.parent_path(), o.outputs_dir))
             hidden.push_back(o.outputs_dir);
+        // What only its owner may read in /etc and the homes: the program, the suite, the reference and the
+        // runs' directories stay.
+        std::vector<std::string> needed{o.program.front(), o.suite.string(), work.string(),
+                                        fs::temp_directory_path().string()};
+        if (reference) needed.push_back(*reference);
+        if (!o.outputs_dir.empty()) needed.push_back(o.outputs_dir);
+        for (const std::string& path : private_entries(needed)) hidden.push_back(path);
         // The suite stays read-only where it lies in /tmp: the next grade reads it.
         o.hidden = HiddenPaths(hidden, {o.suite.string()});
         if (!runs_programs_isolated()) {
