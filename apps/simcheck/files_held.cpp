@@ -100,21 +100,8 @@ FilesHeld files_held(uid_t user, pid_t group, const std::string& directory) {
         return held;
     }
     // Its working directory is its own too, in one of the places.
-    for (const std::string& place : scratch_places()) {
-        const int places = open(place.c_str(), O_RDONLY | O_DIRECTORY | O_CLOEXEC);
-        DIR* listing = places >= 0 ? fdopendir(places) : nullptr;
-        if (!listing) {
-            if (places >= 0) close(places);
-            continue;
-        }
-        while (const dirent* entry = readdir(listing)) {
-            struct stat info {};
-            if (fstatat(dirfd(listing), entry->d_name, &info, AT_SYMLINK_NOFOLLOW) == 0 && info.st_uid == user &&
-                std::string_view(entry->d_name) != "." && std::string_view(entry->d_name) != "..")
-                add_entry(dirfd(listing), entry->d_name, held);
-        }
-        closedir(listing);
-    }
+    for_each_entry_owned_by(
+        user, [&](const fs::path& entry, const struct stat&) { add_entry(AT_FDCWD, entry.c_str(), held); });
     return held;
 }
 

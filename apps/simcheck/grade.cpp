@@ -605,15 +605,6 @@ void write_json(std::FILE* out, const Options& o, const std::vector<SceneCase>& 
     std::fputs(json.c_str(), out);
 }
 
-// Whether `path` is `directory` or lies below it, both resolved.
-bool lies_within(const fs::path& path, const fs::path& directory) {
-    std::error_code error;
-    const fs::path inside = fs::weakly_canonical(path, error);
-    fs::path outer = fs::weakly_canonical(directory, error);
-    if (!outer.has_filename()) outer = outer.parent_path();  // "dir/" names dir
-    return std::mismatch(outer.begin(), outer.end(), inside.begin(), inside.end()).first == outer.end();
-}
-
 // Opens `path` for writing as the report will (making it, then removing what
 // it made), so that an unwritable report is refused before any program runs.
 void require_can_write(const std::string& option, const std::string& path) {

@@ -123,18 +123,13 @@ int remove_files_of(uid_t user, const std::string& keep) {
     struct stat keep_info {};
     const bool keeping = stat(keep.c_str(), &keep_info) == 0;
     int removed = 0;
-    for (const std::string& place : scratch_places()) {
-        std::error_code error;
-        for (fs::directory_iterator entry(place, error), end; !error && entry != end; entry.increment(error)) {
-            struct stat info {};
-            // lstat: a link is removed itself, never followed.
-            if (lstat(entry->path().c_str(), &info) != 0 || info.st_uid != user) continue;
-            if (keeping && info.st_dev == keep_info.st_dev && info.st_ino == keep_info.st_ino) continue;
-            std::error_code ignored;
-            fs::remove_all(entry->path(), ignored);
-            ++removed;
-        }
-    }
+    // A link is removed itself, never followed.
+    for_each_entry_owned_by(user, [&](const fs::path& entry, const struct stat& info) {
+        if (keeping && info.st_dev == keep_info.st_dev && info.st_ino == keep_info.st_ino) return;
+        std::error_code ignored;
+        fs::remove_all(entry, ignored);
+        ++removed;
+    });
     return removed;
 }
 

@@ -17,20 +17,17 @@ bool others_may_read(const fs::path& path) {
     return lstat(path.c_str(), &info) == 0 && (S_ISLNK(info.st_mode) || (info.st_mode & S_IROTH) != 0);
 }
 
-// Whether `path` is `needed` or lies above it (hiding it would hide what is needed).
-bool holds(const fs::path& path, const fs::path& needed) {
-    return std::mismatch(path.begin(), path.end(), needed.begin(), needed.end()).first == path.end();
-}
-
 }  // namespace
 
+bool lies_within(const fs::path& path, const fs::path& directory) {
+    std::error_code error;
+    const fs::path inside = fs::weakly_canonical(path, error);
+    fs::path outer = fs::weakly_canonical(directory, error);
+    if (!outer.has_filename()) outer = outer.parent_path();  // "dir/" names dir
+    return std::mismatch(outer.begin(), outer.end(), inside.begin(), inside.end()).first == outer.end();
+}
+
 std::vector<std::string> private_entries(const std::vector<std::string>& needed) {
-    std::vector<fs::path> kept;
-    for (const std::string& path : needed) {
-        std::error_code error;
-        const fs::path resolved = fs::weakly_canonical(path, error);
-        if (!error) kept.push_back(resolved);
-    }
     std::vector<fs::path> places{"/etc", "/etc/ssh", "/etc/ssl", "/root"};
     if (const char* home = std::getenv("HOME"); home && *home) places.emplace_back(home);
     std::vector<fs::path> entries;
@@ -54,7 +51,7 @@ std::vector<std::string> private_entries(const std::vector<std::string>& needed)
     }
     std::vector<std::string> hidden;
     for (const fs::path& entry : entries) {
-        if (std::none_of(kept.begin(), kept.end(), [&](const fs::path& k) { return holds(entry, k); }))
+        if (std::none_of(needed.begin(), needed.end(), [&](const std::string& k) { return lies_within(k, entry); }))
             hidden.push_back(entry.string());
     }
     std::sort(hidden.begin(), hidden.end());

@@ -6,6 +6,7 @@
 // private keys and print them into its output, which the reports carry.
 // Run by another user, it could read that user's own.
 
+#include <filesystem>
 #include <string>
 #include <vector>
 
@@ -18,5 +19,9 @@ namespace simcheck {
 // none that holds, or is, one of `needed` (the program, the suite, the
 // reference, the directories the runs use).
 std::vector<std::string> private_entries(const std::vector<std::string>& needed);
+
+// Whether `path` is `directory` or lies below it, both resolved: whether
+// hiding `directory` would hide `path`.
+bool lies_within(const std::filesystem::path& path, const std::filesystem::path& directory);
 
 }  // namespace simcheck

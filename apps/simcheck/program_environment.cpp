@@ -27,8 +27,7 @@ bool valid_name(std::string_view name) {
 
 std::string_view name_of(std::string_view entry) { return entry.substr(0, entry.find('=')); }
 
-}  // namespace
-
+// Whether `name` is a variable the program gets by default.
 bool passed_by_default(const std::string& name) {
     const std::string_view n = name;
     if (std::find(std::begin(default_names), std::end(default_names), n) != std::end(default_names)) return true;
@@ -36,6 +35,8 @@ bool passed_by_default(const std::string& name) {
         if (n.substr(0, prefix.size()) == prefix) return true;
     return n.size() > sanitizer_suffix.size() && n.substr(n.size() - sanitizer_suffix.size()) == sanitizer_suffix;
 }
+
+}  // namespace
 
 void add_environment_option(const std::string& argument, EnvironmentChoice& choice) {
     const std::size_t equals = argument.find('=');

@@ -19,9 +19,6 @@ struct EnvironmentChoice {
     std::vector<std::string> assigned;  // --env NAME=VALUE
 };
 
-// Whether `name` is a variable the program gets by default.
-bool passed_by_default(const std::string& name);
-
 // Reads one --env argument into `choice`: NAME (set in this process's
 // environment) or NAME=VALUE. Throws std::invalid_argument with the reason.
 void add_environment_option(const std::string& argument, EnvironmentChoice& choice);

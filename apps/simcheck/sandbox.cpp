@@ -48,6 +48,9 @@ constexpr double drain_seconds = 1.0;
 // /dev/shm and /tmp whatever the output's size, and an mpirun run under a
 // smaller limit dies of SIGXFSZ.
 constexpr std::int64_t smallest_file_limit = std::int64_t{1} << 30;
+
+// The largest file it may write (RLIMIT_FSIZE), and the most its files may hold together.
+std::int64_t file_limit(const SandboxLimits& limits) { return std::max(limits.output_bytes, smallest_file_limit); }
 // How often the bytes its files hold are measured while it runs (a walk of
 // its directory and the scratch places' top level): a program writing at
 // a few GB/s passes the cap by at most a few hundred megabytes. Less often
@@ -120,7 +123,7 @@ void set_limit(int resource, rlim_t value) {
     sigprocmask(SIG_SETMASK, &none, nullptr);
     set_limit(RLIMIT_CORE, 0);
     if (limits.memory_bytes > 0) set_limit(RLIMIT_AS, static_cast<rlim_t>(limits.memory_bytes));
-    set_limit(RLIMIT_FSIZE, static_cast<rlim_t>(std::max(limits.output_bytes, smallest_file_limit)));
+    set_limit(RLIMIT_FSIZE, static_cast<rlim_t>(file_limit(limits)));
     set_limit(RLIMIT_NPROC, tasks);
     set_limit(RLIMIT_CPU, static_cast<rlim_t>(limits.seconds) + 2);
     if (user != 0 && !become_own_user(user, capability)) {
@@ -418,7 +421,7 @@ SandboxRun run_sandboxed(const std::vector<std::string>& arguments, const std::s
     bool ended_by_limit = false;
     bool interrupted = false;
     // Its files together get the cap each of them has (RLIMIT_FSIZE).
-    run.files_limit = std::max(limits.output_bytes, smallest_file_limit);
+    run.files_limit = file_limit(limits);
     Clock::time_point next_files_check = start;
     while (!ended_by_limit) {
         // Noticed within a second: no poll below waits longer.
