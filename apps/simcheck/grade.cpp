@@ -434,10 +434,11 @@ Row grade_scene(const SceneCase& c, const Options& o, const std::optional<std::s
                           " deep, deeper than its files are measured";
             break;
         }
-        row.message =
-            "stopped when its files together held " + std::to_string(run.files_bytes) +
-            " bytes, more than the largest file it may write (" + std::to_string(run.files_limit) + "; counted in " +
-            (runs_programs_as_own_users() ? "its directory, /tmp, /var/tmp and /dev/shm" : "its directory") + ")";
+        row.message = "stopped when its files together held " + std::to_string(run.files_bytes) +
+                      " bytes, more than the largest file it may write (" + std::to_string(run.files_limit) +
+                      "; counted: " +
+                      (runs_programs_as_own_users() ? "its directory, /tmp, /var/tmp, /dev/shm" : "its directory") +
+                      " and the files it held open that no directory names)";
         break;
     case SandboxRun::End::signalled:
         row.verdict = "crashed";
