@@ -39,6 +39,7 @@
 #include <cstddef>
 #include <cstdio>
 #include <cstdlib>
+#include <cstring>
 #include <filesystem>
 #include <fstream>
 #include <string>
@@ -366,6 +367,113 @@ void files_together_are_capped() {
             fillers += entry.path().filename().string().rfind("filler-", 0) == 0;
         CHECK_EQ(fillers, std::size_t{0});
     }
+}
+
+constexpr char hold_memory_option[] = "--hold-memory";
+
+// test_grade --hold-memory KIND MEGABYTES: a graded program that holds that
+// much memory where RLIMIT_AS does not count it together, then waits to be
+// stopped: "resident" in itself (one of several such processes), "sockets"
+// queued in socket pairs (as many as its descriptors allow), "shared" in
+// System V shared memory segments it touches and detaches. Exit 3, with the
+// reason on stderr, where it cannot.
+int hold_memory(const std::string& kind, const char* megabytes_text) {
+    const std::size_t bytes = std::strtoull(megabytes_text, nullptr, 10) << 20;
+    if (kind == "resident") {
+        static std::vector<char> held;
+        held.assign(bytes, 1);
+    } else if (kind == "sockets") {
+        static char block[1 << 16];
+        std::size_t queued = 0;
+        while (queued < bytes) {
+            int pair[2];
+            if (socketpair(AF_UNIX, SOCK_STREAM | SOCK_NONBLOCK, 0, pair) != 0) break;
+            for (const int end : pair) {
+                for (ssize_t wrote; (wrote = write(end, block, sizeof block)) > 0;)
+                    queued += static_cast<std::size_t>(wrote);
+            }
+        }
+    } else if (kind == "shared") {
+        // In segments of 32 MB, each mapped only while it is touched: the address space never holds two.
+        constexpr std::size_t segment_bytes = std::size_t{32} << 20;
+        for (std::size_t held = 0; held < bytes; held += segment_bytes) {
+            const int segment = shmget(IPC_PRIVATE, segment_bytes, IPC_CREAT | 0600);
+            void* const mapped = segment < 0 ? reinterpret_cast<void*>(-1) : shmat(segment, nullptr, 0);
+            if (mapped == reinterpret_cast<void*>(-1)) {
+                std::fprintf(stderr, "cannot hold %s MB of System V shared memory: %s\n", megabytes_text,
+                             std::strerror(errno));
+                return 3;
+            }
+            std::memset(mapped, 1, segment_bytes);
+            shmdt(mapped);
+        }
+    }
+    for (;;) pause();
+}
+
+// Memory that RLIMIT_AS, which caps each process, does not count together:
+// several processes under the cap each, buffers queued in socket pairs, and
+// System V shared memory, which no process need map. Each is stopped (as a
+// crash, named) once its processes together hold more than --memory; an
+// isolated program's IPC namespace refuses shared memory past it. Each
+// process may hold at most 1024 descriptors.
+void memory_together_is_capped() {
+    const std::string self = fs::read_symlink("/proc/self/exe").string();
+    {
+        check::Context context("descriptors");
+        const std::string body =
+            "n=$(ulimit -n)\n[ \"$n\" != unlimited ] && [ \"$n\" -le 1024 ] || "
+            "{ echo \"ulimit -n: $n\" >&2; exit 9; }\ncat '" +
+            cradle_answer() + "'\n";
+        const Graded g = grade(one_scene_suite(), {"--no-reference"}, {script("descriptors.sh", body)});
+        CHECK_EQ(g.result.status, 0);
+        if (g.json.kind == mini_json::Value::Kind::object)
+            CHECK_EQ(scenes(g)[0]["verdict"].text, std::string("conforms"));
+    }
+#if defined(__SANITIZE_ADDRESS__)
+    std::printf("under AddressSanitizer, whose programs are graded with --memory 0: memory caps not checked\n");
+#else
+    const std::string hold = "'" + self + "' " + hold_memory_option;
+    struct Case {
+        std::string name, body;
+        std::vector<std::string> launcher;
+    };
+    std::vector<Case> cases{
+        {"four processes of 60 MB", "for i in 1 2 3 4; do " + hold + " resident 60 & done\nwait\n", {}},
+        {"socket pairs", "exec " + hold + " sockets 1000\n", {}},
+        {"System V shared memory", "exec " + hold + " shared 300\n", {}}};
+    if (geteuid() == 0)
+        cases.push_back({"System V shared memory, root without CAP_SYS_ADMIN",
+                         cases.back().body,
+                         {"/usr/bin/setpriv", "--inh-caps", "-all", "--bounding-set", "-sys_admin", "--"}});
+    for (const Case& c : cases) {
+        check::Context context(c.name);
+        const Graded g = grade(one_scene_suite(), {"--timeout", "60", "--no-reference", "--memory", "160"},
+                               {script("memory.sh", c.body)}, c.launcher);
+        CHECK_EQ(g.result.status, 1);
+        if (g.json.kind != mini_json::Value::Kind::object) continue;
+        const mini_json::Value& scene = scenes(g)[0];
+        const bool isolated = g.json["isolated"].number == 1.0, own_users = g.json["own_users"].number == 1.0;
+        CHECK(scene["seconds"].number < 30.0);
+        CHECK_EQ(running_with_argument(hold_memory_option), 0);
+        if (c.name.find("System V") != std::string::npos) {
+            if (isolated) {
+                // Its IPC namespace holds no more than --memory: the segment is refused.
+                CHECK_EQ(scene["verdict"].text, std::string("exit-status"));
+                CHECK(scene["message"].text.find("cannot hold 300 MB of System V shared memory") != std::string::npos);
+                continue;
+            }
+            if (!own_users) {
+                std::printf("%s: not isolated and not root: System V memory not checked\n", c.name.c_str());
+                continue;
+            }
+        }
+        CHECK_EQ(scene["verdict"].text, std::string("crashed"));
+        CHECK(scene["message"].text.find("stopped when its processes together held") != std::string::npos);
+        CHECK(scene["message"].text.find("bytes of memory, more than --memory (167772160; counted:") !=
+              std::string::npos);
+    }
+#endif
 }
 
 // A name for each run of a grade, for the files a program notes: its
@@ -1379,6 +1487,7 @@ int main(int argc, char** argv) {
     if (argc > 3 && std::string(argv[1]) == without_system_calls_option)
         return run_without_system_calls(argv[2], argv + 3);
     if (argc == 4 && std::string(argv[1]) == leave_ipc_option) return leave_ipc_and_answer(argv[2], argv[3]);
+    if (argc == 4 && std::string(argv[1]) == hold_memory_option) return hold_memory(argv[2], argv[3]);
     if (argc == 4 && std::string(argv[1]) == reach_terminal_option) return reach_terminal_and_answer(argv[2], argv[3]);
     run_process::children_without_leak_checks();
     const int status = check::run(
@@ -1387,6 +1496,7 @@ int main(int argc, char** argv) {
          {"textbook mistakes are wrong at their step", textbook_mistakes_are_wrong_at_their_step},
          {"misbehaving programs get their verdicts", misbehaving_programs_get_their_verdicts},
          {"files together are capped", files_together_are_capped},
+         {"memory together is capped", memory_together_is_capped},
          {"a child holding stdout does not hang the grader", a_child_holding_stdout_does_not_hang_the_grader},
          {"processes that leave the group are killed", processes_that_leave_the_group_are_killed},
          {"programs run by root are users of their own", programs_run_by_root_are_users_of_their_own},

@@ -71,13 +71,7 @@ void add_entry(int parent, const char* name, FilesHeld& held) {
 std::int64_t bytes_open_unnamed(uid_t user, pid_t group) {
     std::set<std::pair<dev_t, ino_t>> counted;
     std::int64_t bytes = 0;
-    for_each_process([&](const char* pid) {
-        if (user != 0) {
-            if (process_owner(pid) != user) return;
-        } else {
-            ProcessStat stat;
-            if (!read_process_stat(pid, stat) || stat.group != group) return;
-        }
+    for_each_program_process(user, group, [&](const char* pid) {
         const fs::path descriptors = fs::path("/proc") / pid / "fd";
         std::error_code error;
         for (fs::directory_iterator entry(descriptors, error), end; !error && entry != end; entry.increment(error)) {

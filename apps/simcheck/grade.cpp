@@ -58,8 +58,10 @@ controlling terminal (killed as a whole when it ends), and limits:
       --output-factor K  stdout capped at K times the expected output's size,
                          plus 1 MiB (default 4); each file it writes, and its
                          files together, too, but at least 1 GiB
-      --memory MB        address space (default 4096; 0: no limit, for programs
-                         built with AddressSanitizer, which reserves terabytes)
+      --memory MB        address space of each process, and the memory its
+                         processes hold together, pipes' and sockets' buffers
+                         too (default 4096; 0: no limit, for programs built
+                         with AddressSanitizer, which reserves terabytes)
       --processes N      processes and threads it may add (default 256)
 Run by root, each program runs as a user of its own (an unused user id that
 may read every file but write only in its directory and where anyone may).
@@ -439,6 +441,17 @@ Row grade_scene(const SceneCase& c, const Options& o, const std::optional<std::s
                       "; counted: " +
                       (runs_programs_as_own_users() ? "its directory, /tmp, /var/tmp, /dev/shm" : "its directory") +
                       " and the files it held open that no directory names)";
+        break;
+    case SandboxRun::End::memory_limit:
+        // Killed, as the kernel's out-of-memory killer would have: a crash, named.
+        row.verdict = "crashed";
+        row.signal = SIGKILL;
+        row.message = "stopped when its processes together held " + std::to_string(run.memory_bytes) +
+                      " bytes of memory, more than --memory (" + std::to_string(run.memory_limit) +
+                      "; counted: their private resident memory and what waited in their pipes and sockets" +
+                      (runs_programs_as_own_users() && !runs_programs_isolated()
+                           ? ", and its System V shared memory and message queues)"
+                           : ")");
         break;
     case SandboxRun::End::signalled:
         row.verdict = "crashed";

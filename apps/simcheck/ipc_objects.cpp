@@ -18,14 +18,16 @@
 namespace simcheck {
 namespace {
 
-// The ids of the objects in one /proc/sysvipc table whose owner ("uid") or
-// maker ("cuid") is `user`. Columns are found by their header's names,
-// which every kernel since 2.6 writes; `id_column` is "shmid", "semid" or
-// "msqid".
-std::vector<int> ids_of(const char* table, const std::string& id_column, uid_t user) {
+// visit(value) for each object in one /proc/sysvipc table whose owner
+// ("uid") or maker ("cuid") is `user`, where value(name) is the object's
+// number in the column of that name (0 where the table has no such
+// column). Columns are found by their header's names, which every kernel
+// since 2.6 writes.
+template <typename Visit>
+void for_each_object_of(const char* table, uid_t user, Visit&& visit) {
     std::ifstream in(table);
     std::string line;
-    if (!std::getline(in, line)) return {};
+    if (!std::getline(in, line)) return;
     std::vector<std::string> header;
     std::istringstream names(line);
     for (std::string name; names >> name;) header.push_back(name);
@@ -34,18 +36,27 @@ std::vector<int> ids_of(const char* table, const std::string& id_column, uid_t u
             if (header[k] == name) return static_cast<int>(k);
         return -1;
     };
-    const int id_at = column(id_column), owner_at = column("uid"), maker_at = column("cuid");
-    if (id_at < 0 || owner_at < 0 || maker_at < 0) return {};
+    const int owner_at = column("uid"), maker_at = column("cuid");
+    if (owner_at < 0 || maker_at < 0) return;
     const std::string name = std::to_string(user);
-    std::vector<int> ids;
     while (std::getline(in, line)) {
         std::vector<std::string> fields;
         std::istringstream values(line);
         for (std::string value; values >> value;) fields.push_back(value);
         if (fields.size() < header.size()) continue;
-        if (fields[static_cast<std::size_t>(owner_at)] == name || fields[static_cast<std::size_t>(maker_at)] == name)
-            ids.push_back(static_cast<int>(std::strtol(fields[static_cast<std::size_t>(id_at)].c_str(), nullptr, 10)));
+        if (fields[static_cast<std::size_t>(owner_at)] != name && fields[static_cast<std::size_t>(maker_at)] != name)
+            continue;
+        visit([&](const std::string& column_name) -> std::int64_t {
+            const int at = column(column_name);
+            return at < 0 ? 0 : std::strtoll(fields[static_cast<std::size_t>(at)].c_str(), nullptr, 10);
+        });
     }
+}
+
+// The ids of `user`'s objects in one table; `id_column` is "shmid", "semid" or "msqid".
+std::vector<int> ids_of(const char* table, const std::string& id_column, uid_t user) {
+    std::vector<int> ids;
+    for_each_object_of(table, user, [&](const auto& value) { ids.push_back(static_cast<int>(value(id_column))); });
     return ids;
 }
 
@@ -71,6 +82,13 @@ int remove_ipc_objects_of(uid_t user) {
     int status = 0;
     if (child < 0 || waitpid(child, &status, 0) != child || !WIFEXITED(status)) return 0;
     return WEXITSTATUS(status);
+}
+
+std::int64_t ipc_bytes_of(uid_t user) {
+    std::int64_t bytes = 0;
+    for_each_object_of("/proc/sysvipc/shm", user, [&](const auto& value) { bytes += value("rss") + value("swap"); });
+    for_each_object_of("/proc/sysvipc/msg", user, [&](const auto& value) { bytes += value("cbytes"); });
+    return bytes;
 }
 
 }  // namespace simcheck

@@ -9,11 +9,17 @@
 
 #include <sys/types.h>
 
+#include <cstdint>
+
 namespace simcheck {
 
 // Removes every System V IPC object (shared memory segment, semaphore set,
 // message queue) that `user` owns or made, as /proc/sysvipc lists them.
 // Returns how many.
 int remove_ipc_objects_of(uid_t user);
+
+// The memory `user`'s shared memory segments (resident or swapped out)
+// and message queues (their messages) hold now.
+std::int64_t ipc_bytes_of(uid_t user);
 
 }  // namespace simcheck

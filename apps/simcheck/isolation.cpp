@@ -17,6 +17,7 @@
 #include <algorithm>
 #include <charconv>
 #include <cstdint>
+#include <cstdio>
 #include <cstring>
 #include <fstream>
 #include <string>
@@ -169,12 +170,30 @@ HiddenPaths::HiddenPaths(const std::vector<std::string>& paths, const std::vecto
 
 bool isolates_in_user_namespace() { return geteuid() != 0; }
 
-bool HiddenPaths::isolate(bool read_only, bool own_processes) const {
+IpcMemoryCap::IpcMemoryCap(std::int64_t bytes) {
+    if (bytes <= 0) return;
+    // Queues of the kernel's default size (16 KiB), as many as fit, and no more than its default count.
+    constexpr std::int64_t queue_bytes = 16384, default_queues = 32000;
+    std::snprintf(shared_pages, sizeof shared_pages, "%lld",
+                  static_cast<long long>(std::max<std::int64_t>(1, bytes / sysconf(_SC_PAGESIZE))));
+    std::snprintf(queues, sizeof queues, "%lld",
+                  static_cast<long long>(std::clamp<std::int64_t>(bytes / queue_bytes, 1, default_queues)));
+}
+
+bool HiddenPaths::isolate(bool read_only, bool own_processes, const IpcMemoryCap* ipc) const {
     const bool own_user_namespace = isolates_in_user_namespace();
     if (own_user_namespace && !enter_user_namespace(own_processes)) return false;
     // An IPC namespace too: the System V shared memory, semaphores and queues
     // it makes go with its last process (ipc_objects.hpp).
     if (unshare(CLONE_NEWNS | CLONE_NEWNET | CLONE_NEWIPC) != 0) return false;
+    if (ipc && ipc->shared_pages[0] != '\0') {
+        // The IPC namespace's own settings (before /proc is made read-only), so that what it holds stays below the
+        // program's memory cap: without them a namespace may hold 16 EiB of shared memory and 500 MB of messages.
+        [[maybe_unused]] const bool capped =
+            write_whole("/proc/sys/kernel/shmall", ipc->shared_pages, std::strlen(ipc->shared_pages)) &&
+            write_whole("/proc/sys/kernel/msgmnb", "16384", 5) &&
+            write_whole("/proc/sys/kernel/msgmni", ipc->queues, std::strlen(ipc->queues));
+    }
     // Nothing mounted here reaches the grader's namespace.
     if (mount(nullptr, "/", nullptr, MS_REC | MS_PRIVATE, nullptr) != 0) return false;
     if (read_only) {

@@ -25,6 +25,7 @@
 
 #include <sys/types.h>
 
+#include <cstdint>
 #include <string>
 #include <vector>
 
@@ -55,6 +56,16 @@ pid_t fork_into_pid_namespace();
 // it counts the program's tasks alone.
 bool isolates_in_user_namespace();
 
+// What the System V objects of an IPC namespace may hold together, as its
+// sysctls say it (kernel.shmall, the pages of shared memory; kernel.msgmni
+// and kernel.msgmnb, the queues and the bytes a queue), written as text
+// before any fork: the child may not allocate.
+struct IpcMemoryCap {
+    explicit IpcMemoryCap(std::int64_t bytes);  // 0 or less: the kernel's defaults kept
+    char shared_pages[24] = "";
+    char queues[24] = "";
+};
+
 // The paths to hide, sorted into files and directories once, before any
 // fork: the child may not allocate.
 class HiddenPaths {
@@ -71,8 +82,11 @@ public:
     // enters new mount, network and IPC namespaces, hides the paths, makes every
     // file but the scratch places read-only (if `read_only`), and brings
     // loopback up. `own_processes`: the child of fork_into_pid_namespace(),
-    // which also gets a /proc of its PID namespace. False if any step fails.
-    [[nodiscard]] bool isolate(bool read_only, bool own_processes) const;
+    // which also gets a /proc of its PID namespace. `ipc`: the cap on its
+    // IPC namespace's objects, where the kernel lets the namespace's owner
+    // set it (Linux 5.x and later; else its defaults stay). False if any
+    // other step fails.
+    [[nodiscard]] bool isolate(bool read_only, bool own_processes, const IpcMemoryCap* ipc = nullptr) const;
 
 private:
     std::vector<std::string> files_, directories_;

@@ -51,4 +51,19 @@ inline bool read_process_stat(const char* pid, ProcessStat& stat) {
     return true;
 }
 
+// visit(pid) for each process of a graded program: its user's, where it
+// runs as a user of its own (`user` not 0), else its process group's.
+template <typename Visit>
+void for_each_program_process(uid_t user, pid_t group, Visit&& visit) {
+    for_each_process([&](const char* pid) {
+        if (user != 0) {
+            if (process_owner(pid) != user) return;
+        } else {
+            ProcessStat stat;
+            if (!read_process_stat(pid, stat) || stat.group != group) return;
+        }
+        visit(pid);
+    });
+}
+
 }  // namespace simcheck

@@ -3,6 +3,7 @@
 #include "files_held.hpp"
 #include "ipc_objects.hpp"
 #include "landlock_domain.hpp"
+#include "memory_held.hpp"
 #include "namespace_init.hpp"
 #include "own_user.hpp"
 #include "process_list.hpp"
@@ -51,12 +52,17 @@ constexpr std::int64_t smallest_file_limit = std::int64_t{1} << 30;
 
 // The largest file it may write (RLIMIT_FSIZE), and the most its files may hold together.
 std::int64_t file_limit(const SandboxLimits& limits) { return std::max(limits.output_bytes, smallest_file_limit); }
-// How often the bytes its files hold are measured while it runs (a walk of
-// its directory and the scratch places' top level): a program writing at
-// a few GB/s passes the cap by at most a few hundred megabytes. Less often
-// where one walk takes longer (a program that makes very many files).
-constexpr double files_check_seconds = 0.1;
-constexpr double files_check_share = 0.05;  // the most of the grader's time the walks take
+// How often the bytes its files and its processes hold are measured while
+// it runs (a walk of its directory and the scratch places' top level, and
+// of its processes' descriptors): a program writing or allocating at a few
+// GB/s passes a cap by at most a few hundred megabytes. Less often where
+// one walk takes longer (a program that makes very many files).
+constexpr double measure_seconds = 0.1;
+constexpr double measure_share = 0.05;  // the most of the grader's time the walks take
+// The descriptors each process may hold open: the usual default, which
+// bounds the walk of its descriptors, and the pipes and sockets it can fill
+// between two walks.
+constexpr rlim_t most_open_files = 1024;
 
 class Fd {
 public:
@@ -93,8 +99,8 @@ void set_limit(int resource, rlim_t value) {
 // namespace's init and tells its end there (namespace_init.hpp); else -1.
 [[noreturn]] void start_child(char* const* argv, const char* directory, const char* stdin_path, int out, int err,
                               const SandboxLimits& limits, rlim_t tasks, uid_t user, int capability,
-                              const HiddenPaths* hidden, bool read_only, int init_report, const LandlockDomain& domain,
-                              char* const* environment) {
+                              const HiddenPaths* hidden, const IpcMemoryCap& ipc, bool read_only, int init_report,
+                              const LandlockDomain& domain, char* const* environment) {
     // setsid(), not just setpgid(): it then has no controlling terminal,
     // so it can neither write on the grader's (open /dev/tty) nor push
     // input into it for the shell to run after the grade (TIOCSTI). Its
@@ -103,7 +109,7 @@ void set_limit(int resource, rlim_t value) {
     dup2(err, 2);
     dup2(out, 1);
     const int in = open(stdin_path, O_RDONLY);
-    if (hidden && !hidden->isolate(read_only, init_report >= 0)) {
+    if (hidden && !hidden->isolate(read_only, init_report >= 0, &ipc)) {
         constexpr char message[] = "simcheck grade: cannot isolate the program (namespaces)\n";
         [[maybe_unused]] const auto written = write(2, message, sizeof message - 1);
         _exit(127);
@@ -125,6 +131,7 @@ void set_limit(int resource, rlim_t value) {
     if (limits.memory_bytes > 0) set_limit(RLIMIT_AS, static_cast<rlim_t>(limits.memory_bytes));
     set_limit(RLIMIT_FSIZE, static_cast<rlim_t>(file_limit(limits)));
     set_limit(RLIMIT_NPROC, tasks);
+    set_limit(RLIMIT_NOFILE, most_open_files);
     set_limit(RLIMIT_CPU, static_cast<rlim_t>(limits.seconds) + 2);
     if (user != 0 && !become_own_user(user, capability)) {
         constexpr char message[] = "simcheck grade: cannot run the program as a user of its own\n";
@@ -350,6 +357,9 @@ SandboxRun run_sandboxed(const std::vector<std::string>& arguments, const std::s
         environment.push_back(nullptr);
     }
 
+    // Isolated, its System V objects are capped by its IPC namespace's settings (made before the fork).
+    const IpcMemoryCap ipc_cap(limits.memory_bytes);
+
     become_subreaper();
     const Clock::time_point start = Clock::now();
     pid_t pid = 0;
@@ -359,8 +369,8 @@ SandboxRun run_sandboxed(const std::vector<std::string>& arguments, const std::s
         pid = own_processes ? fork_into_pid_namespace() : fork();
         if (pid == 0) {
             start_child(argv.data(), directory.c_str(), stdin_path.c_str(), out_write.get(), err_write.get(), limits,
-                        tasks, user, capability, hidden, read_only, own_processes ? report_write.get() : -1, domain,
-                        limits.environment ? environment.data() : nullptr);
+                        tasks, user, capability, hidden, ipc_cap, read_only, own_processes ? report_write.get() : -1,
+                        domain, limits.environment ? environment.data() : nullptr);
         }
         if (pid > 0) running_leaders.insert(pid);
     }
@@ -422,7 +432,10 @@ SandboxRun run_sandboxed(const std::vector<std::string>& arguments, const std::s
     bool interrupted = false;
     // Its files together get the cap each of them has (RLIMIT_FSIZE).
     run.files_limit = file_limit(limits);
-    Clock::time_point next_files_check = start;
+    run.memory_limit = limits.memory_bytes;
+    // Run as a user of its own without an IPC namespace, its System V objects are found by their owner.
+    const bool ipc_by_owner = user != 0 && !hidden;
+    Clock::time_point next_measure = start;
     while (!ended_by_limit) {
         // Noticed within a second: no poll below waits longer.
         if (runs_interrupted() != 0) {
@@ -439,7 +452,7 @@ SandboxRun run_sandboxed(const std::vector<std::string>& arguments, const std::s
             ended_by_limit = true;
             break;
         }
-        if (!reaped && Clock::now() >= next_files_check) {
+        if (!reaped && Clock::now() >= next_measure) {
             const Clock::time_point walk_start = Clock::now();
             const FilesHeld held = files_held(user, pid, directory);
             run.files_bytes = held.bytes;
@@ -449,16 +462,23 @@ SandboxRun run_sandboxed(const std::vector<std::string>& arguments, const std::s
                 ended_by_limit = true;
                 break;
             }
+            if (run.memory_limit > 0) {
+                run.memory_bytes = memory_held(user, pid, ipc_by_owner).bytes();
+                if (run.memory_bytes > run.memory_limit) {
+                    stop(SandboxRun::End::memory_limit);
+                    ended_by_limit = true;
+                    break;
+                }
+            }
             const double walk = seconds_since(walk_start);
-            next_files_check = Clock::now() + std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double>(
-                                                  std::max(files_check_seconds, walk / files_check_share)));
+            next_measure = Clock::now() + std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double>(
+                                              std::max(measure_seconds, walk / measure_share)));
         }
         pollfd fds[3] = {
             {out_read.get(), POLLIN, 0}, {err_read.get(), POLLIN, 0}, {reaped ? -1 : exited.get(), POLLIN, 0}};
-        const double until_files_check =
-            std::max(0.0, std::chrono::duration<double>(next_files_check - Clock::now()).count());
+        const double until_measure = std::max(0.0, std::chrono::duration<double>(next_measure - Clock::now()).count());
         const int wait_ms =
-            exited.get() >= 0 && !reaped ? static_cast<int>(std::min({left, 1.0, until_files_check}) * 1000.0) + 1 : 10;
+            exited.get() >= 0 && !reaped ? static_cast<int>(std::min({left, 1.0, until_measure}) * 1000.0) + 1 : 10;
         if (poll(fds, 3, wait_ms) < 0 && errno != EINTR) break;
         if (fds[0].revents != 0) {
             const ssize_t got = read(out_read.get(), buffer, sizeof buffer);

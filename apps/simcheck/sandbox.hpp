@@ -35,8 +35,9 @@ struct SandboxLimits {
     double seconds = 10.0;  // wall clock
     // Its stdout; also each file it writes, and its files together, but those at least 1 GiB.
     std::int64_t output_bytes = std::int64_t{1} << 30;
-    std::int64_t memory_bytes = std::int64_t{4} << 30;  // address space (RLIMIT_AS); 0: none
-    int processes = 256;                                // tasks it may add (RLIMIT_NPROC)
+    // Each process's address space (RLIMIT_AS), and what its processes hold together (memory_held.hpp); 0: none.
+    std::int64_t memory_bytes = std::int64_t{4} << 30;
+    int processes = 256;  // tasks it may add (RLIMIT_NPROC)
     // No other program runs beside it (grade --jobs 1): what left its group
     // is then known to be its own, and counted in left_running (as it always
     // is with users of their own).
@@ -52,17 +53,20 @@ struct SandboxLimits {
 struct SandboxRun {
     // output_limit: its stdout passed limits.output_bytes; files_limit: the
     // files it held (files_held.hpp) passed the largest a file may be, or
-    // nested deeper than they are measured.
-    enum class End { exited, signalled, timeout, output_limit, files_limit };
+    // nested deeper than they are measured; memory_limit: its processes
+    // together held more memory than limits.memory_bytes (memory_held.hpp).
+    enum class End { exited, signalled, timeout, output_limit, files_limit, memory_limit };
     End end = End::exited;
     int exit_status = 0;  // exited
     int signal = 0;       // signalled
     double seconds = 0.0;
     std::int64_t output_bytes = 0;
-    std::int64_t files_bytes = 0;  // what its files held when last measured
-    std::int64_t files_limit = 0;  // the cap on them
-    bool files_too_deep = false;   // it nested directories deeper than the grader walks (max_files_depth)
-    std::string stderr_head;       // the first few kilobytes of its standard error
+    std::int64_t files_bytes = 0;   // what its files held when last measured
+    std::int64_t files_limit = 0;   // the cap on them
+    bool files_too_deep = false;    // it nested directories deeper than the grader walks (max_files_depth)
+    std::int64_t memory_bytes = 0;  // what its processes held together when last measured
+    std::int64_t memory_limit = 0;  // the cap on it; 0: none
+    std::string stderr_head;        // the first few kilobytes of its standard error
     // Processes of the program still running when it had ended by itself,
     // all killed: its group's, and, run alone, as a user of its own or in a
     // PID namespace of its own, what had left the group.
