@@ -374,7 +374,8 @@ constexpr char hold_memory_option[] = "--hold-memory";
 // test_grade --hold-memory KIND MEGABYTES: a graded program that holds that
 // much memory where RLIMIT_AS does not count it together, then waits to be
 // stopped: "resident" in itself (one of several such processes), "sockets"
-// queued in socket pairs (as many as its descriptors allow), "shared" in
+// queued in socket pairs (as many as its descriptors allow), "pipes" a page
+// a byte in pipes (MEGABYTES unused: as many as it may open), "shared" in
 // System V shared memory segments it touches and detaches. Exit 3, with the
 // reason on stderr, where it cannot.
 int hold_memory(const std::string& kind, const char* megabytes_text) {
@@ -391,6 +392,13 @@ int hold_memory(const std::string& kind, const char* megabytes_text) {
             for (const int end : pair) {
                 for (ssize_t wrote; (wrote = write(end, block, sizeof block)) > 0;)
                     queued += static_cast<std::size_t>(wrote);
+            }
+        }
+    } else if (kind == "pipes") {
+        // In packet mode each write takes a page of its own: 16 bytes hold 64 KiB.
+        for (int pipe_ends[2]; pipe2(pipe_ends, O_DIRECT | O_NONBLOCK) == 0;) {
+            for (int k = 0; k < 16; ++k) {
+                if (write(pipe_ends[1], "x", 1) != 1) break;
             }
         }
     } else if (kind == "shared") {
@@ -415,7 +423,8 @@ int hold_memory(const std::string& kind, const char* megabytes_text) {
 // several processes under the cap each, buffers queued in socket pairs, and
 // System V shared memory, which no process need map. Each is stopped (as a
 // crash, named) once its processes together hold more than --memory; an
-// isolated program's IPC namespace refuses shared memory past it. Each
+// isolated program's IPC namespace refuses shared memory past it. Pipes
+// count a page for each byte waiting in them. Each
 // process may hold at most 1024 descriptors.
 void memory_together_is_capped() {
     const std::string self = fs::read_symlink("/proc/self/exe").string();
@@ -436,20 +445,25 @@ void memory_together_is_capped() {
     const std::string hold = "'" + self + "' " + hold_memory_option;
     struct Case {
         std::string name, body;
+        int megabytes;  // --memory
         std::vector<std::string> launcher;
     };
     std::vector<Case> cases{
-        {"four processes of 60 MB", "for i in 1 2 3 4; do " + hold + " resident 60 & done\nwait\n", {}},
-        {"socket pairs", "exec " + hold + " sockets 1000\n", {}},
-        {"System V shared memory", "exec " + hold + " shared 300\n", {}}};
+        {"four processes of 60 MB", "for i in 1 2 3 4; do " + hold + " resident 60 & done\nwait\n", 160, {}},
+        {"socket pairs", "exec " + hold + " sockets 1000\n", 160, {}},
+        // 32 MB a process, below the 64 MB of full pipes a user may have (fs.pipe-user-pages-soft).
+        {"pipes in packet mode, two processes", "for i in 1 2; do " + hold + " pipes 0 & done\nwait\n", 40, {}},
+        {"System V shared memory", "exec " + hold + " shared 300\n", 160, {}}};
     if (geteuid() == 0)
         cases.push_back({"System V shared memory, root without CAP_SYS_ADMIN",
                          cases.back().body,
+                         160,
                          {"/usr/bin/setpriv", "--inh-caps", "-all", "--bounding-set", "-sys_admin", "--"}});
     for (const Case& c : cases) {
         check::Context context(c.name);
-        const Graded g = grade(one_scene_suite(), {"--timeout", "60", "--no-reference", "--memory", "160"},
-                               {script("memory.sh", c.body)}, c.launcher);
+        const Graded g =
+            grade(one_scene_suite(), {"--timeout", "60", "--no-reference", "--memory", std::to_string(c.megabytes)},
+                  {script("memory.sh", c.body)}, c.launcher);
         CHECK_EQ(g.result.status, 1);
         if (g.json.kind != mini_json::Value::Kind::object) continue;
         const mini_json::Value& scene = scenes(g)[0];
@@ -470,8 +484,9 @@ void memory_together_is_capped() {
         }
         CHECK_EQ(scene["verdict"].text, std::string("crashed"));
         CHECK(scene["message"].text.find("stopped when its processes together held") != std::string::npos);
-        CHECK(scene["message"].text.find("bytes of memory, more than --memory (167772160; counted:") !=
-              std::string::npos);
+        const std::string cap =
+            "bytes of memory, more than --memory (" + std::to_string(c.megabytes << 20) + "; counted:";
+        CHECK(scene["message"].text.find(cap) != std::string::npos);
     }
 #endif
 }

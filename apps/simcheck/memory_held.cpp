@@ -4,6 +4,7 @@
 #include "process_list.hpp"
 
 #include <dirent.h>
+#include <fcntl.h>
 #include <linux/sock_diag.h>
 #include <sys/ioctl.h>
 #include <sys/socket.h>
@@ -11,6 +12,7 @@
 #include <sys/syscall.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <cstdio>
 #include <cstdlib>
 #include <set>
@@ -34,8 +36,12 @@ std::int64_t private_resident(const char* pid) {
 
 std::int64_t bytes_waiting(int descriptor, const struct stat& info) {
     if (S_ISFIFO(info.st_mode)) {
+        // Each byte waiting may sit on a page of its own (a pipe in packet
+        // mode, O_DIRECT, gives each write one), up to the pipe's capacity.
         int bytes = 0;
-        return ioctl(descriptor, FIONREAD, &bytes) == 0 ? bytes : 0;
+        const int capacity = fcntl(descriptor, F_GETPIPE_SZ);
+        if (ioctl(descriptor, FIONREAD, &bytes) != 0 || bytes <= 0 || capacity <= 0) return 0;
+        return std::min(std::int64_t{capacity}, std::int64_t{bytes} * sysconf(_SC_PAGESIZE));
     }
     std::uint32_t memory[SK_MEMINFO_VARS] = {};
     socklen_t size = sizeof memory;

@@ -21,8 +21,8 @@ struct MemoryHeld {
 };
 
 // The program's processes are its user's (`user` not 0), or else its
-// process group `group`'s. A pipe counts the bytes waiting in it
-// (FIONREAD), a socket the memory the kernel accounts to it (SO_MEMINFO:
+// process group `group`'s. A pipe counts a page for each byte waiting in
+// it (FIONREAD), up to its capacity (F_GETPIPE_SZ), a socket the memory the kernel accounts to it (SO_MEMINFO:
 // received, sent and not yet taken, queued to send), read through a copy
 // of the descriptor (pidfd_getfd, Linux 5.6, with the right to trace the
 // process: where that is refused, its pipes and sockets count nothing).
