@@ -71,8 +71,11 @@ void selection_is_the_greedy_pass() {
 // the user's order or stored out of it (ties then go by the user's indices),
 // spread over several threads' lists: does select_collisions, on `threads`
 // threads, give every particle the partner of the greedy pass over the
-// sorted candidates?
-bool selection_matches_greedy(SplitMix64& rng, std::uint32_t particles, int candidate_count, int threads) {
+// sorted candidates? `piled`: every pair a candidate at t = 0 too, as disks
+// piled on one another make them (the lowest indices win, one pair a
+// round: the rounds give way to a sorted walk).
+bool selection_matches_greedy(SplitMix64& rng, std::uint32_t particles, int candidate_count, int threads,
+                              bool piled = false) {
     std::vector<std::uint32_t> user_index(particles);
     for (std::uint32_t i = 0; i < particles; ++i) user_index[i] = i;
     const bool user_order = rng.next() % 2 == 0;
@@ -91,6 +94,12 @@ bool selection_matches_greedy(SplitMix64& rng, std::uint32_t particles, int cand
             all.push_back(walls.back());
         } else {
             all.push_back(Collision::pair(t, std::min(i, j), std::max(i, j)));
+            found[rng.next() % found.size()].found.push_back(all.back());
+        }
+    }
+    for (std::uint32_t i = 0; piled && i < particles; ++i) {
+        for (std::uint32_t j = i + 1; j < particles; ++j) {
+            all.push_back(Collision::pair(0.0, i, j));
             found[rng.next() % found.size()].found.push_back(all.back());
         }
     }
@@ -148,6 +157,21 @@ void selection_equals_greedy_on_any_thread_count() {
         for (const int threads : {1, 2, 3, 4}) {
             SplitMix64 same = rng;
             wrong += selection_matches_greedy(same, particles, candidates, threads) ? 0 : 1;
+        }
+        rng.next();
+    }
+    CHECK_EQ(wrong, 0);
+}
+
+void selection_of_a_pile_is_the_greedy_pass() {
+    SplitMix64 rng(13);
+    int wrong = 0;
+    for (int trial = 0; trial < 6; ++trial) {
+        const std::uint32_t particles = 50 + static_cast<std::uint32_t>(rng.next() % 400);
+        for (const int threads : {1, 2}) {
+            SplitMix64 same = rng;
+            wrong +=
+                selection_matches_greedy(same, particles, static_cast<int>(rng.next() % 2000), threads, true) ? 0 : 1;
         }
         rng.next();
     }
@@ -245,6 +269,7 @@ int main(int argc, char** argv) {
                        {"selection is the greedy pass", selection_is_the_greedy_pass},
                        {"selection equals greedy on random candidates", selection_equals_greedy_on_random_candidates},
                        {"selection equals greedy on any thread count", selection_equals_greedy_on_any_thread_count},
+                       {"selection of a pile is the greedy pass", selection_of_a_pile_is_the_greedy_pass},
                        {"wall beats pair at equal time", wall_beats_pair_at_equal_time},
                        {"lowest indices win among equal pairs", lowest_indices_win_among_equal_pairs},
                        {"collision near wall stops at wall then passes through",
