@@ -92,11 +92,18 @@ bool run_rounds(std::vector<RankView>& ranks, int& rounds) {
 }
 
 // One random conflict graph over `rank_count` ranks; true when every rank's
-// particles get the greedy pass's partners.
+// particles get the greedy pass's partners. The first `piled` particles lie
+// in a pile on rank 0: every pair of them a candidate at t = 0.
 bool distributed_matches_greedy(SplitMix64& rng, std::uint32_t particles, int candidate_count, int rank_count,
-                                int& rounds) {
+                                int& rounds, std::uint32_t piled = 0) {
     std::vector<Collision> all;
     std::set<std::pair<std::uint32_t, std::uint32_t>> pairs;
+    for (std::uint32_t i = 0; i < piled; ++i) {
+        for (std::uint32_t j = i + 1; j < piled; ++j) {
+            pairs.insert({i, j});
+            all.push_back(Collision::pair(0.0, i, j));
+        }
+    }
     for (int k = 0; k < candidate_count; ++k) {
         const double t = static_cast<double>(rng.next() % 6) / 6.0;  // many exact ties
         const auto i = static_cast<std::uint32_t>(rng.next() % particles);
@@ -112,6 +119,7 @@ bool distributed_matches_greedy(SplitMix64& rng, std::uint32_t particles, int ca
     }
     std::vector<int> owner(particles);
     for (int& o : owner) o = static_cast<int>(rng.next() % static_cast<std::uint64_t>(rank_count));
+    std::fill(owner.begin(), owner.begin() + piled, 0);
 
     std::vector<RankView> ranks(static_cast<std::size_t>(rank_count));
     for (int r = 0; r < rank_count; ++r) {
@@ -200,7 +208,7 @@ void random_graphs_on_random_ranks() {
 }
 
 // A chain of conflicts through every rank (a Newton's cradle laid over the
-// cuts): times fall along the chain, so each round decides one link.
+// cuts): times fall along the chain, so each link waits on the next.
 void a_chain_across_every_rank() {
     for (const int rank_count : {2, 3, 5, 8}) {
         const check::Context context("ranks " + std::to_string(rank_count));
@@ -254,14 +262,37 @@ void a_chain_across_every_rank() {
             }
         }
         CHECK_EQ(accepted, expected.counts.particle_collisions);
-        CHECK(rounds >= static_cast<int>(particles) / 2 - 1);  // decided link by link along the chain
+        // Decided a rank a round along the chain: no sooner (each round's news crosses one cut), and no later
+        // (each rank decides its own links alone once its neighbour's is known), not a link a round.
+        CHECK(rounds >= rank_count - 1);
+        CHECK(rounds <= rank_count);
     }
 }
 
 }  // namespace
 
+// A pile's pairs are taken in index order, one a round; its rank decides
+// them alone once a round leaves more than half its candidates, so the
+// rounds stay few (a pile of 300 took 150).
+void a_pile_on_one_rank() {
+    SplitMix64 rng(78);
+    int wrong = 0, most_rounds = 0;
+    for (int trial = 0; trial < 20; ++trial) {
+        const auto piled = static_cast<std::uint32_t>(100 + rng.next() % 200);
+        const auto particles = piled + static_cast<std::uint32_t>(rng.next() % 60);
+        int rounds = 0;
+        if (!distributed_matches_greedy(rng, particles, static_cast<int>(rng.next() % 400),
+                                        2 + static_cast<int>(rng.next() % 3), rounds, piled))
+            ++wrong;
+        most_rounds = std::max(most_rounds, rounds);
+    }
+    CHECK_EQ(wrong, 0);
+    CHECK(most_rounds <= 12);
+}
+
 int main(int argc, char** argv) {
     return check::run(argc, argv, "test_rank_selection",
                       {{"random conflict graphs on random ranks give the greedy pass", random_graphs_on_random_ranks},
-                       {"a chain across every rank", a_chain_across_every_rank}});
+                       {"a chain across every rank", a_chain_across_every_rank},
+                       {"a pile on one rank", a_pile_on_one_rank}});
 }

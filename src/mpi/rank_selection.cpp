@@ -121,12 +121,57 @@ std::size_t RankSelection::end_round(std::span<const std::vector<std::uint8_t>> 
             if (taken[n][e] != 0) taken_[shared_[n][e].ghost] = 1;
         }
     }
+    const std::size_t before = undecided_.size();
     std::size_t kept = 0;
     for (const std::uint32_t k : undecided_) {
         if (free(candidates_[k])) undecided_[kept++] = k;
     }
     undecided_.resize(kept);
     std::fill(earliest_.begin(), earliest_.end(), no_collision);
+    // Rounds cost every undecided candidate each, so they pay while they
+    // halve them; where one does not (disks piled on one another: every
+    // pair a candidate at t = 0, one accepted a round), the rest are
+    // decided here, as far as this rank can alone.
+    if (2 * kept > before) kept = decide_alone();
+    return kept;
+}
+
+std::size_t RankSelection::decide_alone() {
+    const CandidateOrder order(user_index_);
+    std::sort(undecided_.begin(), undecided_.end(),
+              [&](std::uint32_t a, std::uint32_t b) { return order.before(candidates_[a], candidates_[b]); });
+    // The greedy pass over this rank's candidates in the order, except that
+    // a candidate with a ghost stays undecided (its other side decides it
+    // with this one), and so does every later candidate of its particles:
+    // they wait on it. Any other is decided as the greedy pass decides it,
+    // since every earlier candidate of its particles is decided.
+    waiting_.assign(taken_.size(), 0);
+    for (const std::uint32_t k : undecided_) {
+        const Collision& c = candidates_[k];
+        if (!free(c)) continue;  // ruled out by one accepted before it
+        const bool pair = c.kind == CollisionKind::pair;
+        const bool alone = !pair || (owned(c.i) && owned(c.j));
+        if (alone && !waiting_[c.i] && (!pair || !waiting_[c.j])) {
+            if (pair) {
+                take(c.i, c.j, c.time);
+                take(c.j, c.i, c.time);
+                ++accepted_.particle_collisions;
+            } else {
+                take(c.i, wall_collision, c.time);
+                ++accepted_.wall_collisions;
+            }
+            continue;
+        }
+        waiting_[c.i] = 1;
+        if (pair) waiting_[c.j] = 1;
+    }
+    // The rest in ascending order again: claim() keeps the first of equal copies.
+    std::size_t kept = 0;
+    for (const std::uint32_t k : undecided_) {
+        if (free(candidates_[k])) undecided_[kept++] = k;
+    }
+    undecided_.resize(kept);
+    std::sort(undecided_.begin(), undecided_.end());
     return kept;
 }
 

@@ -20,7 +20,10 @@
 // every round accepts only what the greedy pass accepts and rules out only
 // what it rules out. The first free candidate of all is claimed by all its
 // particles, so each round accepts at least one and the rounds end (in
-// practice after a few: chains of conflicts are short). This is the
+// practice after a few: chains of conflicts are short; where a round does
+// not halve a rank's undecided candidates, as in a pile of overlapping
+// disks, the rank then decides alone all that waits on no other rank, by
+// the greedy pass over its own candidates). This is the
 // lexicographically-first matching argument of Blelloch, Fineman and Shun
 // (SPAA 2012), with the ranks' borders where their rounds exchange.
 //
@@ -95,6 +98,9 @@ private:
         return !taken_[c.i] && (c.kind == CollisionKind::wall || !taken_[c.j]);
     }
     void take(std::uint32_t local, std::uint32_t partner, double time);
+    // Decides what this rank can without its neighbours; returns how many
+    // candidates stay undecided.
+    std::size_t decide_alone();
 
     std::span<const Collision> candidates_;
     std::span<const std::uint32_t> user_index_;
@@ -103,6 +109,7 @@ private:
     std::vector<std::uint32_t> earliest_;           // by owned particle: its claimed candidate
     std::vector<std::uint8_t> other_side_claimed_;  // by candidate
     std::vector<std::uint8_t> taken_;               // by local particle
+    std::vector<std::uint8_t> waiting_;  // by local particle: decide_alone() met an undecided candidate of it
     std::vector<std::uint32_t> partner_;
     std::span<double> collision_time_;
     std::vector<std::vector<Shared>> shared_;  // by neighbour
