@@ -7,6 +7,7 @@
 #include "run_process.hpp"
 #include "threads_stats_line.hpp"
 
+#include "core/random.hpp"
 #include "particlesim/random_scene.hpp"
 
 #include <algorithm>
@@ -464,6 +465,34 @@ void write_failures() {
     std::filesystem::remove_all(directory);
 }
 
+// A run that runs out of memory says so in one line, exit 1, and leaves no
+// -o file: 8000 disks piled within 1e-6 of one point, each approaching
+// pair a candidate at t = 0 (16 million), under a 300 MB address space.
+void out_of_memory_is_named() {
+#if defined(__SANITIZE_ADDRESS__)
+    std::printf("under AddressSanitizer, which reserves terabytes of address space: not checked\n");
+#else
+    std::string pile = "8000 20000 1 1 perf\n";
+    particlesim::SplitMix64 rng(5);
+    const auto uniform = [&](double low, double high) { return low + (high - low) * rng.uniform(); };
+    for (int i = 0; i < 8000; ++i) {
+        char line[160];
+        std::snprintf(line, sizeof line, "%d %.17g %.17g %.17g %.17g\n", i, 100 + uniform(-1e-6, 1e-6),
+                      100 + uniform(-1e-6, 1e-6), uniform(-5, 5), uniform(-5, 5));
+        pile += line;
+    }
+    char directory[] = "/tmp/particlesim-cli-XXXXXX";
+    const std::string output = std::string(mkdtemp(directory)) + "/pile.out";
+    const Result starved = run_process::run(
+        "/bin/sh", {"-c", "ulimit -v 300000 && exec \"$0\" \"$@\"", simcli, "-t", "1", "-o", output}, pile);
+    CHECK_EQ(starved.status, 1);
+    CHECK(one_line(starved.err));
+    CHECK(starved.err.rfind("simcli: out of memory while running", 0) == 0);
+    CHECK(!std::filesystem::exists(output));
+    std::filesystem::remove_all(directory);
+#endif
+}
+
 #ifdef SIMCLI_WITHOUT_MPI
 // A simcli built without MPI, started by a launcher on several ranks (its
 // environment as Open MPI or MPICH sets it), refuses: each rank would run
@@ -511,6 +540,7 @@ int main(int argc, char** argv) {
                           {"outputs are files of their own", outputs_are_files_of_their_own},
                           {"exact engine", exact_engine},
                           {"stats", stats},
+                          {"out of memory is named", out_of_memory_is_named},
                           {"write failures",
                            [] {
                                const run_process::ChildrenWithLeakChecks leak_checks;

@@ -25,6 +25,7 @@
 #include <chrono>
 #include <csignal>
 #include <cstdio>
+#include <new>
 #include <optional>
 #include <stdexcept>
 #include <string>
@@ -430,6 +431,12 @@ int run_one_process(int argc, char** argv) {
     } catch (const Interrupted& e) {
         std::fprintf(stderr, "simcli: %s\n", apps_common::without_library_names(e.what()).c_str());
         return 128 + e.signal();
+    } catch (const std::bad_alloc&) {
+        // A pile of k overlapping disks makes each of its k^2 / 2 pairs a candidate when they approach.
+        std::fprintf(stderr,
+                     "simcli: out of memory while running (a pile of k overlapping disks makes up to "
+                     "k^2 / 2 pair candidates a step)\n");
+        return exit_failure;
     } catch (const std::exception& e) {  // OutputError, TooManyEvents and any other failure while running
         std::fprintf(stderr, "simcli: %s\n", apps_common::without_library_names(e.what()).c_str());
         return exit_failure;
