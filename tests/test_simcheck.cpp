@@ -6,6 +6,7 @@
 // (text, JSON, exit statuses) say what they promise.
 
 #include "check.hpp"
+#include "core/random.hpp"
 #include "random_scenes.hpp"
 #include "run_process.hpp"
 #include "textbook_rules.hpp"
@@ -470,6 +471,37 @@ void mistakes_are_caught_where_they_show() {
     }
 }
 
+// A pile of disks within 1e-9 of one point: every approaching pair a
+// candidate at t = 0, taken in index order. The right output conforms, and
+// a program that lets overlapping pairs pass, or takes two collisions a
+// particle, is wrong at the first step. (Each particle has 599 candidates:
+// the selection's checks go by each particle's candidates in order, not
+// all of them for each candidate.)
+void a_pile_is_judged() {
+    Scene pile;
+    pile.world = {20000.0, 1.0};
+    pile.steps = 3;
+    pile.mode = OutputMode::print;
+    SplitMix64 rng(9);
+    const auto uniform = [&](double low, double high) { return low + (high - low) * rng.uniform(); };
+    for (int k = 0; k < 600; ++k) {
+        pile.particles.push_back(Particle{Vec2(100 + uniform(-1e-9, 1e-9), 100 + uniform(-1e-9, 1e-9)),
+                                          Vec2(uniform(-5, 5), uniform(-5, 5))});
+    }
+    pile.particle_count = pile.particles.size();
+    const std::string text = scene_text(pile);
+    const Verdict right = run_simcheck(text, textbook::output(pile, pile.particles));
+    CHECK_EQ(right.status, 0);
+    CHECK_EQ(right.out, run_simcheck(text, run_simcli(text, {})).out);
+    for (const textbook::Mistake mistake :
+         {textbook::Mistake::overlaps_never_collide, textbook::Mistake::two_collisions_per_step}) {
+        check::Context context(textbook::mistake_name(mistake));
+        const Verdict wrong = run_simcheck(text, textbook::output(pile, pile.particles, mistake));
+        CHECK_EQ(wrong.status, 1);
+        CHECK_EQ(reported_step(wrong), std::int64_t{1});
+    }
+}
+
 void exact_ties_are_decided() {
     // In the ties family every tie is exact at step 1: each tie mistake is caught there.
     const Scene ties = family_scene(SceneFamily::ties, 1, 0, 4);
@@ -836,6 +868,7 @@ int main(int argc, char** argv) {
                     {"exact engine outputs pass", exact_engine_outputs_pass},
                     {"mistakes are caught where they show", mistakes_are_caught_where_they_show},
                     {"exact ties are decided", exact_ties_are_decided},
+                    {"a pile is judged", a_pile_is_judged},
                     {"every family checks cleanly", every_family_checks_cleanly},
                     {"families refuse settings they have no use for", families_refuse_settings_they_have_no_use_for},
                     {"the suite checks cleanly", suite_checks_cleanly},

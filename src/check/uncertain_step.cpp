@@ -1,6 +1,7 @@
 #include "check/uncertain_step.hpp"
 
 #include "check/close_pairs.hpp"
+#include "core/assert.hpp"
 #include "core/physics.hpp"
 #include "parallel/parallel.hpp"
 
@@ -339,6 +340,39 @@ void UncertainStep::select() {
     });
     constexpr auto no = static_cast<std::int8_t>(Tri::no);
     constexpr auto yes = static_cast<std::int8_t>(Tri::yes);
+    // Each particle's candidates in the order of their earliest times and
+    // keys, so that those that may come before a candidate are a prefix of
+    // them; the candidates rejected at its start are passed over once. And
+    // the one accepted (a particle has at most one: a second would have to
+    // come surely before it, and was rejected when it was accepted). Without
+    // these, a pile of k overlapping disks (every pair a candidate, each
+    // particle k of them) cost k^3 comparisons a pass.
+    const auto key_order = [&](std::uint32_t a, std::uint32_t b) {
+        const PossibleCollision& x = candidates_[a];
+        const PossibleCollision& y = candidates_[b];
+        return std::tie(x.time.lo, x.kind, x.i, x.j) < std::tie(y.time.lo, y.kind, y.i, y.j);
+    };
+    std::vector<std::uint32_t> by_order = listed_;
+    for (std::size_t p = 0; p + 1 < offsets_.size(); ++p) {
+        std::sort(by_order.begin() + offsets_[p], by_order.begin() + offsets_[p + 1], key_order);
+    }
+    std::vector<std::uint32_t> undecided_from(offsets_.begin(), offsets_.end() - 1);
+    constexpr std::uint32_t none = 0xffffffffU;
+    std::vector<std::uint32_t> accepted_of(offsets_.size() - 1, none);
+    // Whether nothing that may come before c, other than k itself, may take `particle`.
+    const auto clear_of = [&](std::uint32_t particle, std::uint32_t k, const PossibleCollision& c) {
+        std::uint32_t& from = undecided_from[particle];
+        while (from < offsets_[particle + 1] && state[by_order[from]] == no) ++from;
+        for (std::uint32_t at = from; at < offsets_[particle + 1]; ++at) {
+            const std::uint32_t d = by_order[at];
+            const PossibleCollision& other = candidates_[d];
+            // From here on every candidate comes surely after c (comes_before() says no).
+            if (std::tie(other.time.lo, other.kind, other.i, other.j) > std::tie(c.time.hi, c.kind, c.i, c.j)) break;
+            if (d == k || state[d] == no) continue;
+            if (comes_before(other, c) != Tri::no) return false;
+        }
+        return true;
+    };
     for (bool changed = true; changed;) {
         changed = false;
         for (const std::uint32_t k : order) {
@@ -347,16 +381,17 @@ void UncertainStep::select() {
             bool blocked = false;
             bool clear = true;
             for (const std::uint32_t particle : {c.i, c.j}) {
-                for (const std::uint32_t d : candidates_of(particle)) {
-                    if (d == k) continue;
-                    const Tri before = comes_before(candidates_[d], c);
-                    if (before == Tri::no) continue;
-                    if (state[d] == yes && before == Tri::yes) blocked = true;
-                    if (state[d] != no) clear = false;
-                }
+                const std::uint32_t taken = accepted_of[particle];
+                if (taken != none && comes_before(candidates_[taken], c) == Tri::yes) blocked = true;
+                if (clear && !clear_of(particle, k, c)) clear = false;
             }
             if (blocked || (clear && c.exists == Tri::yes)) {
                 state[k] = blocked ? no : yes;
+                if (!blocked) {
+                    PARTICLESIM_ASSERT(accepted_of[c.i] == none && accepted_of[c.j] == none,
+                                       "a particle has at most one accepted candidate");
+                    accepted_of[c.i] = accepted_of[c.j] = k;
+                }
                 changed = true;
             }
         }
