@@ -5,9 +5,9 @@
 # checks compiled in (any report fails the run). The Release pass also
 # cross-checks the bytes on aarch64 under qemu, runs the parallel stages under
 # ThreadSanitizer (clang's OpenMP) and fuzzes for 10 seconds.
-# 9 min 6 s to 10 min 57 s (three runs) from a clean clone on the project's 2-core machine with the tools
-# already installed (OpenMPI's tests included), 17.2 to 20.6 min of CPU time, a quarter of it in the kernel (a first touch of memory is slow there);
-# 11 min 24 s and 11 min 45 s (21.3 and 22.0 min of CPU time) on a fresh machine, where it installs the tools.
+# 8 min 38 s to 10 min 57 s (four runs) from a clean clone on the project's 2-core machine with the tools
+# already installed (OpenMPI's tests included), 16.1 to 20.6 min of CPU time, a quarter of it in the kernel (a first touch of memory is slow there);
+# 8 min 42 s to 11 min 45 s (three runs; 16.2 to 22.0 min of CPU time) on a fresh machine, where it installs the tools.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 # OpenMPI decides the Release build's configuration (the distributed engine:
