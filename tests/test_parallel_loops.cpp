@@ -19,6 +19,9 @@
 #include <cstdint>
 #include <cstdio>
 #include <cstdlib>
+#include <new>
+#include <stdexcept>
+#include <string>
 #include <thread>
 #include <vector>
 
@@ -189,6 +192,36 @@ void loops_inside_a_host_region_run_on_the_caller() {
 
 }  // namespace
 
+// What a body throws on a worker reaches the caller, as it does on one
+// thread, instead of ending the program (an exception may not leave a
+// parallel region): the first one, once every item has run or thrown.
+void an_exception_reaches_the_caller() {
+    for (const int workers : {1, 2, 4}) {
+        check::Context context("workers ", workers);
+        std::atomic<std::int64_t> ran{0};
+        std::string caught;
+        try {
+            parallel_for_dynamic(workers, 1000, 4, [&](std::int64_t i, std::size_t) {
+                ran.fetch_add(1, std::memory_order_relaxed);
+                if (i == 417) throw std::runtime_error("item 417");
+            });
+        } catch (const std::runtime_error& e) {
+            caught = e.what();
+        }
+        CHECK_EQ(caught, std::string("item 417"));
+        // One thread stops at the throw; workers run the other items, as parallel.hpp says.
+        CHECK_EQ(ran.load(), std::int64_t{workers == 1 ? 418 : 1000});
+        // Allocations that fail on every worker: one std::bad_alloc comes out.
+        bool out_of_memory = false;
+        try {
+            parallel_for_dynamic(workers, 64, 1, [](std::int64_t, std::size_t) { throw std::bad_alloc(); });
+        } catch (const std::bad_alloc&) {
+            out_of_memory = true;
+        }
+        CHECK(out_of_memory);
+    }
+}
+
 int main(int argc, char** argv) {
     return check::run(argc, argv, "test_parallel_loops",
                       {{"every item runs once", every_item_runs_once},
@@ -196,5 +229,6 @@ int main(int argc, char** argv) {
                        {"nested and concurrent loops are complete", nested_and_concurrent_loops_are_complete},
                        {"a worker takes part", a_worker_takes_part},
                        {"a forked child runs loops and exits", a_forked_child_runs_loops_and_exits},
-                       {"loops inside a host region run on the caller", loops_inside_a_host_region_run_on_the_caller}});
+                       {"loops inside a host region run on the caller", loops_inside_a_host_region_run_on_the_caller},
+                       {"an exception reaches the caller", an_exception_reaches_the_caller}});
 }

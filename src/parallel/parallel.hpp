@@ -14,6 +14,7 @@
 #include <algorithm>
 #include <cstddef>
 #include <cstdint>
+#include <exception>
 #include <utility>
 
 namespace particlesim {
@@ -44,20 +45,34 @@ inline int worker_count(std::size_t available, std::int64_t work, std::int64_t m
 }
 
 // body(i, thread) for i in [0, count), in chunks of `chunk` items claimed by
-// whichever of the `workers` threads is free (thread < workers). The body
-// must not throw.
+// whichever of the `workers` threads is free (thread < workers). What the
+// body throws (std::bad_alloc: a pile of overlapping disks makes its pairs'
+// candidates grow as its size squared) is caught in the region, which an
+// exception may not leave (std::terminate), and the first one is thrown
+// again on the calling thread once the region ends; the other items still
+// run (a check before each would cost every loop for a failure that ends
+// the run).
 template <typename Body>
 void parallel_for_dynamic(int workers, std::int64_t count, std::int64_t chunk, Body&& body) {
     if (workers <= 1 || count <= chunk || !loops_may_start_threads()) {
         for (std::int64_t i = 0; i < count; ++i) body(i, std::size_t{0});
         return;
     }
+    std::exception_ptr failure;
 #pragma omp parallel num_threads(workers)
     {
         const auto thread = static_cast<std::size_t>(omp_get_thread_num());
 #pragma omp for schedule(dynamic, chunk) nowait
-        for (std::int64_t i = 0; i < count; ++i) body(i, thread);
+        for (std::int64_t i = 0; i < count; ++i) {
+            try {
+                body(i, thread);
+            } catch (...) {
+#pragma omp critical(particlesim_parallel_failure)
+                if (!failure) failure = std::current_exception();
+            }
+        }
     }
+    if (failure) std::rethrow_exception(failure);
 }
 
 // The same for items of even work: eight chunks per thread, so that a thread
