@@ -12,6 +12,8 @@
 
 #include <algorithm>
 #include <csignal>
+#include <cstdint>
+#include <cstdio>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
@@ -64,11 +66,32 @@ std::string after_step(const std::string& output, long step) {
     return kept;
 }
 
+// 700 disks within 1e-6 of the box's centre, where the ranks' cuts fall:
+// every approaching pair a candidate at t = 0, most of them shared between
+// ranks, so the rounds stall and one rank decides the rest.
+std::string pile_across_the_cuts() {
+    std::string text = "700\n20000\n1\n3\nprint\n";
+    std::uint64_t state = 4;
+    const auto uniform = [&](double low, double high) {
+        state = state * 6364136223846793005ULL + 1442695040888963407ULL;
+        return low + (high - low) * static_cast<double>(state >> 11) * 0x1.0p-53;
+    };
+    for (int i = 0; i < 700; ++i) {
+        char line[160];
+        std::snprintf(line, sizeof line, "%d %.17g %.17g %.17g %.17g\n", i, 10000 + uniform(-1e-6, 1e-6),
+                      10000 + uniform(-1e-6, 1e-6), uniform(-5, 5), uniform(-5, 5));
+        text += line;
+    }
+    return write_file("pile_across_the_cuts.in", text);
+}
+
 void the_same_bytes_as_one_process() {
-    const std::vector<std::string> scenes{examples + "/newtons_cradle.in", examples + "/head_on.in",
+    const std::vector<std::string> scenes{examples + "/newtons_cradle.in",
+                                          examples + "/head_on.in",
                                           examples + "/default.in",
                                           write_file("random_print.in", "400\n300\n1\n40\nprint\n"),
-                                          write_file("random_perf.in", "3000\n900\n1\n60\nperf\n")};
+                                          write_file("random_perf.in", "3000\n900\n1\n60\nperf\n"),
+                                          pile_across_the_cuts()};
     for (const std::string& scene : scenes) {
         const run_process::Result expected = one_process({scene});
         CHECK_EQ(expected.status, 0);

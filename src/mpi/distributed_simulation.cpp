@@ -248,6 +248,41 @@ public:
         }
     }
 
+    // The ranks' undecided candidates, and their particles taken that shared
+    // ones name, gathered on the root, which decides them all by the greedy
+    // pass; every rank takes what it accepted (rank_selection.hpp).
+    void decide_the_rest_on_one_rank() {
+        const std::vector<Collision> accepted_on_root =
+            decide_in_order(gather_on_root(selection_.undecided_by_user(), "gathering the undecided candidates"),
+                            gather_on_root(selection_.taken_shared_by_user(), "gathering the taken particles"));
+        std::uint64_t count = accepted_on_root.size();
+        require_mpi(MPI_Bcast(&count, 1, MPI_UINT64_T, root, comm_), "sending the accepted candidates");
+        std::vector<Collision> accepted = rank_ == root ? accepted_on_root : std::vector<Collision>(count);
+        const BytesType<Collision> type;
+        require_mpi(MPI_Bcast(accepted.data(), static_cast<int>(count), type.get(), root, comm_),
+                    "sending the accepted candidates");
+        selection_.take_accepted(accepted);
+        ++counts_.collectives;
+    }
+
+    // Every rank's `mine`, one after another on the root (empty elsewhere).
+    template <typename T>
+    std::vector<T> gather_on_root(const std::vector<T>& mine, const char* what) {
+        const BytesType<T> type;
+        int size = static_cast<int>(mine.size());
+        std::vector<int> counts(rank_ == root ? static_cast<std::size_t>(ranks_) : 0), displacements(counts.size());
+        require_mpi(MPI_Gather(&size, 1, MPI_INT, counts.data(), 1, MPI_INT, root, comm_), what);
+        std::vector<T> all;
+        if (rank_ == root) {
+            std::exclusive_scan(counts.begin(), counts.end(), displacements.begin(), 0);
+            all.resize(static_cast<std::size_t>(displacements.back() + counts.back()));
+        }
+        require_mpi(MPI_Gatherv(mine.data(), size, type.get(), all.data(), counts.data(), displacements.data(),
+                                type.get(), root, comm_),
+                    what);
+        return all;
+    }
+
     const World& world() const { return world_; }
     std::uint64_t particle_count() const { return count_; }
     std::int64_t steps_done() const { return steps_done_; }
@@ -482,7 +517,8 @@ private:
         selection_.begin(candidates_, static_cast<std::uint32_t>(owned_), user_, ghost_neighbour_, near, wall_time_);
         outgoing_bytes_.resize(near);
         incoming_bytes_.resize(near);
-        for (;;) {
+        std::uint64_t left_before = 0;
+        for (int round = 1;; ++round) {
             selection_.claim();
             for (std::size_t n = 0; n < near; ++n) {
                 selection_.write_claims(n, outgoing_bytes_[n]);
@@ -496,6 +532,12 @@ private:
             all_reduce(&undecided, 1, MPI_UINT64_T, MPI_SUM);
             ++counts_.selection_rounds;
             if (undecided == 0) break;
+            // Stalled: a pile of disks across a cut, whose shared pairs are decided one a round.
+            if (round > 1 && 2 * undecided > left_before) {
+                decide_the_rest_on_one_rank();
+                break;
+            }
+            left_before = undecided;
         }
         last_step_.particle_collisions += selection_.accepted().particle_collisions;
         last_step_.wall_collisions += selection_.accepted().wall_collisions;

@@ -1,6 +1,7 @@
 #include "mpi/rank_selection.hpp"
 
 #include "core/assert.hpp"
+#include "core/event_order.hpp"
 
 #include <algorithm>
 #include <tuple>
@@ -173,6 +174,87 @@ std::size_t RankSelection::decide_alone() {
     undecided_.resize(kept);
     std::sort(undecided_.begin(), undecided_.end());
     return kept;
+}
+
+std::vector<Collision> RankSelection::undecided_by_user() const {
+    std::vector<Collision> out;
+    out.reserve(undecided_.size());
+    for (const std::uint32_t k : undecided_) {
+        Collision c = candidates_[k];
+        c.i = user_index_[c.i];
+        if (c.kind == CollisionKind::pair) {
+            c.j = user_index_[c.j];
+            if (c.i > c.j) std::swap(c.i, c.j);
+        } else {
+            c.j = 0;
+        }
+        out.push_back(c);
+    }
+    return out;
+}
+
+void RankSelection::take_accepted(std::span<const Collision> accepted) {
+    // This rank's particles by user index: owned and ghosts.
+    std::vector<std::pair<std::uint32_t, std::uint32_t>> local_of(user_index_.size());
+    for (std::uint32_t l = 0; l < user_index_.size(); ++l) local_of[l] = {user_index_[l], l};
+    std::sort(local_of.begin(), local_of.end());
+    const auto local = [&](std::uint32_t user) {
+        const auto at = std::lower_bound(local_of.begin(), local_of.end(), std::pair{user, 0U});
+        return at != local_of.end() && at->first == user ? at->second : no_collision;
+    };
+    for (const Collision& c : accepted) {
+        const std::uint32_t i = local(c.i);
+        if (c.kind == CollisionKind::wall) {
+            if (i == no_collision || !owned(i)) continue;
+            take(i, wall_collision, c.time);
+            ++accepted_.wall_collisions;
+            continue;
+        }
+        const std::uint32_t j = local(c.j);
+        if (i == no_collision || j == no_collision || (!owned(i) && !owned(j))) continue;
+        take(i, j, c.time);
+        take(j, i, c.time);
+        // Counted once over all ranks: where both are owned, or on the rank of the lower user index.
+        if (owned(i)) ++accepted_.particle_collisions;
+    }
+    undecided_.clear();
+}
+
+std::vector<Collision> decide_in_order(std::vector<Collision> candidates, std::vector<std::uint32_t> taken_users) {
+    std::sort(candidates.begin(), candidates.end(),
+              [](const Collision& a, const Collision& b) { return comes_before(a, b); });
+    // Every particle named, densely numbered.
+    std::vector<std::uint32_t> users = taken_users;
+    for (const Collision& c : candidates) {
+        users.push_back(c.i);
+        if (c.kind == CollisionKind::pair) users.push_back(c.j);
+    }
+    std::sort(users.begin(), users.end());
+    users.erase(std::unique(users.begin(), users.end()), users.end());
+    const auto place = [&](std::uint32_t user) {
+        return static_cast<std::size_t>(std::lower_bound(users.begin(), users.end(), user) - users.begin());
+    };
+    std::vector<std::uint8_t> taken(users.size(), 0);
+    for (const std::uint32_t user : taken_users) taken[place(user)] = 1;
+    std::vector<Collision> accepted;
+    for (const Collision& c : candidates) {
+        const std::size_t i = place(c.i);
+        const std::size_t j = c.kind == CollisionKind::pair ? place(c.j) : i;
+        if (taken[i] || taken[j]) continue;
+        taken[i] = taken[j] = 1;
+        accepted.push_back(c);
+    }
+    return accepted;
+}
+
+std::vector<std::uint32_t> RankSelection::taken_shared_by_user() const {
+    std::vector<std::uint32_t> out;
+    for (const std::vector<Shared>& list : shared_) {
+        for (const Shared& s : list) {
+            if (taken_[s.owned]) out.push_back(user_index_[s.owned]);
+        }
+    }
+    return out;
 }
 
 }  // namespace particlesim

@@ -41,6 +41,11 @@
 
 namespace particlesim {
 
+// The greedy pass over candidates by user index, gathered from every rank
+// (duplicates allowed), with the particles in `taken_users` taken already:
+// the candidates it accepts.
+std::vector<Collision> decide_in_order(std::vector<Collision> candidates, std::vector<std::uint32_t> taken_users);
+
 class RankSelection {
 public:
     // One step's selection. Local indices: the `owned_count` owned particles first, then
@@ -70,6 +75,21 @@ public:
     // returns how many candidates of this rank are still undecided (the
     // rounds go on while any rank has one).
     std::size_t end_round(std::span<const std::vector<std::uint8_t>> taken);
+
+    // Where the rounds stall (each leaves more than half of what the one
+    // before left: a pile of disks across a cut, whose shared pairs are
+    // decided one a round), the ranks' undecided candidates go to one rank,
+    // which decides them all by the greedy pass (decide_in_order()), and
+    // every rank takes what was accepted.
+    // This rank's undecided candidates, by user index (a pair's lower first).
+    [[nodiscard]] std::vector<Collision> undecided_by_user() const;
+    // Its particles taken that a shared candidate names, by user index: a
+    // rank that decided alone in the last round took particles whose
+    // shared candidates its neighbours still hold.
+    [[nodiscard]] std::vector<std::uint32_t> taken_shared_by_user() const;
+    // Takes, of `accepted` (by user index, as decide_in_order() returns
+    // them), those with a particle of this rank, and ends the rounds.
+    void take_accepted(std::span<const Collision> accepted);
 
     // After the rounds, by local particle: its partner's local index,
     // no_collision or wall_collision (a ghost's partner is set only when it
