@@ -9,6 +9,8 @@
 #include "stepped/step_pipeline.hpp"
 
 #include <algorithm>
+#include <limits>
+#include <new>
 #include <vector>
 
 using namespace particlesim;
@@ -178,6 +180,31 @@ void selection_of_a_pile_is_the_greedy_pass() {
     CHECK_EQ(wrong, 0);
 }
 
+// A search's list of candidates grows up to its limit (an eighth of the
+// machine's memory; here 5000 candidates' worth) and then refuses with
+// std::bad_alloc, which simcli reports, instead of growing until the
+// kernel kills the process.
+void a_candidate_list_grows_within_its_limit() {
+    ThreadCandidates list;
+    const std::size_t most = 5000 * sizeof(Collision);
+    std::size_t added = 0;
+    bool refused = false;
+    try {
+        for (std::uint32_t k = 0; k < 20000; ++k) {
+            if (list.found.size() == list.found.capacity()) list.grow(most);
+            list.found.push_back(Collision::pair(0.0, k, k + 1));
+            ++added;
+        }
+    } catch (const std::bad_alloc&) {
+        refused = true;
+    }
+    CHECK(refused);
+    CHECK_EQ(added, std::size_t{5000});
+    const std::size_t machine = ThreadCandidates::most_candidate_bytes();
+    CHECK(machine >= (std::size_t{64} << 20));  // an eighth of at least 512 MB
+    CHECK(machine < std::numeric_limits<std::size_t>::max());
+}
+
 void wall_beats_pair_at_equal_time() {
     // 0 reaches x = 19 at t = 1; at that moment 1, sliding down x = 19, is at
     // distance 2 above it: a wall and a pair candidate at t = 1. The wall wins.
@@ -270,6 +297,7 @@ int main(int argc, char** argv) {
                        {"selection equals greedy on random candidates", selection_equals_greedy_on_random_candidates},
                        {"selection equals greedy on any thread count", selection_equals_greedy_on_any_thread_count},
                        {"selection of a pile is the greedy pass", selection_of_a_pile_is_the_greedy_pass},
+                       {"a candidate list grows within its limit", a_candidate_list_grows_within_its_limit},
                        {"wall beats pair at equal time", wall_beats_pair_at_equal_time},
                        {"lowest indices win among equal pairs", lowest_indices_win_among_equal_pairs},
                        {"collision near wall stops at wall then passes through",

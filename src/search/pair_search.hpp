@@ -37,6 +37,22 @@ struct PairSearchInput {
 struct alignas(64) ThreadCandidates {
     std::vector<Collision> found;
     std::uint64_t pair_tests = 0;
+
+    // Appends c, the list growing within what the machine can hold: a pile
+    // of k overlapping disks makes up to k^2 / 2 candidates a step, and a
+    // list past an eighth of the machine's memory throws std::bad_alloc
+    // (simcli: "out of memory while running") before the kernel's
+    // out-of-memory killer would end the process without a word.
+    void add(const Collision& c) {
+        if (found.size() == found.capacity()) [[unlikely]]
+            grow(most_candidate_bytes());
+        found.push_back(c);
+    }
+    // Twice the room (at least 1024 candidates) up to `most_bytes`, or
+    // std::bad_alloc where the list holds that much already.
+    void grow(std::size_t most_bytes);
+    // An eighth of the machine's memory, read once.
+    static std::size_t most_candidate_bytes();
 };
 
 // A selection a search may run between its time slices (the grid's). Once
@@ -87,7 +103,7 @@ inline void test_pair(const PairTestState& a, const PairTestState& b, std::uint3
                       const PairSearchInput& in, ThreadCandidates& out) {
     ++out.pair_tests;
     const double t = contact_time(b.position - a.position, b.velocity - a.velocity, in.box.contact_dist_sq);
-    if (t <= in.duration && t < in.wall_time[i] && t < in.wall_time[j]) out.found.push_back(Collision::pair(t, i, j));
+    if (t <= in.duration && t < in.wall_time[i] && t < in.wall_time[j]) out.add(Collision::pair(t, i, j));
 }
 
 inline void test_pair(const PairSearchInput& in, std::uint32_t i, std::uint32_t j, ThreadCandidates& out) {
