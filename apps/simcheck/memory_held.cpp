@@ -56,9 +56,12 @@ std::int64_t queued_in(const char* pid, std::set<std::pair<dev_t, ino_t>>& count
     DIR* listing = opendir(descriptors.c_str());
     if (!listing) return 0;
     const int process = static_cast<int>(syscall(SYS_pidfd_open, std::atoi(pid), 0));
+    if (process < 0) {
+        closedir(listing);
+        return 0;
+    }
     std::int64_t bytes = 0;
     while (const dirent* entry = readdir(listing)) {
-        if (process < 0) break;
         if (entry->d_name[0] < '0' || entry->d_name[0] > '9') continue;
         struct stat info {};
         // stat, not lstat: the open file itself.
@@ -71,7 +74,7 @@ std::int64_t queued_in(const char* pid, std::set<std::pair<dev_t, ino_t>>& count
         bytes += bytes_waiting(copy, info);
         close(copy);
     }
-    if (process >= 0) close(process);
+    close(process);
     closedir(listing);
     return bytes;
 }

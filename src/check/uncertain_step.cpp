@@ -331,27 +331,23 @@ Tri UncertainStep::comes_before(const PossibleCollision& a, const PossibleCollis
 void UncertainStep::select() {
     enum : std::int8_t { unknown = -1 };
     std::vector<std::int8_t> state(candidates_.size(), unknown);
-    std::vector<std::uint32_t> order(candidates_.size());
-    for (std::uint32_t k = 0; k < order.size(); ++k) order[k] = k;
-    std::sort(order.begin(), order.end(), [&](std::uint32_t a, std::uint32_t b) {
-        const PossibleCollision& x = candidates_[a];
-        const PossibleCollision& y = candidates_[b];
-        return std::tie(x.time.lo, x.kind, x.i, x.j) < std::tie(y.time.lo, y.kind, y.i, y.j);
-    });
-    constexpr auto no = static_cast<std::int8_t>(Tri::no);
-    constexpr auto yes = static_cast<std::int8_t>(Tri::yes);
-    // Each particle's candidates in the order of their earliest times and
-    // keys, so that those that may come before a candidate are a prefix of
-    // them; the candidates rejected at its start are passed over once. And
-    // the one accepted (a particle has at most one: a second would have to
-    // come surely before it, and was rejected when it was accepted). Without
-    // these, a pile of k overlapping disks (every pair a candidate, each
-    // particle k of them) cost k^3 comparisons a pass.
+    // By earliest time, then key.
     const auto key_order = [&](std::uint32_t a, std::uint32_t b) {
         const PossibleCollision& x = candidates_[a];
         const PossibleCollision& y = candidates_[b];
         return std::tie(x.time.lo, x.kind, x.i, x.j) < std::tie(y.time.lo, y.kind, y.i, y.j);
     };
+    std::vector<std::uint32_t> order(candidates_.size());
+    for (std::uint32_t k = 0; k < order.size(); ++k) order[k] = k;
+    std::sort(order.begin(), order.end(), key_order);
+    constexpr auto no = static_cast<std::int8_t>(Tri::no);
+    constexpr auto yes = static_cast<std::int8_t>(Tri::yes);
+    // Each particle's candidates in that order too, so that those that may
+    // come before a candidate are a prefix of them; the candidates rejected
+    // at its start are passed over once. And the one accepted (a particle has at most one: a second would have to
+    // come surely before it, and was rejected when it was accepted). Without
+    // these, a pile of k overlapping disks (every pair a candidate, each
+    // particle k of them) cost k^3 comparisons a pass.
     std::vector<std::uint32_t> by_order = listed_;
     for (std::size_t p = 0; p + 1 < offsets_.size(); ++p) {
         std::sort(by_order.begin() + offsets_[p], by_order.begin() + offsets_[p + 1], key_order);

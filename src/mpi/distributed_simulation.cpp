@@ -262,7 +262,6 @@ public:
         require_mpi(MPI_Bcast(accepted.data(), static_cast<int>(count), type.get(), root, comm_),
                     "sending the accepted candidates");
         selection_.take_accepted(accepted);
-        ++counts_.collectives;
     }
 
     // Every rank's `mine`, one after another on the root (empty elsewhere).
@@ -533,7 +532,7 @@ private:
             ++counts_.selection_rounds;
             if (undecided == 0) break;
             // Stalled: a pile of disks across a cut, whose shared pairs are decided one a round.
-            if (round > 1 && 2 * undecided > left_before) {
+            if (round > 1 && selection_stalled(left_before, undecided)) {
                 decide_the_rest_on_one_rank();
                 break;
             }

@@ -123,17 +123,10 @@ std::size_t RankSelection::end_round(std::span<const std::vector<std::uint8_t>> 
         }
     }
     const std::size_t before = undecided_.size();
-    std::size_t kept = 0;
-    for (const std::uint32_t k : undecided_) {
-        if (free(candidates_[k])) undecided_[kept++] = k;
-    }
-    undecided_.resize(kept);
+    std::size_t kept = drop_ruled_out();
     std::fill(earliest_.begin(), earliest_.end(), no_collision);
-    // Rounds cost every undecided candidate each, so they pay while they
-    // halve them; where one does not (disks piled on one another: every
-    // pair a candidate at t = 0, one accepted a round), the rest are
-    // decided here, as far as this rank can alone.
-    if (2 * kept > before) kept = decide_alone();
+    // Stalled: the rest are decided here, as far as this rank can alone.
+    if (selection_stalled(before, kept)) kept = decide_alone();
     return kept;
 }
 
@@ -167,12 +160,17 @@ std::size_t RankSelection::decide_alone() {
         if (pair) waiting_[c.j] = 1;
     }
     // The rest in ascending order again: claim() keeps the first of equal copies.
+    const std::size_t kept = drop_ruled_out();
+    std::sort(undecided_.begin(), undecided_.end());
+    return kept;
+}
+
+std::size_t RankSelection::drop_ruled_out() {
     std::size_t kept = 0;
     for (const std::uint32_t k : undecided_) {
         if (free(candidates_[k])) undecided_[kept++] = k;
     }
     undecided_.resize(kept);
-    std::sort(undecided_.begin(), undecided_.end());
     return kept;
 }
 

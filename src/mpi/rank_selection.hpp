@@ -121,6 +121,9 @@ private:
     // Decides what this rank can without its neighbours; returns how many
     // candidates stay undecided.
     std::size_t decide_alone();
+    // Drops the undecided candidates with a taken particle, keeping the
+    // others' order; returns how many are left.
+    std::size_t drop_ruled_out();
 
     std::span<const Collision> candidates_;
     std::span<const std::uint32_t> user_index_;

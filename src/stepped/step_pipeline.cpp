@@ -259,11 +259,7 @@ StepCounts select_collisions(std::vector<Collision>& candidates, std::span<const
         counts += round.accept_claimed();
         round.release_claims();
         round.keep_undecided();
-        // Rounds cost the whole list each, so they pay while they halve it.
-        // Where one does not (disks piled on one another, every pair a
-        // candidate at t = 0, accepted in index order: a round accepted one
-        // pair, N / 2 rounds of N^2 candidates), the rest are sorted.
-        if (2 * candidates.size() > before) {
+        if (selection_stalled(before, candidates.size())) {
             counts += select_in_order(candidates, order, partner, collision_time);
             break;
         }

@@ -15,6 +15,7 @@
 #include "stepped/step_start.hpp"
 
 #include <algorithm>
+#include <cstddef>
 #include <cstdint>
 #include <span>
 #include <utility>
@@ -61,6 +62,14 @@ private:
 inline bool undecided(const Collision& c, std::span<const std::uint32_t> partner) {
     return partner[c.i] == no_collision && (c.kind == CollisionKind::wall || partner[c.j] == no_collision);
 }
+
+// Whether a round of the selection stalled: it left more than half of the
+// `before` candidates undecided. Rounds cost every undecided candidate
+// each, so they pay while they halve them; where one does not (disks piled
+// on one another: every pair a candidate at t = 0, accepted in index order,
+// one pair a round, N / 2 rounds of N^2 candidates), the rest are decided
+// in one walk of the order.
+inline bool selection_stalled(std::size_t before, std::size_t left) { return 2 * left > before; }
 
 // select_collisions' buffers, kept between steps so that a step allocates
 // nothing.
