@@ -104,23 +104,37 @@ struct Selected {
     }
 };
 
+// How the selection is checked on piled disks: the searches keep at most
+// `kept` candidates at t = 0 (ImmediateCandidateBudget), the ties go by
+// `user_index` (the particles as if stored out of the user's order), and
+// `overflowed` counts the steps whose pairs at t = 0 the selection decided
+// from the particles.
+struct ImmediatePairs {
+    std::size_t kept = 0;
+    std::span<const std::uint32_t> user_index;
+    int overflowed = 0;
+};
+
 // Runs the scene with the brute force and, at every step, selects twice on
 // the same state: once from all the brute force's candidates, once in stages
 // between the grid's slices (EarlySelection), the later slices leaving out
 // the decided particles. The same collisions every step; `stages` and
 // `pair_tests` (with and without the stages) add up what the grid did.
+// With `immediate`, a third time from the brute force's candidates, and the
+// grid's stages too, under its budget of candidates at t = 0.
 bool same_selection_every_step(const NamedScene& scene, int threads, int& stages, std::uint64_t& staged_tests,
-                               std::uint64_t& unstaged_tests) {
+                               std::uint64_t& unstaged_tests, ImmediatePairs* immediate = nullptr) {
     SteppedSimulation sim(scene.world, scene.particles, {.pair_search = PairSearch::brute_force, .threads = 1});
     const Box box = Box::of(scene.world);
     const std::size_t count = scene.particles.size();
-    const CandidateOrder order({});
+    const CandidateOrder order(immediate != nullptr ? immediate->user_index : std::span<const std::uint32_t>{});
     std::vector<double> wall_time(count);
     StepStart start;
     start.with_motion = true;
+    ImmediateCandidateBudget budget;
     for (std::int64_t s = 0; s < scene.steps; ++s) {
         measure_step_start(sim.particles(), box, 1.0, wall_time, start, 1);
-        const auto select = [&](bool staged) {
+        const auto select = [&](bool staged, bool budgeted) {
             Selected out{std::vector<std::uint32_t>(count, no_collision), wall_time};
             std::vector<Collision> candidates;
             std::vector<Collision> ready;
@@ -128,10 +142,12 @@ bool same_selection_every_step(const NamedScene& scene, int threads, int& stages
             std::vector<double> stage_time;
             SelectionScratch scratch(count);
             std::vector<ThreadCandidates> buffers(static_cast<std::size_t>(staged ? threads : 1));
-            EarlySelection selection(candidates, ready, order, out.partner, out.time, stage_time, scratch, threads);
             // The search reads its wall times from the array the selection
             // leaves the collision times in, as in the engine.
-            const PairSearchInput in{sim.particles(), out.time, box, 1.0, start.blocks};
+            if (budgeted) budget.reset(immediate->kept);
+            const PairSearchInput in{
+                sim.particles(), out.time, box, 1.0, start.blocks, 0.0, budgeted ? &budget : nullptr};
+            EarlySelection selection(in, candidates, ready, order, out.partner, out.time, stage_time, scratch, threads);
             if (staged) {
                 CountedStages counted(selection, out.partner);
                 GridSearch grid;
@@ -146,13 +162,41 @@ bool same_selection_every_step(const NamedScene& scene, int threads, int& stages
                 find_pairs_brute_force(in, buffers);
             }
             selection.decide_rest(buffers);
+            if (budgeted && budget.overflowed()) ++immediate->overflowed;
             return out;
         };
-        const Selected reference = select(false);
-        if (!(select(true) == reference)) return false;
+        const Selected reference = select(false, false);
+        if (!(select(true, immediate != nullptr) == reference)) return false;
+        if (immediate != nullptr && !(select(false, true) == reference)) return false;
         sim.step();
     }
     return true;
+}
+
+// Disks piled within 1e-6 of two points, one in the box and one on its
+// left wall (there some move into the wall: a wall collision at t = 0, which
+// comes before any pair), and thrown into a 30 x 30 patch (overlapping
+// across the cells), beside a gas; fast enough for the grid to cut the step
+// into slices.
+NamedScene piled_disks(std::uint64_t seed, std::size_t piled, std::size_t gas) {
+    SplitMix64 rng(seed);
+    NamedScene scene{"piles", World{400.0, 1.0}, 3, {}};
+    const auto offset = [&] { return (2.0 * rng.uniform() - 1.0) * 1e-6; };
+    const auto speed = [&] { return (2.0 * rng.uniform() - 1.0) * 200.0; };
+    for (std::size_t k = 0; k < piled; ++k) {
+        const Vec2 at = k % 4 == 3   ? Vec2(1.0, 150.0 + offset())
+                        : k % 4 == 2 ? Vec2(300.0 + 30.0 * rng.uniform(), 300.0 + 30.0 * rng.uniform())
+                                     : Vec2(200.0 + offset(), 220.0 + offset());
+        scene.particles.push_back(Particle{at, Vec2(speed(), speed())});
+    }
+    for (std::size_t k = 0; k < gas; ++k) {
+        const Vec2 at(1.0 + 398.0 * rng.uniform(), 1.0 + 398.0 * rng.uniform());
+        scene.particles.push_back(Particle{at, Vec2(speed(), speed())});
+    }
+    // The piles' disks spread over the indices.
+    for (std::size_t k = scene.particles.size() - 1; k > 0; --k)
+        std::swap(scene.particles[k], scene.particles[rng.next() % (k + 1)]);
+    return scene;
 }
 
 std::uint64_t run_hash(const NamedScene& scene, const SteppedOptions& options) {
@@ -349,6 +393,59 @@ int main(int argc, char** argv) {
               // The stages ran, and the slices after them left particles out.
               CHECK(stages > 24 * 5);
               CHECK(staged_tests < unstaged_tests * 17 / 20);
+          }},
+         // Piled disks make a candidate at t = 0 of every approaching pair;
+         // past a budget the searches drop them and the selection decides
+         // those pairs from the particles, in the user's order or stored out
+         // of it: the same collisions as from every candidate.
+         {"pairs at t = 0 decided from the particles",
+          [] {
+              int stages = 0;
+              std::uint64_t staged_tests = 0;
+              std::uint64_t unstaged_tests = 0;
+              int steps = 0;
+              int overflowed = 0;
+              for (std::uint64_t k = 0; k < 12; ++k) {
+                  SplitMix64 rng(7100 + k);
+                  const NamedScene scene = piled_disks(k, 20 + rng.next() % 300, rng.next() % 1500);
+                  std::vector<std::uint32_t> user_index(scene.particles.size());
+                  for (std::uint32_t i = 0; i < user_index.size(); ++i) user_index[i] = i;
+                  if (k % 2 == 1) {
+                      for (std::size_t i = user_index.size() - 1; i > 0; --i)
+                          std::swap(user_index[i], user_index[rng.next() % (i + 1)]);
+                  }
+                  ImmediatePairs immediate{
+                      static_cast<std::size_t>(k % 3 == 0 ? 0 : rng.next() % 200),
+                      k % 2 == 1 ? std::span<const std::uint32_t>(user_index) : std::span<const std::uint32_t>{}};
+                  const int threads = thread_counts[k % 3];
+                  const check::Context context("piles ", k, ", ", scene.particles.size(), " particles, kept ",
+                                               immediate.kept, ", ", threads, " threads");
+                  CHECK(same_selection_every_step(scene, threads, stages, staged_tests, unstaged_tests, &immediate));
+                  steps += static_cast<int>(scene.steps);
+                  overflowed += immediate.overflowed;
+              }
+              // Of the two budgeted selections a step, more than one in four
+              // decided the pairs at t = 0 from the particles (the piles
+              // spread out after their first step), and the stages ran.
+              CHECK(overflowed > steps / 2);
+              CHECK(stages > 0);
+              // The engine: every search and thread count, stored in the
+              // user's order or sorted by position at every step, where a
+              // pile of 3000 disks overflows the budget.
+              const NamedScene scene = piled_disks(99, 3000, 1000);
+              const std::uint64_t reference = run_hash(scene, {.pair_search = PairSearch::brute_force, .threads = 1});
+              for (const PairSearch search : {PairSearch::brute_force, PairSearch::grid, PairSearch::paths}) {
+                  for (const int threads : {1, 2}) {
+                      for (const std::optional<int> sort : {std::optional<int>{}, std::optional<int>{1}}) {
+                          const check::Context context(pair_search_name(search), ", ", threads, " threads",
+                                                       sort ? ", sorted" : "");
+                          CHECK_EQ(
+                              run_hash(scene,
+                                       {.pair_search = search, .threads = threads, .sort_by_position_every = sort}),
+                              reference);
+                      }
+                  }
+              }
           }},
          // Contacts just after every edge a slicing can have, each beside a
          // later one that the slice before the edge finds.

@@ -432,11 +432,11 @@ int run_one_process(int argc, char** argv) {
         std::fprintf(stderr, "simcli: %s\n", apps_common::without_library_names(e.what()).c_str());
         return 128 + e.signal();
     } catch (const std::bad_alloc&) {
-        // A pile of k overlapping disks makes each of its k^2 / 2 pairs a candidate when they approach.
+        // The scene's arrays, or a step's pair candidates past their limit
+        // (under mpirun a pile of k overlapping disks makes up to k^2 / 2).
         std::fprintf(stderr,
-                     "simcli: out of memory while running (a step's pair candidates may take an eighth of "
-                     "this machine's memory on each thread; a pile of k overlapping disks makes up to "
-                     "k^2 / 2 of them)\n");
+                     "simcli: out of memory while running (the scene's arrays, or a step's pair candidates, "
+                     "which may take an eighth of this machine's memory on each thread)\n");
         return exit_failure;
     } catch (const std::exception& e) {  // OutputError, TooManyEvents and any other failure while running
         std::fprintf(stderr, "simcli: %s\n", apps_common::without_library_names(e.what()).c_str());

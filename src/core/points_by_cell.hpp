@@ -5,6 +5,7 @@
 #include "core/uniform_grid.hpp"
 
 #include <cstdint>
+#include <span>
 #include <vector>
 
 namespace particlesim {
@@ -22,6 +23,13 @@ public:
     }
 
     [[nodiscard]] const UniformGrid& grid() const { return grid_; }
+
+    // The points of the cell at (column, row), which must be in the grid, in
+    // ascending order.
+    [[nodiscard]] std::span<const std::uint32_t> in_cell(int column, int row) const {
+        const std::uint32_t cell = grid_.cell_at(column, row);
+        return std::span(members_).subspan(starts_[cell], starts_[cell + 1] - starts_[cell]);
+    }
 
     // visit(k) for every point in the cell at (column, row), which must be in the grid.
     template <typename Visit>

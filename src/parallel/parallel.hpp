@@ -46,8 +46,8 @@ inline int worker_count(std::size_t available, std::int64_t work, std::int64_t m
 
 // body(i, thread) for i in [0, count), in chunks of `chunk` items claimed by
 // whichever of the `workers` threads is free (thread < workers). What the
-// body throws (std::bad_alloc: a pile of overlapping disks makes its pairs'
-// candidates grow as its size squared) is caught in the region, which an
+// body throws (std::bad_alloc: a list of pair candidates past its limit)
+// is caught in the region, which an
 // exception may not leave (std::terminate), and the first one is thrown
 // again on the calling thread once the region ends; the other items still
 // run (a check before each would cost every loop for a failure that ends

@@ -15,6 +15,37 @@
 
 namespace particlesim {
 
+// The pair candidates at t = 0 (touching or overlapping disks that
+// approach) that the searches keep in a step, shared by their threads. A
+// pile of k overlapping disks makes up to k^2 / 2 of them; past `most` the
+// searches drop the rest, and the selection decides every pair at t = 0
+// itself, with memory linear in N (stepped/immediate_selection.hpp). Only
+// pairs at t = 0 are dropped: they come before every later candidate in the
+// rules' order, so the ones decided first leave the rest unchanged.
+class ImmediateCandidateBudget {
+public:
+    // A new step's budget (one caller, while no search runs).
+    void reset(std::size_t most) {
+        most_ = most;
+        kept_.store(0, std::memory_order_relaxed);
+        overflowed_.store(false, std::memory_order_relaxed);
+    }
+    // Whether a search may keep one more candidate at t = 0.
+    [[nodiscard]] bool keep() {
+        if (overflowed_.load(std::memory_order_relaxed)) return false;
+        if (kept_.fetch_add(1, std::memory_order_relaxed) < most_) return true;
+        overflowed_.store(true, std::memory_order_relaxed);
+        return false;
+    }
+    // Whether any candidate at t = 0 was dropped this step.
+    [[nodiscard]] bool overflowed() const { return overflowed_.load(std::memory_order_relaxed); }
+
+private:
+    std::size_t most_ = static_cast<std::size_t>(-1);
+    std::atomic<std::size_t> kept_{0};
+    std::atomic<bool> overflowed_{false};
+};
+
 struct PairSearchInput {
     std::span<const Particle> particles;
     // First wall time of each particle from the start of the step (`never`
@@ -31,6 +62,9 @@ struct PairSearchInput {
     // rank's strip); 0: the whole box. The grid sizes its cells by the
     // particles' spacing in it.
     double area = 0.0;
+    // Where the candidates at t = 0 are counted against a budget; null:
+    // every one is kept (the distributed engine's ranks).
+    ImmediateCandidateBudget* immediate = nullptr;
 };
 
 // Candidates found by one thread, on a cache line of its own.
@@ -39,8 +73,9 @@ struct alignas(64) ThreadCandidates {
     std::uint64_t pair_tests = 0;
 
     // Appends c, the list growing within what the machine can hold: a pile
-    // of k overlapping disks makes up to k^2 / 2 candidates a step, and a
-    // list past an eighth of the machine's memory throws std::bad_alloc
+    // of k overlapping disks makes up to k^2 / 2 candidates a step where no
+    // ImmediateCandidateBudget drops them (a rank's search), and a list
+    // past an eighth of the machine's memory throws std::bad_alloc
     // (simcli: "out of memory while running") before the kernel's
     // out-of-memory killer would end the process without a word.
     void add(const Collision& c) {
@@ -103,7 +138,10 @@ inline void test_pair(const PairTestState& a, const PairTestState& b, std::uint3
                       const PairSearchInput& in, ThreadCandidates& out) {
     ++out.pair_tests;
     const double t = contact_time(b.position - a.position, b.velocity - a.velocity, in.box.contact_dist_sq);
-    if (t <= in.duration && t < in.wall_time[i] && t < in.wall_time[j]) out.add(Collision::pair(t, i, j));
+    if (t <= in.duration && t < in.wall_time[i] && t < in.wall_time[j]) {
+        if (t == 0.0 && in.immediate != nullptr && !in.immediate->keep()) return;
+        out.add(Collision::pair(t, i, j));
+    }
 }
 
 inline void test_pair(const PairSearchInput& in, std::uint32_t i, std::uint32_t j, ThreadCandidates& out) {

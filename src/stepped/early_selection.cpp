@@ -26,10 +26,26 @@ void EarlySelection::gather_ready(double time, std::span<ThreadCandidates> found
     }
 }
 
+void EarlySelection::make_stage_times() {
+    if (stage_time_.size() < partner_.size()) stage_time_.resize(partner_.size());
+}
+
+// Before any other decision: every candidate at t = 0 has been found by
+// then (the first slice holds them), and they come first in the order.
+// What the search kept of them is ruled out by the pairs decided here.
+void EarlySelection::decide_immediate_pairs() {
+    if (immediate_decided_ || input_.immediate == nullptr || !input_.immediate->overflowed()) return;
+    immediate_decided_ = true;
+    make_stage_times();
+    accepted_.particle_collisions += select_immediate_pairs(input_, order_.user_index(), partner_, stage_time_);
+    decided_any_ = true;
+}
+
 void EarlySelection::decide_before(double time, std::span<ThreadCandidates> found, int threads) {
+    decide_immediate_pairs();
     gather_ready(time, found);
     if (ready_.empty()) return;
-    if (stage_time_.size() < partner_.size()) stage_time_.resize(partner_.size());
+    make_stage_times();
     // Every candidate before `time` is in ready_, and none shares a particle
     // with a collision decided before: the rounds decide them as the greedy
     // pass over all candidates would.
@@ -38,6 +54,7 @@ void EarlySelection::decide_before(double time, std::span<ThreadCandidates> foun
 }
 
 StepCounts EarlySelection::decide_rest(std::span<ThreadCandidates> found) {
+    decide_immediate_pairs();
     if (!decided_any_) {  // no stage ran: the one selection of every candidate
         return select_collisions(candidates_, found, order_, partner_, collision_time_, scratch_, threads_);
     }

@@ -10,6 +10,7 @@
 #include "core/collision.hpp"
 #include "particlesim/engine.hpp"
 #include "search/pair_search.hpp"
+#include "stepped/immediate_selection.hpp"
 #include "stepped/step_pipeline.hpp"
 
 #include <cstdint>
@@ -20,15 +21,19 @@ namespace particlesim {
 
 class EarlySelection final : public SliceDecisions {
 public:
+    // `input` is the search's: where it dropped candidates at t = 0
+    // (ImmediateCandidateBudget), the first decision decides those pairs
+    // from its particles (immediate_selection.hpp).
     // `candidates` holds the step's wall candidates. `collision_time` gets
     // the accepted collisions' times once the search is over: it is the
     // array the search reads its wall times from. `ready` and `stage_time`
     // are buffers kept between steps (stage_time grows to the particles on
     // the first stage).
-    EarlySelection(std::vector<Collision>& candidates, std::vector<Collision>& ready, const CandidateOrder& order,
-                   std::span<std::uint32_t> partner, std::span<double> collision_time, std::vector<double>& stage_time,
-                   SelectionScratch& scratch, int threads)
+    EarlySelection(const PairSearchInput& input, std::vector<Collision>& candidates, std::vector<Collision>& ready,
+                   const CandidateOrder& order, std::span<std::uint32_t> partner, std::span<double> collision_time,
+                   std::vector<double>& stage_time, SelectionScratch& scratch, int threads)
         : SliceDecisions(partner),
+          input_(input),
           candidates_(candidates),
           ready_(ready),
           order_(order),
@@ -47,7 +52,12 @@ private:
     // Moves the undecided candidates before `time` (of those kept and those
     // in `found`) into ready_, and keeps the undecided later ones.
     void gather_ready(double time, std::span<ThreadCandidates> found);
+    // The pairs at t = 0, once, if the search dropped some of their candidates.
+    void decide_immediate_pairs();
+    // stage_time_ grown to the particles.
+    void make_stage_times();
 
+    const PairSearchInput& input_;
     std::vector<Collision>& candidates_;  // undecided, possibly later than the stages so far
     std::vector<Collision>& ready_;
     const CandidateOrder& order_;
@@ -57,6 +67,7 @@ private:
     SelectionScratch& scratch_;
     int threads_;
     bool decided_any_ = false;
+    bool immediate_decided_ = false;
     StepCounts accepted_;
 };
 

@@ -41,6 +41,9 @@ class CandidateOrder {
 public:
     explicit CandidateOrder(std::span<const std::uint32_t> user_index) : user_index_(user_index) {}
 
+    // The user's index of each stored place; empty while the two orders are the same.
+    [[nodiscard]] std::span<const std::uint32_t> user_index() const { return user_index_; }
+
     [[nodiscard]] bool before(const Collision& a, const Collision& b) const {
         if (a.time != b.time) return a.time < b.time;
         if (a.kind != b.kind) return a.kind < b.kind;

@@ -169,6 +169,7 @@ private:
             thread.found.clear();
             thread.pair_tests = 0;
         }
+        immediate_.reset(immediate_candidates_per_particle * particles_.size() + immediate_candidates_floor);
         const std::span<ThreadCandidates> found =
             std::span(thread_candidates_).first(static_cast<std::size_t>(threads));
         // particle_time_ holds each particle's first wall time up to the search ...
@@ -180,14 +181,19 @@ private:
         }
         gather_wall_candidates(wall_time, duration, start_, candidates_, threads);
         const PairSearchInput input{
-            particles_, wall_time, box_, duration,
-            start_.with_motion ? std::span<const BlockStart>(start_.blocks) : std::span<const BlockStart>()};
+            particles_,
+            wall_time,
+            box_,
+            duration,
+            start_.with_motion ? std::span<const BlockStart>(start_.blocks) : std::span<const BlockStart>(),
+            0.0,
+            &immediate_};
         // ... then, from the selection on (which the grid search may run in
         // stages between its slices, keeping their times aside until it is
         // over), the time of its accepted collision ...
         const std::span<double> collision_time = particle_time_;
         const CandidateOrder order(storage_order_.user_index());
-        EarlySelection selection(candidates_, ready_, order, partner_, collision_time, stage_time_, selection_,
+        EarlySelection selection(input, candidates_, ready_, order, partner_, collision_time, stage_time_, selection_,
                                  threads);
         if (search_ == PairSearch::brute_force) {
             find_pairs_brute_force(input, found);
@@ -227,6 +233,7 @@ private:
     std::vector<Collision> ready_;    // EarlySelection's
     std::vector<double> stage_time_;  // EarlySelection's: sized on its first stage
     std::vector<ThreadCandidates> thread_candidates_;
+    ImmediateCandidateBudget immediate_;
     GridSearch grid_;
     PathSearch paths_;
     std::size_t paths_watch_limit_ = 0;  // the most pairs it may watch (stepped_tuning's paths_watches_*)

@@ -122,6 +122,17 @@ inline constexpr int trial_block_steps = 4;
 inline constexpr int trial_blocks = 4;
 inline constexpr int trial_run_steps = 240;
 
+// --- Pairs at t = 0 (stepped/immediate_selection.cpp)
+
+// The candidates at t = 0 a step keeps (a per particle and a floor) before
+// the selection decides those pairs from the particles instead
+// (immediate_selection.hpp): one pass over the particles and a grid of
+// contact-wide cells, about what the rounds spend on N candidates. Only
+// touching or overlapping disks make them: a few in a gas left overlapping
+// by the steps before, up to k^2 / 2 for k disks piled on one another.
+inline constexpr std::size_t immediate_candidates_per_particle = 1;
+inline constexpr std::size_t immediate_candidates_floor = 4096;
+
 // --- Blocks of the stages (stepped/step_pipeline.cpp)
 
 // Candidates a block of the selection's passes holds.
