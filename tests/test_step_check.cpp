@@ -8,6 +8,7 @@
 #include "check/close_pairs.hpp"
 #include "check/uncertain_step.hpp"
 #include "particlesim/step_check.hpp"
+#include "particlesim/stepped_simulation.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -445,6 +446,32 @@ void close_pairs_against_every_pair() {
     CHECK(found.empty());
 }
 
+// 300 disks piled on one point: each of their 44 850 pairs may collide.
+// Under a limit of 40 000 possible pairs the checker refuses the step in
+// words (no verdict, rather than memory without end: a pile of k disks
+// takes about 100 k^2 / 2 bytes); under 50 000 it judges the engine's step.
+void a_pile_past_the_most_pairs() {
+    const World world{2000.0, 1.0};
+    std::vector<Particle> pile;
+    std::mt19937_64 rng(4);
+    std::uniform_real_distribution<double> offset(-1e-9, 1e-9);
+    std::uniform_real_distribution<double> speed(-5.0, 5.0);
+    for (int k = 0; k < 300; ++k) pile.push_back(disk(100 + offset(rng), 100 + offset(rng), speed(rng), speed(rng)));
+    SteppedSimulation engine(world, pile);
+    engine.step();
+    const std::vector<Particle> after(engine.particles().begin(), engine.particles().end());
+    StepChecker roomy(world, {.most_possible_pairs = 50000});
+    CHECK(!roomy.check({pile, 0.0}, {after, 0.0}).violation);
+    StepChecker tight(world, {.most_possible_pairs = 40000});
+    std::string refusal;
+    try {
+        (void)tight.check({pile, 0.0}, {after, 0.0});
+    } catch (const std::runtime_error& e) {
+        refusal = e.what();
+    }
+    CHECK(refusal.find("more than 40000 pairs of disks may collide in one step") != std::string::npos);
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -467,5 +494,6 @@ int main(int argc, char** argv) {
                        {"perf run", perf_run},
                        {"perf run across the periodic edge", perf_run_across_the_periodic_edge},
                        {"printings are checked", printings_are_checked},
-                       {"close pairs against every pair", close_pairs_against_every_pair}});
+                       {"close pairs against every pair", close_pairs_against_every_pair},
+                       {"a pile past the most pairs", a_pile_past_the_most_pairs}});
 }

@@ -54,6 +54,11 @@ struct StepCheckOptions {
     // The exact rules in a periodic box (ExactOptions::boundary); the stepped
     // rules have walls.
     Boundary boundary = Boundary::walls;
+    // The most pairs of disks that may collide in one step the stepped
+    // rules' checker holds (about 64 bytes each); 0: as many as an eighth
+    // of the machine's memory holds (49 M with 24 GiB). Disks piled on one
+    // another make every pair of the pile one.
+    std::size_t most_possible_pairs = 0;
 };
 
 // The collisions a particle may have had in the step, as far as decided.
@@ -113,7 +118,8 @@ public:
     // is not a valid state, or (exact rules) when its disks overlap beyond
     // its uncertainty: no step of the rules starts there; and when either
     // state's uncertainty is negative or NaN, or its on_wall is neither
-    // empty nor one per particle.
+    // empty nor one per particle. Throws std::runtime_error where more
+    // pairs may collide in the step than StepCheckOptions::most_possible_pairs.
     [[nodiscard]] StepCheck check(const PrintedState& before, const PrintedState& after);
 
     // The stepped rules run for `steps` steps from `start` (a perf-mode

@@ -70,7 +70,7 @@ public:
           // Where centres may be: [r, L - r] between walls, [0, L) in a periodic box.
           lowest_(options.boundary == Boundary::periodic ? 0.0 : box_.lower),
           highest_(options.boundary == Boundary::periodic ? world.box_size : box_.upper),
-          step_(box_),
+          step_(box_, options.most_possible_pairs),
           exact_(world, options.boundary) {}
 
     StepCheck check(const PrintedState& before, const PrintedState& after) {

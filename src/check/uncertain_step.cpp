@@ -8,6 +8,8 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <new>
+#include <string>
 #include <tuple>
 
 namespace particlesim {
@@ -187,7 +189,14 @@ Particle midpoint(const UncertainParticle& particle) {
     return p;
 }
 
-UncertainStep::UncertainStep(const Box& box) : box_(box) {}
+TooManyPossiblePairs::TooManyPossiblePairs(std::size_t most)
+    : std::runtime_error("more than " + std::to_string(most) +
+                         " pairs of disks may collide in one step (disks piled on one another?), more than the "
+                         "checker holds") {}
+
+UncertainStep::UncertainStep(const Box& box, std::size_t most_pairs)
+    : box_(box),
+      most_pairs_(most_pairs != 0 ? most_pairs : ThreadCandidates::most_candidate_bytes() / bytes_per_possible_pair) {}
 
 void UncertainStep::predict(std::span<const UncertainParticle> before, double duration) {
     before_ = before;
@@ -253,21 +262,39 @@ void UncertainStep::find_candidate_pairs(std::span<const UncertainParticle> befo
     };
     // Pairs that meet within the step by their midpoints' paths...
     no_wall_.assign(count, never);
+    const std::size_t most = most_pairs_;
     found_.resize(static_cast<std::size_t>(default_thread_count()));
-    for (ThreadCandidates& thread : found_) thread.found.clear();
+    // (Each thread's list holds at most twice the most pairs: a pair may be
+    // found in two slices.)
+    for (ThreadCandidates& thread : found_) {
+        thread.found.clear();
+        thread.most_bytes = 2 * most * sizeof(Collision);
+    }
     const PairSearchInput input{midpoints_, no_wall_, widened, duration_};
-    search_.find_pairs(input, std::nullopt, found_);
+    try {
+        search_.find_pairs(input, std::nullopt, found_);
+    } catch (const std::bad_alloc&) {
+        throw TooManyPossiblePairs(most);
+    }
+    const auto distinct_within_most = [&] {
+        std::sort(pair_keys_.begin(), pair_keys_.end());
+        pair_keys_.erase(std::unique(pair_keys_.begin(), pair_keys_.end()), pair_keys_.end());
+        if (pair_keys_.size() > most) throw TooManyPossiblePairs(most);
+    };
     for (const ThreadCandidates& thread : found_) {
         for (const Collision& c : thread.found) pair_keys_.push_back(key(c.i, c.j));
     }
+    distinct_within_most();
     // ...and pairs within reach at the start however they move (a receding
-    // or resting overlap may be approaching within rounding).
+    // or resting overlap may be approaching within rounding), each visited
+    // once: more than the most distinct pairs past twice the most keys.
     positions_.resize(count);
     for (std::size_t p = 0; p < count; ++p) positions_[p] = midpoints_[p].position;
-    for_each_close_pair(positions_, box_.side, reach, CloseIn::square,
-                        [&](std::uint32_t i, std::uint32_t j) { pair_keys_.push_back(key(i, j)); });
-    std::sort(pair_keys_.begin(), pair_keys_.end());
-    pair_keys_.erase(std::unique(pair_keys_.begin(), pair_keys_.end()), pair_keys_.end());
+    for_each_close_pair(positions_, box_.side, reach, CloseIn::square, [&](std::uint32_t i, std::uint32_t j) {
+        if (pair_keys_.size() >= 2 * most) throw TooManyPossiblePairs(most);
+        pair_keys_.push_back(key(i, j));
+    });
+    distinct_within_most();
     for (const std::uint64_t k : pair_keys_)
         add_pair(static_cast<std::uint32_t>(k >> 32), static_cast<std::uint32_t>(k));
 }

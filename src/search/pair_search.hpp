@@ -71,16 +71,19 @@ struct PairSearchInput {
 struct alignas(64) ThreadCandidates {
     std::vector<Collision> found;
     std::uint64_t pair_tests = 0;
+    // The most bytes the list may take; 0: most_candidate_bytes().
+    std::size_t most_bytes = 0;
 
     // Appends c, the list growing within what the machine can hold: a pile
     // of k overlapping disks makes up to k^2 / 2 candidates a step where no
     // ImmediateCandidateBudget drops them (a rank's search), and a list
-    // past an eighth of the machine's memory throws std::bad_alloc
+    // past `most_bytes` (by default an eighth of the machine's memory)
+    // throws std::bad_alloc
     // (simcli: "out of memory while running") before the kernel's
     // out-of-memory killer would end the process without a word.
     void add(const Collision& c) {
         if (found.size() == found.capacity()) [[unlikely]]
-            grow(most_candidate_bytes());
+            grow(most_bytes != 0 ? most_bytes : most_candidate_bytes());
         found.push_back(c);
     }
     // Twice the room (at least 1024 candidates) up to `most_bytes`, or
