@@ -283,6 +283,43 @@ void an_unwritable_output_stops_every_rank() {
     CHECK_EQ(got.err, expected.err);
 }
 
+// A rank that runs out of memory names it, and every rank stops: 8000
+// disks piled on one point under a 600 MB address space (a rank keeps each
+// approaching pair of the pile as a candidate at t = 0, 16 million).
+void running_out_of_memory_on_a_rank_is_named() {
+#if defined(__SANITIZE_ADDRESS__)
+    std::printf("under AddressSanitizer, which reserves terabytes of address space: not checked\n");
+#else
+    std::string text = "8000\n20000\n1\n1\nperf\n";
+    std::uint64_t state = 5;
+    const auto uniform = [&](double low, double high) {
+        state = state * 6364136223846793005ULL + 1442695040888963407ULL;
+        return low + (high - low) * static_cast<double>(state >> 11) * 0x1.0p-53;
+    };
+    for (int i = 0; i < 8000; ++i) {
+        char line[160];
+        std::snprintf(line, sizeof line, "%d %.17g %.17g %.17g %.17g\n", i, 100 + uniform(-1e-6, 1e-6),
+                      100 + uniform(-1e-6, 1e-6), uniform(-5, 5), uniform(-5, 5));
+        text += line;
+    }
+    const std::string scene = write_file("pile_of_8000.in", text);
+    const run_process::Result got = run_process::run(
+        "/bin/sh", {"-c", "ulimit -v 600000 && exec \"$0\" \"$@\"", mpirun, "-q", "-np", "2", simcli, scene}, "", "",
+        false);
+    CHECK_EQ(got.status, 1);
+    CHECK(got.out.empty());
+    // Each rank that ran out (both share the pile) says so in one line.
+    const long lines = lines_starting(got.err, "");
+    CHECK(lines >= 1 && lines <= 2);
+    CHECK_EQ(lines_starting(got.err, "simcli: rank "), lines);
+    std::istringstream said(got.err);
+    for (std::string line; std::getline(said, line);) {
+        CHECK(line.find(": out of memory while running (") != std::string::npos);
+        CHECK(line.ends_with("; stopping every rank"));
+    }
+#endif
+}
+
 // simcli itself links no MPI (a run outside a launcher loads none of it);
 // under a launcher it runs simcli-mpi beside it, and without that sibling it
 // says so and stops instead of running every rank as a whole run.
@@ -321,6 +358,7 @@ int main(int argc, char** argv) {
          {"an interrupted run on standard output still checkpoints",
           an_interrupted_run_on_standard_output_still_checkpoints},
          {"the last periodic checkpoint cuts the output back", the_last_periodic_checkpoint_cuts_the_output_back},
+         {"running out of memory on a rank is named", running_out_of_memory_on_a_rank_is_named},
          {"an unwritable output stops every rank", an_unwritable_output_stops_every_rank},
          {"simcli loads no MPI", simcli_loads_no_mpi}});
 }

@@ -3,6 +3,7 @@
 #include "checkpoint.hpp"
 #include "cli_options.hpp"
 #include "common/library_message.hpp"
+#include "failure_words.hpp"
 #include "first_part.hpp"
 #include "interruptible_output.hpp"
 #include "interrupts.hpp"
@@ -72,9 +73,8 @@ struct Stop {
 
 // A failure only this rank has, in the middle of a collective step: nothing
 // can be agreed any more, so the whole run is stopped.
-[[noreturn]] void abort_run(MPI_Comm comm, int rank, const char* what) {
-    std::fprintf(stderr, "simcli: rank %d: %s; stopping every rank\n", rank,
-                 apps_common::without_library_names(what).c_str());
+[[noreturn]] void abort_run(MPI_Comm comm, int rank, const std::exception& failure) {
+    std::fprintf(stderr, "simcli: rank %d: %s; stopping every rank\n", rank, failure_words(failure).c_str());
     std::fflush(stderr);
     MPI_Abort(comm, exit_failure);
     std::abort();
@@ -400,7 +400,7 @@ private:
                 try {
                     engine.step();
                 } catch (const std::exception& e) {
-                    abort_run(comm_, rank_, e.what());
+                    abort_run(comm_, rank_, e);
                 }
                 ++step;
                 if (print && step < settings.steps) write_state(engine, output, step, false);
@@ -477,7 +477,7 @@ int run_ranks(int argc, char** argv, MPI_Comm comm) {
     } catch (const Stop& stop) {
         return stop.status;
     } catch (const std::exception& e) {  // this rank alone: it cannot allocate, ...
-        abort_run(comm, rank, e.what());
+        abort_run(comm, rank, e);
     }
 }
 

@@ -9,6 +9,7 @@
 #include "common/library_message.hpp"
 #include "common/standard_streams.hpp"
 #include "distributed_run.hpp"
+#include "failure_words.hpp"
 #include "first_part.hpp"
 #include "interrupts.hpp"
 #include "mpi_launch.hpp"
@@ -431,15 +432,8 @@ int run_one_process(int argc, char** argv) {
     } catch (const Interrupted& e) {
         std::fprintf(stderr, "simcli: %s\n", apps_common::without_library_names(e.what()).c_str());
         return 128 + e.signal();
-    } catch (const std::bad_alloc&) {
-        // The scene's arrays, or a step's pair candidates past their limit
-        // (under mpirun a pile of k overlapping disks makes up to k^2 / 2).
-        std::fprintf(stderr,
-                     "simcli: out of memory while running (the scene's arrays, or a step's pair candidates, "
-                     "which may take an eighth of this machine's memory on each thread)\n");
-        return exit_failure;
-    } catch (const std::exception& e) {  // OutputError, TooManyEvents and any other failure while running
-        std::fprintf(stderr, "simcli: %s\n", apps_common::without_library_names(e.what()).c_str());
+    } catch (const std::exception& e) {  // OutputError, TooManyEvents, out of memory, ... while running
+        std::fprintf(stderr, "simcli: %s\n", failure_words(e).c_str());
         return exit_failure;
     }
 }
