@@ -7,7 +7,7 @@ P ranks in all costs
 
     T(n, P) = c (n + g)                                  compute
             + k (4 + 2 R) alpha + b / beta               messages to its k neighbours
-            + (R + 2) * 2 ceil(log2 P) alpha             all-reductions
+            + (R + 3) * 2 ceil(log2 P) alpha             all-reductions
 
 c: seconds per local particle-step (measured: 2 ranks' compute), g: the
 halo's disks (2 sides of width h, measured, at the gas's density), R: the
@@ -81,7 +81,7 @@ def main(out):
         if cores is not None:
             compute *= max(1.0, p / cores)
         messages = neighbours * (4 + 2 * rounds) * alpha + (ghosts * GHOST_BYTES + 2 * rounds * shared) / beta
-        reductions = (rounds + 2) * 2 * math.ceil(math.log2(p)) * alpha
+        reductions = (rounds + 3) * 2 * math.ceil(math.log2(p)) * alpha
         return compute + messages + reductions
 
     with open(out / "distributed_model.csv", "w", newline="") as f:

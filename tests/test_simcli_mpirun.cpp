@@ -66,23 +66,25 @@ std::string after_step(const std::string& output, long step) {
     return kept;
 }
 
-// 700 disks within 1e-6 of the box's centre, where the ranks' cuts fall:
-// every approaching pair a candidate at t = 0, most of them shared between
-// ranks, so the rounds stall and one rank decides the rest.
-std::string pile_across_the_cuts() {
-    std::string text = "700\n20000\n1\n3\nprint\n";
+// `count` disks within 1e-6 of the box's centre, where the ranks' cuts
+// fall: every approaching pair a candidate at t = 0, most of them shared
+// between ranks. 700 disks make more than the searches keep, and one rank
+// decides those pairs from the disks; 80 make fewer, the rounds stall, and
+// one rank decides the rest from the candidates.
+std::string pile_across_the_cuts(int count) {
+    std::string text = std::to_string(count) + "\n20000\n1\n3\nprint\n";
     std::uint64_t state = 4;
     const auto uniform = [&](double low, double high) {
         state = state * 6364136223846793005ULL + 1442695040888963407ULL;
         return low + (high - low) * static_cast<double>(state >> 11) * 0x1.0p-53;
     };
-    for (int i = 0; i < 700; ++i) {
+    for (int i = 0; i < count; ++i) {
         char line[160];
         std::snprintf(line, sizeof line, "%d %.17g %.17g %.17g %.17g\n", i, 10000 + uniform(-1e-6, 1e-6),
                       10000 + uniform(-1e-6, 1e-6), uniform(-5, 5), uniform(-5, 5));
         text += line;
     }
-    return write_file("pile_across_the_cuts.in", text);
+    return write_file("pile_of_" + std::to_string(count) + "_across_the_cuts.in", text);
 }
 
 void the_same_bytes_as_one_process() {
@@ -91,7 +93,8 @@ void the_same_bytes_as_one_process() {
                                           examples + "/default.in",
                                           write_file("random_print.in", "400\n300\n1\n40\nprint\n"),
                                           write_file("random_perf.in", "3000\n900\n1\n60\nperf\n"),
-                                          pile_across_the_cuts()};
+                                          pile_across_the_cuts(700),
+                                          pile_across_the_cuts(80)};
     for (const std::string& scene : scenes) {
         const run_process::Result expected = one_process({scene});
         CHECK_EQ(expected.status, 0);
@@ -283,32 +286,19 @@ void an_unwritable_output_stops_every_rank() {
     CHECK_EQ(got.err, expected.err);
 }
 
-// A rank that runs out of memory names it, and every rank stops: 8000
-// disks piled on one point under a 600 MB address space (a rank keeps each
-// approaching pair of the pile as a candidate at t = 0, 16 million).
+// A rank that runs out of memory names it, and every rank stops: a random
+// scene of 6 million disks under a 600 MB address space.
 void running_out_of_memory_on_a_rank_is_named() {
 #if defined(__SANITIZE_ADDRESS__)
     std::printf("under AddressSanitizer, which reserves terabytes of address space: not checked\n");
 #else
-    std::string text = "8000\n20000\n1\n1\nperf\n";
-    std::uint64_t state = 5;
-    const auto uniform = [&](double low, double high) {
-        state = state * 6364136223846793005ULL + 1442695040888963407ULL;
-        return low + (high - low) * static_cast<double>(state >> 11) * 0x1.0p-53;
-    };
-    for (int i = 0; i < 8000; ++i) {
-        char line[160];
-        std::snprintf(line, sizeof line, "%d %.17g %.17g %.17g %.17g\n", i, 100 + uniform(-1e-6, 1e-6),
-                      100 + uniform(-1e-6, 1e-6), uniform(-5, 5), uniform(-5, 5));
-        text += line;
-    }
-    const std::string scene = write_file("pile_of_8000.in", text);
+    const std::string scene = write_file("six_million.in", "6000000 300000 1 1 perf\n");
     const run_process::Result got = run_process::run(
         "/bin/sh", {"-c", "ulimit -v 600000 && exec \"$0\" \"$@\"", mpirun, "-q", "-np", "2", simcli, scene}, "", "",
         false);
     CHECK_EQ(got.status, 1);
     CHECK(got.out.empty());
-    // Each rank that ran out (both share the pile) says so in one line.
+    // Each rank that ran out says so in one line.
     const long lines = lines_starting(got.err, "");
     CHECK(lines >= 1 && lines <= 2);
     CHECK_EQ(lines_starting(got.err, "simcli: rank "), lines);

@@ -13,7 +13,7 @@ namespace simcli {
 
 inline constexpr const char* out_of_memory_words =
     "out of memory while running (the scene's arrays, or a step's pair candidates, which may take an eighth of "
-    "this machine's memory on each thread; under mpirun, disks piled on one another make up to k^2 / 2 of them)";
+    "this machine's memory on each thread)";
 
 inline std::string failure_words(const std::exception& failure) {
     if (dynamic_cast<const std::bad_alloc*>(&failure) != nullptr) return out_of_memory_words;

@@ -12,6 +12,7 @@
 #include "parallel/parallel.hpp"
 #include "search/brute_force_search.hpp"
 #include "search/grid_search.hpp"
+#include "stepped/immediate_selection.hpp"
 #include "stepped/step_pipeline.hpp"
 #include "stepped/stepped_state.hpp"
 #include "stepped/stepped_tuning.hpp"
@@ -252,16 +253,62 @@ public:
     // ones name, gathered on the root, which decides them all by the greedy
     // pass; every rank takes what it accepted (rank_selection.hpp).
     void decide_the_rest_on_one_rank() {
-        const std::vector<Collision> accepted_on_root =
+        std::vector<Collision> accepted =
             decide_in_order(gather_on_root(selection_.undecided_by_user(), "gathering the undecided candidates"),
                             gather_on_root(selection_.taken_shared_by_user(), "gathering the taken particles"));
-        std::uint64_t count = accepted_on_root.size();
-        require_mpi(MPI_Bcast(&count, 1, MPI_UINT64_T, root, comm_), "sending the accepted candidates");
-        std::vector<Collision> accepted = rank_ == root ? accepted_on_root : std::vector<Collision>(count);
-        const BytesType<Collision> type;
-        require_mpi(MPI_Bcast(accepted.data(), static_cast<int>(count), type.get(), root, comm_),
-                    "sending the accepted candidates");
+        broadcast_from_root(accepted, "sending the accepted candidates");
         selection_.take_accepted(accepted);
+    }
+
+    // The root's `collisions` to every rank.
+    void broadcast_from_root(std::vector<Collision>& collisions, const char* what) {
+        std::uint64_t count = collisions.size();
+        require_mpi(MPI_Bcast(&count, 1, MPI_UINT64_T, root, comm_), what);
+        if (rank_ != root) collisions.resize(count);
+        const BytesType<Collision> type;
+        require_mpi(MPI_Bcast(collisions.data(), static_cast<int>(count), type.get(), root, comm_), what);
+    }
+
+    // The owned disks that may have a pair at t = 0: no wall at t = 0 (read
+    // before the selection writes collision times over the wall times).
+    std::vector<Travelling> owned_able_to_pair() const {
+        std::vector<Travelling> able;
+        for (std::size_t k = 0; k < owned_; ++k) {
+            if (wall_time_[k] > 0.0) able.emplace_back(local_[k], user_[k]);
+        }
+        return able;
+    }
+
+    // Every rank's disks that may have a pair at t = 0 gathered on the root,
+    // which decides those pairs by the one-process rule
+    // (select_immediate_pairs(): they come before every other candidate);
+    // every rank takes what was accepted, and the rounds decide the rest.
+    // Memory linear in N, where the pairs' candidates grow as a pile's size
+    // squared.
+    void decide_immediate_pairs_on_one_rank(const std::vector<Travelling>& able, double duration) {
+        std::vector<Collision> accepted;
+        const std::vector<Travelling> all = gather_on_root(able, "gathering the piled particles");
+        if (rank_ == root) {
+            std::vector<Particle> particles;
+            std::vector<std::uint32_t> users;
+            particles.reserve(all.size());
+            users.reserve(all.size());
+            for (const Travelling& t : all) {
+                particles.push_back(t.particle());
+                users.push_back(static_cast<std::uint32_t>(t.user_index));
+            }
+            const std::vector<double> no_wall(all.size(), never);
+            std::vector<std::uint32_t> partner(all.size(), no_collision);
+            std::vector<double> time(all.size());
+            select_immediate_pairs(PairSearchInput{particles, no_wall, box_, duration}, users, partner, time);
+            for (std::uint32_t k = 0; k < partner.size(); ++k) {
+                if (partner[k] == no_collision || partner[k] < k) continue;
+                const auto [low, high] = std::minmax(users[k], users[partner[k]]);
+                accepted.push_back(Collision::pair(0.0, low, high));
+            }
+        }
+        broadcast_from_root(accepted, "sending the pairs at t = 0");
+        selection_.take_decided_first(accepted);
     }
 
     // Every rank's `mine`, one after another on the root (empty elsewhere).
@@ -495,9 +542,16 @@ private:
             thread.found.clear();
             thread.pair_tests = 0;
         }
-        const PairSearchInput input{local_, wall_time_, box_, duration,
-                                    !carried && start_.with_motion ? std::span<const BlockStart>(start_.blocks)
-                                                                   : std::span<const BlockStart>()};
+        immediate_.reset(stepped_tuning::immediate_candidates_per_particle * local +
+                         stepped_tuning::immediate_candidates_floor);
+        const PairSearchInput input{
+            local_,
+            wall_time_,
+            box_,
+            duration,
+            !carried && start_.with_motion ? std::span<const BlockStart>(start_.blocks) : std::span<const BlockStart>(),
+            0.0,
+            &immediate_};
         if (search_ == PairSearch::brute_force) {
             find_pairs_brute_force(input, thread_candidates_);
         } else {
@@ -513,7 +567,21 @@ private:
         // Select, in rounds with the neighbours.
         // wall_time_ holds each particle's first wall time up to here, then
         // the time of its accepted collision (as in the one-process engine).
+        // Where any rank's search dropped candidates at t = 0, their pairs
+        // are decided first, on one rank.
+        int dropped_immediate = immediate_.overflowed() ? 1 : 0;
+        all_reduce(&dropped_immediate, 1, MPI_INT, MPI_MAX);
+        std::vector<Travelling> able_to_pair;
+        if (dropped_immediate != 0) {
+            able_to_pair = owned_able_to_pair();
+            // Each rank kept other pairs at t = 0: all go, so that the ranks
+            // list the same shared candidates (the pairs decided first rule
+            // out every one of them).
+            std::erase_if(candidates_,
+                          [](const Collision& c) { return c.kind == CollisionKind::pair && c.time == 0.0; });
+        }
         selection_.begin(candidates_, static_cast<std::uint32_t>(owned_), user_, ghost_neighbour_, near, wall_time_);
+        if (dropped_immediate != 0) decide_immediate_pairs_on_one_rank(able_to_pair, duration);
         outgoing_bytes_.resize(near);
         incoming_bytes_.resize(near);
         std::uint64_t left_before = 0;
@@ -636,6 +704,7 @@ private:
     StepStart next_start_;  // measured by the advance and not used: ghosts change every step
     std::vector<Collision> candidates_;
     std::vector<ThreadCandidates> thread_candidates_;
+    ImmediateCandidateBudget immediate_;
     GridSearch grid_;
     RankSelection selection_;
     std::vector<std::uint32_t> cell_start_;   // the sort by position's, reused

@@ -192,6 +192,16 @@ std::vector<Collision> RankSelection::undecided_by_user() const {
 }
 
 void RankSelection::take_accepted(std::span<const Collision> accepted) {
+    take_of_this_rank(accepted);
+    undecided_.clear();
+}
+
+std::size_t RankSelection::take_decided_first(std::span<const Collision> accepted) {
+    take_of_this_rank(accepted);
+    return drop_ruled_out();
+}
+
+void RankSelection::take_of_this_rank(std::span<const Collision> accepted) {
     // This rank's particles by user index: owned and ghosts.
     std::vector<std::pair<std::uint32_t, std::uint32_t>> local_of(user_index_.size());
     for (std::uint32_t l = 0; l < user_index_.size(); ++l) local_of[l] = {user_index_[l], l};
@@ -215,7 +225,6 @@ void RankSelection::take_accepted(std::span<const Collision> accepted) {
         // Counted once over all ranks: where both are owned, or on the rank of the lower user index.
         if (owned(i)) ++accepted_.particle_collisions;
     }
-    undecided_.clear();
 }
 
 std::vector<Collision> decide_in_order(std::vector<Collision> candidates, std::vector<std::uint32_t> taken_users) {

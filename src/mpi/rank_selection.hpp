@@ -90,6 +90,12 @@ public:
     // Takes, of `accepted` (by user index, as decide_in_order() returns
     // them), those with a particle of this rank, and ends the rounds.
     void take_accepted(std::span<const Collision> accepted);
+    // The same before the first round, for collisions decided on one rank
+    // that come before every candidate left (the pairs at t = 0 of disks
+    // piled on one another: select_immediate_pairs()); the candidates they
+    // rule out are dropped and the rounds decide the rest. Returns how many
+    // candidates of this rank are left.
+    std::size_t take_decided_first(std::span<const Collision> accepted);
 
     // After the rounds, by local particle: its partner's local index,
     // no_collision or wall_collision (a ghost's partner is set only when it
@@ -118,6 +124,8 @@ private:
         return !taken_[c.i] && (c.kind == CollisionKind::wall || !taken_[c.j]);
     }
     void take(std::uint32_t local, std::uint32_t partner, double time);
+    // Takes, of `accepted` (by user index), those with a particle of this rank.
+    void take_of_this_rank(std::span<const Collision> accepted);
     // Decides what this rank can without its neighbours; returns how many
     // candidates stay undecided.
     std::size_t decide_alone();

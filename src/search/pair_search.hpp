@@ -63,7 +63,7 @@ struct PairSearchInput {
     // particles' spacing in it.
     double area = 0.0;
     // Where the candidates at t = 0 are counted against a budget; null:
-    // every one is kept (the distributed engine's ranks).
+    // every one is kept (simcheck's search of the pairs that may collide).
     ImmediateCandidateBudget* immediate = nullptr;
 };
 
@@ -76,7 +76,7 @@ struct alignas(64) ThreadCandidates {
 
     // Appends c, the list growing within what the machine can hold: a pile
     // of k overlapping disks makes up to k^2 / 2 candidates a step where no
-    // ImmediateCandidateBudget drops them (a rank's search), and a list
+    // ImmediateCandidateBudget drops them (simcheck's search), and a list
     // past `most_bytes` (by default an eighth of the machine's memory)
     // throws std::bad_alloc
     // (simcli: "out of memory while running") before the kernel's
