@@ -33,6 +33,7 @@ struct StageScene {
     std::int64_t steps;
     SteppedOptions options;  // threads set below
     std::optional<SpeedRange> speeds;
+    std::size_t piled = 0;  // of the particles, moved onto one point (within 1e-6)
 };
 
 std::uint64_t final_hash(const StageScene& scene, const std::vector<Particle>& start, int threads) {
@@ -64,6 +65,16 @@ void two_threads_give_one_threads_bits() {
          3,
          {.pair_search = PairSearch::grid},
          std::nullopt},
+        // The same with 300 disks piled on one point: more candidates at
+        // t = 0 than the search keeps, so the first stage decides those
+        // pairs from the disks while the other thread searches.
+        {"grid, slices decided in stages, a pile",
+         World{20000.0, 1.0},
+         4000,
+         3,
+         {.pair_search = PairSearch::grid},
+         std::nullopt,
+         300},
         {"paths search", World{20000.0, 1.0}, 6000, 6, {.pair_search = PairSearch::paths}, std::nullopt},
         {"brute force", World{250.0, 1.0}, 3000, 2, {.pair_search = PairSearch::brute_force}, slow},
     };
@@ -71,7 +82,11 @@ void two_threads_give_one_threads_bits() {
         check::Context context(scene.name);
         RandomSceneOptions random{.seed = 5};
         random.speeds = scene.speeds;
-        const std::vector<Particle> start = make_random_particles(scene.count, scene.world, random);
+        std::vector<Particle> start = make_random_particles(scene.count, scene.world, random);
+        for (std::size_t k = 0; k < scene.piled; ++k) {
+            const double offset = 1e-6 * std::sin(static_cast<double>(k));
+            start[k].position = Vec2(10000.0 + offset, 10000.0 - offset);
+        }
         const std::uint64_t regions_before = parallel_regions_opened();
         CHECK_EQ(final_hash(scene, start, 2), final_hash(scene, start, 1));
         CHECK(parallel_regions_opened() > regions_before);  // each scene shares some stage
