@@ -77,7 +77,8 @@ bool same_candidates_every_step(const NamedScene& scene, std::optional<int> grid
 }
 
 // The stages of the selection that the grid search runs between its slices,
-// counted.
+// counted, and the times its first slice, crowded, had the pairs at t = 0
+// decided first.
 struct CountedStages final : SliceDecisions {
     CountedStages(EarlySelection& selection, std::span<std::uint32_t> partner)
         : SliceDecisions(partner), selection(selection) {}
@@ -85,8 +86,13 @@ struct CountedStages final : SliceDecisions {
         ++stages;
         selection.decide_before(time, found, threads);
     }
+    void decide_pairs_at_zero() override {
+        ++pairs_at_zero;
+        selection.decide_pairs_at_zero();
+    }
     EarlySelection& selection;
     int stages = 0;
+    int pairs_at_zero = 0;
 };
 
 // What the selection leaves for the resolution: each particle's partner and
@@ -123,7 +129,8 @@ struct ImmediatePairs {
 // With `immediate`, a third time from the brute force's candidates, and the
 // grid's stages too, under its budget of candidates at t = 0.
 bool same_selection_every_step(const NamedScene& scene, int threads, int& stages, std::uint64_t& staged_tests,
-                               std::uint64_t& unstaged_tests, ImmediatePairs* immediate = nullptr) {
+                               std::uint64_t& unstaged_tests, ImmediatePairs* immediate = nullptr,
+                               int* crowded_first_slices = nullptr) {
     SteppedSimulation sim(scene.world, scene.particles, {.pair_search = PairSearch::brute_force, .threads = 1});
     const Box box = Box::of(scene.world);
     const std::size_t count = scene.particles.size();
@@ -153,6 +160,7 @@ bool same_selection_every_step(const NamedScene& scene, int threads, int& stages
                 GridSearch grid;
                 grid.find_pairs(in, std::nullopt, buffers, &counted);
                 stages += counted.stages;
+                if (crowded_first_slices != nullptr) *crowded_first_slices += counted.pairs_at_zero;
                 for (const ThreadCandidates& thread : buffers) staged_tests += thread.pair_tests;
                 // And the grid without stages, for its pair tests alone.
                 std::vector<ThreadCandidates> unstaged(static_cast<std::size_t>(threads));
@@ -429,6 +437,19 @@ int main(int argc, char** argv) {
               // spread out after their first step), and the stages ran.
               CHECK(overflowed > steps / 2);
               CHECK(stages > 0);
+              // A pile of 1000 disks crowds the grid's first slice: the
+              // pairs at t = 0 are decided before its scan, whatever the
+              // budget.
+              int crowded = 0;
+              for (const int threads : {1, 2}) {
+                  ImmediatePairs unlimited{std::numeric_limits<std::size_t>::max(), {}};
+                  NamedScene pile = piled_disks(98, 2000, 500);
+                  pile.steps = 2;
+                  const check::Context context("a pile of 1000, ", threads, " threads");
+                  CHECK(same_selection_every_step(pile, threads, stages, staged_tests, unstaged_tests, &unlimited,
+                                                  &crowded));
+              }
+              CHECK(crowded >= 2);
               // The engine: every search and thread count, stored in the
               // user's order or sorted by position at every step, where a
               // pile of 3000 disks overflows the budget.

@@ -117,6 +117,10 @@ private:
     GridLayout choose_layout(const PairSearchInput& in, std::optional<int> forced_cells, int threads);
     void process_slice(const PairSearchInput& in, int slice, SliceWorkspace& ws, std::span<ThreadCandidates> out,
                        int threads, const SliceDecisions* decisions) const;
+    // Whether the slice just binned in `ws` crowds so many boxes into its
+    // cells, meeting at t = 0, that the pairs at t = 0 are better decided
+    // before its scan.
+    [[nodiscard]] bool crowded(const PairSearchInput& in, const SliceWorkspace& ws) const;
     [[nodiscard]] double decided_before(const PairSearchInput& in, int searched) const;
     void search_slices_deciding(const PairSearchInput& in, std::span<ThreadCandidates> buffers,
                                 SliceDecisions& decisions);
@@ -136,6 +140,9 @@ private:
 
     int lanes_ = 4;
     GridLayout layout_;
+    // The step's decisions, also where its slices run no stages: the first
+    // slice may ask them to decide the pairs at t = 0 (crowded()).
+    SliceDecisions* pairs_at_zero_ = nullptr;
     std::vector<BlockStart> block_starts_;  // when the step brings none
     std::vector<SliceWorkspace> workspaces_;
     // Where threads take whole slices and decisions run: each slice's

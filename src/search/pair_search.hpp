@@ -105,6 +105,13 @@ public:
     // a thread that searches beside others). One call at a time.
     virtual void decide_before(double time, std::span<ThreadCandidates> found, int threads) = 0;
 
+    // Decides every pair collision at t = 0 now, from the particles, before
+    // any candidate is decided (they come first in the order): a search
+    // whose first slice crowds many disks into a few cells (disks piled on
+    // one another) calls it, then leaves the decided particles out. A
+    // selection that cannot leaves it undone; the search is exact either way.
+    virtual void decide_pairs_at_zero() {}
+
     // Whether particle i's collision is decided. Threads that search read it
     // while another decides: an atomic read, as the decisions write it.
     [[nodiscard]] bool decided(std::uint32_t i) const {

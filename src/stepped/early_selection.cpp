@@ -32,9 +32,14 @@ void EarlySelection::make_stage_times() {
 
 // Before any other decision: every candidate at t = 0 has been found by
 // then (the first slice holds them), and they come first in the order.
-// What the search kept of them is ruled out by the pairs decided here.
 void EarlySelection::decide_immediate_pairs() {
-    if (immediate_decided_ || input_.immediate == nullptr || !input_.immediate->overflowed()) return;
+    if (input_.immediate != nullptr && input_.immediate->overflowed()) decide_pairs_at_zero();
+}
+
+// Once, before any other decision. What the search kept or keeps finding of
+// the pairs at t = 0 is ruled out by the pairs decided here.
+void EarlySelection::decide_pairs_at_zero() {
+    if (immediate_decided_) return;
     immediate_decided_ = true;
     make_stage_times();
     accepted_.particle_collisions += select_immediate_pairs(input_, order_.user_index(), partner_, stage_time_);

@@ -43,6 +43,7 @@ public:
           threads_(threads) {}
 
     void decide_before(double time, std::span<ThreadCandidates> found, int threads) override;
+    void decide_pairs_at_zero() override;
 
     // Decides every collision left, with what the search left in `found`;
     // returns the step's accepted collisions.
@@ -52,7 +53,8 @@ private:
     // Moves the undecided candidates before `time` (of those kept and those
     // in `found`) into ready_, and keeps the undecided later ones.
     void gather_ready(double time, std::span<ThreadCandidates> found);
-    // The pairs at t = 0, once, if the search dropped some of their candidates.
+    // The pairs at t = 0 (decide_pairs_at_zero()) if the search dropped
+    // some of their candidates.
     void decide_immediate_pairs();
     // stage_time_ grown to the particles.
     void make_stage_times();

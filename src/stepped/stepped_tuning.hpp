@@ -132,6 +132,18 @@ inline constexpr int trial_run_steps = 240;
 // by the steps before, up to k^2 / 2 for k disks piled on one another.
 inline constexpr std::size_t immediate_candidates_per_particle = 1;
 inline constexpr std::size_t immediate_candidates_floor = 4096;
+// A first slice whose cells hold more pairs than this (a per particle and a
+// floor; sum over cells of count^2 / 2) has the pairs at t = 0 decided
+// before its scan (grid_search.cpp, process_slice()): the gas at area
+// fraction 0.3 and the rules' random scenes hold a few pairs a particle
+// (cells of about one to four boxes), a pile of k disks k^2 / 2 in one cell.
+inline constexpr double crowded_cell_pairs_per_particle = 64.0;
+inline constexpr double crowded_cell_pairs_floor = 1 << 16;
+// ... and where, of this many neighbouring boxes of the fullest cell taken
+// in pairs, more than one in this many meet at t = 0 (in a pile about one
+// in two; disks flying apart from a pile recede, none).
+inline constexpr std::uint32_t crowded_pairs_sampled = 64;
+inline constexpr std::uint32_t crowded_pairs_at_zero_from = 8;
 
 // --- Blocks of the stages (stepped/step_pipeline.cpp)
 
