@@ -70,9 +70,12 @@ std::string after_step(const std::string& output, long step) {
 // fall: every approaching pair a candidate at t = 0, most of them shared
 // between ranks. 700 disks make more than the searches keep, and one rank
 // decides those pairs from the disks; 80 make fewer, the rounds stall, and
-// one rank decides the rest from the candidates.
+// one rank decides the rest from the candidates. The first three disks
+// sit on the left wall moving into it (a wall collision at t = 0: no pair
+// at t = 0), so that the disks that may pair hold some of the indices only.
 std::string pile_across_the_cuts(int count) {
-    std::string text = std::to_string(count) + "\n20000\n1\n3\nprint\n";
+    std::string text = std::to_string(count + 3) + "\n20000\n1\n3\nprint\n";
+    for (int i = 0; i < 3; ++i) text += std::to_string(i) + " 1 " + std::to_string(5000 + 10 * i) + " -3 1\n";
     std::uint64_t state = 4;
     const auto uniform = [&](double low, double high) {
         state = state * 6364136223846793005ULL + 1442695040888963407ULL;
@@ -80,7 +83,7 @@ std::string pile_across_the_cuts(int count) {
     };
     for (int i = 0; i < count; ++i) {
         char line[160];
-        std::snprintf(line, sizeof line, "%d %.17g %.17g %.17g %.17g\n", i, 10000 + uniform(-1e-6, 1e-6),
+        std::snprintf(line, sizeof line, "%d %.17g %.17g %.17g %.17g\n", i + 3, 10000 + uniform(-1e-6, 1e-6),
                       10000 + uniform(-1e-6, 1e-6), uniform(-5, 5), uniform(-5, 5));
         text += line;
     }

@@ -8,23 +8,28 @@
 #include <algorithm>
 #include <atomic>
 #include <cmath>
+#include <numeric>
 #include <vector>
 
 namespace particlesim {
 
 std::uint64_t select_immediate_pairs(const PairSearchInput& in, std::span<const std::uint32_t> user_index,
                                      std::span<std::uint32_t> partner, std::span<double> collision_time) {
-    const auto count = static_cast<std::uint32_t>(in.particles.size());
-    std::vector<std::uint32_t> stored_of_user(count);
-    for (std::uint32_t place = 0; place < count; ++place)
-        stored_of_user[user_index.empty() ? place : user_index[place]] = place;
+    // The places in the user's order (a rank's gathered disks hold some of
+    // the user's indices only).
+    std::vector<std::uint32_t> by_user(in.particles.size());
+    std::iota(by_user.begin(), by_user.end(), 0U);
+    if (!user_index.empty()) {
+        std::sort(by_user.begin(), by_user.end(),
+                  [&](std::uint32_t a, std::uint32_t b) { return user_index[a] < user_index[b]; });
+    }
     const auto undecided = [&](std::uint32_t place) {
         return std::atomic_ref<std::uint32_t>(partner[place]).load(std::memory_order_relaxed) == no_collision;
     };
     // The disks that may have a pair at t = 0, in the user's order: undecided,
     // and no wall at t = 0 (a pair's candidate comes before both wall times).
     std::vector<std::uint32_t> able;
-    for (const std::uint32_t place : stored_of_user) {
+    for (const std::uint32_t place : by_user) {
         if (undecided(place) && in.wall_time[place] > 0.0) able.push_back(place);
     }
     // Cells at least a contact distance wide (with UniformGrid's margin): a

@@ -21,7 +21,8 @@ namespace particlesim {
 // disk after it, in that order, that it touches or overlaps and approaches
 // (contact_time() = 0, as the searches test it).
 //
-// `user_index`: the user's index of each stored place (empty: the same).
+// `user_index`: the user's index of each place, all different (empty: the
+// place's own; a rank's gathered disks hold some of the user's indices).
 // Writes the partners (atomically, as the selection does: the searches read
 // them) and collision time 0 of the accepted pairs; returns their count.
 std::uint64_t select_immediate_pairs(const PairSearchInput& in, std::span<const std::uint32_t> user_index,
