@@ -68,9 +68,11 @@ std::string after_step(const std::string& output, long step) {
 
 // `count` disks within 1e-6 of the box's centre, where the ranks' cuts
 // fall: every approaching pair a candidate at t = 0, most of them shared
-// between ranks. 700 disks make more than the searches keep, and one rank
-// decides those pairs from the disks; 80 make fewer, the rounds stall, and
-// one rank decides the rest from the candidates. The first three disks
+// between ranks. 700 disks crowd the grid's first slice, which stops each
+// rank's search until rank 0 has decided those pairs from the disks (with
+// the brute force, they make more candidates than the searches keep, to
+// the same end); 80 make fewer, the rounds stall, and rank 0 decides the
+// rest from the candidates. The first three disks
 // sit on the left wall moving into it (a wall collision at t = 0: no pair
 // at t = 0), so that the disks that may pair hold some of the indices only.
 std::string pile_across_the_cuts(int count) {
@@ -90,6 +92,46 @@ std::string pile_across_the_cuts(int count) {
     return write_file("pile_of_" + std::to_string(count) + "_across_the_cuts.in", text);
 }
 
+// Disks piled on one to three points among a gas (some on the left wall,
+// moving into it), L = 400, r = 1, at speeds from 1 to 100 a step: a pile
+// may lie on one rank beside another rank's disks, which then holds
+// candidates with the pile's disks that the pile's rank left out of its
+// search once their pairs at t = 0 were decided.
+std::string piles_among_a_gas(std::uint64_t seed) {
+    std::uint64_t state = seed * 2654435761ULL + 1;
+    const auto uniform = [&](double low, double high) {
+        state = state * 6364136223846793005ULL + 1442695040888963407ULL;
+        return low + (high - low) * static_cast<double>(state >> 11) * 0x1.0p-53;
+    };
+    const int count = 2000 + static_cast<int>(uniform(0, 2500));
+    const int piles = 1 + static_cast<int>(uniform(0, 3));
+    double pile_x[3], pile_y[3];
+    for (int k = 0; k < piles; ++k) {
+        pile_x[k] = uniform(1, 399);
+        pile_y[k] = uniform(1, 399);
+    }
+    std::string text = std::to_string(count) + "\n400\n1\n3\nprint\n";
+    for (int i = 0; i < count; ++i) {
+        const double kind = uniform(0, 1);
+        double x = uniform(1, 399), y = uniform(1, 399);
+        if (kind < 0.5) {
+            const int k = std::min(piles - 1, static_cast<int>(uniform(0, piles)));
+            x = std::clamp(pile_x[k] + uniform(-1e-6, 1e-6), 1.0, 399.0);
+            y = std::clamp(pile_y[k] + uniform(-1e-6, 1e-6), 1.0, 399.0);
+        } else if (kind < 0.55) {
+            x = 1;
+        }
+        const double speeds[] = {1, 5, 50, 100};
+        const double speed = speeds[std::min(3, static_cast<int>(uniform(0, 4)))];
+        const double vx = uniform(-speed, speed);
+        const double vy = uniform(-speed, speed);
+        char line[160];
+        std::snprintf(line, sizeof line, "%d %.17g %.17g %.17g %.17g\n", i, x, y, vx, vy);
+        text += line;
+    }
+    return write_file("piles_among_a_gas_" + std::to_string(seed) + ".in", text);
+}
+
 void the_same_bytes_as_one_process() {
     const std::vector<std::string> scenes{examples + "/newtons_cradle.in",
                                           examples + "/head_on.in",
@@ -98,6 +140,21 @@ void the_same_bytes_as_one_process() {
                                           write_file("random_perf.in", "3000\n900\n1\n60\nperf\n"),
                                           pile_across_the_cuts(700),
                                           pile_across_the_cuts(80)};
+    const std::string pile = scenes[5];
+    const run_process::Result brute_force = on_ranks(2, {"--broadphase", "brute", pile});
+    CHECK_EQ(brute_force.status, 0);
+    CHECK(brute_force.out == one_process({pile}).out);
+    for (const std::uint64_t seed : {1, 7, 20}) {
+        const std::string piles = piles_among_a_gas(seed);
+        const run_process::Result expected = one_process({piles});
+        CHECK_EQ(expected.status, 0);
+        for (const int ranks : {2, 3}) {
+            const check::Context context(piles + " on " + std::to_string(ranks) + " ranks");
+            const run_process::Result got = on_ranks(ranks, {piles});
+            CHECK_EQ(got.status, 0);
+            CHECK(got.out == expected.out);
+        }
+    }
     for (const std::string& scene : scenes) {
         const run_process::Result expected = one_process({scene});
         CHECK_EQ(expected.status, 0);

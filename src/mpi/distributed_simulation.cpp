@@ -32,6 +32,30 @@ namespace particlesim {
 
 namespace {
 
+// Thrown by a rank's grid search whose first slice crowds its cells with
+// disks meeting at t = 0 (GridSearch::crowded()), before it tests their
+// pairs: the ranks decide those pairs together first.
+struct CrowdedFirstSlice : std::exception {
+    [[nodiscard]] const char* what() const noexcept override { return "a crowded first slice"; }
+};
+
+// What a rank's grid search is told of the disks decided before it: none
+// while probing (a crowded first slice then stops it), the pairs at t = 0
+// decided on rank 0 when it searches again, which it leaves out. The rounds
+// decide the rest: no stage decides anything here.
+class DecidedAtZero final : public SliceDecisions {
+public:
+    // `left_out`: by local disk, no_collision or not.
+    DecidedAtZero(std::span<std::uint32_t> left_out, bool probing) : SliceDecisions(left_out), probing_(probing) {}
+    void decide_before(double, std::span<ThreadCandidates>, int) override {}
+    void decide_pairs_at_zero() override {
+        if (probing_) throw CrowdedFirstSlice();
+    }
+
+private:
+    bool probing_;
+};
+
 // A particle on its way to another rank (a ghost or a migrant), with its
 // index in the scene; plain numbers, sent as bytes.
 struct Travelling {
@@ -279,13 +303,72 @@ public:
         return able;
     }
 
+    // The candidates of the local disks not left out (`decisions`, for the
+    // grid; `pairs_at_zero`: see GridSearch::find_pairs()) after the walls
+    // of the owned disks, in candidates_.
+    void find_candidates(double duration, bool carried, SliceDecisions* decisions, SliceDecisions* pairs_at_zero) {
+        candidates_.clear();
+        for (std::uint32_t k = 0; k < owned_; ++k) {
+            if (wall_time_[k] <= duration) candidates_.push_back(Collision::wall(wall_time_[k], k));
+        }
+        thread_candidates_.resize(static_cast<std::size_t>(threads_));
+        for (ThreadCandidates& thread : thread_candidates_) {
+            thread.found.clear();
+            thread.pair_tests = 0;
+        }
+        immediate_.reset(stepped_tuning::immediate_candidates_per_particle * local_.size() +
+                         stepped_tuning::immediate_candidates_floor);
+        const PairSearchInput input{
+            local_,
+            wall_time_,
+            box_,
+            duration,
+            !carried && start_.with_motion ? std::span<const BlockStart>(start_.blocks) : std::span<const BlockStart>(),
+            0.0,
+            &immediate_};
+        const auto count_tests = [&] {
+            for (const ThreadCandidates& thread : thread_candidates_) last_step_.pair_tests += thread.pair_tests;
+        };
+        try {
+            if (search_ == PairSearch::brute_force) {
+                find_pairs_brute_force(input, thread_candidates_);
+            } else {
+                grid_.find_pairs(input, options_.grid_cells, thread_candidates_, decisions, pairs_at_zero);
+            }
+        } catch (const CrowdedFirstSlice&) {
+            count_tests();
+            throw;
+        }
+        count_tests();
+        for (const ThreadCandidates& thread : thread_candidates_) {
+            for (const Collision& c : thread.found) {
+                if (c.i < owned_ || c.j < owned_) candidates_.push_back(c);
+            }
+        }
+    }
+
+    // Marks in left_out_ the local disks (owned or ghosts) of `decided`, by user index.
+    void leave_out(std::span<const Collision> decided) {
+        std::vector<std::pair<std::uint32_t, std::uint32_t>> local_of(user_.size());
+        for (std::uint32_t l = 0; l < user_.size(); ++l) local_of[l] = {static_cast<std::uint32_t>(user_[l]), l};
+        std::sort(local_of.begin(), local_of.end());
+        const auto mark = [&](std::uint32_t user) {
+            const auto at = std::lower_bound(local_of.begin(), local_of.end(), std::pair{user, 0U});
+            if (at != local_of.end() && at->first == user) left_out_[at->second] = user;
+        };
+        for (const Collision& c : decided) {
+            mark(c.i);
+            mark(c.j);
+        }
+    }
+
     // Every rank's disks that may have a pair at t = 0 gathered on the root,
     // which decides those pairs by the one-process rule
     // (select_immediate_pairs(): they come before every other candidate);
-    // every rank takes what was accepted, and the rounds decide the rest.
-    // Memory linear in N, where the pairs' candidates grow as a pile's size
-    // squared.
-    void decide_immediate_pairs_on_one_rank(const std::vector<Travelling>& able, double duration) {
+    // every rank gets the accepted pairs, by user index, and the rounds
+    // decide the rest. Memory linear in N, where the pairs' candidates grow
+    // as a pile's size squared.
+    std::vector<Collision> decide_immediate_pairs_on_one_rank(const std::vector<Travelling>& able, double duration) {
         std::vector<Collision> accepted;
         const std::vector<Travelling> all = gather_on_root(able, "gathering the piled particles");
         if (rank_ == root) {
@@ -308,7 +391,7 @@ public:
             }
         }
         broadcast_from_root(accepted, "sending the pairs at t = 0");
-        selection_.take_decided_first(accepted);
+        return accepted;
     }
 
     // Every rank's `mine`, one after another on the root (empty elsewhere).
@@ -533,55 +616,43 @@ private:
                                    "the carried wall times are those of the particles as they are");
             }
         }
-        candidates_.clear();
-        for (std::uint32_t k = 0; k < owned_; ++k) {
-            if (wall_time_[k] <= duration) candidates_.push_back(Collision::wall(wall_time_[k], k));
-        }
-        thread_candidates_.resize(static_cast<std::size_t>(threads_));
-        for (ThreadCandidates& thread : thread_candidates_) {
-            thread.found.clear();
-            thread.pair_tests = 0;
-        }
-        immediate_.reset(stepped_tuning::immediate_candidates_per_particle * local +
-                         stepped_tuning::immediate_candidates_floor);
-        const PairSearchInput input{
-            local_,
-            wall_time_,
-            box_,
-            duration,
-            !carried && start_.with_motion ? std::span<const BlockStart>(start_.blocks) : std::span<const BlockStart>(),
-            0.0,
-            &immediate_};
-        if (search_ == PairSearch::brute_force) {
-            find_pairs_brute_force(input, thread_candidates_);
-        } else {
-            grid_.find_pairs(input, options_.grid_cells, thread_candidates_);
-        }
-        for (const ThreadCandidates& thread : thread_candidates_) {
-            last_step_.pair_tests += thread.pair_tests;
-            for (const Collision& c : thread.found) {
-                if (c.i < owned_ || c.j < owned_) candidates_.push_back(c);
-            }
+        // A first slice crowded with piled disks stops the grid's search
+        // (DecidedAtZero): it is searched again once their pairs at t = 0
+        // are decided, without their disks.
+        left_out_.assign(local, no_collision);
+        DecidedAtZero probe(left_out_, true);
+        bool crowded = false;
+        try {
+            find_candidates(duration, carried, nullptr, &probe);
+        } catch (const CrowdedFirstSlice&) {
+            crowded = true;
         }
 
         // Select, in rounds with the neighbours.
         // wall_time_ holds each particle's first wall time up to here, then
         // the time of its accepted collision (as in the one-process engine).
-        // Where any rank's search dropped candidates at t = 0, their pairs
-        // are decided first, on one rank.
-        int dropped_immediate = immediate_.overflowed() ? 1 : 0;
-        all_reduce(&dropped_immediate, 1, MPI_INT, MPI_MAX);
-        std::vector<Travelling> able_to_pair;
-        if (dropped_immediate != 0) {
-            able_to_pair = owned_able_to_pair();
-            // Each rank kept other pairs at t = 0: all go, so that the ranks
-            // list the same shared candidates (the pairs decided first rule
-            // out every one of them).
-            std::erase_if(candidates_,
-                          [](const Collision& c) { return c.kind == CollisionKind::pair && c.time == 0.0; });
+        // Where any rank's search dropped candidates at t = 0, or stopped at
+        // a crowd, their pairs are decided first, on one rank.
+        int pairs_at_zero_first = immediate_.overflowed() || crowded ? 1 : 0;
+        all_reduce(&pairs_at_zero_first, 1, MPI_INT, MPI_MAX);
+        std::vector<Collision> decided_first;
+        if (pairs_at_zero_first != 0) {
+            decided_first = decide_immediate_pairs_on_one_rank(owned_able_to_pair(), duration);
+            leave_out(decided_first);
+            if (crowded) {
+                DecidedAtZero known(left_out_, false);
+                find_candidates(duration, carried, &known, nullptr);
+            }
+            // What is left of the pairs at t = 0, and every candidate of a
+            // disk decided, are ruled out: all go, so that the ranks list
+            // the same shared candidates whichever searched again.
+            std::erase_if(candidates_, [&](const Collision& c) {
+                return (c.kind == CollisionKind::pair && (c.time == 0.0 || left_out_[c.j] != no_collision)) ||
+                       left_out_[c.i] != no_collision;
+            });
         }
         selection_.begin(candidates_, static_cast<std::uint32_t>(owned_), user_, ghost_neighbour_, near, wall_time_);
-        if (dropped_immediate != 0) decide_immediate_pairs_on_one_rank(able_to_pair, duration);
+        if (pairs_at_zero_first != 0) selection_.take_decided_first(decided_first);
         outgoing_bytes_.resize(near);
         incoming_bytes_.resize(near);
         std::uint64_t left_before = 0;
@@ -705,6 +776,7 @@ private:
     std::vector<Collision> candidates_;
     std::vector<ThreadCandidates> thread_candidates_;
     ImmediateCandidateBudget immediate_;
+    std::vector<std::uint32_t> left_out_;  // by local disk: no_collision, or decided before the search
     GridSearch grid_;
     RankSelection selection_;
     std::vector<std::uint32_t> cell_start_;   // the sort by position's, reused

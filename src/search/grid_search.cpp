@@ -190,7 +190,8 @@ GridLayout GridSearch::choose_layout(const PairSearchInput& in, std::optional<in
 }
 
 void GridSearch::find_pairs(const PairSearchInput& in, std::optional<int> forced_cells,
-                            std::span<ThreadCandidates> buffers, SliceDecisions* decisions) {
+                            std::span<ThreadCandidates> buffers, SliceDecisions* decisions,
+                            SliceDecisions* pairs_at_zero) {
     const int threads = static_cast<int>(buffers.size());
     layout_ = choose_layout(in, forced_cells, threads);
 
@@ -215,7 +216,7 @@ void GridSearch::find_pairs(const PairSearchInput& in, std::optional<int> forced
 
     // Decisions pay where a step has enough slices for the decided
     // particles to leave out a good part of it.
-    pairs_at_zero_ = decisions;
+    pairs_at_zero_ = pairs_at_zero != nullptr ? pairs_at_zero : decisions;
     if (layout_.slices < decide_from_slices) decisions = nullptr;
     if (parallel_slices && decisions != nullptr) {
         search_slices_deciding(in, buffers, *decisions);

@@ -78,9 +78,13 @@ public:
     // collisions before them are decided, so that the slices after leave
     // out the particles already decided (the same collisions for the
     // selection, fewer paths to bin and test). Candidates the decisions
-    // did not take are left in `buffers`.
+    // did not take are left in `buffers`. Where the first slice crowds its
+    // cells with disks meeting at t = 0 (a pile), `pairs_at_zero` (by
+    // default `decisions`) is asked to decide those pairs first
+    // (SliceDecisions::decide_pairs_at_zero()), and the slice is binned again
+    // without their disks.
     void find_pairs(const PairSearchInput& in, std::optional<int> forced_cells, std::span<ThreadCandidates> buffers,
-                    SliceDecisions* decisions = nullptr);
+                    SliceDecisions* decisions = nullptr, SliceDecisions* pairs_at_zero = nullptr);
 
     // Per-slice buffers; one per thread when slices run in parallel.
     struct SliceWorkspace;  // defined in grid_search.cpp
