@@ -480,8 +480,12 @@ void piles_and_out_of_memory() {
     const auto uniform = [&](double low, double high) { return low + (high - low) * rng.uniform(); };
     for (int i = 0; i < 8000; ++i) {
         char line[160];
-        std::snprintf(line, sizeof line, "%d %.17g %.17g %.17g %.17g\n", i, 100 + uniform(-1e-6, 1e-6),
-                      100 + uniform(-1e-6, 1e-6), uniform(-5, 5), uniform(-5, 5));
+        // One draw a statement: the order of a call's arguments is the compiler's.
+        const double x = 100 + uniform(-1e-6, 1e-6);
+        const double y = 100 + uniform(-1e-6, 1e-6);
+        const double vx = uniform(-5, 5);
+        const double vy = uniform(-5, 5);
+        std::snprintf(line, sizeof line, "%d %.17g %.17g %.17g %.17g\n", i, x, y, vx, vy);
         pile += line;
     }
     char directory[] = "/tmp/particlesim-cli-XXXXXX";

@@ -485,8 +485,12 @@ void a_pile_is_judged() {
     SplitMix64 rng(9);
     const auto uniform = [&](double low, double high) { return low + (high - low) * rng.uniform(); };
     for (int k = 0; k < 600; ++k) {
-        pile.particles.push_back(Particle{Vec2(100 + uniform(-1e-9, 1e-9), 100 + uniform(-1e-9, 1e-9)),
-                                          Vec2(uniform(-5, 5), uniform(-5, 5))});
+        // One draw a statement: the order of a call's arguments is the compiler's.
+        const double x = 100 + uniform(-1e-9, 1e-9);
+        const double y = 100 + uniform(-1e-9, 1e-9);
+        const double vx = uniform(-5, 5);
+        const double vy = uniform(-5, 5);
+        pile.particles.push_back(Particle{Vec2(x, y), Vec2(vx, vy)});
     }
     pile.particle_count = pile.particles.size();
     const std::string text = scene_text(pile);

@@ -85,8 +85,12 @@ std::string pile_across_the_cuts(int count) {
     };
     for (int i = 0; i < count; ++i) {
         char line[160];
-        std::snprintf(line, sizeof line, "%d %.17g %.17g %.17g %.17g\n", i + 3, 10000 + uniform(-1e-6, 1e-6),
-                      10000 + uniform(-1e-6, 1e-6), uniform(-5, 5), uniform(-5, 5));
+        // One draw a statement: the order of a call's arguments is the compiler's.
+        const double x = 10000 + uniform(-1e-6, 1e-6);
+        const double y = 10000 + uniform(-1e-6, 1e-6);
+        const double vx = uniform(-5, 5);
+        const double vy = uniform(-5, 5);
+        std::snprintf(line, sizeof line, "%d %.17g %.17g %.17g %.17g\n", i + 3, x, y, vx, vy);
         text += line;
     }
     return write_file("pile_of_" + std::to_string(count) + "_across_the_cuts.in", text);
