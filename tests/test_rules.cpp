@@ -180,19 +180,18 @@ void selection_of_a_pile_is_the_greedy_pass() {
     CHECK_EQ(wrong, 0);
 }
 
-// A search's list of candidates grows up to its limit (an eighth of the
-// machine's memory; here 5000 candidates' worth) and then refuses with
-// std::bad_alloc, which simcli reports, instead of growing until the
-// kernel kills the process.
+// A search's list of candidates grows up to its limit (by default an
+// eighth of the machine's memory; here 5000 candidates' worth) and then
+// refuses with std::bad_alloc, which simcli reports, instead of growing
+// until the kernel kills the process.
 void a_candidate_list_grows_within_its_limit() {
     ThreadCandidates list;
-    const std::size_t most = 5000 * sizeof(Collision);
+    list.most_bytes = 5000 * sizeof(Collision);
     std::size_t added = 0;
     bool refused = false;
     try {
         for (std::uint32_t k = 0; k < 20000; ++k) {
-            if (list.found.size() == list.found.capacity()) list.grow(most);
-            list.found.push_back(Collision::pair(0.0, k, k + 1));
+            list.add(Collision::pair(0.0, k, k + 1));
             ++added;
         }
     } catch (const std::bad_alloc&) {

@@ -45,7 +45,7 @@ struct CrowdedFirstSlice : std::exception {
 // decide the rest: no stage decides anything here.
 class DecidedAtZero final : public SliceDecisions {
 public:
-    // `left_out`: by local disk, no_collision or not.
+    // `left_out`: by local disk, no_collision or not (empty while probing).
     DecidedAtZero(std::span<std::uint32_t> left_out, bool probing) : SliceDecisions(left_out), probing_(probing) {}
     void decide_before(double, std::span<ThreadCandidates>, int) override {}
     void decide_pairs_at_zero() override {
@@ -347,18 +347,15 @@ public:
         }
     }
 
-    // Marks in left_out_ the local disks (owned or ghosts) of `decided`, by user index.
+    // Marks in left_out_ (no_collision elsewhere) the local disks, owned or
+    // ghosts, of `decided`, by user index.
     void leave_out(std::span<const Collision> decided) {
-        std::vector<std::pair<std::uint32_t, std::uint32_t>> local_of(user_.size());
-        for (std::uint32_t l = 0; l < user_.size(); ++l) local_of[l] = {static_cast<std::uint32_t>(user_[l]), l};
-        std::sort(local_of.begin(), local_of.end());
-        const auto mark = [&](std::uint32_t user) {
-            const auto at = std::lower_bound(local_of.begin(), local_of.end(), std::pair{user, 0U});
-            if (at != local_of.end() && at->first == user) left_out_[at->second] = user;
-        };
+        left_out_.assign(local_.size(), no_collision);
+        const LocalByUser local(user_);
         for (const Collision& c : decided) {
-            mark(c.i);
-            mark(c.j);
+            for (const std::uint32_t user : {c.i, c.j}) {
+                if (const std::uint32_t l = local(user); l != no_collision) left_out_[l] = user;
+            }
         }
     }
 
@@ -619,8 +616,7 @@ private:
         // A first slice crowded with piled disks stops the grid's search
         // (DecidedAtZero): it is searched again once their pairs at t = 0
         // are decided, without their disks.
-        left_out_.assign(local, no_collision);
-        DecidedAtZero probe(left_out_, true);
+        DecidedAtZero probe({}, true);  // it stops the search before anything reads what it decided
         bool crowded = false;
         try {
             find_candidates(duration, carried, nullptr, &probe);

@@ -201,15 +201,18 @@ std::size_t RankSelection::take_decided_first(std::span<const Collision> accepte
     return drop_ruled_out();
 }
 
+LocalByUser::LocalByUser(std::span<const std::uint32_t> user_index) : by_user_(user_index.size()) {
+    for (std::uint32_t l = 0; l < user_index.size(); ++l) by_user_[l] = {user_index[l], l};
+    std::sort(by_user_.begin(), by_user_.end());
+}
+
+std::uint32_t LocalByUser::operator()(std::uint32_t user) const {
+    const auto at = std::lower_bound(by_user_.begin(), by_user_.end(), std::pair{user, 0U});
+    return at != by_user_.end() && at->first == user ? at->second : no_collision;
+}
+
 void RankSelection::take_of_this_rank(std::span<const Collision> accepted) {
-    // This rank's particles by user index: owned and ghosts.
-    std::vector<std::pair<std::uint32_t, std::uint32_t>> local_of(user_index_.size());
-    for (std::uint32_t l = 0; l < user_index_.size(); ++l) local_of[l] = {user_index_[l], l};
-    std::sort(local_of.begin(), local_of.end());
-    const auto local = [&](std::uint32_t user) {
-        const auto at = std::lower_bound(local_of.begin(), local_of.end(), std::pair{user, 0U});
-        return at != local_of.end() && at->first == user ? at->second : no_collision;
-    };
+    const LocalByUser local(user_index_);
     for (const Collision& c : accepted) {
         const std::uint32_t i = local(c.i);
         if (c.kind == CollisionKind::wall) {

@@ -37,9 +37,21 @@
 
 #include <cstdint>
 #include <span>
+#include <utility>
 #include <vector>
 
 namespace particlesim {
+
+// A rank's local index of each user index it holds (owned disks and
+// ghosts), or no_collision for one it does not.
+class LocalByUser {
+public:
+    explicit LocalByUser(std::span<const std::uint32_t> user_index);
+    [[nodiscard]] std::uint32_t operator()(std::uint32_t user) const;
+
+private:
+    std::vector<std::pair<std::uint32_t, std::uint32_t>> by_user_;  // (user, local), sorted
+};
 
 // The greedy pass over candidates by user index, gathered from every rank
 // (duplicates allowed), with the particles in `taken_users` taken already:

@@ -46,12 +46,11 @@ inline int worker_count(std::size_t available, std::int64_t work, std::int64_t m
 
 // body(i, thread) for i in [0, count), in chunks of `chunk` items claimed by
 // whichever of the `workers` threads is free (thread < workers). What the
-// body throws (std::bad_alloc: a list of pair candidates past its limit)
-// is caught in the region, which an
-// exception may not leave (std::terminate), and the first one is thrown
-// again on the calling thread once the region ends; the other items still
-// run (a check before each would cost every loop for a failure that ends
-// the run).
+// body throws (std::bad_alloc: a list of pair candidates past its limit) is
+// caught in the region, which an exception may not leave (std::terminate),
+// and the first one is thrown again on the calling thread once the region
+// ends; the other items still run (a check before each would cost every
+// loop for a failure that ends the run).
 template <typename Body>
 void parallel_for_dynamic(int workers, std::int64_t count, std::int64_t chunk, Body&& body) {
     if (workers <= 1 || count <= chunk || !loops_may_start_threads()) {

@@ -78,17 +78,17 @@ struct alignas(64) ThreadCandidates {
     // of k overlapping disks makes up to k^2 / 2 candidates a step where no
     // ImmediateCandidateBudget drops them (simcheck's search), and a list
     // past `most_bytes` (by default an eighth of the machine's memory)
-    // throws std::bad_alloc
-    // (simcli: "out of memory while running") before the kernel's
-    // out-of-memory killer would end the process without a word.
+    // throws std::bad_alloc (simcli: "out of memory while running") before
+    // the kernel's out-of-memory killer would end the process without a
+    // word.
     void add(const Collision& c) {
         if (found.size() == found.capacity()) [[unlikely]]
-            grow(most_bytes != 0 ? most_bytes : most_candidate_bytes());
+            grow();
         found.push_back(c);
     }
-    // Twice the room (at least 1024 candidates) up to `most_bytes`, or
+    // Twice the room (at least 1024 candidates) within the limit, or
     // std::bad_alloc where the list holds that much already.
-    void grow(std::size_t most_bytes);
+    void grow();
     // An eighth of the machine's memory, read once.
     static std::size_t most_candidate_bytes();
 };

@@ -7,8 +7,8 @@
 
 namespace particlesim {
 
-void ThreadCandidates::grow(std::size_t most_bytes) {
-    const std::size_t most = most_bytes / sizeof(Collision);
+void ThreadCandidates::grow() {
+    const std::size_t most = (most_bytes != 0 ? most_bytes : most_candidate_bytes()) / sizeof(Collision);
     if (found.capacity() >= most) throw std::bad_alloc();
     found.reserve(std::min(most, std::max<std::size_t>(1024, 2 * found.capacity())));
 }
