@@ -6,10 +6,15 @@
 #include "check.hpp"
 
 #include "core/random.hpp"
+#include "search/box_records.hpp"
 #include "search/float_bounds_array.hpp"
 
 #include <algorithm>
+#include <array>
+#include <bit>
 #include <cmath>
+#include <cstddef>
+#include <cstring>
 #include <limits>
 #include <type_traits>
 #include <vector>
@@ -215,6 +220,42 @@ void line_scans_keep_every_pair_within_reach(std::uint64_t seed, std::uint32_t c
     if (count >= 8) CHECK(kept_within_reach > 0);
 }
 
+// Records placed in cell order turn into the scans' rows float for float,
+// for any count (whole blocks of sixteen and a rest), on every path, and
+// nothing past the count is written.
+void records_turn_into_rows() {
+    SplitMix64 rng(300);
+    int wrong = 0;
+    for (const std::uint32_t count : {0U, 1U, 15U, 16U, 17U, 33U, 100U}) {
+        std::vector<BoxRecord> records(count);
+        for (BoxRecord& record : records) {
+            float floats[8];
+            for (float& f : floats) f = static_cast<float>((rng.uniform() - 0.5) * 1e6);
+            if (rng.next() % 7 == 0) floats[rng.next() % 8] = -std::numeric_limits<float>::infinity();
+            std::memcpy(&record, floats, sizeof floats);
+        }
+        for (const bool sixteen : {false, true}) {
+            if (sixteen && !has_sixteen_lanes()) continue;
+            constexpr float untouched = 12345.0f;
+            std::vector<std::vector<float>> storage(8, std::vector<float>(count + 16, untouched));
+            std::array<float*, 8> rows{};
+            for (int f = 0; f < 8; ++f) rows[f] = storage[f].data();
+            records_to_rows(reinterpret_cast<const std::byte*>(records.data()), count, rows, sixteen);
+            for (std::uint32_t k = 0; k < count; ++k) {
+                float floats[8];
+                std::memcpy(floats, &records[k], sizeof floats);
+                for (int f = 0; f < 8; ++f)
+                    wrong +=
+                        std::bit_cast<std::uint32_t>(rows[f][k]) == std::bit_cast<std::uint32_t>(floats[f]) ? 0 : 1;
+            }
+            for (int f = 0; f < 8; ++f) {
+                for (std::uint32_t k = count; k < count + 16; ++k) wrong += rows[f][k] == untouched ? 0 : 1;
+            }
+        }
+    }
+    CHECK_EQ(wrong, 0);
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -227,6 +268,7 @@ int main(int argc, char** argv) {
                             for (const std::uint32_t count : {0U, 1U, 3U, 4U, 5U, 9U, 40U, 70U})
                                 scans_report_exactly_the_overlaps(seed++, count);
                         }},
+                       {"records into rows", records_turn_into_rows},
                        {"line scans", [] {
                             std::uint64_t seed = 100;
                             for (const std::uint32_t count : {0U, 1U, 5U, 17U, 40U})

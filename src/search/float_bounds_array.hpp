@@ -4,7 +4,9 @@
 // loads and one four-lane comparison. (Stored a box a row, the four boxes had
 // to be turned into rows by six shuffles per group: 17 % more instructions
 // on the default scene. Scattering a box into cell order is four stores
-// instead of one; the dense gas did not notice, docs/benchmarks.md.)
+// instead of one; the dense gas did not notice, docs/benchmarks.md. Where
+// lines are stored too, boxes are placed as records and turned into rows
+// afterwards: box_records.hpp.)
 // Most tested boxes miss, in no predictable pattern: branch-free lanes with
 // one test per group of four cost far less than a compare-and-branch per box.
 //
@@ -19,6 +21,7 @@
 #include "search/line_test.hpp"
 
 #include <algorithm>
+#include <array>
 #include <bit>
 #include <cmath>
 #include <cstdint>
@@ -104,6 +107,14 @@ public:
     }
     [[nodiscard]] FloatLine line(std::uint32_t at) const {
         return {lines_[position_x][at], lines_[position_y][at], lines_[velocity_x][at], lines_[velocity_y][at]};
+    }
+
+    // Its rows: the four bounds, then the line's four components (BoxRecord's
+    // order). The lines' are empty before resize_lines().
+    [[nodiscard]] std::array<float*, 8> rows() {
+        return {bounds_[min_x].data(),     bounds_[min_y].data(),     bounds_[max_x].data(),
+                bounds_[max_y].data(),     lines_[position_x].data(), lines_[position_y].data(),
+                lines_[velocity_x].data(), lines_[velocity_y].data()};
     }
 
     // Calls found(m) for every stored box m in [first, last) that overlaps

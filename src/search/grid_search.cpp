@@ -5,6 +5,7 @@
 #include "core/prefetch.hpp"
 #include "core/uniform_grid.hpp"
 #include "parallel/parallel.hpp"
+#include "search/box_records.hpp"
 #include "search/float_bounds_array.hpp"
 #include "search/grid_binning_lanes.hpp"
 #include "search/path_lines.hpp"
@@ -19,6 +20,7 @@
 #include <atomic>
 #include <bit>
 #include <cmath>
+#include <cstring>
 #include <limits>
 #include <mutex>
 #include <numbers>
@@ -449,6 +451,10 @@ void GridSearch::bin_slice(const PairSearchInput& in, int slice, SliceWorkspace&
     sum_cell_places(binning);
     place_boxes(binning);
     close_cell_starts(binning);
+    if (ws.lines) {
+        records_to_rows(reinterpret_cast<const std::byte*>(ws.states_by_cell.data()), ws.cell_start[cells],
+                        ws.boxes_by_cell.rows(), lanes_ == 16);
+    }
 }
 
 // Counts each worker's boxes by cell and its large boxes; returns the boxes to place.
@@ -574,10 +580,11 @@ void GridSearch::place_boxes(const Binning& binning) const {
                                        const FloatLine& line) {
             const std::uint32_t at = next[cell]++;
             by_cell[at] = i;
-            boxes.set(at, bounds);
             if (lines) {
-                boxes.set_line(at, line);
+                BoxRecord record{bounds, line};
+                std::memcpy(static_cast<void*>(states + at), &record, sizeof record);
             } else {
+                boxes.set(at, bounds);
                 states[at] = {particles[i].position, particles[i].velocity};
             }
         };
