@@ -39,10 +39,12 @@ struct CountInput {
     const UniformGrid* grid;
 };
 
-// What it adds up.
+// What it adds up, and where it lists the paths that fit no cell whole (a
+// few, read again by the pieces' passes instead of every particle's mark).
 struct CountTally {
-    std::size_t counted = 0;  // boxes that fit a cell
-    std::uint32_t large = 0;  // paths that do not
+    std::size_t counted = 0;              // boxes that fit a cell
+    std::uint32_t large = 0;              // paths that do not
+    std::uint32_t* long_paths = nullptr;  // their particles, `large` of them so far
 };
 
 // The decided particles among `lanes` from i (bit k: particle i + k).
@@ -69,6 +71,7 @@ template <int lanes>
         cell_of[i + lane] = in_slice == 0 ? absent_marker : fitting != 0 ? cells[lane] : large_marker;
         counts[cells[lane]] += fitting;
         tally.counted += fitting;
+        tally.long_paths[tally.large] = static_cast<std::uint32_t>(i + lane);  // kept only if long
         tally.large += in_slice - fitting;
     }
 }

@@ -46,6 +46,10 @@ struct GridSearch::SliceWorkspace {
     std::vector<std::uint32_t> large;        // particles whose path fits no cell, even in pieces
     std::vector<SweptBounds> large_boxes;    // their boxes, in the same order
     std::vector<std::uint32_t> large_start;  // per worker: its first place in `large`
+    // The paths that fit no cell whole, each worker's listed from the first
+    // particle of its block on, and how many of them each worker has.
+    std::vector<std::uint32_t> long_paths;
+    std::vector<std::uint32_t> long_path_count;
     std::vector<std::uint32_t> range_start;  // per range of cells: its first place in by_cell
 };
 
@@ -319,6 +323,8 @@ void GridSearch::prepare(SliceWorkspace& ws, std::size_t count, int workers) con
     ws.large.reserve(count);
     ws.large_boxes.reserve(count);
     ws.large_start.resize(static_cast<std::size_t>(workers) + 1);
+    ws.long_paths.resize(count);
+    ws.long_path_count.resize(static_cast<std::size_t>(workers));
     ws.range_start.resize(cell_ranges_per_worker * static_cast<std::size_t>(workers) + 1);
 }
 
@@ -463,10 +469,9 @@ std::size_t GridSearch::count_boxes(const Binning& binning, bool cut_into_pieces
     SliceWorkspace& ws = binning.ws;
     const SliceSpan span = binning.span;
     // Long paths, in a loop of their own (as in the placement).
-    const auto count_pieces = [&](std::int64_t first, std::int64_t last, std::uint32_t* counts, std::size_t& counted,
-                                  std::uint32_t& large) {
-        for (std::int64_t i = first; i < last; ++i) {
-            if (ws.cell_of[i] != large_marker) continue;
+    const auto count_pieces = [&](std::span<const std::uint32_t> long_paths, std::uint32_t* counts,
+                                  std::size_t& counted, std::uint32_t& large) {
+        for (const std::uint32_t i : long_paths) {
             const int pieces = pieces_to_fit(in.particles[i], span.begin, binning.path_end(i), binning.fit);
             ws.cell_of[i] = large_marker - static_cast<std::uint32_t>(pieces);
             for (int piece = 0; piece < pieces; ++piece)
@@ -481,6 +486,7 @@ std::size_t GridSearch::count_boxes(const Binning& binning, bool cut_into_pieces
         std::fill(counts, counts + binning.cells, 0U);
         const auto [first, last] = binning.block_of(worker);
         CountTally tally;
+        tally.long_paths = ws.long_paths.data() + first;
         const auto count_one = [&](std::int64_t i) {
             if (!binning.binned(i)) {
                 ws.cell_of[i] = absent_marker;
@@ -492,6 +498,7 @@ std::size_t GridSearch::count_boxes(const Binning& binning, bool cut_into_pieces
             ws.cell_of[i] = fits ? cell : large_marker;
             counts[cell] += fits ? 1U : 0U;
             tally.counted += fits ? 1U : 0U;
+            tally.long_paths[tally.large] = static_cast<std::uint32_t>(i);  // kept only if long
             tally.large += fits ? 0U : 1U;
         };
 #if defined(__x86_64__)
@@ -509,7 +516,8 @@ std::size_t GridSearch::count_boxes(const Binning& binning, bool cut_into_pieces
         {
             for (std::int64_t i = first; i < last; ++i) count_one(i);
         }
-        if (cut_into_pieces) count_pieces(first, last, counts, tally.counted, tally.large);
+        ws.long_path_count[worker] = tally.large;
+        if (cut_into_pieces) count_pieces(std::span(tally.long_paths, tally.large), counts, tally.counted, tally.large);
         boxes += tally.counted;
         ws.large_start[worker + 1] = tally.large;
     });
@@ -622,11 +630,11 @@ void GridSearch::place_boxes(const Binning& binning) const {
             for (std::int64_t i = first; i < last; ++i) place_one(i);
         }
         std::uint32_t next_large = ws.large_start[worker];
-        for (std::int64_t i = first; i < last; ++i) {
+        // The long paths only: the count listed them.
+        for (const std::uint32_t i : std::span(ws.long_paths.data() + first, ws.long_path_count[worker])) {
             const std::uint32_t mark = ws.cell_of[i];
-            if (mark < first_piece_marker || mark == absent_marker) continue;
             if (mark == large_marker) {
-                ws.large[next_large] = static_cast<std::uint32_t>(i);
+                ws.large[next_large] = i;
                 ws.large_boxes[next_large] = binning.path_bounds(i);
                 ++next_large;
                 continue;
