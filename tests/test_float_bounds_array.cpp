@@ -134,6 +134,15 @@ bool has_sixteen_lanes() {
 #endif
 }
 
+// The records' eight-lane transpose: x86-64 with AVX2.
+bool has_eight_lanes() {
+#if defined(__x86_64__)
+    return __builtin_cpu_supports("avx2") != 0;
+#else
+    return false;
+#endif
+}
+
 // Every range of an array of boxes with lines, scanned with the line test in
 // every lane width and block size: what is reported is a box overlap, every
 // overlap whose lines pass within reach (in double, before the rounding to
@@ -234,13 +243,13 @@ void records_turn_into_rows() {
             if (rng.next() % 7 == 0) floats[rng.next() % 8] = -std::numeric_limits<float>::infinity();
             std::memcpy(&record, floats, sizeof floats);
         }
-        for (const bool sixteen : {false, true}) {
-            if (sixteen && !has_sixteen_lanes()) continue;
+        for (const int lanes : {4, 8, 16}) {
+            if ((lanes == 16 && !has_sixteen_lanes()) || (lanes == 8 && !has_eight_lanes())) continue;
             constexpr float untouched = 12345.0f;
             std::vector<std::vector<float>> storage(8, std::vector<float>(count + 16, untouched));
             std::array<float*, 8> rows{};
             for (int f = 0; f < 8; ++f) rows[f] = storage[f].data();
-            records_to_rows(reinterpret_cast<const std::byte*>(records.data()), count, rows, sixteen);
+            records_to_rows(reinterpret_cast<const std::byte*>(records.data()), count, rows, lanes);
             for (std::uint32_t k = 0; k < count; ++k) {
                 float floats[8];
                 std::memcpy(floats, &records[k], sizeof floats);

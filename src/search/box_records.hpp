@@ -27,8 +27,9 @@ using RecordRows = const std::array<float*, 8>&;
 // rows[f][k] = float f of record k, for k < count, of the records stored as
 // bytes from `records` (32 a record, as a BoxRecord's: the grid search keeps
 // them in the room of the motion states that its scans with lines do not
-// copy). `sixteen_lanes`: with AVX-512 permutations, sixteen records at a
-// time (the processor must have it); the same floats either way.
-void records_to_rows(const std::byte* records, std::uint32_t count, RecordRows rows, bool sixteen_lanes);
+// copy). `lanes`: 16, sixteen records at a time by AVX-512 permutations;
+// 8, eight at a time by AVX2's transpose (x86-64; the processor must have
+// them); else one at a time. The same floats every way.
+void records_to_rows(const std::byte* records, std::uint32_t count, RecordRows rows, int lanes);
 
 }  // namespace particlesim

@@ -459,7 +459,7 @@ void GridSearch::bin_slice(const PairSearchInput& in, int slice, SliceWorkspace&
     close_cell_starts(binning);
     if (ws.lines) {
         records_to_rows(reinterpret_cast<const std::byte*>(ws.states_by_cell.data()), ws.cell_start[cells],
-                        ws.boxes_by_cell.rows(), lanes_ == 16);
+                        ws.boxes_by_cell.rows(), lanes_);
     }
 }
 
