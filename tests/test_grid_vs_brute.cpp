@@ -325,6 +325,20 @@ int main(int argc, char** argv) {
                   CHECK_EQ(run_hash(scene, {.pair_search = PairSearch::paths, .threads = threads}), reference);
               }
           }},
+         // The rules' density and speeds at 6000 disks: each slice's scans
+         // test lines, and its box records (over 4096) are turned into rows
+         // in more than one block.
+         {"many box records in a slice",
+          [] {
+              NamedScene scene{"6000 at the rules' density", World{20000.0 * std::sqrt(6.0), 1.0}, 2, {}};
+              scene.particles = make_random_particles(6000, scene.world, {11, SpeedRange{2500.0, 5000.0}});
+              for (std::uint64_t k = 0; k < 3; ++k) {
+                  const int lanes = lanes_for(k);
+                  const int threads = k == 0 ? 1 : 2;
+                  const check::Context context(lanes, " lanes, ", threads, " threads");
+                  CHECK(same_candidates_every_step(scene, std::nullopt, threads, lanes));
+              }
+          }},
          // Clusters of fast particles crowd a few cells, and many of their paths
          // are too long for a cell: cut into pieces, set aside as large boxes, or
          // (when the pieces would overflow the buffers) recounted as large.

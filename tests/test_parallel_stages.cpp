@@ -75,6 +75,15 @@ void two_threads_give_one_threads_bits() {
          {.pair_search = PairSearch::grid},
          std::nullopt,
          300},
+        // The rules' density and speeds from 50 000 disks: each slice shared
+        // by the threads, its scans testing lines, its box records turned
+        // into rows in blocks on both threads.
+        {"grid, shared slices with lines",
+         World{20000.0 * std::sqrt(65.536), 1.0},
+         65536,
+         2,
+         {.pair_search = PairSearch::grid},
+         SpeedRange{2500.0, 5000.0}},
         {"paths search", World{20000.0, 1.0}, 6000, 6, {.pair_search = PairSearch::paths}, std::nullopt},
         {"brute force", World{250.0, 1.0}, 3000, 2, {.pair_search = PairSearch::brute_force}, slow},
     };

@@ -458,8 +458,17 @@ void GridSearch::bin_slice(const PairSearchInput& in, int slice, SliceWorkspace&
     place_boxes(binning);
     close_cell_starts(binning);
     if (ws.lines) {
-        records_to_rows(reinterpret_cast<const std::byte*>(ws.states_by_cell.data()), ws.cell_start[cells],
-                        ws.boxes_by_cell.rows(), lanes_);
+        // Blocks of records on the slice's workers (sixteen records a whole number of times each).
+        constexpr std::int64_t records_block = 4096;
+        const std::array<float*, 8> rows = ws.boxes_by_cell.rows();
+        const auto* records = reinterpret_cast<const std::byte*>(ws.states_by_cell.data());
+        parallel_for_blocks(threads, ws.cell_start[cells], records_block,
+                            [&](std::int64_t, std::int64_t first, std::int64_t last) {
+                                std::array<float*, 8> block_rows = rows;
+                                for (float*& row : block_rows) row += first;
+                                records_to_rows(records + first * std::int64_t{sizeof(BoxRecord)},
+                                                static_cast<std::uint32_t>(last - first), block_rows, lanes_);
+                            });
     }
 }
 
