@@ -598,6 +598,7 @@ void GridSearch::place_boxes(const Binning& binning) const {
             const std::uint32_t at = next[cell]++;
             by_cell[at] = i;
             if (lines) {
+                // One aligned 32-byte store into the states' room (box_records.hpp).
                 BoxRecord record{bounds, line};
                 std::memcpy(static_cast<void*>(states + at), &record, sizeof record);
             } else {
