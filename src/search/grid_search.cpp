@@ -51,6 +51,10 @@ struct GridSearch::SliceWorkspace {
     std::vector<std::uint32_t> long_paths;
     std::vector<std::uint32_t> long_path_count;
     std::vector<std::uint32_t> range_start;  // per range of cells: its first place in by_cell
+    // Per cell, the lowest float min_x and min_y of its boxes (+inf when
+    // empty): a box whose max_x (max_y) is below them meets none of them,
+    // and the scan leaves the cell out.
+    std::vector<float> cell_lowest_x, cell_lowest_y;
 };
 
 using namespace stepped_tuning;
@@ -319,6 +323,8 @@ void GridSearch::prepare(SliceWorkspace& ws, std::size_t count, int workers) con
         ws.boxes_by_cell.resize_lines();
     ws.states_by_cell.resize(boxes);
     ws.cell_start.resize(cells + 1);
+    ws.cell_lowest_x.resize(cells);
+    ws.cell_lowest_y.resize(cells);
     ws.cell_fill.resize(cells * static_cast<std::size_t>(workers - 1));  // counts of workers 1, 2, ...
     ws.large.reserve(count);
     ws.large_boxes.reserve(count);
@@ -470,6 +476,26 @@ void GridSearch::bin_slice(const PairSearchInput& in, int slice, SliceWorkspace&
                                                 static_cast<std::uint32_t>(last - first), block_rows, lanes_);
                             });
     }
+    if (ws.lines) find_cell_lowest(binning);
+}
+
+void GridSearch::find_cell_lowest(const Binning& binning) const {
+    SliceWorkspace& ws = binning.ws;
+    const std::array<float*, 8> rows = ws.boxes_by_cell.rows();
+    const float* min_x = rows[0];
+    const float* min_y = rows[1];
+    binning.for_each_range([&](std::int64_t, std::int64_t first, std::int64_t last) {
+        for (std::int64_t cell = first; cell < last; ++cell) {
+            float lowest_x = std::numeric_limits<float>::infinity();
+            float lowest_y = lowest_x;
+            for (std::uint32_t k = ws.cell_start[cell]; k < ws.cell_start[cell + 1]; ++k) {
+                lowest_x = std::min(lowest_x, min_x[k]);
+                lowest_y = std::min(lowest_y, min_y[k]);
+            }
+            ws.cell_lowest_x[cell] = lowest_x;
+            ws.cell_lowest_y[cell] = lowest_y;
+        }
+    });
 }
 
 // Counts each worker's boxes by cell and its large boxes; returns the boxes to place.
@@ -767,6 +793,10 @@ template <std::uint32_t block_groups, std::uint32_t group_lanes, bool with_lines
         }
     }
     ();
+    // (Kept only where the scans test lines: find_cell_lowest().)
+    constexpr float nowhere = std::numeric_limits<float>::infinity();
+    const float* lowest_x = ws.cell_lowest_x.data();
+    const float* lowest_y = ws.cell_lowest_y.data();
     for (int cx = 0; cx < side; ++cx) {
         const std::int64_t cell = row + cx;
         const std::uint32_t first = start[cell];
@@ -777,20 +807,51 @@ template <std::uint32_t block_groups, std::uint32_t group_lanes, bool with_lines
             prefetch(states + std::min(ahead + 1, boxes_binned));
         }
         if (first == last) continue;
-        const std::uint32_t east_last = start[cell + (cx + 1 < side ? 2 : 1)];
+        // Where a box's far edges fall short of every box of the cell to the
+        // east, of the cells above, or of the one above to the east, it
+        // leaves them out of its ranges: the same pairs, fewer blocks (with
+        // lines: cells of several boxes, about a third of which reach up or
+        // to the east).
+        const bool east = cx + 1 < side;
+        const std::uint32_t east_last = start[cell + (east ? 2 : 1)];
+        const float east_lowest_x = with_lines && east ? lowest_x[cell + 1] : nowhere;
         std::uint32_t above_first = 0;
         std::uint32_t above_last = 0;
+        std::uint32_t north_last = 0;  // the above range without the cell to the east
+        float above_lowest_y = nowhere;
+        float north_east_lowest_x = nowhere;
         if (cy + 1 < side) {
-            above_first = start[row + side + std::max(cx - 1, 0)];
-            above_last = start[row + side + std::min(cx + 1, side - 1) + 1];
+            const std::int64_t north = row + side + cx;
+            above_first = start[north - (cx > 0 ? 1 : 0)];
+            north_last = start[north + 1];
+            above_last = start[north + (east ? 2 : 1)];
+            if (with_lines) {
+                above_lowest_y = std::min(lowest_y[north], cx > 0 ? lowest_y[north - 1] : nowhere);
+                if (east) {
+                    above_lowest_y = std::min(above_lowest_y, lowest_y[north + 1]);
+                    north_east_lowest_x = lowest_x[north + 1];
+                }
+            }
         }
         for (std::uint32_t k = first; k < last; ++k) {
             const FloatLine line = with_lines ? boxes.line(k) : FloatLine{};
             const PairTestState state = with_lines ? PairTestState{} : states[k];  // not copied where lines are tested
-            test_against_range<block_groups, group_lanes, with_lines>(in, ws, ids[k], boxes[k], line, terms, state,
-                                                                      k + 1, east_last, tests);
-            test_against_range<block_groups, group_lanes, with_lines>(in, ws, ids[k], boxes[k], line, terms, state,
-                                                                      above_first, above_last, tests);
+            const FloatBounds box = boxes[k];
+            if constexpr (!with_lines) {  // about a box a cell: the whole stencil, without branches
+                test_against_range<block_groups, group_lanes, with_lines>(in, ws, ids[k], box, line, terms, state,
+                                                                          k + 1, east_last, tests);
+                test_against_range<block_groups, group_lanes, with_lines>(in, ws, ids[k], box, line, terms, state,
+                                                                          above_first, above_last, tests);
+                continue;
+            }
+            const std::uint32_t near_last = box.max_x >= east_lowest_x ? east_last : last;
+            test_against_range<block_groups, group_lanes, with_lines>(in, ws, ids[k], box, line, terms, state, k + 1,
+                                                                      near_last, tests);
+            if (box.max_y >= above_lowest_y) {
+                const std::uint32_t far_last = box.max_x >= north_east_lowest_x ? above_last : north_last;
+                test_against_range<block_groups, group_lanes, with_lines>(in, ws, ids[k], box, line, terms, state,
+                                                                          above_first, far_last, tests);
+            }
         }
     }
     if constexpr (with_lines) deferred.finish();

@@ -137,6 +137,9 @@ private:
     void sum_cell_places(const Binning& binning) const;
     void place_boxes(const Binning& binning) const;
     void close_cell_starts(const Binning& binning) const;
+    // The lowest bounds of each cell's boxes, which let the scans leave out
+    // the neighbours a box cannot reach.
+    void find_cell_lowest(const Binning& binning) const;
     void test_small_pairs(const PairSearchInput& in, const SliceWorkspace& ws, std::span<ThreadCandidates> out,
                           int threads) const;
     void test_large_pairs(const PairSearchInput& in, const SliceWorkspace& ws, std::span<ThreadCandidates> out,
