@@ -265,8 +265,10 @@ void sizes_benchmark(bool quick) {
 
 // Which search `auto` takes, against both forced, one thread, rounds
 // alternating: the rules' random scene at the default density (speeds L/8 to
-// L/4, as the rules draw them), the gas at area fraction 0.3, and the rules'
-// random scene in the default box (L = 20000).
+// L/4, as the rules draw them), the gas at area fraction 0.3, the rules'
+// random scene in the default box (L = 20000), and the sizes benchmark's
+// family (the default density with the default scene's speeds, 2500 to 5000
+// a step) where its choice is close.
 void choice_benchmark(bool quick) {
     std::printf(
         "scene,n,box_size,steps,rounds,auto,paths_median_s_per_step,grid_median_s_per_step,slower_over_faster\n");
@@ -284,6 +286,11 @@ void choice_benchmark(bool quick) {
     }
     for (const std::size_t n : {64, 200, 1000, 2000, 4000, 8000, 16000}) {
         cases.push_back({"L = 20000", n, 20000.0, std::nullopt});
+    }
+    for (const std::size_t n : {1024, 2048, 4096, 8192, 12000, 16384}) {
+        const double nd = static_cast<double>(n);
+        cases.push_back(
+            {"default density and speeds", n, 20000.0 * std::sqrt(nd / 1000.0), SpeedRange{2500.0, 5000.0}});
     }
     const int rounds = quick ? 1 : 3;
     for (const ChoiceCase& c : cases) {

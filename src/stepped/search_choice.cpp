@@ -35,9 +35,11 @@ SearchCosts estimate_search_costs(const World& world, std::span<const Particle> 
     costs.slices = time_slices(speeds / count * micro, slice_sweep_in_spacings * spacing);
     // Each new line is tested against every line; the lines that pass (about
     // 4r / L of them, more in a small box) get the exact interval.
-    const double line_test_ns = PathLines::supports_lanes(16) ? paths_line_test_sixteen_lanes_ns : paths_line_test_ns;
+    const bool sixteen_lanes = PathLines::supports_lanes(16);
+    const double line_test_ns = sixteen_lanes ? paths_line_test_sixteen_lanes_ns : paths_line_test_ns;
+    const double new_line_ns = sixteen_lanes ? paths_new_line_sixteen_lanes_ns : paths_new_line_ns;
     const double per_line_test = line_test_ns + paths_near_line_ns * std::min(1.0, 4.0 * r / box);
-    costs.paths_ns = costs.new_lines * (paths_new_line_ns + count * per_line_test);
+    costs.paths_ns = costs.new_lines * (new_line_ns + count * per_line_test);
     const double slice_ns =
         GridSearch::supports_lanes(16) ? grid_particle_slice_sixteen_lanes_ns : grid_particle_slice_ns;
     costs.grid_ns = count * (grid_particle_ns + slice_ns * costs.slices);

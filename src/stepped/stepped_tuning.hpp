@@ -25,24 +25,23 @@ inline constexpr std::size_t brute_force_below = 48;
 inline constexpr double paths_new_line_ns = 180.0;
 // ... plus this for each line it is tested against (eight lanes) ...
 inline constexpr double paths_line_test_ns = 0.16;
-// ... or this where the processor tests sixteen lines at a time (AVX-512):
-// fitted to both searches forced on the same scenes on a processor with
-// AVX-512, where the paths search was the faster at 8000 disks in L =
-// 20000 (1.33 times) and at 16384 at the default density (1.23 times); each
-// scene's measured ratio asks for 0.05 to 0.09.
-inline constexpr double paths_line_test_sixteen_lanes_ns = 0.06;
+// ... or these where the processor tests sixteen lines at a time (AVX-512):
+// fitted to both searches forced on an Intel host with AVX-512
+// (search_choice_sizes_family.csv), where the model takes the faster on
+// all 21 scenes (the grid at 8192 and 16384 disks at the default density
+// and speeds, 1.32 and 2.08 times faster; 4000 in L = 20000 a tie), and on
+// an AMD host's run before the grid placed its boxes as records
+// (search_choice_grid_lines.csv) on 14 of 15, the miss 1.21 times.
+inline constexpr double paths_new_line_sixteen_lanes_ns = 50.0;
+inline constexpr double paths_line_test_sixteen_lanes_ns = 0.11;
 // ... plus this times the fraction that pass (about 4r / L): their intervals.
 inline constexpr double paths_near_line_ns = 100.0;
 // The grid: each particle, plus this for each time slice it is binned in ...
 inline constexpr double grid_particle_ns = 30.0;
 inline constexpr double grid_particle_slice_ns = 60.0;
 // ... or this where the grid scans sixteen boxes and lines at a time
-// (AVX-512): fitted to both searches forced on the same scenes on a
-// processor with AVX-512 (search_choice_grid_lines.csv), where the grid was
-// the faster at 8000 disks in L = 20000 (1.40 times) and at 16384 at the
-// default density (1.51 times), and the paths search at 4000 in L = 20000
-// (1.21 times).
-inline constexpr double grid_particle_slice_sixteen_lanes_ns = 35.0;
+// (AVX-512), fitted with the paths search's sixteen lanes above.
+inline constexpr double grid_particle_slice_sixteen_lanes_ns = 27.0;
 // Particles up to which the paths search may be chosen: its first
 // micro-step tests all N^2 / 2 pairs.
 inline constexpr std::size_t paths_up_to = 20000;
