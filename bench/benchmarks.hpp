@@ -1,6 +1,7 @@
 #pragma once
 // The benchmark modes of particlesim_bench; each prints CSV on stdout.
 
+#include "particlesim/random_scene.hpp"
 #include "particlesim/world.hpp"
 
 #include <cmath>
@@ -14,6 +15,14 @@ namespace bench {
 inline particlesim::World dense_gas_world(std::size_t count) {
     return particlesim::World{std::sqrt(static_cast<double>(count) * std::numbers::pi / 0.3), 1.0};
 }
+
+// The default scene's density (1000 disks of radius 1 in L = 20000) for
+// `count` disks, and its speeds as the rules draw them there (L/8 to L/4 of
+// L = 20000 a step), kept whatever the box: the sizes benchmark's family.
+inline particlesim::World default_density_world(std::size_t count) {
+    return particlesim::World{20000.0 * std::sqrt(static_cast<double>(count) / 1000.0), 1.0};
+}
+inline constexpr particlesim::SpeedRange default_scene_speeds{2500.0, 5000.0};
 
 // The simcli built beside the harness; exits naming `mode` when the apps were not built.
 std::string simcli_path(const char* mode);

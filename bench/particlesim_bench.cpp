@@ -246,7 +246,7 @@ void sizes_benchmark(bool quick) {
     for (const std::size_t n : sizes) {
         if (n > largest) break;
         const double nd = static_cast<double>(n);
-        const double default_box = 20000.0 * std::sqrt(nd / 1000.0);
+        const double default_box = default_density_world(n).box_size;
         const double gas_box = dense_gas_world(n).box_size;
         for (const int threads : {1, 2}) {
             // Guesses of the time a step, for about `target` seconds a run.
@@ -254,8 +254,8 @@ void sizes_benchmark(bool quick) {
             // every 8 steps (from 65536 particles), a cost of the steady state.
             const double guess = 2e-7 * nd + 2e-6;
             const std::int64_t steps = steps_for(guess, target, 100000, 8);
-            cases.push_back({"default density", n, default_box, 1.0, steps, SpeedRange{2500.0, 5000.0},
-                             PairSearch::automatic, threads, 1});
+            cases.push_back({"default density", n, default_box, 1.0, steps, default_scene_speeds, PairSearch::automatic,
+                             threads, 1});
             cases.push_back(
                 {"area fraction 0.3", n, gas_box, 1.0, steps, SpeedRange{0.1, 1.0}, PairSearch::automatic, threads, 1});
         }
@@ -280,17 +280,14 @@ void choice_benchmark(bool quick) {
     };
     std::vector<ChoiceCase> cases;
     for (const std::size_t n : {256, 1024, 4096, 16384}) {
-        const double nd = static_cast<double>(n);
-        cases.push_back({"default density", n, 20000.0 * std::sqrt(nd / 1000.0), std::nullopt});
+        cases.push_back({"default density", n, default_density_world(n).box_size, std::nullopt});
         cases.push_back({"area fraction 0.3", n, dense_gas_world(n).box_size, SpeedRange{0.1, 1.0}});
     }
     for (const std::size_t n : {64, 200, 1000, 2000, 4000, 8000, 16000}) {
         cases.push_back({"L = 20000", n, 20000.0, std::nullopt});
     }
     for (const std::size_t n : {1024, 2048, 4096, 8192, 12000, 16384}) {
-        const double nd = static_cast<double>(n);
-        cases.push_back(
-            {"default density and speeds", n, 20000.0 * std::sqrt(nd / 1000.0), SpeedRange{2500.0, 5000.0}});
+        cases.push_back({"default density and speeds", n, default_density_world(n).box_size, default_scene_speeds});
     }
     const int rounds = quick ? 1 : 3;
     for (const ChoiceCase& c : cases) {

@@ -68,8 +68,9 @@ struct MeasuredScene {
 
 void check_choices(std::span<const MeasuredScene> measured, const char* lanes) {
     for (const MeasuredScene& m : measured) {
-        check::Context context(m.what, ": chose ", name(chosen(m.scene)), lanes);
-        CHECK(chosen(m.scene) == m.faster);
+        const PairSearch choice = chosen(m.scene);
+        check::Context context(m.what, ": chose ", name(choice), lanes);
+        CHECK(choice == m.faster);
     }
 }
 
