@@ -1,4 +1,5 @@
 #include "search/box_records.hpp"
+#include "search/float_transpose.hpp"
 
 #include <array>
 #include <cstring>
@@ -143,7 +144,7 @@ constexpr Permutations record_permutations = permutations();
 }
 
 // Eight records (an 8 x 8 matrix of floats) turned into eight rows of eight
-// by the usual transpose: unpacks, shuffles and lane swaps, 24 in all.
+// by transpose_eight().
 [[gnu::target("avx2")]] void records_to_rows_eight(const std::byte* records, std::uint32_t count, RecordRows rows) {
     std::uint32_t k = 0;
     for (; k + 8 <= count; k += 8) {
@@ -151,23 +152,9 @@ constexpr Permutations record_permutations = permutations();
         const auto* from = reinterpret_cast<const float*>(records + std::size_t{k} * sizeof(BoxRecord));
         __m256 record[8];
         for (int j = 0; j < 8; ++j) record[j] = _mm256_loadu_ps(from + 8 * j);
-        __m256 pairs[8];  // records 2m and 2m + 1 interleaved, low and high floats of each half
-        for (int m = 0; m < 4; ++m) {
-            pairs[2 * m] = _mm256_unpacklo_ps(record[2 * m], record[2 * m + 1]);
-            pairs[2 * m + 1] = _mm256_unpackhi_ps(record[2 * m], record[2 * m + 1]);
-        }
-        __m256 quads[8];  // records 4q to 4q + 3, one float of each half
-        for (int q = 0; q < 2; ++q) {
-            const __m256* low = pairs + 4 * q;
-            quads[4 * q] = _mm256_shuffle_ps(low[0], low[2], 0x44);
-            quads[4 * q + 1] = _mm256_shuffle_ps(low[0], low[2], 0xEE);
-            quads[4 * q + 2] = _mm256_shuffle_ps(low[1], low[3], 0x44);
-            quads[4 * q + 3] = _mm256_shuffle_ps(low[1], low[3], 0xEE);
-        }
-        for (int field = 0; field < 4; ++field) {
-            _mm256_storeu_ps(rows[field] + k, _mm256_permute2f128_ps(quads[field], quads[4 + field], 0x20));
-            _mm256_storeu_ps(rows[4 + field] + k, _mm256_permute2f128_ps(quads[field], quads[4 + field], 0x31));
-        }
+        __m256 row[8];
+        transpose_eight(record, row);
+        for (int field = 0; field < 8; ++field) _mm256_storeu_ps(rows[field] + k, row[field]);
     }
     records_to_rows_one_by_one(records, k, count, rows);
 }

@@ -10,7 +10,9 @@
 
 #include "core/uniform_grid.hpp"
 #include "particlesim/particle.hpp"
+#include "search/box_records.hpp"
 #include "search/float_bounds_array.hpp"
+#include "search/float_transpose.hpp"
 #include "search/pair_search.hpp"
 #include "stepped/stepped_tuning.hpp"
 
@@ -93,8 +95,8 @@ template <int lanes>
     return placed;
 }
 
-// store(particle, bounds, line) for each placed one of `lanes` particles
-// from i: bounds[b][k] and line[c][k] are particle i + k's bound b and line
+// store(particle, record) for each placed one of `lanes` particles from i:
+// bounds[b][k] and line[c][k] are particle i + k's bound b and line
 // component c (read only where `with_lines`: a zero line otherwise).
 template <int lanes, typename Store>
 [[gnu::always_inline]] inline void store_lanes(std::int64_t i, unsigned placed, bool with_lines,
@@ -103,8 +105,9 @@ template <int lanes, typename Store>
     for (; placed != 0; placed &= placed - 1) {
         const int lane = std::countr_zero(placed);
         store(static_cast<std::uint32_t>(i + lane),
-              FloatBounds{bounds[0][lane], bounds[1][lane], bounds[2][lane], bounds[3][lane]},
-              with_lines ? FloatLine{line[0][lane], line[1][lane], line[2][lane], line[3][lane]} : FloatLine{});
+              BoxRecord{
+                  FloatBounds{bounds[0][lane], bounds[1][lane], bounds[2][lane], bounds[3][lane]},
+                  with_lines ? FloatLine{line[0][lane], line[1][lane], line[2][lane], line[3][lane]} : FloatLine{}});
     }
 }
 
@@ -176,6 +179,33 @@ struct EightPaths {
     return paths;
 }
 
+// tally_lanes<8>() in AVX-512 lanes: the eight marks in one store, the long
+// paths' particles compress-stored, and the counts added lane by lane
+// (neighbours in storage often share a cell, so a scatter would not do).
+[[gnu::target("avx512f"), gnu::always_inline]] inline void tally_eight(std::int64_t i, unsigned binned, unsigned fits,
+                                                                       __m256i cells, std::uint32_t* cell_of,
+                                                                       std::uint32_t* counts, CountTally& tally) {
+    const auto in_slice = static_cast<__mmask16>(binned & 0xFFU);
+    const auto fitting = static_cast<__mmask16>(binned & fits & 0xFFU);
+    const auto long_path = static_cast<__mmask16>(in_slice & ~fitting);
+    const __m512i cells_wide = _mm512_castsi256_si512(cells);  // lanes 8 to 15 undefined, and masked off
+    const __m512i marks =
+        _mm512_mask_blend_epi32(fitting,
+                                _mm512_mask_blend_epi32(in_slice, _mm512_set1_epi32(static_cast<int>(absent_marker)),
+                                                        _mm512_set1_epi32(static_cast<int>(large_marker))),
+                                cells_wide);
+    _mm512_mask_storeu_epi32(cell_of + i, 0xFF, marks);
+    const __m512i particles = _mm512_add_epi32(_mm512_set1_epi32(static_cast<int>(i)),
+                                               _mm512_setr_epi32(0, 1, 2, 3, 4, 5, 6, 7, 0, 0, 0, 0, 0, 0, 0, 0));
+    _mm512_mask_compressstoreu_epi32(tally.long_paths + tally.large, long_path, particles);
+    alignas(32) std::uint32_t cell[8];
+    _mm256_store_si256(reinterpret_cast<__m256i*>(cell), cells);
+    for (int lane = 0; lane < 8; ++lane) counts[cell[lane]] += (fitting >> lane) & 1U;
+    const auto fitting_count = static_cast<unsigned>(std::popcount(static_cast<unsigned>(fitting)));
+    tally.counted += fitting_count;
+    tally.large += static_cast<unsigned>(std::popcount(static_cast<unsigned>(in_slice))) - fitting_count;
+}
+
 // The count's loop over particles [first, last), eight at a time in AVX-512
 // lanes (the rest one at a time by `one`): whether each is binned, its
 // path's box, whether that fits a cell, and the cell. Every lane carries out
@@ -193,6 +223,7 @@ template <typename CountOne>
     const __m512d inverse_cell = _mm512_set1_pd(1.0 / in.grid->cell_size());
     const __m512d last_column = _mm512_set1_pd(static_cast<double>(in.grid->per_side() - 1));
     const __m256i side = _mm256_set1_epi32(in.grid->per_side());
+    CountTally local = tally;  // in registers: a store to the marks or counts could otherwise be to its fields
     std::int64_t i = first;
     for (; i + 8 <= last; i += 8) {
         const EightPaths paths = eight_paths(in, i);
@@ -206,10 +237,10 @@ template <typename CountOne>
             lanes_truncated(lanes_min(lanes_max(_mm512_mul_pd(paths.min_x, inverse_cell), zero), last_column));
         const __m256i row =
             lanes_truncated(lanes_min(lanes_max(_mm512_mul_pd(paths.min_y, inverse_cell), zero), last_column));
-        alignas(32) std::uint32_t cells[8];
-        _mm256_store_si256(reinterpret_cast<__m256i*>(cells), _mm256_add_epi32(_mm256_mullo_epi32(row, side), column));
-        tally_lanes<8>(i, binned & ~decided_lanes<8>(in, i), fits, cells, cell_of, counts, tally);
+        const __m256i cells = _mm256_add_epi32(_mm256_mullo_epi32(row, side), column);
+        tally_eight(i, binned & ~decided_lanes<8>(in, i), fits, cells, cell_of, counts, local);
     }
+    tally = local;
     for (; i < last; ++i) one(i);
 }
 
@@ -234,9 +265,9 @@ template <bool at_least>
 
 // The placement's loop over particles [first, last) whose mark is a cell,
 // eight at a time in AVX-512 lanes: each path's box (eight_paths(), as the
-// count computes it), its float bounds and its line, then each stored at its
-// place lane by lane by `store(particle, bounds, line)` (the last few one at
-// a time by `one`).
+// count computes it), its float bounds and its line turned into records,
+// then each stored at its place lane by lane by `store(particle, record)`
+// (the last few one at a time by `one`).
 template <typename Store, typename PlaceOne>
 [[gnu::target("avx512f")]] void place_paths_eight(const CountInput& in, const PlaceInput& place, std::int64_t first,
                                                   std::int64_t last, const std::uint32_t* cell_of, Store&& store,
@@ -260,21 +291,30 @@ template <typename Store, typename PlaceOne>
             max_x = _mm512_mul_pd(max_x, float_scale);
             max_y = _mm512_mul_pd(max_y, float_scale);
         }
-        alignas(32) float bounds[4][8];
-        _mm256_store_ps(bounds[0], lanes_rounded_outwards<false>(min_x));
-        _mm256_store_ps(bounds[1], lanes_rounded_outwards<false>(min_y));
-        _mm256_store_ps(bounds[2], lanes_rounded_outwards<true>(max_x));
-        _mm256_store_ps(bounds[3], lanes_rounded_outwards<true>(max_y));
-        alignas(32) float line[4][8];
+        // The eight fields of each lane, turned into the lanes' records.
+        __m256 fields[8] = {lanes_rounded_outwards<false>(min_x),
+                            lanes_rounded_outwards<false>(min_y),
+                            lanes_rounded_outwards<true>(max_x),
+                            lanes_rounded_outwards<true>(max_y),
+                            _mm256_setzero_ps(),
+                            _mm256_setzero_ps(),
+                            _mm256_setzero_ps(),
+                            _mm256_setzero_ps()};
         if (place.lines) {  // float_line()
-            _mm256_store_ps(line[0], _mm512_mask_cvtpd_ps(_mm256_setzero_ps(), 0xFF, _mm512_mul_pd(x, position_scale)));
-            _mm256_store_ps(line[1], _mm512_mask_cvtpd_ps(_mm256_setzero_ps(), 0xFF, _mm512_mul_pd(y, position_scale)));
-            _mm256_store_ps(line[2],
-                            _mm512_mask_cvtpd_ps(_mm256_setzero_ps(), 0xFF, _mm512_mul_pd(vx, velocity_scale)));
-            _mm256_store_ps(line[3],
-                            _mm512_mask_cvtpd_ps(_mm256_setzero_ps(), 0xFF, _mm512_mul_pd(vy, velocity_scale)));
+            fields[4] = _mm512_mask_cvtpd_ps(_mm256_setzero_ps(), 0xFF, _mm512_mul_pd(x, position_scale));
+            fields[5] = _mm512_mask_cvtpd_ps(_mm256_setzero_ps(), 0xFF, _mm512_mul_pd(y, position_scale));
+            fields[6] = _mm512_mask_cvtpd_ps(_mm256_setzero_ps(), 0xFF, _mm512_mul_pd(vx, velocity_scale));
+            fields[7] = _mm512_mask_cvtpd_ps(_mm256_setzero_ps(), 0xFF, _mm512_mul_pd(vy, velocity_scale));
         }
-        store_lanes<8>(i, placed, place.lines, bounds, line, store);
+        __m256 lane_records[8];
+        transpose_eight(fields, lane_records);
+        alignas(32) BoxRecord records[8];
+        for (int lane = 0; lane < 8; ++lane)
+            _mm256_store_ps(reinterpret_cast<float*>(records + lane), lane_records[lane]);
+        for (unsigned left = placed; left != 0; left &= left - 1) {
+            const int lane = std::countr_zero(left);
+            store(static_cast<std::uint32_t>(i + lane), records[lane]);
+        }
     }
     for (; i < last; ++i) one(i);
 }
@@ -351,6 +391,7 @@ template <typename CountOne>
     const __m256d inverse_cell = _mm256_set1_pd(1.0 / in.grid->cell_size());
     const __m256d last_column = _mm256_set1_pd(static_cast<double>(in.grid->per_side() - 1));
     const __m128i side = _mm_set1_epi32(in.grid->per_side());
+    CountTally local = tally;  // in registers, as in count_paths_eight()
     std::int64_t i = first;
     for (; i + 4 <= last; i += 4) {
         const FourPaths paths = four_paths(in, i);
@@ -365,8 +406,9 @@ template <typename CountOne>
             _mm256_min_pd(_mm256_max_pd(_mm256_mul_pd(paths.min_y, inverse_cell), zero), last_column));
         alignas(16) std::uint32_t cells[4];
         _mm_store_si128(reinterpret_cast<__m128i*>(cells), _mm_add_epi32(_mm_mullo_epi32(row, side), column));
-        tally_lanes<4>(i, binned & ~decided_lanes<4>(in, i), fits, cells, cell_of, counts, tally);
+        tally_lanes<4>(i, binned & ~decided_lanes<4>(in, i), fits, cells, cell_of, counts, local);
     }
+    tally = local;
     for (; i < last; ++i) one(i);
 }
 

@@ -619,23 +619,21 @@ void GridSearch::place_boxes(const Binning& binning) const {
         PairTestState* states = ws.states_by_cell.data();
         FloatBoundsArray& boxes = ws.boxes_by_cell;
         const Particle* particles = in.particles.data();
-        const auto store = [=, &boxes](std::uint32_t i, std::uint32_t cell, const FloatBounds& bounds,
-                                       const FloatLine& line) {
+        const auto store = [=, &boxes](std::uint32_t i, std::uint32_t cell, const BoxRecord& record) {
             const std::uint32_t at = next[cell]++;
             by_cell[at] = i;
             if (lines) {
                 // One aligned 32-byte store into the states' room (box_records.hpp).
-                BoxRecord record{bounds, line};
                 std::memcpy(static_cast<void*>(states + at), &record, sizeof record);
             } else {
-                boxes.set(at, bounds);
+                boxes.set(at, record.bounds);
                 states[at] = {particles[i].position, particles[i].velocity};
             }
         };
         const auto place = [&](std::int64_t i, std::uint32_t cell, const SweptBounds& box) {
             // The line is the same for the whole slice.
-            store(static_cast<std::uint32_t>(i), cell, float_bounds(box, layout_.float_scale),
-                  lines ? float_line(in.particles[i]) : FloatLine{});
+            store(static_cast<std::uint32_t>(i), cell,
+                  BoxRecord{float_bounds(box, layout_.float_scale), lines ? float_line(in.particles[i]) : FloatLine{}});
         };
         // The pieces in a loop of their own: the main loop stays short enough
         // for the processor to overlap the cache misses of many particles.
@@ -652,9 +650,7 @@ void GridSearch::place_boxes(const Binning& binning) const {
             const PlaceInput placing{layout_.float_scale, layout_.line_position_scale, layout_.line_velocity_scale,
                                      lines};
             // The lanes' boxes (and lines), each in the cell the count marked.
-            const auto store_marked = [&](std::uint32_t i, const FloatBounds& bounds, const FloatLine& line) {
-                store(i, marks[i], bounds, line);
-            };
+            const auto store_marked = [&](std::uint32_t i, const BoxRecord& record) { store(i, marks[i], record); };
             if (lanes_ == 16) {
                 place_paths_eight(input, placing, first, last, marks, store_marked, place_one);
             } else {
