@@ -53,7 +53,7 @@ struct SteppedOptions {
     // Micro-steps of length 1 / substeps per step (rules.md "Substeps"), >= 1.
     int substeps = 1;
     // Steps between sorts of the stored particles by position, >= 0 (0: never).
-    // Empty: every 8 steps from 65536 particles on, and from 4096 where two
+    // Empty: every 8 steps from 65536 particles on, and from 8192 where two
     // or more threads share the grid search. Only speed depends on it.
     std::optional<int> sort_by_position_every = std::nullopt;
 };
