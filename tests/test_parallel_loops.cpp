@@ -1,6 +1,8 @@
 // The parallel loops (OpenMP regions): each item runs exactly once, on a
 // thread below the loop's thread count, however loops follow, nest or race
-// each other; a second thread really takes part; a loop inside a parallel
+// each other, with one queue of chunks or a share a thread (more threads
+// than shares too); a second thread really takes part; each thread starts
+// on its own share; a loop inside a parallel
 // region of the caller's runs on the caller alone; and a child forked after
 // loops ran finishes its own loops and exits.
 
@@ -41,10 +43,11 @@ extern "C" int __lsan_is_turned_off() { return in_forked_child ? 1 : 0; }
 namespace {
 
 // Runs one loop; checks every item ran once and each participant was in range.
-void check_one_loop(int workers, std::int64_t count, std::int64_t chunk) {
+template <typename Loop>
+void check_one_loop(Loop loop, int workers, std::int64_t count, std::int64_t chunk) {
     std::vector<std::atomic<int>> runs(static_cast<std::size_t>(count));
     std::atomic<int> bad_participant{0};
-    parallel_for_dynamic(workers, count, chunk, [&](std::int64_t i, std::size_t thread) {
+    loop(workers, count, chunk, [&](std::int64_t i, std::size_t thread) {
         runs[static_cast<std::size_t>(i)].fetch_add(1, std::memory_order_relaxed);
         if (thread >= static_cast<std::size_t>(std::max(workers, 1))) bad_participant.fetch_add(1);
     });
@@ -55,14 +58,48 @@ void check_one_loop(int workers, std::int64_t count, std::int64_t chunk) {
 }
 
 void every_item_runs_once() {
-    for (int workers : {1, 2, 3, 8}) {
+    const auto one_queue = [](int workers, std::int64_t count, std::int64_t chunk, auto&& body) {
+        parallel_for_dynamic(workers, count, chunk, body);
+    };
+    const auto in_shares = [](int workers, std::int64_t count, std::int64_t chunk, auto&& body) {
+        parallel_for_in_shares(workers, count, chunk, body);
+    };
+    // 70 threads: more than the loops' shares (detail::max_loop_shares).
+    for (int workers : {1, 2, 3, 8, 70}) {
         for (std::int64_t count : {0, 1, 2, 7, 64, 1000, 100003}) {
             for (std::int64_t chunk : {1, 3, 64, 5000}) {
                 check::Context context("workers " + std::to_string(workers) + ", count " + std::to_string(count) +
                                        ", chunk " + std::to_string(chunk));
-                check_one_loop(workers, count, chunk);
+                check_one_loop(one_queue, workers, count, chunk);
+                check_one_loop(in_shares, workers, count, chunk);
             }
         }
+    }
+}
+
+// A loop of one item a thread whose items each wait for all the others to
+// start: no thread can take another's share, so item k runs on thread k
+// (the share whose data that thread's core holds from the step before).
+void each_thread_starts_on_its_own_share() {
+    for (const int workers : {2, 3, 4}) {
+        check::Context context("workers " + std::to_string(workers));
+        std::vector<std::size_t> ran_on(static_cast<std::size_t>(workers), 99);
+        std::atomic<int> started{0};
+        std::atomic<bool> waited_out{false};
+        parallel_for_in_shares(workers, workers, 1, [&](std::int64_t i, std::size_t thread) {
+            ran_on[static_cast<std::size_t>(i)] = thread;
+            started.fetch_add(1);
+            const auto give_up = std::chrono::steady_clock::now() + std::chrono::seconds(10);
+            while (started.load() < workers) {
+                if (std::chrono::steady_clock::now() > give_up) {
+                    waited_out.store(true);
+                    return;
+                }
+                std::this_thread::yield();
+            }
+        });
+        CHECK(!waited_out.load());
+        for (int k = 0; k < workers; ++k) CHECK_EQ(ran_on[static_cast<std::size_t>(k)], static_cast<std::size_t>(k));
     }
 }
 
@@ -228,6 +265,7 @@ int main(int argc, char** argv) {
                        {"many short loops in a row", many_short_loops_in_a_row},
                        {"nested and concurrent loops are complete", nested_and_concurrent_loops_are_complete},
                        {"a worker takes part", a_worker_takes_part},
+                       {"each thread starts on its own share", each_thread_starts_on_its_own_share},
                        {"a forked child runs loops and exits", a_forked_child_runs_loops_and_exits},
                        {"loops inside a host region run on the caller", loops_inside_a_host_region_run_on_the_caller},
                        {"an exception reaches the caller", an_exception_reaches_the_caller}});

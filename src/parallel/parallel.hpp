@@ -2,16 +2,22 @@
 // Parallel loops on OpenMP, and how many threads a piece of work deserves.
 // One thread runs the loop in place, without a parallel region.
 //
-// Every loop hands its items out in chunks to whichever thread of the region
-// is free (schedule(dynamic)): a thread the system deschedules, on a machine
-// where another process keeps a core busy, delays only the chunk it holds,
-// not a static share that the others would wait for at the barrier. How idle
-// threads wait between regions is the OpenMP runtime's (OMP_WAIT_POLICY,
-// README "Threads").
+// A loop hands its items out in chunks, claimed by whichever thread is
+// free: a thread the system deschedules, on a machine where another process
+// keeps a core busy, delays only the chunk it holds, not a share of the
+// items that the others would wait for at the barrier. Where the items'
+// data stays from one step to the next (particles sorted by position, the
+// grid's rows), each thread first claims from a contiguous share of its
+// own, the same share at every step, so that the data stays in its core's
+// caches; handed to whichever thread was free, it crossed between the cores
+// at every step. How idle threads wait between regions is the OpenMP
+// runtime's (OMP_WAIT_POLICY, README "Threads").
 
 #include <omp.h>
 
 #include <algorithm>
+#include <array>
+#include <atomic>
 #include <cstddef>
 #include <cstdint>
 #include <exception>
@@ -44,42 +50,93 @@ inline int worker_count(std::size_t available, std::int64_t work, std::int64_t m
     return static_cast<int>(std::min<std::int64_t>(static_cast<std::int64_t>(available), useful));
 }
 
-// body(i, thread) for i in [0, count), in chunks of `chunk` items claimed by
-// whichever of the `workers` threads is free (thread < workers). What the
-// body throws (std::bad_alloc: a list of pair candidates past its limit) is
-// caught in the region, which an exception may not leave (std::terminate),
-// and the first one is thrown again on the calling thread once the region
-// ends; the other items still run (a check before each would cost every
-// loop for a failure that ends the run).
+namespace detail {
+
+// One thread's share of a loop: the items [next, end) not yet claimed.
+// A cache line each: the owner claims from it at every chunk.
+struct alignas(64) LoopShare {
+    std::atomic<std::int64_t> next{0};
+    std::int64_t end = 0;
+};
+
+// A region of more threads than this shares them out: thread t starts on
+// share t modulo this.
+inline constexpr int max_loop_shares = 64;
+
+// body(i, thread) for i in [0, count) on `workers` threads (thread <
+// workers), the items cut into `shares` contiguous shares (at most
+// max_loop_shares) claimed `chunk` items at a time: thread t from share t
+// first, then from the others. What the body throws (std::bad_alloc: a list
+// of pair candidates past its limit) is caught in the region, which an
+// exception may not leave (std::terminate), and the first one is thrown
+// again on the calling thread once the region ends; the other items still
+// run (a check before each would cost every loop for a failure that ends
+// the run).
 template <typename Body>
-void parallel_for_dynamic(int workers, std::int64_t count, std::int64_t chunk, Body&& body) {
+void loop_in_shares(int workers, std::int64_t count, std::int64_t chunk, int shares, Body&& body) {
     if (workers <= 1 || count <= chunk || !loops_may_start_threads()) {
         for (std::int64_t i = 0; i < count; ++i) body(i, std::size_t{0});
         return;
     }
+    shares = std::clamp(shares, 1, max_loop_shares);
+    std::array<LoopShare, max_loop_shares> share;
+    for (int s = 0; s < shares; ++s) {
+        share[s].next.store(count * s / shares, std::memory_order_relaxed);
+        share[s].end = count * (s + 1) / shares;
+    }
     std::exception_ptr failure;
+    // A team smaller than asked for still runs every item: each thread goes
+    // round all the shares until none is left.
 #pragma omp parallel num_threads(workers)
     {
-        const auto thread = static_cast<std::size_t>(omp_get_thread_num());
-#pragma omp for schedule(dynamic, chunk) nowait
-        for (std::int64_t i = 0; i < count; ++i) {
-            try {
-                body(i, thread);
-            } catch (...) {
+        const int thread = omp_get_thread_num();
+        for (int k = 0; k < shares; ++k) {
+            LoopShare& from = share[(thread + k) % shares];
+            for (;;) {
+                const std::int64_t first = from.next.fetch_add(chunk, std::memory_order_relaxed);
+                if (first >= from.end) break;
+                const std::int64_t last = std::min(from.end, first + chunk);
+                for (std::int64_t i = first; i < last; ++i) {
+                    try {
+                        body(i, static_cast<std::size_t>(thread));
+                    } catch (...) {
 #pragma omp critical(particlesim_parallel_failure)
-                if (!failure) failure = std::current_exception();
+                        if (!failure) failure = std::current_exception();
+                    }
+                }
             }
         }
     }
     if (failure) std::rethrow_exception(failure);
 }
 
-// The same for items of even work: eight chunks per thread, so that a thread
-// the system deschedules leaves its share to the others.
+}  // namespace detail
+
+// body(i, thread) for i in [0, count), in chunks of `chunk` items claimed by
+// whichever of the `workers` threads is free (thread < workers): for items
+// whose work differs and whose data no thread had before, such as the
+// grid's slices.
+template <typename Body>
+void parallel_for_dynamic(int workers, std::int64_t count, std::int64_t chunk, Body&& body) {
+    detail::loop_in_shares(workers, count, chunk, 1, std::forward<Body>(body));
+}
+
+// The same, each thread starting with a contiguous share of its own, the
+// same share at every call of the same count: for items whose data stays in
+// a core's caches from one step to the next, such as particles sorted by
+// position and the grid's rows of cells.
+template <typename Body>
+void parallel_for_in_shares(int workers, std::int64_t count, std::int64_t chunk, Body&& body) {
+    detail::loop_in_shares(workers, count, chunk, workers, std::forward<Body>(body));
+}
+
+// The same for items of even work, such as particles: claimed in eight
+// chunks a share, so that a thread the system deschedules leaves the rest
+// of its share to the others.
 template <typename Body>
 void parallel_for(int workers, std::int64_t count, Body&& body) {
     const std::int64_t chunk = std::max<std::int64_t>(1, count / (8 * std::max(workers, 1)));
-    parallel_for_dynamic(workers, count, chunk, std::forward<Body>(body));
+    parallel_for_in_shares(workers, count, chunk, std::forward<Body>(body));
 }
 
 // body(block, first, last) for the blocks [first, last) of `block_size`

@@ -902,7 +902,7 @@ void GridSearch::test_small_pairs(const PairSearchInput& in, const SliceWorkspac
                                   int threads) const {
     const int side = layout_.grid.per_side();
     const auto scan = [&](auto scan_one_row) {
-        parallel_for_dynamic(threads, side, 4, [&](std::int64_t cy, std::size_t thread) {
+        parallel_for_in_shares(threads, side, 4, [&](std::int64_t cy, std::size_t thread) {
             scan_one_row(in, ws, side, cy, layout_.line_terms, out[thread]);
         });
     };
