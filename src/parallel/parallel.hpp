@@ -9,9 +9,9 @@
 // data stays from one step to the next (particles sorted by position, the
 // grid's rows), each thread first claims from a contiguous share of its
 // own, the same share at every step, so that the data stays in its core's
-// caches; handed to whichever thread was free, it crossed between the cores
-// at every step. How idle threads wait between regions is the OpenMP
-// runtime's (OMP_WAIT_POLICY, README "Threads").
+// caches (handed to whichever thread is free, it would cross between the
+// cores at every step). How idle threads wait between regions is the
+// OpenMP runtime's (OMP_WAIT_POLICY, README "Threads").
 
 #include <omp.h>
 
