@@ -42,6 +42,18 @@ extern "C" int __lsan_is_turned_off() { return in_forked_child ? 1 : 0; }
 
 namespace {
 
+// Whether `condition()` comes to hold within 10 s (far beyond any scheduling
+// delay), asked again and again with the core yielded between.
+template <typename Condition>
+bool holds_within_ten_seconds(Condition condition) {
+    const auto give_up = std::chrono::steady_clock::now() + std::chrono::seconds(10);
+    while (!condition()) {
+        if (std::chrono::steady_clock::now() > give_up) return false;
+        std::this_thread::yield();
+    }
+    return true;
+}
+
 // Runs one loop; checks every item ran once and each participant was in range.
 template <typename Loop>
 void check_one_loop(Loop loop, int workers, std::int64_t count, std::int64_t chunk) {
@@ -89,14 +101,7 @@ void each_thread_starts_on_its_own_share() {
         parallel_for_in_shares(workers, workers, 1, [&](std::int64_t i, std::size_t thread) {
             ran_on[static_cast<std::size_t>(i)] = thread;
             started.fetch_add(1);
-            const auto give_up = std::chrono::steady_clock::now() + std::chrono::seconds(10);
-            while (started.load() < workers) {
-                if (std::chrono::steady_clock::now() > give_up) {
-                    waited_out.store(true);
-                    return;
-                }
-                std::this_thread::yield();
-            }
+            if (!holds_within_ten_seconds([&] { return started.load() == workers; })) waited_out.store(true);
         });
         CHECK(!waited_out.load());
         for (int k = 0; k < workers; ++k) CHECK_EQ(ran_on[static_cast<std::size_t>(k)], static_cast<std::size_t>(k));
@@ -156,14 +161,7 @@ void a_worker_takes_part() {
     parallel_for_dynamic(2, 64, 1, [&](std::int64_t i, std::size_t thread) {
         if (thread != 0) other_ran.store(true);
         if (i != 0 || thread != 0) return;
-        const auto give_up = std::chrono::steady_clock::now() + std::chrono::seconds(10);
-        while (!other_ran.load()) {
-            if (std::chrono::steady_clock::now() > give_up) {
-                waited_out.store(true);
-                return;
-            }
-            std::this_thread::yield();
-        }
+        if (!holds_within_ten_seconds([&] { return other_ran.load(); })) waited_out.store(true);
     });
     CHECK(other_ran.load());
     CHECK(!waited_out.load());
