@@ -3,6 +3,7 @@
 
 #include "check.hpp"
 
+#include "parallel/run_queue_wait.hpp"
 #include "particlesim/random_scene.hpp"
 #include "particlesim/stepped_simulation.hpp"
 
@@ -28,7 +29,8 @@ using namespace particlesim;
 int main(int argc, char** argv) {
     return check::run(
         argc, argv, "test_no_allocation",
-        {{"no allocation in the step loop", [] {
+        {{"no allocation in the step loop",
+          [] {
               const World params{20000.0, 1.0};
               for (const PairSearch search : {PairSearch::brute_force, PairSearch::grid, PairSearch::paths}) {
                   // Unset: small scenes then switch between one thread and all of them (thread_choice.hpp).
@@ -51,5 +53,15 @@ int main(int argc, char** argv) {
                       }
                   }
               }
+          }},
+         {"reading the threads' run-queue wait", [] {
+              // A large scene's thread choice reads it every few steps (stepped/thread_choice.hpp).
+              // CHECK itself may allocate (its text): the readings are counted first.
+              int readings = 0;
+              const long before = allocations.load();
+              for (int k = 0; k < 100; ++k) readings += process_run_queue_wait_seconds().has_value() ? 1 : 0;
+              const long allocated = allocations.load() - before;
+              CHECK_EQ(readings, 100);
+              CHECK_EQ(allocated, 0L);
           }}});
 }

@@ -47,8 +47,10 @@ struct SteppedOptions {
     std::optional<int> grid_cells = std::nullopt;
     // Worker threads, 1 to max_threads. Empty: OpenMP's default; a scene of up to 20000
     // particles then runs its steps on one thread in the stretches where
-    // short trials find that faster (a shared or busy machine). The results
-    // are the same for every thread count.
+    // short trials find that faster (a shared or busy machine), and a larger
+    // scene runs such trials when its threads wait for a CPU (another process
+    // taking turns on their cores; Linux only). The results are the same for
+    // every thread count.
     std::optional<int> threads = std::nullopt;
     // Micro-steps of length 1 / substeps per step (rules.md "Substeps"), >= 1.
     int substeps = 1;
@@ -93,7 +95,7 @@ public:
     // The most threads a step uses: the ones asked for, or OpenMP's default.
     [[nodiscard]] int threads() const;
     // Of the steps this object ran, those that the thread choice (threads not
-    // set, a small scene: SteppedOptions::threads) ran on one thread.
+    // set: SteppedOptions::threads) ran on one thread.
     [[nodiscard]] std::int64_t steps_on_one_thread() const;
 
 private:

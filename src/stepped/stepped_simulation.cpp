@@ -7,6 +7,7 @@
 #include "input/scene_checks.hpp"
 #include "input/stepped_options_check.hpp"
 #include "parallel/parallel.hpp"
+#include "parallel/run_queue_wait.hpp"
 #include "particlesim/exact_simulation.hpp"
 #include "search/brute_force_search.hpp"
 #include "search/grid_search.hpp"
@@ -44,7 +45,10 @@ public:
         require_valid_scene("particlesim::SteppedSimulation", world_, particles_);
         const std::size_t count = particles_.size();
         threads_ = options_.threads.value_or(default_thread_count());
-        thread_choice_ = ThreadChoice(threads_, !options_.threads && count <= threads_by_trials_up_to);
+        thread_choice_ =
+            ThreadChoice(threads_, options_.threads                   ? ThreadPolicy::all
+                                   : count <= threads_by_trials_up_to ? ThreadPolicy::trials
+                                                                      : ThreadPolicy::trials_when_contended);
         search_ = options_.pair_search;
         if (search_ == PairSearch::automatic) search_ = automatic_search(world_, particles_, options_.substeps);
         paths_watch_limit_ = options_.pair_search == PairSearch::automatic
@@ -95,6 +99,7 @@ public:
         const auto begin = std::chrono::steady_clock::now();
         for (int micro = 0; micro < options_.substeps; ++micro) micro_step(duration, threads);
         thread_choice_.record(std::chrono::duration<double>(std::chrono::steady_clock::now() - begin).count());
+        if (thread_choice_.reading_due()) thread_choice_.read_waits(process_run_queue_wait_seconds());
         if constexpr (validating) require_inside_box();
         totals_ += last_step_;
         ++steps_done_;
@@ -216,7 +221,7 @@ private:
     SteppedOptions options_;
     PairSearch search_ = PairSearch::grid;  // never automatic
     int threads_ = 1;                       // the most a step uses
-    ThreadChoice thread_choice_{1, false};
+    ThreadChoice thread_choice_{1, ThreadPolicy::all};
     int sort_every_ = 0;             // steps; 0: never
     bool sort_after_reads_ = false;  // sort again at the first step after particles() (else on schedule only)
     std::vector<Particle> particles_;

@@ -120,6 +120,20 @@ inline constexpr int trial_warm_up_steps = 8;
 inline constexpr int trial_block_steps = 4;
 inline constexpr int trial_blocks = 4;
 inline constexpr int trial_run_steps = 240;
+// Above threads_by_trials_up_to: a watch on all the threads lasts at least
+// `contention_watch_steps` and `contention_watch_seconds`; the process's
+// run-queue wait over it, above `contended_wait_share` of its wall time,
+// starts a trial (the threads' waits summed: quiet, 0.000 to 0.015 of the
+// wall time on the AMD host; beside one busy process on its two cores, 0.40
+// to 1.0, docs/benchmarks.md). Such a trial runs `contended_trial_steps` on
+// one thread (the first not counted) and sets their mean against the
+// watch's. A watch spans seconds, not steps, because beside a busy process
+// steps on two threads run at full speed for 0.2 to 0.7 s and then stall
+// for the other process's turn: a few steps say little.
+inline constexpr int contention_watch_steps = 8;
+inline constexpr double contention_watch_seconds = 0.5;
+inline constexpr double contended_wait_share = 0.1;
+inline constexpr int contended_trial_steps = 8;
 
 // --- Pairs at t = 0 (stepped/immediate_selection.cpp)
 
