@@ -3,7 +3,8 @@
 binaries alternating run by run (the order flips every round), the time
 being simcli --stats' step time (reading and set-up excluded). Prints one CSV
 row: each build's median time, and the median, quartiles and range of the
-per-round ratios new / old. With --busy, one busy process
+per-round ratios new / old. THREADS "default" leaves -t out (the
+thread count each build chooses). With --busy, one busy process
 (sh -c 'while :; do :; done') runs beside them throughout; with --cpu=K,
 every run is pinned to CPU K (simcli_runs.py; one thread then).
 
@@ -25,7 +26,8 @@ if "--header" in options:
     print("scene,threads,load,rounds,new_median_s,old_median_s,ratio_median,ratio_lower_quartile,"
           "ratio_upper_quartile,ratio_min,ratio_max")
 with beside_busy_process(busy, cpu):
-    commands = {build: [simcli, "-t", threads, scene] for build, simcli in (("old", old_simcli), ("new", new_simcli))}
+    thread_option = [] if threads == "default" else ["-t", threads]
+    commands = {build: [simcli, *thread_option, scene] for build, simcli in (("old", old_simcli), ("new", new_simcli))}
     times, _, ratios = alternate(commands, rounds)
     lower, upper = quartiles(ratios)
     print(f"{os.path.basename(scene)},{threads},{load_name(busy)},{rounds},"

@@ -159,10 +159,11 @@ int main(int argc, char** argv) {
           }},
          {"the trial sets one thread against the whole watch, stalls included",
           [] {
-              // On all the threads most steps take 0.8 of one thread's time, but every 8th
-              // stalls for 3 (the other process's turn), and waits only then: the watch's
-              // mean, 1.075, loses to one thread; a stall of 2 (mean 0.95) does not.
-              for (const double stall : {3.0, 2.0}) {
+              // On all the threads most steps take half of one thread's time, but every 8th
+              // stalls (the other process's turn), and waits only then: with a stall of 4 the
+              // watch's mean, 0.9375, is above the margin and loses to one thread; with a
+              // stall of 2 (mean 0.6875) it wins.
+              for (const double stall : {4.0, 2.0}) {
                   const check::Context context("a stall of ", stall);
                   ThreadChoice choice(2, ThreadPolicy::trials_when_contended);
                   std::vector<int> used;
@@ -175,17 +176,30 @@ int main(int argc, char** argv) {
                       double seconds = 1.0;
                       if (threads > 1) {
                           const bool stalls = ++all_thread_steps % 8 == 0;
-                          seconds = stalls ? stall : 0.8;
-                          waited += stalls ? stall - 0.8 : 0.0;
+                          seconds = stalls ? stall : 0.5;
+                          waited += stalls ? stall - 0.5 : 0.0;
                       }
                       choice.record(seconds);
                       if (choice.reading_due()) choice.read_waits(waited);
                   }
-                  const int winner = stall == 3.0 ? 1 : 2;
+                  const int winner = stall == 4.0 ? 1 : 2;
                   const int stretch = warming + watch + contended_trial;
                   CHECK_EQ(count_of(used, winner, stretch, stretch + stepped_tuning::trial_run_steps),
                            long{stepped_tuning::trial_run_steps});
                   CHECK_EQ(choice.trials(), std::int64_t{1});
+              }
+          }},
+         {"after waits, all the threads must beat a share of one thread's time",
+          [] {
+              const double margin = stepped_tuning::contended_trial_margin;
+              for (const double most : {0.99 * margin, 1.01 * margin, 1.0, 0.5}) {
+                  const check::Context context("all the threads ", most, " of one thread's time");
+                  ThreadChoice choice(2, ThreadPolicy::trials_when_contended);
+                  const int stretch = warming + watch + contended_trial;
+                  const std::vector<int> used =
+                      run_waiting(choice, stretch + stepped_tuning::trial_run_steps, 1.0, most, 0.5);
+                  CHECK_EQ(count_of(used, most < margin ? 2 : 1, stretch, stretch + stepped_tuning::trial_run_steps),
+                           long{stepped_tuning::trial_run_steps});
               }
           }},
          {"a stretch ends in a watch again",

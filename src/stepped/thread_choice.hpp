@@ -101,7 +101,7 @@ public:
             if (step_ == stepped_tuning::contended_trial_steps) {
                 const double one_mean = one_seconds_ / (stepped_tuning::contended_trial_steps - 1);
                 const double most_mean = watched_seconds_ / static_cast<double>(watched_steps_);
-                run_stretch(most_mean <= one_mean);
+                run_stretch(most_mean <= stepped_tuning::contended_trial_margin * one_mean);
             }
             break;
         case Stage::running:
