@@ -12,10 +12,10 @@
 // a trial's steps on one thread would cost a short run a good part of its
 // time. So its steps take all the threads while the process's threads get
 // a CPU as soon as they are ready to run (parallel/run_queue_wait.hpp, read
-// after each window of steps). When they wait for one, another process is
-// taking turns on their cores: a few steps on one thread are then timed
-// against all the steps on every thread since the watching began, and the
-// faster runs a stretch.
+// at the start and end of each watch of steps). When they wait for one,
+// another process is taking turns on their cores: a few steps on one thread
+// are then timed against all the watch's steps on every thread, and the
+// faster runs a stretch (all the threads only by a margin).
 
 #include "stepped/stepped_tuning.hpp"
 
