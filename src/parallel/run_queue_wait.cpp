@@ -1,13 +1,20 @@
 #include "parallel/run_queue_wait.hpp"
 
-#include <dirent.h>
+#include <cstdint>
+
+#if defined(__linux__)
 #include <fcntl.h>
+#include <sys/syscall.h>
 #include <unistd.h>
 
-#include <cstdint>
+#include <cstddef>
 #include <cstdlib>
+#include <cstring>
+#endif
 
 namespace particlesim {
+
+#if defined(__linux__)
 
 namespace {
 
@@ -54,19 +61,28 @@ std::optional<double> process_run_queue_wait_seconds() {
     std::uint64_t total = 0;
     int listed_tasks = 0;
     int read_tasks = 0;
-    // getdents64 into a buffer of our own: opendir would allocate one.
+    // The kernel's directory records, read by the system call into a buffer
+    // of our own (opendir would allocate one; glibc's getdents64 wrapper is
+    // recent): each is an 8-byte inode, an 8-byte offset, a 2-byte record
+    // length, a 1-byte type and the name, ended by '\0'.
+    constexpr std::size_t record_length_at = 16;
+    constexpr std::size_t name_at = 19;
     alignas(8) char entries[4096];
     for (;;) {
-        const ssize_t length = getdents64(tasks.get(), entries, sizeof entries);
+        const long length = syscall(SYS_getdents64, tasks.get(), entries, sizeof entries);
         if (length < 0) return std::nullopt;
         if (length == 0) break;
-        for (ssize_t offset = 0; offset < length;) {
-            const auto* entry = reinterpret_cast<const dirent64*>(entries + offset);
-            offset += entry->d_reclen;
-            if (entry->d_name[0] < '0' || entry->d_name[0] > '9') continue;  // "." and ".."
-            char path[64];  // a task id of at most 32 digits, then "/schedstat"
+        for (long offset = 0; offset < length;) {
+            const char* entry = entries + offset;
+            unsigned short record_length = 0;
+            std::memcpy(&record_length, entry + record_length_at, sizeof record_length);
+            if (record_length == 0) return std::nullopt;  // never from the kernel; no endless loop either
+            offset += record_length;
+            const char* name = entry + name_at;
+            if (name[0] < '0' || name[0] > '9') continue;  // "." and ".."
+            char path[64];                                 // a task id of at most 32 digits, then "/schedstat"
             int written = 0;
-            for (const char* c = entry->d_name; *c != '\0' && written < 32; ++c) path[written++] = *c;
+            for (const char* c = name; *c != '\0' && written < 32; ++c) path[written++] = *c;
             for (const char* c = "/schedstat"; *c != '\0'; ++c) path[written++] = *c;
             path[written] = '\0';
             // A thread that ended since the listing has no file: skipped.
@@ -81,5 +97,11 @@ std::optional<double> process_run_queue_wait_seconds() {
     if (read_tasks == 0) return std::nullopt;
     return 1e-9 * static_cast<double>(total);
 }
+
+#else
+
+std::optional<double> process_run_queue_wait_seconds() { return std::nullopt; }
+
+#endif
 
 }  // namespace particlesim
