@@ -123,21 +123,22 @@ inline constexpr int trial_run_steps = 240;
 // Above threads_by_trials_up_to: a watch on all the threads lasts at least
 // `contention_watch_steps` and `contention_watch_seconds`; the process's
 // run-queue wait over it, above `contended_wait_share` of its wall time,
-// starts a trial (the threads' waits summed: quiet, 0.000 to 0.015 of the
-// wall time on the AMD host; beside one busy process on its two cores, 0.40
-// to 1.0, docs/benchmarks.md). Such a trial runs `contended_trial_steps` on
-// one thread (the first not counted) and sets their mean against the
+// starts a trial (the threads' waits summed: quiet, 0.018 to 0.028 of the
+// wall time on the AMD host; beside one busy process on its two cores, 0.63
+// to 0.72; run_queue_waits.csv). Such a trial runs `contended_trial_steps`
+// on one thread (the first not counted) and sets their mean against the
 // watch's. A watch spans seconds, not steps, because beside a busy process
-// steps on two threads run at full speed for 0.2 to 0.7 s and then stall
-// for the other process's turn: a few steps say little.
+// steps on two threads run unhindered for 0.2 to 1 s and then stall for the
+// other process's turn: a few steps say little (thread_steps_loaded.csv).
 inline constexpr int contention_watch_steps = 8;
 inline constexpr double contention_watch_seconds = 0.5;
 inline constexpr double contended_wait_share = 0.1;
 inline constexpr int contended_trial_steps = 8;
 // The share of one thread's step time that all the threads must beat in such
 // a trial to run the stretch: a watch of 0.5 s can fall between two of the
-// other process's turns (N = 32000 on the AMD host: 0.87 to 0.90 of one
-// thread's time then, and 1.17 to 1.2 over whole runs).
+// other process's turns (N = 32000 on the AMD host: the median step on two
+// threads 0.85 of one thread's, and whole runs on two threads 1.09 and 1.11
+// of one thread's time; thread_steps_loaded.csv, loaded_run_queue_waits.csv).
 inline constexpr double contended_trial_margin = 0.8;
 
 // --- Pairs at t = 0 (stepped/immediate_selection.cpp)
