@@ -21,10 +21,11 @@ simcli, rounds, scenes = arguments[0], int(arguments[1]), arguments[2:]
 
 
 def schedstat_totals(pid):
-    """(run ns, wait ns) summed over the threads of PID, or None once it has ended."""
+    """(run ns, wait ns, threads listed) summed over the threads of PID, or None once it has ended."""
     run = wait = 0
     try:
-        for task in os.listdir(f"/proc/{pid}/task"):
+        tasks = os.listdir(f"/proc/{pid}/task")
+        for task in tasks:
             try:
                 with open(f"/proc/{pid}/task/{task}/schedstat") as stat:
                     fields = stat.read().split()
@@ -34,7 +35,7 @@ def schedstat_totals(pid):
             wait += int(fields[1])
     except (FileNotFoundError, ProcessLookupError):
         return None
-    return run, wait
+    return run, wait, len(tasks)
 
 
 def measure(scene):
@@ -46,7 +47,7 @@ def measure(scene):
         now = time.monotonic()
         if totals is not None and child.poll() is None:
             # The first sample after the second thread exists: reading the scene comes before it.
-            if first is None and len(os.listdir(f"/proc/{child.pid}/task")) >= 2:
+            if first is None and totals[2] >= 2:
                 first = (now, totals)
             elif first is not None:
                 last = (now, totals)
