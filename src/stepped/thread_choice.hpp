@@ -69,7 +69,7 @@ public:
             const bool waited =
                 *total_seconds - last_wait_seconds_ > stepped_tuning::contended_wait_share * watched_seconds_;
             start(waited ? Stage::timing_one : Stage::watching);
-            reading_due_ = false;
+            reading_due_ = false;  // this reading is also the next watch's start
         }
         last_wait_seconds_ = *total_seconds;
     }
