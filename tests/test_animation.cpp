@@ -4,7 +4,9 @@
 // taken from simcli's own print output, so a wrong frame, axis or scale shows),
 // what play, the scrubber and the keys did, the collision counts the plot
 // shows (against the library's per-step counts), console errors and network
-// requests. Also the SVG of --snapshot. Exit 77 (skipped) without Chromium.
+// requests. Also the SVG of --snapshot: the state in pixels, the same
+// picture for a scene scaled by 2^k, drawn at any scale with its caption
+// inside it. Exit 77 (skipped) without Chromium.
 
 #include "check.hpp"
 #include "mini_json.hpp"
@@ -366,18 +368,177 @@ void snapshot_is_the_state() {
     CHECK_EQ(out.status, 0);
     const auto states = read_states(out.out);
     const std::string text = run_process::slurp(svg);
+    // In pixels: the box of side 20 is 720 wide, y upwards.
+    const double pixels = 720.0 / 20.0;
     std::size_t k = 0;
     for (std::size_t at = text.find("<circle "); at != std::string::npos; at = text.find("<circle ", at + 1), ++k) {
         CHECK(k < 5);
         if (k >= 5) break;
-        CHECK_NEAR(std::stod(attribute(text, at, "cx")), states[9][k].position.x(), 1e-5);
-        CHECK_NEAR(std::stod(attribute(text, at, "cy")), states[9][k].position.y(), 1e-5);
-        CHECK_EQ(std::stod(attribute(text, at, "r")), 1.0);
+        CHECK_NEAR(std::stod(attribute(text, at, "cx")), pixels * states[9][k].position.x(), 1e-4);
+        CHECK_NEAR(std::stod(attribute(text, at, "cy")), 720.0 - pixels * states[9][k].position.y(), 1e-4);
+        CHECK_EQ(std::stod(attribute(text, at, "r")), pixels);
     }
     CHECK_EQ(k, 5U);
     CHECK(text.find(">step 9, 5 particles") != std::string::npos);
     CHECK_EQ(run_process::run(simcli, {scene, "--snapshot", svg, "--snapshot-step", "13"}).status, 2);
     CHECK_EQ(run_process::run(simcli, {scene, "--snapshot-step", "3"}).status, 2);
+}
+
+// `scene` scaled by 2^k: every length and speed, exactly.
+Scene scaled_scene(Scene scene, int k) {
+    scene.world.box_size = std::ldexp(scene.world.box_size, k);
+    scene.world.radius = std::ldexp(scene.world.radius, k);
+    for (Particle& p : scene.particles) {
+        p.position = Vec2(std::ldexp(p.position.x(), k), std::ldexp(p.position.y(), k));
+        p.velocity = Vec2(std::ldexp(p.velocity.x(), k), std::ldexp(p.velocity.y(), k));
+    }
+    return scene;
+}
+
+std::string scene_file(const std::string& name, const Scene& scene) {
+    std::ostringstream text;
+    write_scene(text, scene);
+    return write_file(name, text.str());
+}
+
+// 100 disks in a triangular lattice at 0.7 that fills a periodic box.
+Scene periodic_lattice(std::int64_t steps) {
+    SceneFamilyOptions o;
+    o.particles = 100;
+    o.area_fraction = 0.7;
+    o.boundary = Boundary::periodic;
+    o.steps = steps;
+    return make_family_scene(SceneFamily::crystal, o);
+}
+
+// The lines of a snapshot but its caption (the <text> lines, which name L and r).
+std::string without_caption(const std::string& svg_text) {
+    std::istringstream lines(svg_text);
+    std::string kept;
+    for (std::string line; std::getline(lines, line);) {
+        if (line.rfind("<text ", 0) != 0) kept += line + "\n";
+    }
+    return kept;
+}
+
+// A scene scaled by 2^k runs to the scaled states (rules.md), so its
+// snapshot is the same picture, byte for byte but for the caption's L and r:
+// walled and coloured by speed, and periodic (images at the edges) by psi6.
+void scaled_scene_draws_the_same_picture() {
+    SceneFamilyOptions gas;
+    gas.particles = 60;
+    gas.steps = 5;
+    SceneFamilyOptions crystal = gas;
+    crystal.area_fraction = 0.6;
+    crystal.boundary = Boundary::periodic;
+    const std::vector<std::pair<Scene, std::vector<std::string>>> cases{
+        {make_family_scene(SceneFamily::gas, gas), {}},
+        {make_family_scene(SceneFamily::crystal, crystal),
+         {"--engine", "exact", "--boundary", "periodic", "--colour-by", "psi6"}}};
+    for (const auto& [scene, options] : cases) {
+        std::string pictures[3];
+        const int scales[3] = {0, -40, 40};
+        for (int k = 0; k < 3; ++k) {
+            const std::string svg = work_dir() + "/scaled-" + std::to_string(k) + ".svg";
+            std::vector<std::string> args = options;
+            args.insert(args.end(), {scene_file("scaled.in", scaled_scene(scene, scales[k])), "-o", "/dev/null",
+                                     "--snapshot", svg});
+            CHECK_EQ(run_process::run(simcli, args).status, 0);
+            pictures[k] = run_process::slurp(svg);
+        }
+        const check::Context context(options.empty() ? "the gas" : "the crystal, by psi6");
+        CHECK(pictures[0].find("<circle ") != std::string::npos);
+        CHECK(without_caption(pictures[1]) == without_caption(pictures[0]));
+        CHECK(without_caption(pictures[2]) == without_caption(pictures[0]));
+        CHECK(pictures[1].find(">step 5, 60 particles, L = ") != std::string::npos);
+    }
+}
+
+// Snapshots in Chromium, drawn into a canvas: each disk's centre shows a
+// disk, not the background, and each caption line lies inside the picture,
+// below the box and below the line before. The longest captions (psi6's
+// legend; speeds and lengths in exponent notation), and boxes of 1e-7 and
+// 1.2e7, which once drew nothing, and a caption too small to see.
+void snapshot_draws_at_any_scale() {
+    const std::string lattice = scene_file("any-lattice.in", periodic_lattice(2));
+    const std::string wide = write_file("any-wide.in",
+                                        "2 1.23456e+07 0.000123456 123456 perf\n"
+                                        "0 1.1e6 2.2e6 0.000123456 -1.5e-5\n"
+                                        "1 3.3e6 4.4e6 -1.23456e+06 0\n");
+    const std::string tiny = write_file("any-tiny.in",
+                                        "3 1e-7 1e-9 2 print\n0 2e-8 5e-8 3e-9 1e-10\n"
+                                        "1 8e-8 5e-8 -3e-9 0\n2 5e-8 2e-8 0 1e-9\n");
+    const std::string huge = write_file("any-huge.in",
+                                        "3 1.2e7 1e5 2 print\n0 2e6 5e6 3e5 1e4\n"
+                                        "1 8e6 5e6 -3e5 0\n2 5e6 2e6 0 1e5\n");
+    const std::vector<std::vector<std::string>> runs{
+        {lattice, "--engine", "exact", "--boundary", "periodic", "--colour-by", "psi6"}, {wide}, {tiny}, {huge}};
+    for (const std::vector<std::string>& run : runs) {
+        const std::string svg = work_dir() + "/any.svg";
+        std::vector<std::string> args = run;
+        args.insert(args.end(), {"-o", "/dev/null", "--snapshot", svg});
+        CHECK_EQ(run_process::run(simcli, args).status, 0);
+        const std::string svg_text = run_process::slurp(svg);
+        // The picture inline (for the caption's boxes) and as an image
+        // drawn into a canvas (for the pixels), in a page that reports as
+        // the animation pages do.
+        const std::string page = write_file(
+            "any.html",
+            "<!doctype html><html><body style=\"margin:0\">" + svg_text +
+                "<pre id=\"selftest\"></pre><script>\n"
+                "const svg = document.querySelector('svg'), view = svg.viewBox.baseVal;\n"
+                "const frame = svg.querySelector('rect').getBoundingClientRect(), at = svg.getBoundingClientRect();\n"
+                "const lines = [...svg.querySelectorAll('text')].map(t => { const b = t.getBoundingClientRect();\n"
+                "  return [b.left - at.left, b.top - at.top, b.right - at.left, b.bottom - at.top]; });\n"
+                "const disks = [...svg.querySelectorAll('circle')].map(c => { const b = c.getBoundingClientRect();\n"
+                "  return [(b.left + b.right) / 2 - at.left, (b.top + b.bottom) / 2 - at.top, b.width / 2,\n"
+                "          c.getAttribute('fill')]; })\n"
+                "  .filter(([x, y]) => x > frame.left - at.left && x < frame.right - at.left &&\n"
+                "                      y > frame.top - at.top && y < frame.bottom - at.top);\n"
+                "const image = new Image();\n"
+                "image.onload = () => {\n"
+                "  const canvas = document.createElement('canvas');\n"
+                "  canvas.width = at.width; canvas.height = at.height;\n"
+                "  const context = canvas.getContext('2d');\n"
+                "  context.drawImage(image, 0, 0, at.width, at.height);\n"
+                "  const centres = disks.map(([x, y, radius, fill]) =>\n"
+                "    [...context.getImageData(Math.floor(x), Math.floor(y), 1, 1).data, radius, fill]);\n"
+                "  document.getElementById('selftest').textContent = JSON.stringify({width: at.width,\n"
+                "    height: at.height, boxBottom: frame.bottom - at.top, lines, centres});\n"
+                "};\n"
+                "image.src = URL.createObjectURL(new Blob([svg.outerHTML], {type: 'image/svg+xml'}));\n"
+                "</script></body></html>\n");
+        const mini_json::Value r = open_page(page, "{}").report;
+        if (r.kind != mini_json::Value::Kind::object) continue;
+        const check::Context context(run.front());
+        const std::vector<mini_json::Value>& lines = r["lines"].items;
+        CHECK_EQ(lines.size(), std::size_t{2});
+        double above = r["boxBottom"].number;
+        for (const mini_json::Value& line : lines) {
+            CHECK(line[0].number >= 0.0);
+            CHECK(line[2].number <= r["width"].number);  // the right edge, which one line ran past
+            CHECK(line[1].number >= above);              // below the box, and below the line before
+            CHECK(line[3].number <= r["height"].number);
+            CHECK(line[3].number - line[1].number >= 10.0);  // a 13-pixel font, not shrunk
+            above = line[3].number;
+        }
+        // Each centre's pixel in the box (a periodic image's centre may lie
+        // outside, clipped) [red, green, blue, alpha, radius, fill]: opaque,
+        // not the background, and the disk's own fill where the disk is
+        // wider than the pixel (a dot of 0.75 pixels blends into the white).
+        const std::vector<mini_json::Value>& centres = r["centres"].items;
+        CHECK(!centres.empty());
+        for (const mini_json::Value& centre : centres) {
+            CHECK_EQ(centre[3].number, 255.0);
+            CHECK(!colour_is(centre, 255, 255, 255));
+            if (centre[4].number >= 2.0) {
+                const std::string drawn = "rgb(" + std::to_string(static_cast<int>(centre[0].number)) + "," +
+                                          std::to_string(static_cast<int>(centre[1].number)) + "," +
+                                          std::to_string(static_cast<int>(centre[2].number)) + ")";
+                CHECK_EQ(drawn, centre[5].text);
+            }
+        }
+    }
 }
 
 // Each disk's fill in a snapshot, in the order drawn.
@@ -395,14 +556,7 @@ std::vector<std::string> disk_colours(const std::string& svg_text) {
 // picture and on the page; a gas many colours; the page plots |psi6| and the
 // pressure.
 void order_is_seen() {
-    SceneFamilyOptions o;
-    o.particles = 100;
-    o.area_fraction = 0.7;
-    o.boundary = Boundary::periodic;
-    o.steps = 4;
-    std::ostringstream lattice_text;
-    write_scene(lattice_text, make_family_scene(SceneFamily::crystal, o));
-    const std::string lattice = write_file("lattice.in", lattice_text.str());
+    const std::string lattice = scene_file("lattice.in", periodic_lattice(4));
     const std::string svg = work_dir() + "/order.svg", page = work_dir() + "/order.html";
     const run_process::Result out =
         run_process::run(simcli, {lattice, "--engine", "exact", "--boundary", "periodic", "--colour-by", "psi6",
@@ -518,7 +672,7 @@ void periodic_images_are_drawn() {
     };
     const std::string text = run_process::slurp(svg);
     CHECK_EQ(circles(text), std::size_t{9});
-    CHECK(text.find("cx=\"-0.5\" cy=\"10\"") != std::string::npos);
+    CHECK(text.find("cx=\"-18\" cy=\"360\"") != std::string::npos);  // (-0.5, 10) in pixels, 36 a unit
     CHECK(text.find("clip-path=\"url(#box)\"") != std::string::npos);
     // A walled box draws each disk once.
     const std::string walled = write_file("walled.in", "2 20 1 2 print\n0 19 10 0 0\n1 1 1 0 0\n");
@@ -541,6 +695,8 @@ int main(int argc, char** argv) {
                                    {"large runs stay in budget", large_runs_stay_in_budget},
                                    {"periodic images are drawn", periodic_images_are_drawn},
                                    {"snapshot is the state", snapshot_is_the_state},
+                                   {"scaled scene draws the same picture", scaled_scene_draws_the_same_picture},
+                                   {"snapshot draws at any scale", snapshot_draws_at_any_scale},
                                    {"order is seen", order_is_seen}});
     std::filesystem::remove_all(work_dir());
     return status;

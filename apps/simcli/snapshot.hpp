@@ -1,7 +1,8 @@
 #pragma once
 // simcli --snapshot FILE.svg [--snapshot-step N]: one state as an SVG picture
 // for documents: the box, the disks to scale (at least a visible size),
-// coloured by speed or by the local psi6 (colour_by.hpp), with a caption.
+// coloured by speed or by the local psi6 (colour_by.hpp), with a caption of
+// two lines. Written in pixels (the box 720 wide, y upwards), whatever L.
 
 #include "colour_by.hpp"
 
