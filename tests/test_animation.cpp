@@ -15,6 +15,7 @@
 #include "particlesim/particlesim.hpp"
 
 #include <algorithm>
+#include <array>
 #include <chrono>
 #include <cmath>
 #include <cstdlib>
@@ -454,6 +455,47 @@ void scaled_scene_draws_the_same_picture() {
     }
 }
 
+// The page of a scene scaled by 2^k shows each disk of the chosen frame
+// where simcli printed it (--exact-numbers: eight decimals print 0 for
+// all), nothing where no disk is, and no overlap: at
+// 2^-170 (a box of 1.7e-50, whose float32 frames once rounded to 0 and
+// stacked every disk at the origin) and at 2^166 as at 2^0.
+void page_draws_at_any_scale() {
+    Scene three;
+    three.world = World{20.0, 0.5};
+    three.steps = 2;
+    three.mode = OutputMode::print;
+    three.particle_count = 3;
+    for (const auto& [x, y, vx, vy] :
+         std::vector<std::array<double, 4>>{{4.0, 10.0, 0.6, 0.02}, {16.0, 10.0, -0.6, 0.0}, {10.0, 4.0, 0.0, 0.2}}) {
+        Particle p;
+        p.position = Vec2(x, y);
+        p.velocity = Vec2(vx, vy);
+        three.particles.push_back(p);
+    }
+    for (const int k : {0, -170, 166}) {
+        const Scene scene = scaled_scene(three, k);
+        const std::string page = work_dir() + "/scaled.html";
+        const run_process::Result out =
+            run_process::run(simcli, {scene_file("scaled-three.in", scene), "--exact-numbers", "--animate", page});
+        CHECK_EQ(out.status, 0);
+        const auto states = read_states(out.out);
+        if (states.size() != 3) continue;
+        std::vector<Vec2> on;
+        for (const Particle& p : states[2]) on.push_back(p.position);
+        const double L = scene.world.box_size;
+        const std::vector<Vec2> off{{0.5 * L, 0.9 * L}, {0.9 * L, 0.9 * L}, {0.1 * L, 0.1 * L}};
+        const mini_json::Value r =
+            open_page(page, "{\"frame\":2,\"on\":" + points(on) + ",\"off\":" + points(off) + ",\"scrubTo\":1}").report;
+        if (r.kind != mini_json::Value::Kind::object) continue;
+        const check::Context context("the scene scaled by 2^" + std::to_string(k));
+        for (const mini_json::Value& pixel : r["on"].items) CHECK(colour_is(pixel, 232, 89, 12));
+        for (const mini_json::Value& pixel : r["off"].items) CHECK(colour_is(pixel, 255, 255, 255));
+        CHECK_EQ(r["overlapLabel"].text, std::string());
+        CHECK(r["errors"].items.empty());
+    }
+}
+
 // Snapshots in Chromium, drawn into a canvas: each disk's centre shows a
 // disk, not the background, and each caption line lies inside the picture,
 // below the box and below the line before. The longest captions (psi6's
@@ -697,6 +739,7 @@ int main(int argc, char** argv) {
                                    {"snapshot is the state", snapshot_is_the_state},
                                    {"scaled scene draws the same picture", scaled_scene_draws_the_same_picture},
                                    {"snapshot draws at any scale", snapshot_draws_at_any_scale},
+                                   {"page draws at any scale", page_draws_at_any_scale},
                                    {"order is seen", order_is_seen}});
     std::filesystem::remove_all(work_dir());
     return status;

@@ -79,6 +79,7 @@ Animation::Animation(const AnimationRequest& request, const particlesim::World& 
                      particlesim::Boundary boundary)
     : file_(std::make_unique<OutputFile>(request.path)),
       world_(world),
+      unit_(std::ldexp(1.0, std::ilogb(world.box_size) + 1)),
       count_(particles),
       steps_(steps),
       engine_(std::move(engine)),
@@ -128,7 +129,7 @@ void Animation::add_frame(double time, std::span<const Particle> particles, cons
         const double vx = p.velocity.x() / velocity_scale;
         const double vy = p.velocity.y() / velocity_scale;
         for (const double value : {p.position.x(), p.position.y(), vx, vy})
-            frames_.push_back(static_cast<float>(value));
+            frames_.push_back(static_cast<float>(value / unit_));
         const double speed = std::hypot(vx, vy);
         if (times_.empty() && i == 0) speed_min_ = speed_max_ = speed;
         speed_min_ = std::min(speed_min_, speed);
@@ -189,7 +190,7 @@ void Animation::write() {
         count_max = std::max(count_max, last_counters_[2 * i] + last_counters_[2 * i + 1]);
     std::string meta =
         "{\"version\": 1, \"particles\": " + std::to_string(count_) + ", \"box\": " + number(world_.box_size) +
-        ", \"radius\": " + number(world_.radius) + ", \"engine\": \"" + engine_ +
+        ", \"radius\": " + number(world_.radius) + ", \"unit\": " + number(unit_) + ", \"engine\": \"" + engine_ +
         "\", \"substeps\": " + std::to_string(substeps_) + ", \"steps\": " + std::to_string(steps_) +
         ", \"every\": " + number(every_) + ", \"speedMin\": " + number(speed_min_) +
         ", \"speedMax\": " + number(speed_max_) + ", \"countMax\": " + std::to_string(count_max) +

@@ -4,7 +4,9 @@
 // The run's data sits in the page as four script elements:
 //   run-meta    JSON: particles, box, radius, engine, substeps, steps, every,
 //               times (of each frame, in steps), speedMin, speedMax, countMax
-//   run-frames  base64 of little-endian float32: per frame, x y vx vy per particle
+//   run-frames  base64 of little-endian float32: per frame, x y vx vy per particle, in
+//               units of run-meta's `unit` (the power of two with L / unit in [0.5, 1):
+//               float32 holds any accepted box, 1e-60 or 1e60, and the scaling is exact)
 //   run-series  base64 of little-endian float64: per frame, the particle and
 //               wall collisions since the frame before, the steps since it, and
 //               the kinetic energy
@@ -74,6 +76,7 @@ private:
 
     std::unique_ptr<OutputFile> file_;
     particlesim::World world_;
+    double unit_;  // of the frames' lengths
     std::size_t count_;
     std::int64_t steps_;
     std::string engine_;

@@ -22,7 +22,10 @@
   };
   const count = meta.particles;
   const frameCount = meta.times.length;
-  const frames = new Float32Array(bytesOf("run-frames")); // frame-major: x, y, vx, vy per particle
+  // Frame-major: x, y, vx, vy per particle, in units of meta.unit (float32
+  // holds any box that way: 1e-60 would round to 0, 1e60 overflow).
+  const frames = new Float32Array(bytesOf("run-frames"));
+  const unit = meta.unit;
   const series = new Float64Array(bytesOf("run-series")); // per frame: particle hits, wall hits, steps, energy
   const hitWords = new Uint32Array(bytesOf("run-hits"));
   const hits = []; // per frame: [index, particle hits, wall hits, ...] since the frame before
@@ -33,6 +36,8 @@
   }
   // --colour-by psi6: per frame and particle, the local psi6's phase and modulus (bytes).
   const order = meta.colourBy === "psi6" ? new Uint8Array(bytesOf("run-order")) : null;
+  // Component k (x, y, vx, vy) of particle i in frame f, in the run's units.
+  const frameValue = (f, i, k) => frames[(f * count + i) * 4 + k] * unit;
   const L = meta.box;
   const r = meta.radius;
   const periodic = meta.periodic === true;
@@ -113,7 +118,7 @@
     }
   };
 
-  const speedOf = (f, i) => Math.hypot(frames[(f * count + i) * 4 + 2], frames[(f * count + i) * 4 + 3]);
+  const speedOf = (f, i) => Math.hypot(frameValue(f, i, 2), frameValue(f, i, 3));
   const bucketOf = (f, i) => {
     if (settings.colour === "collisions") {
       return Math.min(buckets - 1, Math.floor((collisionsSoFar[i] / Math.max(meta.countMax, 1)) * (buckets - 1)));
@@ -134,20 +139,20 @@
     const next = new Int32Array(count);
     const cellOf = (v) => Math.min(side - 1, Math.max(0, Math.floor(v / cell)));
     for (let i = 0; i < count; ++i) {
-      const c = cellOf(frames[(f * count + i) * 4 + 1]) * side + cellOf(frames[(f * count + i) * 4]);
+      const c = cellOf(frameValue(f, i, 1)) * side + cellOf(frameValue(f, i, 0));
       next[i] = heads[c];
       heads[c] = i;
     }
     let pairs = 0;
     const limit = 4 * r * r * (1 - 1e-6);
     for (let i = 0; i < count; ++i) {
-      const x = frames[(f * count + i) * 4], y = frames[(f * count + i) * 4 + 1];
+      const x = frameValue(f, i, 0), y = frameValue(f, i, 1);
       const cx = cellOf(x), cy = cellOf(y);
       for (let gy = Math.max(cy - 1, 0); gy <= Math.min(cy + 1, side - 1); ++gy) {
         for (let gx = Math.max(cx - 1, 0); gx <= Math.min(cx + 1, side - 1); ++gx) {
           for (let j = heads[gy * side + gx]; j >= 0; j = next[j]) {
             if (j <= i) continue;
-            const dx = frames[(f * count + j) * 4] - x, dy = frames[(f * count + j) * 4 + 1] - y;
+            const dx = frameValue(f, j, 0) - x, dy = frameValue(f, j, 1) - y;
             if (dx * dx + dy * dy < limit) {
               overlapping[i] = overlapping[j] = 1;
               ++pairs;
@@ -193,7 +198,7 @@
       ctx.fillStyle = settings.colour === "fixed" ? fixedColour : palette[b];
       ctx.beginPath();
       for (const i of members) {
-        const x0 = px(frames[(f * count + i) * 4]), y0 = py(frames[(f * count + i) * 4 + 1]);
+        const x0 = px(frameValue(f, i, 0)), y0 = py(frameValue(f, i, 1));
         for (const dx of imageShifts(x0, px(0), px(L), drawRadius)) {
           for (const dy of imageShifts(y0, py(L), py(0), drawRadius)) {
             const x = x0 + dx, y = y0 + dy;
@@ -210,7 +215,7 @@
     });
     if (periodic) ctx.restore();
     const ring = (i, colour, extra) => {
-      const x0 = px(frames[(f * count + i) * 4]), y0 = py(frames[(f * count + i) * 4 + 1]);
+      const x0 = px(frameValue(f, i, 0)), y0 = py(frameValue(f, i, 1));
       const reach = drawRadius + extra + ctx.lineWidth;
       if (periodic) clipToBox(); // before the path: clipping begins a path of its own
       ctx.strokeStyle = colour;
@@ -256,10 +261,10 @@
     ctx.beginPath();
     for (const i of members) {
       for (let g = from; g <= f; ++g) {
-        const x = px(frames[(g * count + i) * 4]), y = py(frames[(g * count + i) * 4 + 1]);
+        const x = px(frameValue(g, i, 0)), y = py(frameValue(g, i, 1));
         // A jump longer than half the box on either axis (a fast bounce, or a
         // wrap through a periodic edge) breaks the line: none across the box.
-        const jump = (axis) => Math.abs(frames[(g * count + i) * 4 + axis] - frames[((g - 1) * count + i) * 4 + axis]);
+        const jump = (axis) => Math.abs(frameValue(g, i, axis) - frameValue(g - 1, i, axis));
         const far = g > from && (jump(0) > L / 2 || jump(1) > L / 2);
         if (g === from || far) ctx.moveTo(x, y);
         else ctx.lineTo(x, y);
@@ -301,8 +306,10 @@
     // The fewest digits (four at least, and every digit of the whole part)
     // that tell the two ends apart, with no trailing zeros: a count's ends
     // read "12345" and "0", not "1.235e+4" or "0.00000".
+    // Past fifteen digits, more than a double tells, the whole part goes to
+    // exponent notation: an energy of 1e96 reads "9.505005e+96".
     const wholeDigits = Math.floor(Math.log10(Math.max(Math.abs(low), Math.abs(high), 1))) + 1;
-    let digits = Math.min(17, Math.max(4, wholeDigits));
+    let digits = Math.max(4, wholeDigits <= 15 ? wholeDigits : 4);
     while (digits < 17 && high.toPrecision(digits) === low.toPrecision(digits)) ++digits;
     const endText = (v) => String(Number(v.toPrecision(digits)));
     canvas.dataset.lowText = endText(low);
@@ -406,7 +413,9 @@
     c.fillStyle = "#59636e";
     c.font = "10px sans-serif";
     c.fillText("0", 4, h - 3);
-    c.fillText(`speed ${top.toPrecision(3)}`, w - 80, h - 3);
+    c.textAlign = "right"; // inside the plot, however long the number
+    c.fillText(`speed ${top.toPrecision(3)}`, w - 4, h - 3);
+    c.textAlign = "left";
   };
 
   // ---- legend ----
@@ -478,7 +487,7 @@
     };
     let best = -1, bestDistance = Infinity;
     for (let i = 0; i < count; ++i) {
-      const d = Math.hypot(apart(frames[(current * count + i) * 4], x), apart(frames[(current * count + i) * 4 + 1], y));
+      const d = Math.hypot(apart(frameValue(current, i, 0), x), apart(frameValue(current, i, 1), y));
       if (d < bestDistance) { best = i; bestDistance = d; }
     }
     settings.chosen = best;
@@ -521,6 +530,8 @@
     // The pixel that contains the point (a disk at least 1.5 pixels in radius covers it whole).
     const pixelAt = (x, y) => Array.from(ctx.getImageData(Math.floor(px(x)), Math.floor(py(y)), 1, 1).data.slice(0, 3));
     const results = { frames: frameCount, openMs, scriptMs, scale };
+    go(request.frame);
+    results.overlapLabel = $("overlap-label").textContent; // with the page's own settings
     if (order) {
       // Before anything else changes the colours: the pixel at each point in
       // the psi6 colouring, and the plots' labels at the last frame.
