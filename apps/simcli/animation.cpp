@@ -189,7 +189,7 @@ void Animation::write() {
     for (std::size_t i = 0; i < count_; ++i)
         count_max = std::max(count_max, last_counters_[2 * i] + last_counters_[2 * i + 1]);
     std::string meta =
-        "{\"version\": 1, \"particles\": " + std::to_string(count_) + ", \"box\": " + number(world_.box_size) +
+        "{\"version\": 2, \"particles\": " + std::to_string(count_) + ", \"box\": " + number(world_.box_size) +
         ", \"radius\": " + number(world_.radius) + ", \"unit\": " + number(unit_) + ", \"engine\": \"" + engine_ +
         "\", \"substeps\": " + std::to_string(substeps_) + ", \"steps\": " + std::to_string(steps_) +
         ", \"every\": " + number(every_) + ", \"speedMin\": " + number(speed_min_) +

@@ -2,8 +2,9 @@
 // simcli --animate FILE.html: collects frames of a run and writes one
 // self-contained page that plays it (the page's sources: apps/simcli/page/).
 // The run's data sits in the page as four script elements:
-//   run-meta    JSON: particles, box, radius, engine, substeps, steps, every,
-//               times (of each frame, in steps), speedMin, speedMax, countMax
+//   run-meta    JSON: version (2: frames in units of `unit`), particles, box, radius,
+//               unit, engine, substeps, steps, every, times (of each frame, in
+//               steps), speedMin, speedMax, countMax
 //   run-frames  base64 of little-endian float32: per frame, x y vx vy per particle, in
 //               units of run-meta's `unit` (the power of two with L / unit in [0.5, 1):
 //               float32 holds any accepted box, 1e-60 or 1e60, and the scaling is exact)
