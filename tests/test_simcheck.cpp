@@ -223,6 +223,38 @@ void correct_outputs_pass() {
 // is still left to rounding, a disk's merged bounds may span the box: a
 // correct output then gets no verdict, with the step and the decision named,
 // and a wrong state is still caught.
+// Where eight decimals cannot resolve a hundredth of a radius, a conforming
+// report says so (a box of 1e-50 prints every number as 0): the note names
+// the rounding against the radius and --exact-numbers, and the JSON gives
+// the ratio. Not at 1e-6 of a radius, nor where the numbers are exact.
+void coarse_printing_is_said() {
+    const std::string note = "note: the printed numbers are known within 5e-09, ";
+    struct Case {
+        std::string scene;
+        bool noted;
+    };
+    const std::vector<Case> cases{
+        {"3 1e-50 1e-52 2 print\n0 2e-51 5e-51 3e-52 1e-53\n1 8e-51 5e-51 -3e-52 0\n2 5e-51 2e-51 0 1e-52\n", true},
+        {"2 1e-4 4e-7 2 print\n0 2e-5 5e-5 1e-6 0\n1 8e-5 5e-5 -1e-6 0\n", true},   // 0.0125 radii
+        {"2 1e-4 1e-6 2 print\n0 2e-5 5e-5 1e-6 0\n1 8e-5 5e-5 -1e-6 0\n", false},  // 0.005 radii
+        {"20 200 1 5 print\n", false}};
+    for (const Case& c : cases) {
+        const check::Context context("scene ", c.scene.substr(0, c.scene.find('\n')));
+        const std::string output = run_simcli(c.scene, {});
+        const Verdict text = run_simcheck(c.scene, output);
+        CHECK_EQ(text.status, 0);
+        CHECK_EQ(text.out.find(note) != std::string::npos, c.noted);
+        if (c.noted) CHECK(text.out.find("simcli --exact-numbers") != std::string::npos);
+        const Verdict json = run_simcheck(c.scene, output, {"--json"});
+        const std::size_t at = json.out.find("\"uncertainty_in_radii\": ");
+        CHECK(at != std::string::npos);
+        if (at != std::string::npos) CHECK_EQ(std::stod(json.out.substr(at + 24)) >= 0.01, c.noted);
+        const Verdict exact = run_simcheck(c.scene, run_simcli(c.scene, {"--exact-numbers"}));
+        CHECK_EQ(exact.status, 0);
+        CHECK(exact.out.find("note: ") == std::string::npos);
+    }
+}
+
 void substeps_beyond_a_diameter() {
     const Scene fast = family_scene(SceneFamily::fast, 5, 120, 8);
     const std::string text = scene_text(fast);
@@ -867,6 +899,7 @@ int main(int argc, char** argv) {
     const int status =
         check::run(argc, argv, "test_simcheck",
                    {{"correct outputs pass", correct_outputs_pass},
+                    {"coarse printing is said", coarse_printing_is_said},
                     {"substeps beyond a diameter", substeps_beyond_a_diameter},
                     {"substeps follow each way", substeps_follow_each_way},
                     {"exact engine outputs pass", exact_engine_outputs_pass},

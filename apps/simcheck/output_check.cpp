@@ -185,6 +185,7 @@ Report check_output(const Scene& scene, LineSource& output, const StepCheckOptio
     const std::int64_t steps = scene.steps;
     report.particles = count;
     report.steps = steps;
+    report.radius = scene.world.radius;
     StepChecker checker(scene.world, options);
 
     const bool judge_counters = !allowance.final_block_without_counters;

@@ -68,6 +68,7 @@ struct Report {
     std::int64_t steps_checked = 0;  // one by one (print mode)
     std::int64_t steps_judged = 0;   // of those, the steps the rules could be applied to (StepCheck::judged)
     double uncertainty = 0.0;        // of each printed number
+    double radius = 0.0;             // the scene's, to weigh the uncertainty against
     std::vector<std::pair<std::int64_t, std::string>> within_rounding;  // the first few
     std::size_t within_rounding_count = 0;
     std::vector<std::int64_t> steps_within_rounding;  // every step with such a decision, ascending
