@@ -11,6 +11,7 @@
 #include "check.hpp"
 #include "mini_json.hpp"
 #include "run_process.hpp"
+#include "scaled_by_power_of_two.hpp"
 
 #include "particlesim/particlesim.hpp"
 
@@ -385,14 +386,8 @@ void snapshot_is_the_state() {
     CHECK_EQ(run_process::run(simcli, {scene, "--snapshot-step", "3"}).status, 2);
 }
 
-// `scene` scaled by 2^k: every length and speed, exactly.
 Scene scaled_scene(Scene scene, int k) {
-    scene.world.box_size = std::ldexp(scene.world.box_size, k);
-    scene.world.radius = std::ldexp(scene.world.radius, k);
-    for (Particle& p : scene.particles) {
-        p.position = Vec2(std::ldexp(p.position.x(), k), std::ldexp(p.position.y(), k));
-        p.velocity = Vec2(std::ldexp(p.velocity.x(), k), std::ldexp(p.velocity.y(), k));
-    }
+    scale_by_power_of_two(scene.world, scene.particles, k);
     return scene;
 }
 

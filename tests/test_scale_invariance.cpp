@@ -8,6 +8,7 @@
 #include "example_scenes.hpp"
 #include "named_scene.hpp"
 #include "random_scenes.hpp"
+#include "scaled_by_power_of_two.hpp"
 
 #include "particlesim/exact_simulation.hpp"
 #include "particlesim/random_scene.hpp"
@@ -45,14 +46,9 @@ std::vector<NamedScene> scenes() {
     return all;
 }
 
-NamedScene scaled(const NamedScene& scene, int k) {
-    NamedScene result = scene;
-    result.world = World{std::ldexp(scene.world.box_size, k), std::ldexp(scene.world.radius, k)};
-    for (Particle& p : result.particles) {
-        p.position = Vec2(std::ldexp(p.position.x(), k), std::ldexp(p.position.y(), k));
-        p.velocity = Vec2(std::ldexp(p.velocity.x(), k), std::ldexp(p.velocity.y(), k));
-    }
-    return result;
+NamedScene scaled(NamedScene scene, int k) {
+    scale_by_power_of_two(scene.world, scene.particles, k);
+    return scene;
 }
 
 // The lowest and highest k that keep the scene inside the accepted range.

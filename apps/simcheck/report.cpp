@@ -26,6 +26,11 @@ std::string state_text(const Particle& p) {
 // contact's decision a matter of rounding: the report says so.
 constexpr double coarse_rounding_in_radii = 0.01;
 
+// The printed numbers' rounding against the scene's radius (0 when exact).
+double uncertainty_in_radii(const Report& report) {
+    return report.radius > 0.0 ? report.uncertainty / report.radius : 0.0;
+}
+
 // How the printed numbers are taken: within half their last digit, or, in
 // the shortest form that reads back (--exact-numbers), as the doubles
 // themselves, whose last bits still round in any program's arithmetic.
@@ -130,12 +135,12 @@ void write_text_report(std::FILE* out, const Judgement& judgement, const ReportC
     // Eight decimals of a box of 1e-50 print every number as 0, which any
     // run "conforms" to: say so where the rounding reaches a hundredth of a
     // radius, and how to print a sharper output.
-    if (report.uncertainty >= coarse_rounding_in_radii * report.radius && report.radius > 0.0) {
+    if (uncertainty_in_radii(report) >= coarse_rounding_in_radii) {
         std::fprintf(out,
                      "note: the printed numbers are known within %g, %.3g times the radius %g: this check "
                      "cannot tell apart paths closer than that; print every digit (simcli --exact-numbers) for "
                      "a sharper one\n",
-                     report.uncertainty, report.uncertainty / report.radius, report.radius);
+                     report.uncertainty, uncertainty_in_radii(report), report.radius);
     }
     if (report.within_rounding_count > 0) {
         std::fprintf(out, "%zu decision(s) of the rules were within %s; either outcome was accepted:\n",
@@ -157,8 +162,7 @@ void write_json_report(std::FILE* out, const Judgement& judgement, const ReportC
     json += ", \"steps_checked\": " + std::to_string(report.steps_checked);
     json += ", \"steps_judged\": " + std::to_string(report.steps_judged);
     json += ", \"uncertainty\": " + json_number(report.uncertainty);
-    json +=
-        ", \"uncertainty_in_radii\": " + json_number(report.radius > 0.0 ? report.uncertainty / report.radius : 0.0);
+    json += ", \"uncertainty_in_radii\": " + json_number(uncertainty_in_radii(report));
     if (report.finding) {
         const Finding& f = *report.finding;
         json += ", \"step\": " + std::to_string(f.step) + ", \"line\": " + std::to_string(f.line);

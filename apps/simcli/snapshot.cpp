@@ -122,7 +122,7 @@ void write_snapshot(const std::string& path, const particlesim::World& world,
     for (int line = 0; line < 2; ++line) {
         std::fprintf(
             out, "<text x=\"0\" y=\"%.7g\" font-family=\"sans-serif\" font-size=\"13\" fill=\"#1f2328\">%s</text>\n",
-            picture_pixels + margin + 18.0 + line * caption_line_pixels, lines[line]);
+            picture_pixels + margin + (line + 1) * caption_line_pixels, lines[line]);
     }
     std::fprintf(out, "</svg>\n");
     if (std::ferror(out)) throw particlesim::OutputError(path + ": cannot write: " + std::strerror(errno));
