@@ -450,7 +450,7 @@ private:
           cells_(neighbour_grid(world, particles, options), particles.size()),
           plans_(particles.size()),
           snapshot_(std::move(particles)),
-          gathered_(count() + 1),
+          gathered_(2 * count() + 1),
           look_ahead_(options.look_ahead.value_or(count() >= exact_tuning::look_ahead_from) && !by_lines()),
           linked_queue_(look_ahead_ ? 0 : count(), Event{never, EventKind::cell_crossing, 0, 0}),
           ladder_queue_(look_ahead_ ? count() : 0, Event{never, EventKind::cell_crossing, 0, 0}),
@@ -854,17 +854,22 @@ private:
                          : cells_.gather_in(column, row, i, gathered_.data(), n);
     }
 
+    // The particles of the 3 x 3 cells around i's, i excepted, after the n
+    // in gathered_; returns the new count.
+    std::size_t gather_around(std::uint32_t i, std::size_t n) {
+        const std::uint32_t cell = cells_.cell_of_particle(i);
+        const int column = cells_.grid().column(cell);
+        const int row = cells_.grid().row(cell);
+        for (int dy = -1; dy <= 1; ++dy) {
+            for (int dx = -1; dx <= 1; ++dx) n = gather_cell(column + dx, row + dy, i, n);
+        }
+        return n;
+    }
+
     void predict_pairs(std::uint32_t i) {
         plans_[i].pair = {};
         if (!by_lines()) {
-            const std::uint32_t cell = cells_.cell_of_particle(i);
-            const int column = cells_.grid().column(cell);
-            const int row = cells_.grid().row(cell);
-            std::size_t n = 0;
-            for (int dy = -1; dy <= 1; ++dy) {
-                for (int dx = -1; dx <= 1; ++dx) n = gather_cell(column + dx, row + dy, i, n);
-            }
-            consider_pairs(i, gathered_.data(), n);
+            consider_pairs(i, gathered_.data(), gather_around(i, 0));
             return;
         }
         near_.clear();
@@ -967,6 +972,11 @@ private:
             clamp_into_box(a.position, box_);
             clamp_into_box(b.position, box_);
         }
+        // Both partners' candidates are gathered first: the reads need no
+        // velocity, so they overlap the exchange's long chain of dependent
+        // operations instead of waiting for it.
+        const std::size_t around_i = by_lines() ? 0 : gather_around(i, 0);
+        const std::size_t around_both = by_lines() ? 0 : gather_around(j, around_i);
         const Vec2 b_image = periodic_ ? a.position + nearest_image(b.position - a.position) : b.position;
         a.stamp = now_;
         b.stamp = now_;
@@ -1000,7 +1010,13 @@ private:
         predict_wall(j);
         for (const std::uint32_t k : {i, j}) {
             predict_crossing(k);
-            predict_pairs(k);
+            if (by_lines()) {
+                predict_pairs(k);
+            } else {
+                plans_[k].pair = {};
+                const std::size_t first = k == i ? 0 : around_i;
+                consider_pairs(k, gathered_.data() + first, (k == i ? around_i : around_both) - first);
+            }
             reschedule(queue, k);
         }
     }
@@ -1109,8 +1125,9 @@ private:
     PathLines lines_;
     double lines_epoch_ = 0.0;
     std::vector<std::uint32_t> near_;
-    // The candidates of a search in the cells: room for every particle and
-    // one more (CellList::gather_in()).
+    // The candidates of a search in the cells: room for every particle
+    // twice and one more (a pair collision gathers both partners',
+    // CellList::gather_in()).
     std::vector<std::uint32_t> gathered_;
     // A state that outgrows the caches: the queue in two tiers, and each
     // event prefetching for the events behind it (prefetch_coming_events());
