@@ -66,7 +66,7 @@ struct ExactOptions {
     // queue built for it whose events write to few places (two tiers of
     // appended buckets instead of linked lists): much faster where the state
     // outgrows the caches, slower where it fits (docs/benchmarks.md). Empty:
-    // on from 20 480 particles. No effect with one cell. Every value gives
+    // on from 32 768 particles. No effect with one cell. Every value gives
     // the same events.
     std::optional<bool> look_ahead = std::nullopt;
     // Walls, or a periodic box (docs/physics.md): then the particles' centres
