@@ -4,10 +4,14 @@
 # Usage: scripts/fuzz.sh SECONDS [WORK_DIR]
 # The corpus grows in WORK_DIR/corpus (fuzz/corpus is the committed seed set);
 # a finding is written to WORK_DIR/crash-* (or timeout-*, oom-*) and fails the run.
-# Exit 0: no finding; 1: a finding; 77: clang or libFuzzer is missing.
+# Exit 0: no finding; 1: a finding; 2: SECONDS not a whole number; 77: clang or libFuzzer is missing.
 set -euo pipefail
 source_dir=$(cd "$(dirname "$0")/.." && pwd)
 seconds=${1:?usage: scripts/fuzz.sh SECONDS [WORK_DIR]}
+if ! [[ "$seconds" =~ ^[0-9]+$ ]]; then
+  echo "scripts/fuzz.sh: SECONDS must be a whole number, not '$seconds' (usage: scripts/fuzz.sh SECONDS [WORK_DIR])" >&2
+  exit 2
+fi
 work=${2:-$source_dir/build-fuzz}
 
 if ! command -v clang++ >/dev/null 2>&1 ||
