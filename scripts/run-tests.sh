@@ -47,7 +47,9 @@ cat "$tools_log"
 # One phase after another: the release tests keep both cores busy (96 % of
 # the time), so a build beside them gains little idle CPU, and on the
 # project's virtual machine the switches between the two cost more CPU than
-# it gains (CHANGELOG.md has the runs).
+# it gains (CHANGELOG.md has the runs). Nor do three tests at once instead of
+# two, though some wait on mpirun or Chromium: the release tests took 240.8
+# and 232.4 s at -j 3 against 232.6 and 231.5 s at -j 2, runs alternating.
 echo "== Release tests (at ${SECONDS} s)"
 ctest --preset release -j "$jobs"
 echo "== Sanitized build (address, undefined) (at ${SECONDS} s)"
