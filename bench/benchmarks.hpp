@@ -38,5 +38,6 @@ void stress_benchmark(bool quick);       // the long stability run: a crowded bo
 void divergence_benchmark(bool quick);   // two correct programs drifting apart by chaos
 void loaded_benchmark(bool quick);       // simcli on 1 and 2 threads, quiet and beside a busy process
 void programs_benchmark(bool quick);     // simcli beside the original programs and EDMD (programs_benchmark.cpp)
+void memory_benchmark(bool quick);       // random 64-byte reads at the exact engine's sizes (memory_benchmark.cpp)
 
 }  // namespace bench

@@ -17,6 +17,8 @@
 //   particlesim_bench loaded   [--quick]   1 and 2 threads and the default thread count, quiet and
 //                                          beside a busy process (programs_benchmark.cpp)
 //   particlesim_bench programs [--quick]   beside the original programs and EDMD (programs_benchmark.cpp)
+//   particlesim_bench memory   [--quick]   random 64-byte reads at the exact engine's sizes: how many
+//                                          a second, and one at a time (memory_benchmark.cpp)
 //
 // Every time is the median of repeated runs measured in the same invocation.
 // A run's first step is timed apart from the steps after it: it allocates
@@ -400,10 +402,12 @@ int main(int argc, char** argv) {
         bench::loaded_benchmark(quick);
     } else if (mode == "programs") {
         bench::programs_benchmark(quick);
+    } else if (mode == "memory") {
+        bench::memory_benchmark(quick);
     } else {
         std::fprintf(stderr,
                      "usage: particlesim_bench "
-                     "steps|sizes|choice|simcli|accuracy|exact|exact_queue|stress|divergence|loaded|programs "
+                     "steps|sizes|choice|simcli|accuracy|exact|exact_queue|stress|divergence|loaded|programs|memory "
                      "[--quick]\n");
         return 2;
     }
