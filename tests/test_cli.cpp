@@ -210,6 +210,14 @@ void bad_usage() {
     expect_rejected({"--checkpoint", "/tmp"}, scene, "simcli: /tmp: cannot open for writing", "Is a directory");
     expect_rejected({"--resume", "state.ckpt", "--snapshot", "run.svg"}, scene,
                     "simcli: --animate and --snapshot need the whole run", "");
+    // The exact engine's page setting (any value but 0 and 1 is a mistake, not silently 1).
+    setenv("PARTICLESIM_HUGE_PAGES", "off", 1);
+    expect_rejected({}, scene, "simcli: PARTICLESIM_HUGE_PAGES: expected 0 (small pages) or 1", "\"off\"");
+    for (const char* setting : {"0", "1"}) {
+        setenv("PARTICLESIM_HUGE_PAGES", setting, 1);
+        CHECK_EQ(simcli_run({}, scene).status, 0);
+    }
+    unsetenv("PARTICLESIM_HUGE_PAGES");
 }
 
 // Each output a file of its own, none the scene or checkpoint read: two

@@ -10,6 +10,7 @@
 #include <charconv>
 #include <cmath>
 #include <cstdio>
+#include <cstdlib>
 #include <string_view>
 
 namespace simcli {
@@ -231,6 +232,18 @@ void check_combinations(CliOptions& options, const Given& given) {
     }
 }
 
+// The library reads PARTICLESIM_HUGE_PAGES (0: small pages for the exact
+// engine's arrays); any value but 0 and 1 is a mistake said here, not
+// taken silently as 1.
+void require_known_huge_pages_setting() {
+    const char* setting = std::getenv("PARTICLESIM_HUGE_PAGES");
+    if (setting == nullptr) return;
+    const std::string_view value(setting);
+    if (value != "0" && value != "1")
+        throw BadInput("PARTICLESIM_HUGE_PAGES: expected 0 (small pages) or 1 (huge pages, the default), found \"" +
+                       std::string(value) + "\"");
+}
+
 }  // namespace
 
 std::optional<CliOptions> parse_arguments(int argc, char** argv) {
@@ -358,6 +371,7 @@ std::optional<CliOptions> parse_arguments(int argc, char** argv) {
     if (argc - optind == 1) options.scene_path = argv[optind];
     check_combinations(options, given);
     require_distinct_files(options);
+    require_known_huge_pages_setting();
     return options;
 }
 

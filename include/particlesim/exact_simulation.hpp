@@ -54,6 +54,10 @@ private:
 // Whole steps the exact engine can count: its clock is a double.
 inline constexpr std::int64_t max_exact_steps = std::int64_t{1} << 53;
 
+// The engine's large arrays ask Linux for transparent huge pages, or for
+// small ones when the environment holds PARTICLESIM_HUGE_PAGES=0 (read once
+// a process). Which is faster depends on the machine (docs/benchmarks.md,
+// "Huge pages for the exact engine's arrays"); every result is the same.
 struct ExactOptions {
     // Cells per side of the neighbour search, >= 1 (1 tests every pair).
     // Empty: sized from the scene. Every value gives the same events.

@@ -6,10 +6,17 @@
 // and Ubuntu do), so that a random read misses the TLB far less often.
 // Smaller arrays, and other systems, get plain operator new. The contents
 // and every result are the same either way.
+//
+// PARTICLESIM_HUGE_PAGES=0 in the environment asks for small pages instead
+// (MADV_NOHUGEPAGE, which also holds where the system gives huge pages to
+// all): on some virtual machines huge pages make many random reads in
+// flight slower, not faster (docs/benchmarks.md, "Huge pages for the exact
+// engine's arrays").
 
 #include <cstddef>
 #include <cstdlib>
 #include <new>
+#include <string_view>
 #include <vector>
 
 #if defined(__linux__)
@@ -17,6 +24,16 @@
 #endif
 
 namespace particlesim {
+
+// Whether the large arrays ask for huge pages: unless PARTICLESIM_HUGE_PAGES
+// is 0 (read once, at the first large array).
+inline bool huge_pages_wanted() {
+    static const bool wanted = [] {
+        const char* setting = std::getenv("PARTICLESIM_HUGE_PAGES");
+        return setting == nullptr || std::string_view(setting) != "0";
+    }();
+    return wanted;
+}
 
 template <typename T>
 class HugePageAllocator {
@@ -34,7 +51,8 @@ public:
         void* memory = std::aligned_alloc(huge_page, rounded(bytes));
         if (memory == nullptr) throw std::bad_alloc();
 #if defined(__linux__) && defined(MADV_HUGEPAGE)
-        madvise(memory, rounded(bytes), MADV_HUGEPAGE);  // a hint: refused, the pages stay small
+        // A hint: refused, the pages stay as they are.
+        madvise(memory, rounded(bytes), huge_pages_wanted() ? MADV_HUGEPAGE : MADV_NOHUGEPAGE);
 #endif
         return static_cast<T*>(memory);
     }
