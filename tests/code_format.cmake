@@ -11,7 +11,7 @@ if(NOT CLANG_FORMAT)
 endif()
 file(GLOB_RECURSE sources "${SOURCE_DIR}/include/*.hpp" "${SOURCE_DIR}/src/*.hpp" "${SOURCE_DIR}/src/*.cpp"
      "${SOURCE_DIR}/apps/*.cpp" "${SOURCE_DIR}/tests/*.hpp" "${SOURCE_DIR}/tests/*.cpp" "${SOURCE_DIR}/bench/*.hpp"
-     "${SOURCE_DIR}/bench/*.cpp" "${SOURCE_DIR}/examples/*.cpp")
+     "${SOURCE_DIR}/bench/*.cpp" "${SOURCE_DIR}/examples/*.cpp" "${SOURCE_DIR}/profile/*.cpp")
 execute_process(COMMAND "${CLANG_FORMAT}" --dry-run --Werror ${sources} RESULT_VARIABLE status ERROR_VARIABLE err)
 if(NOT status EQUAL 0)
   message(FATAL_ERROR "sources differ from .clang-format (run clang-format -i on them):\n${err}")

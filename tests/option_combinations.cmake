@@ -44,3 +44,28 @@ else()
   message(FATAL_ERROR "configure failed with -DPARTICLESIM_MPI=ON, without naming the packages:\n${err}")
 endif()
 file(REMOVE_RECURSE "${WORK_DIR}/mpi")
+
+# The profile-guided build: on by default for a GCC Release build, off for
+# any other build type, and configurable on in one.
+foreach(case "Release:none:ON" "Debug:none:OFF" "Debug:-DPARTICLESIM_PROFILE_GUIDED=ON:ON")
+  string(REPLACE ":" ";" case "${case}")
+  list(GET case 0 type)
+  list(GET case 1 setting)
+  list(GET case 2 expected)
+  if(setting STREQUAL "none")
+    set(setting "")
+  endif()
+  execute_process(COMMAND ${CMAKE_COMMAND} -G "${GENERATOR}" -S "${SOURCE_DIR}" -B "${WORK_DIR}/profiled"
+                          -DCMAKE_CXX_COMPILER=g++ -DCMAKE_BUILD_TYPE=${type} ${setting}
+                          -DPARTICLESIM_BUILD_TESTS=OFF -DPARTICLESIM_BUILD_BENCH=OFF
+                  RESULT_VARIABLE status OUTPUT_QUIET ERROR_VARIABLE err)
+  if(NOT status EQUAL 0)
+    message(FATAL_ERROR "configure failed with ${type} ${setting}:\n${err}")
+  endif()
+  file(STRINGS "${WORK_DIR}/profiled/CMakeCache.txt" cached REGEX "^PARTICLESIM_PROFILE_GUIDED:BOOL=")
+  if(NOT cached STREQUAL "PARTICLESIM_PROFILE_GUIDED:BOOL=${expected}")
+    message(FATAL_ERROR "${type} ${setting}: ${cached}, expected ${expected}")
+  endif()
+  message(STATUS "configured: ${type} ${setting}: profile-guided ${expected}")
+  file(REMOVE_RECURSE "${WORK_DIR}/profiled")
+endforeach()

@@ -4,7 +4,7 @@
 # Inputs: SOURCE_DIR.
 file(GLOB_RECURSE files RELATIVE "${SOURCE_DIR}" "${SOURCE_DIR}/src/*" "${SOURCE_DIR}/include/*"
      "${SOURCE_DIR}/apps/*" "${SOURCE_DIR}/tests/*" "${SOURCE_DIR}/bench/*" "${SOURCE_DIR}/docs/*.md"
-     "${SOURCE_DIR}/scripts/*" "${SOURCE_DIR}/cmake/*" "${SOURCE_DIR}/examples/*" "${SOURCE_DIR}/fuzz/*.cpp"
+     "${SOURCE_DIR}/scripts/*" "${SOURCE_DIR}/cmake/*" "${SOURCE_DIR}/examples/*" "${SOURCE_DIR}/fuzz/*.cpp" "${SOURCE_DIR}/profile/*"
      "${SOURCE_DIR}/README.md" "${SOURCE_DIR}/CMakeLists.txt")
 list(FILTER files EXCLUDE REGEX "\\.(png|svg)$|^tests/present_tense\\.cmake$")
 set(found "")
