@@ -69,3 +69,19 @@ foreach(case "Release:none:ON" "Debug:none:OFF" "Debug:-DPARTICLESIM_PROFILE_GUI
   message(STATUS "configured: ${type} ${setting}: profile-guided ${expected}")
   file(REMOVE_RECURSE "${WORK_DIR}/profiled")
 endforeach()
+
+# Forced on with a compiler other than GCC, it stops with one message.
+find_program(clang_compiler clang++)
+if(clang_compiler)
+  execute_process(COMMAND ${CMAKE_COMMAND} -G "${GENERATOR}" -S "${SOURCE_DIR}" -B "${WORK_DIR}/profiled_clang"
+                          -DCMAKE_CXX_COMPILER=${clang_compiler} -DCMAKE_BUILD_TYPE=Release
+                          -DPARTICLESIM_PROFILE_GUIDED=ON
+                  RESULT_VARIABLE status OUTPUT_QUIET ERROR_VARIABLE err)
+  if(status EQUAL 0 OR NOT err MATCHES "needs GCC 11 or later")
+    message(FATAL_ERROR "clang with -DPARTICLESIM_PROFILE_GUIDED=ON did not refuse with the message:\n${err}")
+  endif()
+  message(STATUS "clang with -DPARTICLESIM_PROFILE_GUIDED=ON refuses")
+  file(REMOVE_RECURSE "${WORK_DIR}/profiled_clang")
+else()
+  message(STATUS "SKIPPED: clang++ is missing, so the profile-guided build's refusal of another compiler is not checked")
+endif()
