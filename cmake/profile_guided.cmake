@@ -25,7 +25,8 @@ function(particlesim_profile_guided)
     # the source's own properties (its profile, below) stay the library's.
     set(included_copy ${CMAKE_CURRENT_BINARY_DIR}/profile_training/${source})
     file(CONFIGURE OUTPUT ${included_copy} CONTENT "#include \"${CMAKE_CURRENT_SOURCE_DIR}/${source}\"\n")
-    set_source_files_properties(${included_copy} PROPERTIES COMPILE_OPTIONS "${same_names}")
+    set_source_files_properties(${included_copy} PROPERTIES
+      COMPILE_OPTIONS "-fprofile-generate;-fprofile-update=single;${same_names}")
     list(APPEND included_copies ${included_copy})
     # -fprofile-partial-training: code the training run never reached keeps
     # its ordinary optimisation instead of being compiled for size.
@@ -42,7 +43,8 @@ function(particlesim_profile_guided)
   # Compiled as the library is (-fPIC, not an executable's -fPIE, which lets
   # GCC inline other calls), or the profile would not match its functions.
   set_target_properties(${trainer} PROPERTIES POSITION_INDEPENDENT_CODE OFF)
-  target_compile_options(${trainer} PRIVATE -fPIC -fprofile-generate -fprofile-update=single)
+  # Only the profiled sources are instrumented (above); the link brings libgcov.
+  target_compile_options(${trainer} PRIVATE -fPIC)
   target_link_options(${trainer} PRIVATE -fprofile-generate)
 
   # A run adds its counts to any profile already there: start from none.
