@@ -5,7 +5,7 @@
 # checks compiled in (any report fails the run). The Release pass also
 # cross-checks the bytes on aarch64 under qemu, runs the parallel stages under
 # ThreadSanitizer (clang's OpenMP) and fuzzes for 10 seconds.
-# 7 min 57 s to 10 min 8 s (eleven runs, the machine quiet; 16 min 36 s beside a busy process) from a clean clone on the project's 2-core machine with the tools
+# 7 min 57 s to 10 min 8 s (twelve runs, the machine quiet; 16 min 36 s beside a busy process) from a clean clone on the project's 2-core machine with the tools
 # already installed (OpenMPI's tests included), 14.3 to 18.5 min of CPU time, more than a quarter of it in the kernel (a first touch of memory
 # and a switch between processes are slow in its virtual machine); on a fresh machine the tools' install
 # adds what the Release build does not hide.
