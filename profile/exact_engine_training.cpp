@@ -1,12 +1,13 @@
 // The run that GCC learns the exact engine's branches from, for the
-// library's profile-guided build (cmake/profile_guided.cmake): the gas at
-// area fraction 0.3 that the benchmarks time, walled and periodic, in the
+// library's profile-guided build (cmake/profile_guided.cmake): the kind of
+// gas the benchmarks time (area fraction 0.3), walled and periodic, in the
 // caches (the linked calendar) and beyond them (the two-tier calendar and
 // its look ahead), and a sparse scene searched by the particles' lines.
 // Each run is short: the proportions of the engine's paths matter, not the
-// counts. Its seed is none the benchmarks time (particlesim_bench's 3210,
-// the scripts' 7), so that no timed scene is the one trained on. Built instrumented and run at build time; never
-// installed. Exits with 1 if a run has no collision (a training run that teaches nothing).
+// counts. Its seed is none the benchmarks use (particlesim_bench's 3210,
+// the scripts' 7), so that no timed scene is the one trained on. Built
+// instrumented and run at build time; never installed. Exits with 1 if a
+// run has no collision (a training run that teaches nothing).
 
 #include "particlesim/engine.hpp"
 #include "particlesim/exact_simulation.hpp"
@@ -44,8 +45,8 @@ std::uint64_t collisions_of(const TrainingRun& training) {
 int main() {
     using particlesim::Boundary;
     const particlesim::SpeedRange gas_speeds{0.1, 1.0};
-    // About 1e5 collisions each in the gas; the default scene's density (1000 disks,
-    // L = 20 000) for the lines.
+    // About 1e5 collisions each in the gas; the default scene's density
+    // (1000 disks, L = 20 000) for the lines.
     const TrainingRun runs[] = {
         {10'000, 0.3, gas_speeds, 40, Boundary::walls},
         {10'000, 0.3, gas_speeds, 40, Boundary::periodic},
