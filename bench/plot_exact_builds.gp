@@ -10,7 +10,7 @@ set style data histograms
 set style histogram clustered gap 1
 set style fill solid 0.85 border -1
 set boxwidth 0.9
-set yrange [0:1.8]
+set yrange [0:*]  # from 0, up to the fastest bar
 set grid ytics
 set ylabel "million collisions a second (one thread)"
 set xlabel "disks (gas, area fraction 0.3)"
