@@ -108,28 +108,65 @@ template <typename Floats, typename Mask>
     }
 }
 
-// Appends to `near` every line j of [0, padded) that passes lines_close(),
+// What a scan reads (PathLines::gather_slots()): the slots of two ranges,
+// each a whole number of the widest groups, and which lanes to clear: query
+// k's own line, the slot own_first + k, passes its own test, and a hit costs
+// a mispredicted branch and the appending (the own lines were half the
+// default scene's hits).
+struct SlotScan {
+    std::size_t ranges[2][2];
+    std::size_t own_first;  // PathLines::no_slot: none to clear
+    std::size_t queries;
+};
+
+// The groups of `lanes` that hold the own lines: a group starting at slot j
+// holds some when j - first <= span (never when there are none).
+struct OwnGroups {
+    std::size_t first;
+    std::size_t span;
+};
+[[gnu::always_inline]] inline OwnGroups own_groups(const SlotScan& scan, std::size_t lanes) {
+    if (scan.own_first == PathLines::no_slot) return {PathLines::no_slot, 0};
+    const std::size_t first = scan.own_first / lanes * lanes;
+    return {first, (scan.own_first + scan.queries - 1) / lanes * lanes - first};
+}
+
+// The bits of the group of `lanes` from slot `group`, the lane of slot `own` cleared.
+[[gnu::always_inline]] inline std::uint64_t without_own(std::uint64_t bits, std::size_t group, std::size_t lanes,
+                                                        std::size_t own) {
+    return own - group < lanes ? bits & ~(std::uint64_t{1} << (own - group)) : bits;
+}
+
+// Appends to `near` every line of the scan that passes lines_close(),
 // `Floats` lines (four or eight) to a group, two groups at a time:
 // nearly every pair of groups has no close line, so one test of all their
 // lanes. Always inlined, so that a caller compiled for AVX2 gets
 // its lanes.
 template <typename Floats>
 [[gnu::always_inline]] inline void gather_lanes(const float* x, const float* y, const float* vx, const float* vy,
-                                                std::size_t padded, const LineQuery& query,
+                                                const SlotScan& scan, const LineQuery& query,
                                                 std::vector<std::uint32_t>& near) {
     using Mask = decltype(Floats{} < Floats{});
     constexpr std::size_t lanes = sizeof(Floats) / sizeof(float);
     // A copy: `near` could alias the query as far as the compiler knows.
     const LineQuery q = query;
-    for (std::size_t j = 0; j < padded; j += 2 * lanes) {
-        Mask close[2];
-        for (std::size_t g = 0; g < 2; ++g) {
-            LineGroup<Floats> group;
-            load_group(x, y, vx, vy, j + g * lanes, group);
-            lines_close(group, q, close[g]);
+    const OwnGroups own = own_groups(scan, 2 * lanes);
+    for (const auto& range : scan.ranges) {
+        for (std::size_t j = range[0]; j < range[1]; j += 2 * lanes) {
+            Mask close[2];
+            for (std::size_t g = 0; g < 2; ++g) {
+                LineGroup<Floats> group;
+                load_group(x, y, vx, vy, j + g * lanes, group);
+                lines_close(group, q, close[g]);
+            }
+            const auto bits = [&] { return lane_bits(close[0]) | std::uint64_t{lane_bits(close[1])} << lanes; };
+            if (j - own.first <= own.span) [[unlikely]] {
+                append_lanes(without_own(bits(), j, 2 * lanes, scan.own_first), j, near);
+                continue;
+            }
+            if (!any_lane(close[0] | close[1])) continue;
+            append_lanes(bits(), j, near);
         }
-        if (!any_lane(close[0] | close[1])) continue;
-        append_lanes(lane_bits(close[0]) | std::uint64_t{lane_bits(close[1])} << lanes, j, near);
     }
 }
 
@@ -138,41 +175,49 @@ template <typename Floats>
 // queries would not fit AVX2's sixteen registers).
 template <typename Floats, int queries>
 [[gnu::always_inline]] inline void gather_lanes_block(const float* x, const float* y, const float* vx, const float* vy,
-                                                      std::size_t padded, const LineQuery* query,
+                                                      const SlotScan& scan, const LineQuery* query,
                                                       std::vector<std::uint32_t>* const* near) {
     using Mask = decltype(Floats{} < Floats{});
     constexpr std::size_t lanes = sizeof(Floats) / sizeof(float);
     LineQuery q[queries];
     for (int k = 0; k < queries; ++k) q[k] = query[k];
-    for (std::size_t j = 0; j < padded; j += lanes) {
-        LineGroup<Floats> group;
-        load_group(x, y, vx, vy, j, group);
-        Mask close[queries];
-        for (int k = 0; k < queries; ++k) lines_close(group, q[k], close[k]);
-        Mask any = close[0];
-        for (int k = 1; k < queries; ++k) any |= close[k];
-        if (!any_lane(any)) continue;
-        for (int k = 0; k < queries; ++k) append_lanes(lane_bits(close[k]), j, *near[k]);
+    const OwnGroups own = own_groups(scan, lanes);
+    for (const auto& range : scan.ranges) {
+        for (std::size_t j = range[0]; j < range[1]; j += lanes) {
+            LineGroup<Floats> group;
+            load_group(x, y, vx, vy, j, group);
+            Mask close[queries];
+            for (int k = 0; k < queries; ++k) lines_close(group, q[k], close[k]);
+            if (j - own.first <= own.span) [[unlikely]] {
+                for (int k = 0; k < queries; ++k)
+                    append_lanes(without_own(lane_bits(close[k]), j, lanes, scan.own_first + k), j, *near[k]);
+                continue;
+            }
+            Mask any = close[0];
+            for (int k = 1; k < queries; ++k) any |= close[k];
+            if (!any_lane(any)) continue;
+            for (int k = 0; k < queries; ++k) append_lanes(lane_bits(close[k]), j, *near[k]);
+        }
     }
 }
 
-void gather_four(const float* x, const float* y, const float* vx, const float* vy, std::size_t padded,
+void gather_four(const float* x, const float* y, const float* vx, const float* vy, const SlotScan& scan,
                  const LineQuery& q, std::vector<std::uint32_t>& near) {
-    gather_lanes<FourFloats>(x, y, vx, vy, padded, q, near);
+    gather_lanes<FourFloats>(x, y, vx, vy, scan, q, near);
 }
 
 #if defined(__x86_64__)
 [[gnu::target("avx2,fma")]] void gather_eight(const float* x, const float* y, const float* vx, const float* vy,
-                                              std::size_t padded, const LineQuery& q,
+                                              const SlotScan& scan, const LineQuery& q,
                                               std::vector<std::uint32_t>& near) {
-    gather_lanes<EightFloats>(x, y, vx, vy, padded, q, near);
+    gather_lanes<EightFloats>(x, y, vx, vy, scan, q, near);
 }
 
 template <int queries>
 [[gnu::target("avx2,fma")]] void gather_eight_block(const float* x, const float* y, const float* vx, const float* vy,
-                                                    std::size_t padded, const LineQuery* q,
+                                                    const SlotScan& scan, const LineQuery* q,
                                                     std::vector<std::uint32_t>* const* near) {
-    gather_lanes_block<EightFloats, queries>(x, y, vx, vy, padded, q, near);
+    gather_lanes_block<EightFloats, queries>(x, y, vx, vy, scan, q, near);
 }
 
 // AVX-512 compares into mask registers, and GCC's vector extension takes a
@@ -190,39 +235,52 @@ template <int queries>
 
 // gather_lanes() in sixteen lanes.
 [[gnu::target("avx512f,fma")]] void gather_sixteen(const float* x, const float* y, const float* vx, const float* vy,
-                                                   std::size_t padded, const LineQuery& query,
+                                                   const SlotScan& scan, const LineQuery& query,
                                                    std::vector<std::uint32_t>& near) {
     const LineQuery q = query;  // a copy: `near` could alias the query as far as the compiler knows
-    for (std::size_t j = 0; j < padded; j += 32) {
-        LineGroup<SixteenFloats> first;
-        LineGroup<SixteenFloats> second;
-        load_group(x, y, vx, vy, j, first);
-        load_group(x, y, vx, vy, j + 16, second);
-        const std::uint64_t bits = close_bits_sixteen(first, q) | std::uint64_t{close_bits_sixteen(second, q)} << 16;
-        if (bits != 0) append_lanes(bits, j, near);
+    const OwnGroups own = own_groups(scan, 32);
+    for (const auto& range : scan.ranges) {
+        for (std::size_t j = range[0]; j < range[1]; j += 32) {
+            LineGroup<SixteenFloats> first;
+            LineGroup<SixteenFloats> second;
+            load_group(x, y, vx, vy, j, first);
+            load_group(x, y, vx, vy, j + 16, second);
+            std::uint64_t bits = close_bits_sixteen(first, q) | std::uint64_t{close_bits_sixteen(second, q)} << 16;
+            if (j - own.first <= own.span) [[unlikely]]
+                bits = without_own(bits, j, 32, scan.own_first);
+            if (bits != 0) append_lanes(bits, j, near);
+        }
     }
 }
 
 // gather_lanes_block() in sixteen lanes.
 template <int queries>
 [[gnu::target("avx512f,fma")]] void gather_sixteen_block(const float* x, const float* y, const float* vx,
-                                                         const float* vy, std::size_t padded, const LineQuery* query,
+                                                         const float* vy, const SlotScan& scan, const LineQuery* query,
                                                          std::vector<std::uint32_t>* const* near) {
     LineQuery q[queries];
     for (int k = 0; k < queries; ++k) q[k] = query[k];
-    for (std::size_t j = 0; j < padded; j += 16) {
-        LineGroup<SixteenFloats> group;
-        load_group(x, y, vx, vy, j, group);
-        // The masks stay in mask registers, tested at once: nearly every
-        // group has no close line, and moving each to a general register
-        // first cost the loop a sixth of its time.
-        __mmask16 bits[queries];
-        for (int k = 0; k < queries; ++k) bits[k] = close_bits_sixteen(group, q[k]);
-        __mmask16 any = bits[0];
-        for (int k = 1; k < queries; ++k) any = _kor_mask16(any, bits[k]);
-        if (_kortestz_mask16_u8(any, any) != 0) [[likely]]
-            continue;
-        for (int k = 0; k < queries; ++k) append_lanes(_cvtmask16_u32(bits[k]), j, *near[k]);
+    const OwnGroups own = own_groups(scan, 16);
+    for (const auto& range : scan.ranges) {
+        for (std::size_t j = range[0]; j < range[1]; j += 16) {
+            LineGroup<SixteenFloats> group;
+            load_group(x, y, vx, vy, j, group);
+            // The masks stay in mask registers, tested at once: nearly every
+            // group has no close line, and moving each to a general register
+            // first cost the loop a sixth of its time.
+            __mmask16 bits[queries];
+            for (int k = 0; k < queries; ++k) bits[k] = close_bits_sixteen(group, q[k]);
+            if (j - own.first <= own.span) [[unlikely]] {
+                for (int k = 0; k < queries; ++k)
+                    append_lanes(without_own(_cvtmask16_u32(bits[k]), j, 16, scan.own_first + k), j, *near[k]);
+                continue;
+            }
+            __mmask16 any = bits[0];
+            for (int k = 1; k < queries; ++k) any = _kor_mask16(any, bits[k]);
+            if (_kortestz_mask16_u8(any, any) != 0) [[likely]]
+                continue;
+            for (int k = 0; k < queries; ++k) append_lanes(_cvtmask16_u32(bits[k]), j, *near[k]);
+        }
     }
 }
 
@@ -237,20 +295,20 @@ bool cpu_supports_lanes(int lanes) {
 #endif
 
 template <int queries>
-void gather_four_block(const float* x, const float* y, const float* vx, const float* vy, std::size_t padded,
+void gather_four_block(const float* x, const float* y, const float* vx, const float* vy, const SlotScan& scan,
                        const LineQuery* q, std::vector<std::uint32_t>* const* near) {
-    gather_lanes_block<FourFloats, queries>(x, y, vx, vy, padded, q, near);
+    gather_lanes_block<FourFloats, queries>(x, y, vx, vy, scan, q, near);
 }
 
 template <int queries>
-void gather_block(int lanes, const float* x, const float* y, const float* vx, const float* vy, std::size_t padded,
+void gather_block(int lanes, const float* x, const float* y, const float* vx, const float* vy, const SlotScan& scan,
                   const LineQuery* q, std::vector<std::uint32_t>* const* near) {
     switch (lanes) {
 #if defined(__x86_64__)
-    case 16: gather_sixteen_block<queries>(x, y, vx, vy, padded, q, near); break;
-    case 8: gather_eight_block<queries>(x, y, vx, vy, padded, q, near); break;
+    case 16: gather_sixteen_block<queries>(x, y, vx, vy, scan, q, near); break;
+    case 8: gather_eight_block<queries>(x, y, vx, vy, scan, q, near); break;
 #endif
-    default: gather_four_block<queries>(x, y, vx, vy, padded, q, near); break;
+    default: gather_four_block<queries>(x, y, vx, vy, scan, q, near); break;
     }
 }
 
@@ -290,7 +348,7 @@ void PathLines::assign(std::span<const Particle> particles, const Box& box) {
     velocity_scale_ = power_of_two_below(fastest);
     largest_ = {box.side * position_scale_, 0.0};
     // Room for arrange()'s gap between the old lines and the new.
-    for (std::vector<float>* component : {&x_, &y_, &vx_, &vy_})
+    for (CacheLineVector<float>* component : {&x_, &y_, &vx_, &vy_})
         component->assign(whole_groups(count_) + widest_lanes, 0.0f);
     for (std::size_t i = 0; i < count_; ++i)
         set(static_cast<std::uint32_t>(i), particles[i].position, particles[i].velocity);
@@ -342,36 +400,29 @@ LineQuery PathLines::query_for(std::uint32_t i, const LineTerms& terms) const {
     return {{x_[i], y_[i], vx_[i], vy_[i]}, terms};
 }
 
-void PathLines::gather_slots(const LineQuery* queries, std::size_t count, std::size_t begin, std::size_t end,
+void PathLines::gather_slots(const LineQuery* queries, std::size_t count, std::size_t first_end,
+                             std::size_t second_begin, std::size_t second_end, std::size_t own_first,
                              std::vector<std::uint32_t>* const* nears) const {
-    if (begin >= end) return;
-    const float* x = x_.data() + begin;
-    const float* y = y_.data() + begin;
-    const float* vx = vx_.data() + begin;
-    const float* vy = vy_.data() + begin;
-    const std::size_t length = end - begin;
-    std::size_t first[max_block];
-    for (std::size_t k = 0; k < count; ++k) first[k] = nears[k]->size();
+    const SlotScan scan{{{0, first_end}, {second_begin, second_end}}, own_first, count};
+    const float* x = x_.data();
+    const float* y = y_.data();
+    const float* vx = vx_.data();
+    const float* vy = vy_.data();
     static_assert(max_block == 4, "a case below for each block size");
     switch (count) {
     case 1:
         switch (lanes_) {
 #if defined(__x86_64__)
-        case 16: gather_sixteen(x, y, vx, vy, length, queries[0], *nears[0]); break;
-        case 8: gather_eight(x, y, vx, vy, length, queries[0], *nears[0]); break;
+        case 16: gather_sixteen(x, y, vx, vy, scan, queries[0], *nears[0]); break;
+        case 8: gather_eight(x, y, vx, vy, scan, queries[0], *nears[0]); break;
 #endif
-        default: gather_four(x, y, vx, vy, length, queries[0], *nears[0]); break;
+        default: gather_four(x, y, vx, vy, scan, queries[0], *nears[0]); break;
         }
         break;
-    case 2: gather_block<2>(lanes_, x, y, vx, vy, length, queries, nears); break;
-    case 3: gather_block<3>(lanes_, x, y, vx, vy, length, queries, nears); break;
-    case 4: gather_block<4>(lanes_, x, y, vx, vy, length, queries, nears); break;
-    default: return;
-    }
-    if (begin == 0) return;
-    for (std::size_t k = 0; k < count; ++k) {
-        for (auto j = nears[k]->begin() + static_cast<std::ptrdiff_t>(first[k]); j != nears[k]->end(); ++j)
-            *j += static_cast<std::uint32_t>(begin);
+    case 2: gather_block<2>(lanes_, x, y, vx, vy, scan, queries, nears); break;
+    case 3: gather_block<3>(lanes_, x, y, vx, vy, scan, queries, nears); break;
+    case 4: gather_block<4>(lanes_, x, y, vx, vy, scan, queries, nears); break;
+    default: break;
     }
 }
 
@@ -389,18 +440,18 @@ void PathLines::gather_new_block(std::size_t first, std::span<std::vector<std::u
         q[k] = query_for(static_cast<std::uint32_t>(first_slot + k), block_terms);
         found_from[k] = nears[k]->size();
     }
-    // The old lines, then the new ones from the block's group on.
-    gather_slots(q, count, 0, first_new_slot_, nears.data());
-    gather_slots(q, count, first_slot / widest_lanes * widest_lanes, arranged_end_, nears.data());
-    // Slots to particles, without the padding and the line itself.
+    // The old lines, then the new ones from the block's group on, but the
+    // block's own.
+    gather_slots(q, count, first_new_slot_, first_slot / widest_lanes * widest_lanes, arranged_end_, first_slot,
+                 nears.data());
+    // Slots to particles, without the padding.
     for (std::size_t k = 0; k < count; ++k) {
         std::vector<std::uint32_t>& near = *nears[k];
-        const std::uint32_t own = particle_in_slot_[first_slot + k];
         std::size_t kept = found_from[k];
         for (std::size_t n = found_from[k]; n < near.size(); ++n) {
             const std::uint32_t particle = particle_in_slot_[near[n]];
             near[kept] = particle;
-            kept += static_cast<std::size_t>(particle != no_particle && particle != own);
+            kept += static_cast<std::size_t>(particle != no_particle);
         }
         near.resize(kept);
     }
@@ -418,7 +469,10 @@ void PathLines::gather_near_block(std::span<const std::uint32_t> lines,
         q[k] = query_for(lines[k], block_terms);
         first[k] = nears[k]->size();
     }
-    gather_slots(q, lines.size(), 0, whole_groups(count_), nears.data());
+    // A single line's own lane is cleared in the scan; a block's lines lie
+    // anywhere, and drop_non_neighbours() removes them.
+    const std::size_t own = lines.size() == 1 ? lines[0] : no_slot;
+    gather_slots(q, lines.size(), whole_groups(count_), 0, 0, own, nears.data());
     for (std::size_t k = 0; k < lines.size(); ++k) drop_non_neighbours(lines[k], count_, *nears[k], first[k]);
 }
 

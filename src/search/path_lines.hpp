@@ -24,6 +24,7 @@
 // the largest.
 
 #include "core/box.hpp"
+#include "core/cache_line_allocator.hpp"
 #include "particlesim/particle.hpp"
 #include "search/line_test.hpp"
 
@@ -70,6 +71,7 @@ public:
     // lines[k]: each group of lines is read once for all of them (four
     // queries' temporaries still fit AVX2's sixteen registers).
     static constexpr std::size_t max_block = 4;
+    static constexpr std::size_t no_slot = ~std::size_t{0};  // gather_slots(): no own lines to clear
     void gather_near_block(std::span<const std::uint32_t> lines,
                            std::span<std::vector<std::uint32_t>* const> nears) const;
 
@@ -95,10 +97,12 @@ private:
     // The test's terms for the lines stored now (line_test.hpp).
     [[nodiscard]] LineTerms terms() const;
     [[nodiscard]] LineQuery query_for(std::uint32_t i, const LineTerms& terms) const;
-    // Appends, for each of `queries` lines, the slots of [begin, end) whose
-    // lines pass the test, as gather_near_block() does for all slots.
-    void gather_slots(const LineQuery* queries, std::size_t count, std::size_t begin, std::size_t end,
-                      std::vector<std::uint32_t>* const* nears) const;
+    // Appends, for each of `count` queries, the slots of [0, first_end) and
+    // [second_begin, second_end) whose lines pass the test (each bound a
+    // whole number of the widest groups), but the queries' own: query k's
+    // line is the slot own_first + k (none where own_first is no_slot).
+    void gather_slots(const LineQuery* queries, std::size_t count, std::size_t first_end, std::size_t second_begin,
+                      std::size_t second_end, std::size_t own_first, std::vector<std::uint32_t>* const* nears) const;
     // The largest scaled coordinate and velocity component of any line
     // stored since assign(). The stores below update a copy that loops keep
     // in registers (held in the object, it was written back at every line).
@@ -130,8 +134,8 @@ private:
     double reach_scaled_ = 0.0;    // contact_reach(box) times position_scale_
     Largest largest_;
     // Scaled, one array per component, padded to a whole number of lane
-    // groups (with room for arrange()'s gap).
-    std::vector<float> x_, y_, vx_, vy_;
+    // groups (with room for arrange()'s gap), each group on its own lines.
+    CacheLineVector<float> x_, y_, vx_, vy_;
     // After arrange(): the particle in each slot (`no_particle` in the
     // padding), the first new line's slot, and the end of the slots in use.
     static constexpr std::uint32_t no_particle = 0xffffffff;
