@@ -1,7 +1,8 @@
 // The float-lane line test of the paths search: it never drops a pair whose
 // lines come within the reach, at any scale, for grazing lines, nearly
 // parallel motion and particles at rest; it drops most pairs that do not; and
-// lines tested in blocks find what each finds alone.
+// lines tested in blocks find what each finds alone, even where every line
+// passes.
 
 #include "check.hpp"
 
@@ -150,6 +151,64 @@ void never_drops_a_pair_within_reach(int lanes) {
     CHECK(passed - within < pairs / 5);
 }
 
+// A crowd within a quarter of the reach: every line passes every other, so
+// that a scan notes more groups with a passing line than its notes hold, and
+// appends them in several runs; every line is found, in order, alone, in
+// blocks and arranged.
+void a_crowd_finds_every_line(int lanes) {
+    if (!lanes_run_here(lanes)) return;
+    SplitMix64 rng(19);
+    const Box box = Box::of(World{1000.0, 1.0});
+    const double reach = contact_reach(box);
+    std::vector<Particle> particles(3001);
+    for (Particle& p : particles) {
+        const double a = 6.283185307179586 * rng.uniform();
+        const double d = 0.25 * reach * rng.uniform();
+        p.position = Vec2(500.0 + d * std::cos(a), 500.0 + d * std::sin(a));
+        p.velocity = Vec2(rng.uniform() - 0.5, rng.uniform() - 0.5);
+    }
+    const auto count = static_cast<std::uint32_t>(particles.size());
+    PathLines lines(lanes);
+    lines.assign(particles, box);
+    std::vector<std::uint32_t> near;
+    std::vector<std::uint32_t> others;
+    for (const std::uint32_t i : {0U, 1U, 17U, 1500U, count - 1}) {
+        near.clear();
+        lines.gather_near(i, near);
+        others.clear();
+        for (std::uint32_t j = 0; j < count; ++j) {
+            if (j != i) others.push_back(j);
+        }
+        const check::Context context("line ", i);
+        CHECK(near == others);
+    }
+    std::array<std::vector<std::uint32_t>, 4> found;
+    std::array<std::vector<std::uint32_t>*, 4> nears{&found[0], &found[1], &found[2], &found[3]};
+    const std::array<std::uint32_t, 4> block{3, 4, 900, 2999};
+    lines.gather_near_block(block, nears);
+    for (std::size_t k = 0; k < block.size(); ++k) {
+        near.clear();
+        lines.gather_near(block[k], near);
+        CHECK(found[k] == near);
+    }
+    // Every third line new: each new line finds every old one.
+    std::vector<std::uint32_t> old_lines;
+    std::vector<std::uint32_t> new_lines;
+    for (std::uint32_t i = 0; i < count; ++i) (i % 3 == 0 ? new_lines : old_lines).push_back(i);
+    lines.arrange(particles, old_lines, new_lines);
+    for (std::size_t first = 0; first < new_lines.size(); first += 4) {
+        const std::size_t size = std::min<std::size_t>(4, new_lines.size() - first);
+        for (auto& list : found) list.clear();
+        lines.gather_new_block(first, std::span(nears).first(size));
+        for (std::size_t k = 0; k < size; ++k) {
+            const check::Context context("new line ", new_lines[first + k]);
+            std::sort(found[k].begin(), found[k].end());
+            CHECK(std::includes(found[k].begin(), found[k].end(), old_lines.begin(), old_lines.end()));
+            CHECK(!std::binary_search(found[k].begin(), found[k].end(), new_lines[first + k]));
+        }
+    }
+}
+
 // Moving every point along its line, and replacing lines one by one, gives
 // the lines assign() makes from the same particles.
 void moved_and_set_lines_are_assigned_lines() {
@@ -282,6 +341,9 @@ int main(int argc, char** argv) {
         {{"never drops a pair within reach, 4 lanes", [] { never_drops_a_pair_within_reach(4); }},
          {"never drops a pair within reach, 8 lanes", [] { never_drops_a_pair_within_reach(8); }},
          {"never drops a pair within reach, 16 lanes", [] { never_drops_a_pair_within_reach(16); }},
+         {"a crowd finds every line, 4 lanes", [] { a_crowd_finds_every_line(4); }},
+         {"a crowd finds every line, 8 lanes", [] { a_crowd_finds_every_line(8); }},
+         {"a crowd finds every line, 16 lanes", [] { a_crowd_finds_every_line(16); }},
          {"moved and set lines are assigned lines", moved_and_set_lines_are_assigned_lines},
          {"arranged new lines find what each finds, 4 lanes", [] { arranged_new_lines_find_what_each_finds(4); }},
          {"arranged new lines find what each finds, 8 lanes", [] { arranged_new_lines_find_what_each_finds(8); }},

@@ -137,6 +137,38 @@ struct OwnGroups {
     return own - group < lanes ? bits & ~(std::uint64_t{1} << (own - group)) : bits;
 }
 
+// The groups with a passing line, noted by a scan's loop and appended to
+// the near lists after it: with no call in the loop, its queries stay in
+// registers instead of being saved around each append (no vector register
+// survives a call), 0.96 of the default scene's time.
+template <typename Bits, int queries>
+class PassingGroups {
+public:
+    // Notes the group of lanes from slot `first`; true when the notes are
+    // full, and append_to() must come before the next.
+    [[gnu::always_inline]] bool note(std::size_t first, const Bits* bits) {
+        Group& group = groups_[noted_];
+        group.first = static_cast<std::uint32_t>(first);
+        for (int k = 0; k < queries; ++k) group.bits[k] = bits[k];
+        return ++noted_ == capacity;
+    }
+    void append_to(std::vector<std::uint32_t>* const* near) {
+        for (std::size_t n = 0; n < noted_; ++n) {
+            for (int k = 0; k < queries; ++k) append_lanes(groups_[n].bits[k], groups_[n].first, *near[k]);
+        }
+        noted_ = 0;
+    }
+
+private:
+    static constexpr std::size_t capacity = 64;
+    struct Group {
+        std::uint32_t first;
+        Bits bits[queries];
+    };
+    Group groups_[capacity];
+    std::size_t noted_ = 0;
+};
+
 // Appends to `near` every line of the scan that passes lines_close(),
 // `Floats` lines (four or eight) to a group, two groups at a time:
 // nearly every pair of groups has no close line, so one test of all their
@@ -151,21 +183,32 @@ template <typename Floats>
     // A copy: `near` could alias the query as far as the compiler knows.
     const LineQuery q = query;
     const OwnGroups own = own_groups(scan, 2 * lanes);
+    PassingGroups<std::uint64_t, 1> passing;
+    std::vector<std::uint32_t>* const nears[1] = {&near};
     for (const auto& range : scan.ranges) {
-        for (std::size_t j = range[0]; j < range[1]; j += 2 * lanes) {
-            Mask close[2];
-            for (std::size_t g = 0; g < 2; ++g) {
-                LineGroup<Floats> group;
-                load_group(x, y, vx, vy, j + g * lanes, group);
-                lines_close(group, q, close[g]);
+        for (std::size_t j = range[0]; j < range[1];) {
+            for (; j < range[1]; j += 2 * lanes) {
+                Mask close[2];
+                for (std::size_t g = 0; g < 2; ++g) {
+                    LineGroup<Floats> group;
+                    load_group(x, y, vx, vy, j + g * lanes, group);
+                    lines_close(group, q, close[g]);
+                }
+                std::uint64_t bits[1];
+                if (j - own.first <= own.span) [[unlikely]] {
+                    bits[0] = without_own(lane_bits(close[0]) | std::uint64_t{lane_bits(close[1])} << lanes, j,
+                                          2 * lanes, scan.own_first);
+                    if (bits[0] == 0) continue;
+                } else {
+                    if (!any_lane(close[0] | close[1])) continue;
+                    bits[0] = lane_bits(close[0]) | std::uint64_t{lane_bits(close[1])} << lanes;
+                }
+                if (passing.note(j, bits)) {
+                    j += 2 * lanes;
+                    break;
+                }
             }
-            const auto bits = [&] { return lane_bits(close[0]) | std::uint64_t{lane_bits(close[1])} << lanes; };
-            if (j - own.first <= own.span) [[unlikely]] {
-                append_lanes(without_own(bits(), j, 2 * lanes, scan.own_first), j, near);
-                continue;
-            }
-            if (!any_lane(close[0] | close[1])) continue;
-            append_lanes(bits(), j, near);
+            passing.append_to(nears);
         }
     }
 }
@@ -182,21 +225,35 @@ template <typename Floats, int queries>
     LineQuery q[queries];
     for (int k = 0; k < queries; ++k) q[k] = query[k];
     const OwnGroups own = own_groups(scan, lanes);
+    PassingGroups<std::uint32_t, queries> passing;
     for (const auto& range : scan.ranges) {
-        for (std::size_t j = range[0]; j < range[1]; j += lanes) {
-            LineGroup<Floats> group;
-            load_group(x, y, vx, vy, j, group);
-            Mask close[queries];
-            for (int k = 0; k < queries; ++k) lines_close(group, q[k], close[k]);
-            if (j - own.first <= own.span) [[unlikely]] {
-                for (int k = 0; k < queries; ++k)
-                    append_lanes(without_own(lane_bits(close[k]), j, lanes, scan.own_first + k), j, *near[k]);
-                continue;
+        for (std::size_t j = range[0]; j < range[1];) {
+            for (; j < range[1]; j += lanes) {
+                LineGroup<Floats> group;
+                load_group(x, y, vx, vy, j, group);
+                Mask close[queries];
+                for (int k = 0; k < queries; ++k) lines_close(group, q[k], close[k]);
+                std::uint32_t bits[queries];
+                if (j - own.first <= own.span) [[unlikely]] {
+                    std::uint32_t any = 0;
+                    for (int k = 0; k < queries; ++k) {
+                        bits[k] =
+                            static_cast<std::uint32_t>(without_own(lane_bits(close[k]), j, lanes, scan.own_first + k));
+                        any |= bits[k];
+                    }
+                    if (any == 0) continue;
+                } else {
+                    Mask any = close[0];
+                    for (int k = 1; k < queries; ++k) any |= close[k];
+                    if (!any_lane(any)) continue;
+                    for (int k = 0; k < queries; ++k) bits[k] = lane_bits(close[k]);
+                }
+                if (passing.note(j, bits)) {
+                    j += lanes;
+                    break;
+                }
             }
-            Mask any = close[0];
-            for (int k = 1; k < queries; ++k) any |= close[k];
-            if (!any_lane(any)) continue;
-            for (int k = 0; k < queries; ++k) append_lanes(lane_bits(close[k]), j, *near[k]);
+            passing.append_to(near);
         }
     }
 }
@@ -239,16 +296,27 @@ template <int queries>
                                                    std::vector<std::uint32_t>& near) {
     const LineQuery q = query;  // a copy: `near` could alias the query as far as the compiler knows
     const OwnGroups own = own_groups(scan, 32);
+    PassingGroups<std::uint64_t, 1> passing;
+    std::vector<std::uint32_t>* const nears[1] = {&near};
     for (const auto& range : scan.ranges) {
-        for (std::size_t j = range[0]; j < range[1]; j += 32) {
-            LineGroup<SixteenFloats> first;
-            LineGroup<SixteenFloats> second;
-            load_group(x, y, vx, vy, j, first);
-            load_group(x, y, vx, vy, j + 16, second);
-            std::uint64_t bits = close_bits_sixteen(first, q) | std::uint64_t{close_bits_sixteen(second, q)} << 16;
-            if (j - own.first <= own.span) [[unlikely]]
-                bits = without_own(bits, j, 32, scan.own_first);
-            if (bits != 0) append_lanes(bits, j, near);
+        for (std::size_t j = range[0]; j < range[1];) {
+            for (; j < range[1]; j += 32) {
+                LineGroup<SixteenFloats> first;
+                LineGroup<SixteenFloats> second;
+                load_group(x, y, vx, vy, j, first);
+                load_group(x, y, vx, vy, j + 16, second);
+                std::uint64_t bits[1] = {close_bits_sixteen(first, q) | std::uint64_t{close_bits_sixteen(second, q)}
+                                                                            << 16};
+                if (j - own.first <= own.span) [[unlikely]]
+                    bits[0] = without_own(bits[0], j, 32, scan.own_first);
+                if (bits[0] == 0) [[likely]]
+                    continue;
+                if (passing.note(j, bits)) {
+                    j += 32;
+                    break;
+                }
+            }
+            passing.append_to(nears);
         }
     }
 }
@@ -261,25 +329,33 @@ template <int queries>
     LineQuery q[queries];
     for (int k = 0; k < queries; ++k) q[k] = query[k];
     const OwnGroups own = own_groups(scan, 16);
+    PassingGroups<__mmask16, queries> passing;
     for (const auto& range : scan.ranges) {
-        for (std::size_t j = range[0]; j < range[1]; j += 16) {
-            LineGroup<SixteenFloats> group;
-            load_group(x, y, vx, vy, j, group);
-            // The masks stay in mask registers, tested at once: nearly every
-            // group has no close line, and moving each to a general register
-            // first cost the loop a sixth of its time.
-            __mmask16 bits[queries];
-            for (int k = 0; k < queries; ++k) bits[k] = close_bits_sixteen(group, q[k]);
-            if (j - own.first <= own.span) [[unlikely]] {
-                for (int k = 0; k < queries; ++k)
-                    append_lanes(without_own(_cvtmask16_u32(bits[k]), j, 16, scan.own_first + k), j, *near[k]);
-                continue;
+        for (std::size_t j = range[0]; j < range[1];) {
+            for (; j < range[1]; j += 16) {
+                LineGroup<SixteenFloats> group;
+                load_group(x, y, vx, vy, j, group);
+                // The masks stay in mask registers, tested at once: nearly
+                // every group has no close line, and moving each to a general
+                // register first cost the loop a sixth of its time.
+                __mmask16 bits[queries];
+                for (int k = 0; k < queries; ++k) bits[k] = close_bits_sixteen(group, q[k]);
+                if (j - own.first <= own.span) [[unlikely]] {
+                    for (int k = 0; k < queries; ++k) {
+                        bits[k] =
+                            static_cast<__mmask16>(without_own(_cvtmask16_u32(bits[k]), j, 16, scan.own_first + k));
+                    }
+                }
+                __mmask16 any = bits[0];
+                for (int k = 1; k < queries; ++k) any = _kor_mask16(any, bits[k]);
+                if (_kortestz_mask16_u8(any, any) != 0) [[likely]]
+                    continue;
+                if (passing.note(j, bits)) {
+                    j += 16;
+                    break;
+                }
             }
-            __mmask16 any = bits[0];
-            for (int k = 1; k < queries; ++k) any = _kor_mask16(any, bits[k]);
-            if (_kortestz_mask16_u8(any, any) != 0) [[likely]]
-                continue;
-            for (int k = 0; k < queries; ++k) append_lanes(_cvtmask16_u32(bits[k]), j, *near[k]);
+            passing.append_to(near);
         }
     }
 }
