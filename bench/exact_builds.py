@@ -13,13 +13,9 @@ process (sh -c 'while :; do :; done') runs beside them throughout; with
 import sys
 import tempfile
 
-from simcli_runs import alternate, beside_busy_process, cases, command_line, pin_to_cpu_option, load_name, median, write_gas
+from simcli_runs import alternate, beside_busy_process, cases, builds_and_simgen, load_name, median, write_gas
 
-arguments, options = command_line(__doc__, 3)
-busy = "--busy" in options
-cpu = pin_to_cpu_option(options)
-new_simcli, old_simcli, simgen = arguments[:3]
-rounds = int(arguments[3]) if len(arguments) > 3 else 7
+new_simcli, old_simcli, simgen, rounds, busy, cpu = builds_and_simgen(__doc__)
 
 print("particles,steps,rounds,load,new_median_s,old_median_s,collisions,new_collisions_per_s,"
       "old_collisions_per_s,ratio_median,ratio_min,ratio_max")

@@ -1,4 +1,4 @@
-"""What the comparison scripts share (exact_boundaries.py, exact_builds.py,
+"""What the comparison scripts share (exact_boundaries.py, exact_builds.py, whole_runs.py,
 stepped_builds.py, two_threads.py, against_original.py): simcli's step time,
 two commands run alternately, the order flipping every round, the command
 line, the pinning to one CPU (--cpu=K), the busy process beside them, and the
@@ -93,6 +93,15 @@ def pin_to_cpu_option(options):
     cpu = int(values[-1])
     os.sched_setaffinity(0, {cpu})
     return cpu
+
+
+def builds_and_simgen(usage):
+    """The command line NEW_SIMCLI OLD_SIMCLI SIMGEN [ROUNDS] [--busy] [--cpu=K] (ROUNDS 7 unless
+    given), pinning as pin_to_cpu_option() does; returns (new, old, simgen, rounds, busy, cpu)."""
+    arguments, options = command_line(usage, 3)
+    cpu = pin_to_cpu_option(options)
+    rounds = int(arguments[3]) if len(arguments) > 3 else 7
+    return arguments[0], arguments[1], arguments[2], rounds, "--busy" in options, cpu
 
 
 def load_name(busy):

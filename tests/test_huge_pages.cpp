@@ -1,10 +1,11 @@
-// The exact engine's large arrays ask for transparent huge pages, or for
-// small ones with PARTICLESIM_HUGE_PAGES=0: the request reaches the kernel
-// (the array's mapping in /proc/self/smaps), and the engine gives the same
-// bytes either way. The setting is read once a process, so each case runs
+// The exact engine's large arrays, and the apps' large blocks, ask for
+// transparent huge pages, or for small ones with PARTICLESIM_HUGE_PAGES=0:
+// the request reaches the kernel (the array's mapping in /proc/self/smaps),
+// and the engine gives the same bytes either way. The setting is read once a process, so each case runs
 // this program again, as a child with the environment it needs.
 
 #include "check.hpp"
+#include "common/large_blocks.hpp"
 #include "core/huge_page_allocator.hpp"
 #include "run_process.hpp"
 #include "state_hash.hpp"
@@ -27,12 +28,8 @@ namespace {
 
 std::string self;  // this program, run again as a child
 
-// The child's part: a 16 MiB array of the allocator, every page touched;
-// prints the huge pages (kB) of the mapping that holds it, -1 if none is
-// found.
-int print_huge_kilobytes_of_an_array() {
-    HugePageVector<std::uint64_t> array(std::size_t{2} << 20, 1);
-    const auto address = reinterpret_cast<std::uintptr_t>(array.data());
+// The huge pages (kB) of the mapping that holds `address`, -1 if none is found.
+long huge_kilobytes_at(std::uintptr_t address) {
     std::ifstream maps("/proc/self/smaps");
     bool inside = false;
     for (std::string line; std::getline(maps, line);) {
@@ -41,11 +38,28 @@ int print_huge_kilobytes_of_an_array() {
         if (std::sscanf(line.c_str(), "%lx-%lx ", &start, &end) == 2) {
             inside = start <= address && address < end;
         } else if (inside && line.rfind("AnonHugePages:", 0) == 0) {
-            std::printf("%ld\n", std::strtol(line.c_str() + 14, nullptr, 10));
-            return 0;
+            return std::strtol(line.c_str() + 14, nullptr, 10);
         }
     }
-    std::printf("-1\n");
+    return -1;
+}
+
+// The child's part: a 16 MiB array of the allocator, every page touched;
+// prints the huge pages (kB) of its mapping.
+int print_huge_kilobytes_of_an_array() {
+    HugePageVector<std::uint64_t> array(std::size_t{2} << 20, 1);
+    std::printf("%ld\n", huge_kilobytes_at(reinterpret_cast<std::uintptr_t>(array.data())));
+    return 0;
+}
+
+// The child's part: a 16 MiB std::vector, from the apps' operator new
+// (apps/common/large_blocks.cpp, linked into this test as into simcli),
+// every page touched; prints the huge pages (kB) of the mapping that holds
+// its middle (madvise makes the whole huge pages inside the block a mapping
+// of their own).
+int print_huge_kilobytes_of_a_block() {
+    std::vector<std::uint64_t> block(std::size_t{2} << 20, 1);
+    std::printf("%ld\n", huge_kilobytes_at(reinterpret_cast<std::uintptr_t>(block.data() + block.size() / 2)));
     return 0;
 }
 
@@ -87,7 +101,10 @@ std::string transparent_huge_pages() {
 
 void the_request_reaches_the_kernel() {
     // Asked for small pages, none is huge, whatever the system's setting.
-    for (int k = 0; k < 3; ++k) CHECK_EQ(std::stol(child("0", "--probe-pages")), 0L);
+    for (int k = 0; k < 3; ++k) {
+        CHECK_EQ(std::stol(child("0", "--probe-pages")), 0L);
+        if (PARTICLESIM_LARGE_BLOCKS_OFFERED) CHECK_EQ(std::stol(child("0", "--probe-block")), 0L);
+    }
     const std::string system = transparent_huge_pages();
     if (system != "madvise" && system != "always") {
         std::printf("SKIPPED (in part): transparent huge pages are \"%s\" here, so no array gets them\n",
@@ -103,6 +120,16 @@ void the_request_reaches_the_kernel() {
                     setting ? setting : "unset", huge);
         CHECK(huge >= 2048);
     }
+    // The apps' large blocks likewise: at least the 14 MiB of whole huge
+    // pages inside a 16 MiB block that malloc places anywhere.
+    if (!PARTICLESIM_LARGE_BLOCKS_OFFERED) {
+        std::printf("SKIPPED (in part): this build's operator new is the sanitizer's, which offers no huge pages\n");
+        return;
+    }
+    long huge = 0;
+    for (int k = 0; k < 3 && huge < 14336; ++k) huge = std::stol(child(nullptr, "--probe-block"));
+    std::printf("the apps' operator new: %ld kB of a 16 MiB block in huge pages\n", huge);
+    CHECK(huge >= 14336);
 }
 
 void the_same_bytes_either_way() {
@@ -117,6 +144,7 @@ void the_same_bytes_either_way() {
 int main(int argc, char** argv) {
     self = argv[0];
     if (argc == 2 && std::string(argv[1]) == "--probe-pages") return print_huge_kilobytes_of_an_array();
+    if (argc == 2 && std::string(argv[1]) == "--probe-block") return print_huge_kilobytes_of_a_block();
     if (argc == 2 && std::string(argv[1]) == "--exact-run") return print_hash_of_an_exact_run();
     run_process::children_without_leak_checks();
     return check::run(argc, argv, "test_huge_pages",
