@@ -140,7 +140,7 @@ struct OwnGroups {
 // The groups with a passing line, noted by a scan's loop and appended to
 // the near lists after it: with no call in the loop, its queries stay in
 // registers instead of being saved around each append (no vector register
-// survives a call), 0.96 of the default scene's time.
+// survives a call), 0.95 of the default scene's time.
 template <typename Bits, int queries>
 class PassingGroups {
 public:
