@@ -80,6 +80,25 @@ void valid_scenes() {
     CHECK_EQ(listed.scene.particles[1].position.y(), 12.0);
     CHECK(listed.scene.mode == OutputMode::print);
 
+    // Listed in index order or not: the same particles, each with its own
+    // line (the reader hands a list in index order over as it is).
+    const auto with_lines = [](const std::string& text, SceneLines& lines) {
+        std::istringstream in(text);
+        return read_scene(in, &lines);
+    };
+    SceneLines in_order_lines;
+    SceneLines shuffled_lines;
+    const Scene in_order = with_lines("3 20 1 5 print\n0 5 5 0 0\n1 10 10 1 0\n2 15 15 0 1\n", in_order_lines);
+    const Scene shuffled = with_lines("3 20 1 5 print\n2 15 15 0 1\n0 5 5 0 0\n1 10 10 1 0\n", shuffled_lines);
+    CHECK_EQ(in_order.particles.size(), 3U);
+    for (std::size_t i = 0; i < 3; ++i) {
+        CHECK(in_order.particles[i].position == shuffled.particles[i].position);
+        CHECK(in_order.particles[i].velocity == shuffled.particles[i].velocity);
+    }
+    CHECK_EQ(in_order.particles[2].velocity.y(), 1.0);
+    CHECK(in_order_lines.particles == std::vector<long>({2, 3, 4}));
+    CHECK(shuffled_lines.particles == std::vector<long>({3, 4, 2}));
+
     // Boundaries are valid: x = r, x = L - r, 2r = L, N = 0, S = 0.
     CHECK(read("1 2 1 0 perf\n0 1 1 0 0\n").ok);
     CHECK(read("1 20 1 3 perf\n0 1 19 0 0\n").ok);

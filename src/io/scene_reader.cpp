@@ -274,6 +274,15 @@ void read_particle(const std::vector<std::string_view>& fields, long line, const
 
 // All N lines are there: each index once, then index order.
 void put_in_index_order(ListedParticles& listed, Scene& scene, std::vector<long>* particle_lines) {
+    // Listed in index order already, as simgen and simcli write scenes: the
+    // lists become the scene's, without a copy of a large scene's particles.
+    bool in_order = true;
+    for (std::uint32_t k = 0; k < listed.indices.size() && in_order; ++k) in_order = listed.indices[k] == k;
+    if (in_order) {
+        scene.particles = std::move(listed.particles);
+        if (particle_lines != nullptr) *particle_lines = std::move(listed.lines);
+        return;
+    }
     constexpr std::uint32_t unseen = 0xffffffffU;
     std::vector<std::uint32_t> read_as(scene.particle_count, unseen);
     for (std::uint32_t k = 0; k < listed.indices.size(); ++k) {
