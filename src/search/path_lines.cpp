@@ -110,9 +110,9 @@ template <typename Floats, typename Mask>
 
 // What a scan reads (PathLines::gather_slots()): the slots of two ranges,
 // each a whole number of the widest groups, and which lanes to clear: query
-// k's own line, the slot own_first + k, passes its own test, and a hit costs
-// a mispredicted branch and the appending (the own lines were half the
-// default scene's hits).
+// k's own line, the slot own_first + k, passes its own test, and each group
+// with a passing line goes through the appending (the own lines were half
+// of the default scene's such groups).
 struct SlotScan {
     std::size_t ranges[2][2];
     std::size_t own_first;  // PathLines::no_slot: none to clear
