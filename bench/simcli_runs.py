@@ -26,7 +26,7 @@ cases = [(10000, 200), (100000, 20), (1000000, 4)]  # the gas at area fraction 0
 
 def write_gas(simgen, directory, particles, steps):
     """simgen gas -n PARTICLES -s STEPS --mode perf --seed 7, into DIRECTORY; returns its path."""
-    scene = os.path.join(directory, f"gas{particles}.in")
+    scene = os.path.join(directory, f"gas{particles}_{steps}.in")
     with open(scene, "w") as out:
         subprocess.run([simgen, "gas", "-n", str(particles), "-s", str(steps), "--mode", "perf", "--seed", "7"],
                        stdout=out, check=True)

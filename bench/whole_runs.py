@@ -31,9 +31,7 @@ def whole_run(command):
 print("scene,rounds,load,new_median_s,old_median_s,ratio_median,ratio_min,ratio_max")
 with beside_busy_process(busy, cpu):
     with tempfile.TemporaryDirectory() as directory:
-        stepped_dir = os.path.join(directory, "stepped")
-        os.mkdir(stepped_dir)
-        cases = [("gas of 1e6 disks, 1 step", ["-t", "1"], write_gas(simgen, stepped_dir, 1000000, 1)),
+        cases = [("gas of 1e6 disks, 1 step", ["-t", "1"], write_gas(simgen, directory, 1000000, 1)),
                  ("gas of 1e6 disks, 4 steps, --engine exact", ["--engine", "exact"],
                   write_gas(simgen, directory, 1000000, 4)),
                  ("default scene", ["-t", "1"], default_scene)]

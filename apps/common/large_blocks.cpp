@@ -1,16 +1,19 @@
 // The apps' global operator new and delete: glibc's malloc and free, with
 // the whole huge pages inside every block from 2 MiB on offered to
 // transparent huge pages (madvise) before its first touch, as
-// GLIBC_TUNABLES=glibc.malloc.hugetlb=1 offers them. Where the system leaves huge pages to programs (Debian's default)
-// and a page's first touch is slow, as on a virtual machine (about 10 us a
-// 4 KiB page on the benchmark host), a large scene's whole run then takes
-// far less time: a million disks' one step in 0.59 of it (docs/benchmarks.md,
-// "The apps' large blocks in huge pages"). Only a program may replace operator new,
-// so the library cannot do this for its users; its exact engine's arrays
-// ask for huge pages themselves (src/core/huge_page_allocator.hpp).
-// PARTICLESIM_HUGE_PAGES=0 asks for small pages instead (MADV_NOHUGEPAGE,
-// which also holds where the system gives huge pages to all); sanitized
-// builds keep the sanitizers' own operators (large_blocks.hpp).
+// GLIBC_TUNABLES=glibc.malloc.hugetlb=1 offers them. Where the system leaves
+// huge pages to programs (Debian's default) and a page's first touch is
+// slow, as on a virtual machine (about 10 us a 4 KiB page on the benchmark
+// host), a large scene's whole run then takes far less time: a million
+// disks' one step in 0.61 of it (docs/benchmarks.md, "The apps' large
+// blocks in huge pages"). Only a program may replace operator new, so the
+// library cannot do this for its users; its exact engine's arrays ask for
+// huge pages themselves (src/core/huge_page_allocator.hpp, whose reading of
+// PARTICLESIM_HUGE_PAGES offering() repeats: the apps see no internal
+// header). PARTICLESIM_HUGE_PAGES=0 asks for small pages instead
+// (MADV_NOHUGEPAGE, which also holds where the system gives huge pages to
+// all); sanitized builds keep the sanitizers' own operators
+// (large_blocks.hpp).
 
 #include "common/large_blocks.hpp"
 
