@@ -2,7 +2,7 @@
 # not there: each path is written out in full (`src/folder/file.hpp`).
 # Inputs: SOURCE_DIR.
 file(READ "${SOURCE_DIR}/docs/architecture.md" doc)
-string(REGEX MATCHALL "src/[a-z_/]+\\.(hpp|cpp)" named "${doc}")
+string(REGEX MATCHALL "src/[a-z0-9_/]+\\.(hpp|cpp)" named "${doc}")
 list(REMOVE_DUPLICATES named)
 list(SORT named)
 file(GLOB_RECURSE present RELATIVE "${SOURCE_DIR}" "${SOURCE_DIR}/src/*.hpp" "${SOURCE_DIR}/src/*.cpp")

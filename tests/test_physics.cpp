@@ -1,6 +1,7 @@
 // The pure physics functions against values worked out by hand.
 
 #include "check.hpp"
+#include "wall_motions.hpp"
 
 #include "core/motion_lanes.hpp"
 #include "core/physics.hpp"
@@ -230,18 +231,8 @@ void motion_lanes_are_the_scalar_motion() {
         return std::bit_cast<std::uint64_t>(a.x()) == std::bit_cast<std::uint64_t>(b.x()) &&
                std::bit_cast<std::uint64_t>(a.y()) == std::bit_cast<std::uint64_t>(b.y());
     };
-    const auto coordinate = [&] {
-        const std::uint64_t kind = rng.next() % 8;
-        if (kind == 0) return box.lower;
-        if (kind == 1) return box.upper;
-        return box.lower + (box.upper - box.lower) * rng.uniform();
-    };
-    const auto speed = [&] {
-        const std::uint64_t kind = rng.next() % 8;
-        if (kind == 0) return 0.0;
-        if (kind == 1) return rng.next() % 2 == 0 ? 2.0 : -2.0;
-        return 40.0 * (rng.uniform() - 0.5);
-    };
+    const auto coordinate = [&] { return test_scenes::wall_coordinate(rng, box); };
+    const auto speed = [&] { return test_scenes::wall_speed(rng, 40.0); };
     int differing = 0;
     int corners = 0;
     int stopped = 0;

@@ -5,7 +5,10 @@
 #include "core/physics.hpp"
 #include "core/prefetch.hpp"
 #include "parallel/parallel.hpp"
+#include "stepped/collided_lists.hpp"
+#include "stepped/free_flight_lanes.hpp"
 #include "stepped/stepped_tuning.hpp"
+#include "stepped/wall_candidate_lanes.hpp"
 
 #include <algorithm>
 #include <array>
@@ -50,11 +53,14 @@ void gather_wall_candidates(std::span<const double> wall_time, double duration, 
     parallel_for_blocks(workers, count, motion_block, [&](std::int64_t block, std::int64_t first, std::int64_t last) {
         std::size_t at = before + start.first_candidate[block];
         const std::size_t end = at + start.blocks[block].wall_candidates;
-        // Without a branch on which particles hit a wall (a quarter of them
-        // in sparse scenes, at random): every particle is written to the
-        // next free place, which only a hit keeps; the place past the
-        // block's last is never written (another block's, or none).
-        for (std::int64_t i = first; i < last && at < end; ++i) {
+        const WallCandidatesWritten in_lanes =
+            write_wall_candidates_in_lanes(wall_time.data(), duration, first, last, candidates.data() + at, end - at);
+        at += in_lanes.written;
+        // The rest without a branch on which particles hit a wall (a
+        // quarter of them in sparse scenes, at random): every particle is
+        // written to the next free place, which only a hit keeps; the place
+        // past the block's last is never written (another block's, or none).
+        for (std::int64_t i = in_lanes.next; i < last && at < end; ++i) {
             candidates[at] = Collision::wall(wall_time[i], static_cast<std::uint32_t>(i));
             at += static_cast<std::size_t>(wall_time[i] <= duration);
         }
@@ -362,21 +368,12 @@ void resolve_collisions(std::span<Particle> particles, std::span<const std::uint
     // independently (and the exchange is symmetric, bit for bit, in its two
     // particles).
     parallel_for_blocks(workers, count, resolution_block, [&](std::int64_t, std::int64_t first, std::int64_t last) {
-        // The block's collisions are listed first, without a branch on each
-        // particle: which ones collide follows no pattern, and a branch on
-        // it was mispredicted for most that do.
-        std::array<std::uint32_t, resolution_block> pair_at;
-        std::array<std::uint32_t, resolution_block> wall_at;
-        std::size_t pairs_listed = 0;
-        std::size_t walls_listed = 0;
-        for (std::int64_t i = first; i < last; ++i) {
-            const std::uint32_t other = partner[i];
-            const auto at = static_cast<std::uint32_t>(i);
-            pair_at[pairs_listed] = at;
-            pairs_listed += static_cast<std::size_t>(other < wall_collision) & static_cast<std::size_t>(at < other);
-            wall_at[walls_listed] = at;
-            walls_listed += static_cast<std::size_t>(other == wall_collision);
-        }
+        // The block's collisions are listed first.
+        std::array<std::uint32_t, resolution_block + collided_lists_spill> pair_at;
+        std::array<std::uint32_t, resolution_block + collided_lists_spill> wall_at;
+        const CollidedCounts listed = list_collided(partner.data(), first, last, pair_at.data(), wall_at.data());
+        const std::size_t pairs_listed = listed.pairs;
+        const std::size_t walls_listed = listed.walls;
         for (std::size_t k = 0; k < walls_listed; ++k) {
             resolve_wall(particles[wall_at[k]], collision_time[wall_at[k]], box, duration);
         }
@@ -419,7 +416,14 @@ void advance_free_particles(std::span<Particle> particles, std::span<std::uint32
                 const Box in = box;
                 const double step = duration;
                 BlockStart measured;
-                for (std::int64_t i = first; i < last; ++i) {
+                // Four at a time where the processor has the lanes; not
+                // where the motion is summed, whose sums must add up in
+                // the particles' order.
+                std::int64_t i = first;
+                if constexpr (!with_motion) {
+                    i = fly_four_at_a_time(stored, partners, times, in, step, first, last, measured.wall_candidates);
+                }
+                for (; i < last; ++i) {
                     // Without a branch on whether the particle collided
                     // (no pattern to learn; the compiler turned a select,
                     // and a product by 0 or 1, into one): a collided one,

@@ -1,0 +1,105 @@
+#include "stepped/free_flight_lanes.hpp"
+
+#include "core/avx512_lanes.hpp"
+#include "core/box.hpp"
+#include "core/collision.hpp"
+#include "core/physics.hpp"
+
+#include <bit>
+
+#if defined(__x86_64__)
+#include <immintrin.h>
+#endif
+
+namespace particlesim {
+
+// Four particles (x, y, vx, vy, pc, wc each) fill three vectors: particle
+// k's position at doubles 6k and 6k + 1, its velocity at 6k + 2 and 6k + 3.
+static_assert(sizeof(Particle) == 6 * sizeof(double), "four particles fill three 512-bit vectors");
+
+#if defined(__x86_64__)
+
+namespace {
+
+// The lanes of the four particles' pairs of lanes, from a mask with a bit a particle.
+unsigned pairs_of_lanes(unsigned particles) {
+    return ((particles & 1U) * 3U) | ((particles & 2U) * 6U) | ((particles & 4U) * 12U) | ((particles & 8U) * 24U);
+}
+
+// Each step as MotionLanes takes it (fly(), then wall_time()), in the same
+// order of the same operations; the comparisons are C++'s (ordered, but
+// `!=`, which is true for NaN as well).
+[[gnu::target("avx512f,avx512vl")]] std::int64_t fly_in_lanes(Particle* particles, std::uint32_t* partner,
+                                                              double* wall_time, const Box& box, double step,
+                                                              std::int64_t first, std::int64_t last,
+                                                              std::uint32_t& wall_candidates) {
+    const __m512d lower = _mm512_set1_pd(box.lower);
+    const __m512d upper = _mm512_set1_pd(box.upper);
+    const __m512d zero = _mm512_setzero_pd();
+    const __m512d endless = _mm512_set1_pd(never);
+    const __m512d whole_step = _mm512_set1_pd(step);
+    const __m128i none = _mm_set1_epi32(static_cast<int>(no_collision));
+    // Positions and velocities gathered from the three vectors a, b and c
+    // (indices from 8 name b), and the positions put back.
+    const __m512i positions_from_ab = _mm512_setr_epi64(0, 1, 6, 7, 12, 13, 0, 0);
+    const __m512i velocities_from_ab = _mm512_setr_epi64(2, 3, 8, 9, 14, 15, 0, 0);
+    const __m512i last_from_c = _mm512_setr_epi64(0, 0, 0, 0, 0, 0, 2, 3);
+    const __m512i velocity_from_c = _mm512_setr_epi64(0, 0, 0, 0, 0, 0, 4, 5);
+    const __m512i back_to_a = _mm512_setr_epi64(0, 1, 0, 0, 0, 0, 2, 3);
+    const __m512i back_to_b = _mm512_setr_epi64(0, 0, 0, 0, 4, 5, 0, 0);
+    const __m512i back_to_c = _mm512_setr_epi64(0, 0, 6, 7, 0, 0, 0, 0);
+    const __m512i even_lanes = _mm512_setr_epi64(0, 2, 4, 6, 0, 2, 4, 6);
+    std::uint32_t candidates = 0;
+    std::int64_t i = first;
+    for (; i + 4 <= last; i += 4) {
+        auto* const doubles = reinterpret_cast<double*>(particles + i);
+        const __m512d a = _mm512_loadu_pd(doubles);
+        const __m512d b = _mm512_loadu_pd(doubles + 8);
+        const __m512d c = _mm512_loadu_pd(doubles + 16);
+        const __m512d where =
+            _mm512_mask_permutexvar_pd(_mm512_permutex2var_pd(a, positions_from_ab, b), 0xC0, last_from_c, c);
+        const __m512d speed =
+            _mm512_mask_permutexvar_pd(_mm512_permutex2var_pd(a, velocities_from_ab, b), 0xC0, velocity_from_c, c);
+        // A collided particle, resolved already, moves for +0.0.
+        const __mmask8 free =
+            _mm_cmpeq_epi32_mask(_mm_loadu_si128(reinterpret_cast<const __m128i*>(partner + i)), none);
+        const __m512d flight = _mm512_maskz_mov_pd(static_cast<__mmask8>(pairs_of_lanes(free)), whole_step);
+        __m512d at = _mm512_add_pd(where, _mm512_mul_pd(speed, flight));
+        at = _mm512_mask_blend_pd(_mm512_cmp_pd_mask(at, lower, _CMP_LT_OQ), at, lower);
+        at = _mm512_mask_blend_pd(_mm512_cmp_pd_mask(upper, at, _CMP_LT_OQ), at, upper);
+        // times_to_walls(), then the earlier of each particle's two.
+        const __m512d wall = _mm512_mask_blend_pd(_mm512_cmp_pd_mask(speed, zero, _CMP_LT_OQ), upper, lower);
+        const __m512d to_wall = _mm512_add_pd(_mm512_div_pd(_mm512_sub_pd(wall, at), speed), zero);
+        const __m512d times = _mm512_mask_blend_pd(_mm512_cmp_pd_mask(speed, zero, _CMP_NEQ_UQ), endless, to_wall);
+        const __m512d swapped = _mm512_shuffle_pd(times, times, 0x55);  // each pair's two lanes swapped
+        const __m512d earliest = _mm512_mask_blend_pd(_mm512_cmp_pd_mask(swapped, times, _CMP_LT_OQ), times, swapped);
+        candidates += static_cast<std::uint32_t>(
+            std::popcount(static_cast<unsigned>(_mm512_cmp_pd_mask(earliest, whole_step, _CMP_LE_OQ) & 0x55U)));
+        _mm512_mask_storeu_pd(wall_time + i, 0x0F, _mm512_maskz_permutexvar_pd(0x0F, even_lanes, earliest));
+        _mm512_storeu_pd(doubles, _mm512_mask_permutexvar_pd(a, 0xC3, back_to_a, at));
+        _mm512_storeu_pd(doubles + 8, _mm512_mask_permutexvar_pd(b, 0x30, back_to_b, at));
+        _mm512_storeu_pd(doubles + 16, _mm512_mask_permutexvar_pd(c, 0x0C, back_to_c, at));
+        _mm_storeu_si128(reinterpret_cast<__m128i*>(partner + i), none);
+    }
+    wall_candidates += candidates;
+    return i;
+}
+
+}  // namespace
+
+std::int64_t fly_four_at_a_time(Particle* particles, std::uint32_t* partner, double* wall_time, const Box& box,
+                                double step, std::int64_t first, std::int64_t last, std::uint32_t& wall_candidates) {
+    if (!avx512_lanes_available()) return first;
+    return fly_in_lanes(particles, partner, wall_time, box, step, first, last, wall_candidates);
+}
+
+#else
+
+std::int64_t fly_four_at_a_time(Particle*, std::uint32_t*, double*, const Box&, double, std::int64_t first,
+                                std::int64_t, std::uint32_t&) {
+    return first;
+}
+
+#endif
+
+}  // namespace particlesim
