@@ -49,18 +49,14 @@ namespace {
         if (written + count > room) break;  // the rest one at a time, which stops at the room's end
         const __m512i hit_times = _mm512_castpd_si512(_mm512_maskz_compress_pd(hits, times));
         const __m512i hit_indices = _mm512_maskz_slli_epi64(0xFF, _mm512_maskz_compress_epi64(hits, index), 32);
-        // The records' 3 x count lanes, in three vectors of eight.
-        const unsigned lanes = 3U * static_cast<unsigned>(count);
-        const auto kept = [&](unsigned from) {
-            const unsigned wanted = lanes > from ? lanes - from : 0U;
-            return static_cast<__mmask8>(wanted >= 8U ? 0xFFU : (1U << wanted) - 1U);
-        };
+        // The records' 3 x count lanes (at most 24), in three vectors of eight.
+        const std::uint32_t lanes = (std::uint32_t{1} << (3U * static_cast<unsigned>(count))) - 1U;
         auto* const lane = reinterpret_cast<std::int64_t*>(out + written);
-        _mm512_mask_storeu_epi64(lane, kept(0),
+        _mm512_mask_storeu_epi64(lane, static_cast<__mmask8>(lanes),
                                  _mm512_maskz_permutex2var_epi64(first_kept, hit_times, first_three, hit_indices));
-        _mm512_mask_storeu_epi64(lane + 8, kept(8),
+        _mm512_mask_storeu_epi64(lane + 8, static_cast<__mmask8>(lanes >> 8),
                                  _mm512_maskz_permutex2var_epi64(middle_kept, hit_times, middle_three, hit_indices));
-        _mm512_mask_storeu_epi64(lane + 16, kept(16),
+        _mm512_mask_storeu_epi64(lane + 16, static_cast<__mmask8>(lanes >> 16),
                                  _mm512_maskz_permutex2var_epi64(last_kept, hit_times, last_two, hit_indices));
         written += count;
         index = _mm512_add_epi64(index, eight);
