@@ -1,7 +1,7 @@
 // The stepped engine's loops in AVX-512 lanes give what their one-at-a-time
-// forms give, bit for bit: the free flight with its wall times
-// (MotionLanes), the listing of the collided particles, and the wall
-// candidates' records; on random particles at rest, on walls and flying
+// forms give, bit for bit: the free flight with its wall times and the wall
+// bounces (MotionLanes), the listing of the collided particles, and the
+// wall candidates' records; on random particles at rest, on walls and flying
 // past them, blocks of every length and start, and lists that run out of
 // room. On a processor without AVX-512 the lanes move nothing, which the
 // cases check instead (and say so).
@@ -17,11 +17,13 @@
 #include "core/random.hpp"
 #include "stepped/collided_lists.hpp"
 #include "stepped/free_flight_lanes.hpp"
+#include "stepped/wall_bounce_lanes.hpp"
 #include "stepped/wall_candidate_lanes.hpp"
 
 #include <bit>
 #include <cstdint>
 #include <cstdio>
+#include <utility>
 #include <vector>
 
 using namespace particlesim;
@@ -196,11 +198,67 @@ void wall_candidates_are_the_rule() {
     CHECK(in_lanes > 500);
 }
 
+// resolve_walls_four_at_a_time() against MotionLanes particle by particle
+// (resolve_wall()): bounced at the first wall, moved on for the rest of the
+// step stopping at the next, the wall collision counted; the other
+// particles untouched.
+void wall_bounces_are_motion_lanes() {
+    SplitMix64 rng(53);
+    int resolved_in_lanes = 0;
+    for (int trial = 0; trial < (check::sanitized ? 200 : 2000); ++trial) {
+        const std::size_t count = 1 + rng.next() % 60;
+        Flock flock = random_flock(rng, count);
+        const double duration = trial % 5 == 0 ? 1.0 : 3.0 * rng.uniform();
+        std::vector<double> collision_time(count, 0.0);
+        std::vector<std::uint32_t> wall_at;
+        for (std::uint32_t i = 0; i < count; ++i) {
+            const WallHit hit = time_to_wall(flock.particles[i].position, flock.particles[i].velocity, box);
+            collision_time[i] = hit.time;
+            if (hit.time <= duration && rng.next() % 4 != 0) wall_at.push_back(i);
+        }
+        // In no order: the resolution lists them by index, the lanes must not care.
+        for (std::size_t k = wall_at.size(); k > 1; --k) std::swap(wall_at[k - 1], wall_at[rng.next() % k]);
+        const std::vector<Particle> before = flock.particles;
+        const std::size_t resolved = resolve_walls_four_at_a_time(flock.particles.data(), wall_at.data(),
+                                                                  wall_at.size(), collision_time.data(), box, duration);
+        const check::Context context("trial ", trial);
+        if (!avx512_lanes_available()) {
+            CHECK_EQ(resolved, std::size_t{0});
+            continue;
+        }
+        CHECK_EQ(resolved, wall_at.size() - wall_at.size() % 4);
+        std::vector<Particle> expected = before;
+        for (std::size_t k = 0; k < resolved; ++k) {
+            Particle& p = expected[wall_at[k]];
+            MotionLanes motion(p, box);
+            motion.bounce();
+            motion.move_stopping_at_wall(duration - collision_time[wall_at[k]]);
+            p.position = motion.position();
+            p.velocity = motion.velocity();
+            ++p.wall_collisions;
+        }
+        for (std::size_t i = 0; i < count; ++i) {
+            const Particle& got = flock.particles[i];
+            const Particle& want = expected[i];
+            CHECK(same_bits(got.position.x(), want.position.x()) && same_bits(got.position.y(), want.position.y()));
+            CHECK(same_bits(got.velocity.x(), want.velocity.x()) && same_bits(got.velocity.y(), want.velocity.y()));
+            CHECK(got.particle_collisions == want.particle_collisions && got.wall_collisions == want.wall_collisions);
+        }
+        resolved_in_lanes += resolved > 0 ? 1 : 0;
+    }
+    if (!avx512_lanes_available()) {
+        say_without_lanes("the wall bounces");
+        return;
+    }
+    CHECK(resolved_in_lanes > 1000);
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
     return check::run(argc, argv, "test_step_lanes",
                       {{"free flight is motion lanes", free_flight_is_motion_lanes},
                        {"collided lists are the rule", collided_lists_are_the_rule},
-                       {"wall candidates are the rule", wall_candidates_are_the_rule}});
+                       {"wall candidates are the rule", wall_candidates_are_the_rule},
+                       {"wall bounces are motion lanes", wall_bounces_are_motion_lanes}});
 }

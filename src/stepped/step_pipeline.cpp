@@ -8,6 +8,7 @@
 #include "stepped/collided_lists.hpp"
 #include "stepped/free_flight_lanes.hpp"
 #include "stepped/stepped_tuning.hpp"
+#include "stepped/wall_bounce_lanes.hpp"
 #include "stepped/wall_candidate_lanes.hpp"
 
 #include <algorithm>
@@ -374,7 +375,9 @@ void resolve_collisions(std::span<Particle> particles, std::span<const std::uint
         const CollidedCounts listed = list_collided(partner.data(), first, last, pair_at.data(), wall_at.data());
         const std::size_t pairs_listed = listed.pairs;
         const std::size_t walls_listed = listed.walls;
-        for (std::size_t k = 0; k < walls_listed; ++k) {
+        const std::size_t walls_in_lanes = resolve_walls_four_at_a_time(particles.data(), wall_at.data(), walls_listed,
+                                                                        collision_time.data(), box, duration);
+        for (std::size_t k = walls_in_lanes; k < walls_listed; ++k) {
             resolve_wall(particles[wall_at[k]], collision_time[wall_at[k]], box, duration);
         }
         // Pairs wait for three more to share the exchanges. A partner stored
