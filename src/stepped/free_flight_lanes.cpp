@@ -1,9 +1,8 @@
 #include "stepped/free_flight_lanes.hpp"
 
 #include "core/avx512_lanes.hpp"
-#include "core/box.hpp"
 #include "core/collision.hpp"
-#include "core/physics.hpp"
+#include "core/four_motion_lanes.hpp"
 
 #include <bit>
 
@@ -26,17 +25,12 @@ unsigned pairs_of_lanes(unsigned particles) {
     return ((particles & 1U) * 3U) | ((particles & 2U) * 6U) | ((particles & 4U) * 12U) | ((particles & 8U) * 24U);
 }
 
-// Each step as MotionLanes takes it (fly(), then wall_time()), in the same
-// order of the same operations; the comparisons are C++'s (ordered, but
-// `!=`, which is true for NaN as well).
+// Each particle as MotionLanes moves it: fly(), then wall_time().
 [[gnu::target("avx512f,avx512vl")]] std::int64_t fly_in_lanes(Particle* particles, std::uint32_t* partner,
                                                               double* wall_time, const Box& box, double step,
                                                               std::int64_t first, std::int64_t last,
                                                               std::uint32_t& wall_candidates) {
-    const __m512d lower = _mm512_set1_pd(box.lower);
-    const __m512d upper = _mm512_set1_pd(box.upper);
-    const __m512d zero = _mm512_setzero_pd();
-    const __m512d endless = _mm512_set1_pd(never);
+    const FourMotionLanes lanes(box);
     const __m512d whole_step = _mm512_set1_pd(step);
     const __m128i none = _mm_set1_epi32(static_cast<int>(no_collision));
     // Positions and velocities gathered from the three vectors a, b and c
@@ -64,15 +58,10 @@ unsigned pairs_of_lanes(unsigned particles) {
         const __mmask8 free =
             _mm_cmpeq_epi32_mask(_mm_loadu_si128(reinterpret_cast<const __m128i*>(partner + i)), none);
         const __m512d flight = _mm512_maskz_mov_pd(static_cast<__mmask8>(pairs_of_lanes(free)), whole_step);
-        __m512d at = _mm512_add_pd(where, _mm512_mul_pd(speed, flight));
-        at = _mm512_mask_blend_pd(_mm512_cmp_pd_mask(at, lower, _CMP_LT_OQ), at, lower);
-        at = _mm512_mask_blend_pd(_mm512_cmp_pd_mask(upper, at, _CMP_LT_OQ), at, upper);
-        // times_to_walls(), then the earlier of each particle's two.
-        const __m512d wall = _mm512_mask_blend_pd(_mm512_cmp_pd_mask(speed, zero, _CMP_LT_OQ), upper, lower);
-        const __m512d to_wall = _mm512_add_pd(_mm512_div_pd(_mm512_sub_pd(wall, at), speed), zero);
-        const __m512d times = _mm512_mask_blend_pd(_mm512_cmp_pd_mask(speed, zero, _CMP_NEQ_UQ), endless, to_wall);
-        const __m512d swapped = _mm512_shuffle_pd(times, times, 0x55);  // each pair's two lanes swapped
-        const __m512d earliest = _mm512_mask_blend_pd(_mm512_cmp_pd_mask(swapped, times, _CMP_LT_OQ), times, swapped);
+        FourInLanes four{where, speed};
+        lanes.fly(four, flight);
+        const __m512d earliest = lanes.wall_time(four);
+        const __m512d at = four.where;
         candidates += static_cast<std::uint32_t>(
             std::popcount(static_cast<unsigned>(_mm512_cmp_pd_mask(earliest, whole_step, _CMP_LE_OQ) & 0x55U)));
         _mm512_mask_storeu_pd(wall_time + i, 0x0F, _mm512_maskz_permutexvar_pd(0x0F, even_lanes, earliest));
