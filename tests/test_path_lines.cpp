@@ -333,6 +333,70 @@ void arranged_new_lines_find_what_each_finds(int lanes) {
     CHECK(refused(0));
 }
 
+// arrange_changed() makes the layout arrange() makes from the lists the
+// collision counts give (in lanes where the processor has them): the same
+// new lines, the counts updated, and every block of new lines finding the
+// same lines in the same order; for every particle count (the last few past
+// a whole four), arranged again and again, and with every line new.
+void lines_arranged_from_counts_are_the_lists(int lanes) {
+    if (!lanes_run_here(lanes)) return;
+    SplitMix64 rng(29);
+    long blocks = 0;
+    for (int trial = 0; trial < 120; ++trial) {
+        Trial t = make_trial(rng, -10 + static_cast<int>(rng.next() % 21), -2, 3.0);
+        t.particles.resize(std::min<std::size_t>(t.particles.size(), 1 + rng.next() % 300));
+        const auto count = static_cast<std::uint32_t>(t.particles.size());
+        PathLines from_lists(lanes);
+        PathLines from_counts(lanes);
+        from_lists.assign(t.particles, t.box);
+        from_counts.assign(t.particles, t.box);
+        std::vector<std::uint64_t> counts(count);
+        for (std::uint64_t& c : counts) c = rng.next() % 4;
+        for (int round = 0; round < 4; ++round) {
+            for (Particle& p : t.particles) {
+                p.particle_collisions = rng.next() % 3;
+                p.wall_collisions = rng.next() % 3;
+            }
+            // A new line faster than any before, so that the largest speed moves.
+            double fastest = 0.0;
+            for (const Particle& p : t.particles) fastest = std::max(fastest, p.velocity.cwiseAbs().maxCoeff());
+            Particle& faster = t.particles[rng.next() % count];
+            faster.velocity = Vec2(1.1 * fastest, -0.5 * fastest);
+            faster.wall_collisions += 1;
+            const bool all_new = round == 0 && trial % 4 == 0;
+            std::vector<std::uint32_t> old_lines;
+            std::vector<std::uint32_t> new_lines;
+            std::vector<std::uint64_t> updated = counts;
+            for (std::uint32_t i = 0; i < count; ++i) {
+                const std::uint64_t total = t.particles[i].particle_collisions + t.particles[i].wall_collisions;
+                (all_new || total != counts[i] ? new_lines : old_lines).push_back(i);
+                updated[i] = total;
+            }
+            from_lists.arrange(t.particles, old_lines, new_lines);
+            std::vector<std::uint32_t> changed{7, 7, 7};  // replaced, not appended to
+            from_counts.arrange_changed(t.particles, counts, all_new, changed);
+            const check::Context context("trial ", trial, ", round ", round);
+            CHECK(changed == new_lines);
+            CHECK(counts == updated);
+            CHECK(from_counts.largest_coordinate() == from_lists.largest_coordinate());
+            CHECK(from_counts.largest_speed() == from_lists.largest_speed());
+            for (std::size_t first = 0; first < new_lines.size(); first += 4) {
+                const std::size_t size = std::min<std::size_t>(4, new_lines.size() - first);
+                std::array<std::vector<std::uint32_t>, 4> listed;
+                std::array<std::vector<std::uint32_t>, 4> counted;
+                std::array<std::vector<std::uint32_t>*, 4> listed_nears{&listed[0], &listed[1], &listed[2], &listed[3]};
+                std::array<std::vector<std::uint32_t>*, 4> counted_nears{&counted[0], &counted[1], &counted[2],
+                                                                         &counted[3]};
+                from_lists.gather_new_block(first, std::span(listed_nears).first(size));
+                from_counts.gather_new_block(first, std::span(counted_nears).first(size));
+                CHECK(listed == counted);
+                ++blocks;
+            }
+        }
+    }
+    CHECK(blocks > 1000);
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -347,5 +411,7 @@ int main(int argc, char** argv) {
          {"moved and set lines are assigned lines", moved_and_set_lines_are_assigned_lines},
          {"arranged new lines find what each finds, 4 lanes", [] { arranged_new_lines_find_what_each_finds(4); }},
          {"arranged new lines find what each finds, 8 lanes", [] { arranged_new_lines_find_what_each_finds(8); }},
-         {"arranged new lines find what each finds, 16 lanes", [] { arranged_new_lines_find_what_each_finds(16); }}});
+         {"arranged new lines find what each finds, 16 lanes", [] { arranged_new_lines_find_what_each_finds(16); }},
+         {"lines arranged from counts are the lists, 4 lanes", [] { lines_arranged_from_counts_are_the_lists(4); }},
+         {"lines arranged from counts are the lists, 16 lanes", [] { lines_arranged_from_counts_are_the_lists(16); }}});
 }

@@ -85,6 +85,14 @@ public:
     // gather_new_block() may be called.
     void arrange(std::span<const Particle> particles, std::span<const std::uint32_t> old_lines,
                  std::span<const std::uint32_t> new_lines);
+    // arrange() with its lists made in the same pass over the particles:
+    // particle i's line is new where its collision count (pc + wc) differs
+    // from counts[i], or for every particle where `all_new`; counts[i]
+    // becomes its count, and new_lines the new lines' particles in
+    // increasing order. Four particles at a time where the processor has
+    // AVX-512 (avx512_lanes_available()); the same layout either way.
+    void arrange_changed(std::span<const Particle> particles, std::span<std::uint64_t> counts, bool all_new,
+                         std::vector<std::uint32_t>& new_lines);
     // gather_near_block() after arrange(), for the new lines new_lines[first]
     // to new_lines[first + nears.size() - 1] (at most max_block): appends the
     // particles whose lines may come near each, in no particular order; a
@@ -92,8 +100,15 @@ public:
     void gather_new_block(std::size_t first, std::span<std::vector<std::uint32_t>* const> nears) const;
 
     [[nodiscard]] std::size_t size() const { return count_; }
+    // The largest scaled coordinate and velocity component of any line
+    // stored since assign(): they set the test's margin for rounding.
+    [[nodiscard]] double largest_coordinate() const { return largest_.coordinate; }
+    [[nodiscard]] double largest_speed() const { return largest_.speed; }
 
 private:
+    // arrange_changed() four particles at a time.
+    void arrange_changed_in_lanes(std::span<const Particle> particles, std::span<std::uint64_t> counts, bool all_new,
+                                  std::vector<std::uint32_t>& new_lines);
     // The test's terms for the lines stored now (line_test.hpp).
     [[nodiscard]] LineTerms terms() const;
     [[nodiscard]] LineQuery query_for(std::uint32_t i, const LineTerms& terms) const;
@@ -142,6 +157,10 @@ private:
     std::vector<std::uint32_t> particle_in_slot_;
     std::size_t first_new_slot_ = 0;
     std::size_t arranged_end_ = 0;
+    // arrange_changed()'s scratch: the old lines' particles (one at a time),
+    // or the new lines, scaled, until the old lines' end is known (in lanes).
+    std::vector<std::uint32_t> old_lines_;
+    std::vector<float> new_x_, new_y_, new_vx_, new_vy_;
 };
 
 }  // namespace particlesim

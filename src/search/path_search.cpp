@@ -14,8 +14,6 @@ namespace {
 
 constexpr std::int64_t lines_made_afresh_every = 1024;  // micro-steps
 
-std::uint64_t collision_count(const Particle& p) { return p.particle_collisions + p.wall_collisions; }
-
 }  // namespace
 
 bool PathSearch::find_pairs(const PairSearchInput& in, std::span<ThreadCandidates> out, std::size_t watch_limit) {
@@ -106,30 +104,13 @@ bool PathSearch::make_lines(const PairSearchInput& in) {
         lines_made_at_ = micro_steps_;
         lines_.assign(in.particles, in.box);  // the scales
     }
-    // Written without a branch on whether a particle collided: about one in
-    // four did, at random, in the default scene's steps.
-    new_lines_.resize(count);
-    old_lines_.resize(count);
-    std::size_t changed = 0;
-    std::size_t kept = 0;
-    for (std::uint32_t i = 0; i < count; ++i) {
-        const std::uint64_t collisions = collision_count(in.particles[i]);
-        const bool is_new = afresh || collisions != collisions_[i];
-        new_lines_[changed] = i;
-        old_lines_[kept] = i;
-        changed += static_cast<std::size_t>(is_new);
-        kept += static_cast<std::size_t>(!is_new);
-        collisions_[i] = collisions;
-    }
-    new_lines_.resize(changed);
-    old_lines_.resize(kept);
+    // Every line through its particle's position now: the old lines moved
+    // along, the new ones (a collision since) made.
+    lines_.arrange_changed(in.particles, collisions_, afresh, new_lines_);
     for (const std::uint32_t i : new_lines_) {
         ++serial_[i];
         new_line_[i] = 1;
     }
-    // Every line through its particle's position now: the old lines moved
-    // along, the new ones made.
-    lines_.arrange(in.particles, old_lines_, new_lines_);
     return afresh;
 }
 

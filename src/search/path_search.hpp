@@ -79,7 +79,6 @@ private:
     std::vector<std::uint32_t> serial_;      // by particle: counts its lines
     std::vector<std::uint8_t> new_line_;     // by particle: its line was made in this micro-step
     std::vector<std::uint32_t> new_lines_;   // those particles, in increasing order
-    std::vector<std::uint32_t> old_lines_;   // the others
     std::vector<Watch> watches_;
     std::vector<ThreadWatches> thread_watches_;
 };
