@@ -2,6 +2,7 @@
 
 #include "core/assert.hpp"
 #include "core/avx512_lanes.hpp"
+#include "core/four_particles.hpp"
 #include "core/lane_choice.hpp"
 
 #include <algorithm>
@@ -498,9 +499,7 @@ void PathLines::arrange_changed(std::span<const Particle> particles, std::span<s
 }
 
 #if defined(__x86_64__)
-// Four particles (x, y, vx, vy, pc, wc each: 24 doubles) in three vectors
-// a, b and c: their positions, velocities and counts gathered into lanes
-// (indices from 8 name b), each line scaled and rounded to float as
+// Four particles at a time (FourParticles), each line scaled and rounded to float as
 // store_line() does, then compressed to the old lines' end (in place) or
 // the new lines' (set aside until the old lines' end is known).
 [[gnu::target("avx512f,avx512vl")]] void PathLines::arrange_changed_in_lanes(std::span<const Particle> particles,
@@ -511,14 +510,6 @@ void PathLines::arrange_changed(std::span<const Particle> particles, std::span<s
     particle_in_slot_.resize(whole_groups(count) + widest_lanes);
     new_lines.resize(count + 4);
     for (std::vector<float>* staged : {&new_x_, &new_y_, &new_vx_, &new_vy_}) staged->resize(count + 4);
-    const __m512i positions_from_ab = _mm512_setr_epi64(0, 1, 6, 7, 12, 13, 0, 0);
-    const __m512i velocities_from_ab = _mm512_setr_epi64(2, 3, 8, 9, 14, 15, 0, 0);
-    const __m512i positions_from_c = _mm512_setr_epi64(0, 0, 0, 0, 0, 0, 2, 3);
-    const __m512i velocities_from_c = _mm512_setr_epi64(0, 0, 0, 0, 0, 0, 4, 5);
-    const __m512i pc_from_ab = _mm512_setr_epi64(4, 10, 0, 0, 0, 0, 0, 0);
-    const __m512i wc_from_ab = _mm512_setr_epi64(5, 11, 0, 0, 0, 0, 0, 0);
-    const __m512i pc_from_c = _mm512_setr_epi64(0, 0, 0, 6, 0, 0, 0, 0);
-    const __m512i wc_from_c = _mm512_setr_epi64(0, 0, 1, 7, 0, 0, 0, 0);
     const __m256i x_then_y = _mm256_setr_epi32(0, 2, 4, 6, 1, 3, 5, 7);
     const __m512d position_scale = _mm512_set1_pd(position_scale_);
     const __m512d velocity_scale = _mm512_set1_pd(velocity_scale_);
@@ -534,31 +525,17 @@ void PathLines::arrange_changed(std::span<const Particle> particles, std::span<s
     std::size_t changed = 0;
     std::size_t i = 0;
     for (; i + 4 <= count; i += 4) {
-        const auto* const doubles = reinterpret_cast<const double*>(particles.data() + i);
-        const __m512d a = _mm512_loadu_pd(doubles);
-        const __m512d b = _mm512_loadu_pd(doubles + 8);
-        const __m512d c = _mm512_loadu_pd(doubles + 16);
-        const __m512i ai = _mm512_castpd_si512(a);
-        const __m512i bi = _mm512_castpd_si512(b);
-        const __m512i ci = _mm512_castpd_si512(c);
-        const __m512i pcs =
-            _mm512_mask_permutexvar_epi64(_mm512_permutex2var_epi64(ai, pc_from_ab, bi), 0x0C, pc_from_c, ci);
-        const __m512i wcs =
-            _mm512_mask_permutexvar_epi64(_mm512_permutex2var_epi64(ai, wc_from_ab, bi), 0x0C, wc_from_c, ci);
+        const FourParticles four = FourParticles::load(particles.data() + i);
         // In 256-bit lanes: a masked 512-bit store of the four counts would
         // hold up the next four's load, which its masked-off half overlaps.
-        const __m256i totals = _mm512_maskz_extracti64x4_epi64(0x0F, _mm512_add_epi64(pcs, wcs), 0);
+        const __m256i totals = four.collision_counts();
         auto* const count_at = reinterpret_cast<__m256i*>(counts.data() + i);
         const __mmask8 fresh =
             all_new ? __mmask8{0x0F} : _mm256_cmpneq_epu64_mask(totals, _mm256_loadu_si256(count_at));
         _mm256_storeu_si256(count_at, totals);
         const auto old = static_cast<__mmask8>(~fresh & 0x0F);
-        const __m512d where = _mm512_mul_pd(
-            _mm512_mask_permutexvar_pd(_mm512_permutex2var_pd(a, positions_from_ab, b), 0xC0, positions_from_c, c),
-            position_scale);
-        const __m512d speed = _mm512_mul_pd(
-            _mm512_mask_permutexvar_pd(_mm512_permutex2var_pd(a, velocities_from_ab, b), 0xC0, velocities_from_c, c),
-            velocity_scale);
+        const __m512d where = _mm512_mul_pd(four.positions(), position_scale);
+        const __m512d speed = _mm512_mul_pd(four.velocities(), velocity_scale);
         largest_coordinate = _mm512_maskz_max_pd(0xFF, largest_coordinate, _mm512_abs_pd(where));
         largest_speed = _mm512_maskz_max_pd(0xFF, largest_speed, _mm512_abs_pd(speed));
         const __m256 where_split = _mm256_permutevar8x32_ps(_mm512_maskz_cvtpd_ps(0xFF, where), x_then_y);

@@ -3,6 +3,7 @@
 #include "core/avx512_lanes.hpp"
 #include "core/collision.hpp"
 #include "core/four_motion_lanes.hpp"
+#include "core/four_particles.hpp"
 
 #include <bit>
 
@@ -11,10 +12,6 @@
 #endif
 
 namespace particlesim {
-
-// Four particles (x, y, vx, vy, pc, wc each) fill three vectors: particle
-// k's position at doubles 6k and 6k + 1, its velocity at 6k + 2 and 6k + 3.
-static_assert(sizeof(Particle) == 6 * sizeof(double), "four particles fill three 512-bit vectors");
 
 #if defined(__x86_64__)
 
@@ -33,41 +30,22 @@ unsigned pairs_of_lanes(unsigned particles) {
     const FourMotionLanes lanes(box);
     const __m512d whole_step = _mm512_set1_pd(step);
     const __m128i none = _mm_set1_epi32(static_cast<int>(no_collision));
-    // Positions and velocities gathered from the three vectors a, b and c
-    // (indices from 8 name b), and the positions put back.
-    const __m512i positions_from_ab = _mm512_setr_epi64(0, 1, 6, 7, 12, 13, 0, 0);
-    const __m512i velocities_from_ab = _mm512_setr_epi64(2, 3, 8, 9, 14, 15, 0, 0);
-    const __m512i last_from_c = _mm512_setr_epi64(0, 0, 0, 0, 0, 0, 2, 3);
-    const __m512i velocity_from_c = _mm512_setr_epi64(0, 0, 0, 0, 0, 0, 4, 5);
-    const __m512i back_to_a = _mm512_setr_epi64(0, 1, 0, 0, 0, 0, 2, 3);
-    const __m512i back_to_b = _mm512_setr_epi64(0, 0, 0, 0, 4, 5, 0, 0);
-    const __m512i back_to_c = _mm512_setr_epi64(0, 0, 6, 7, 0, 0, 0, 0);
     const __m512i even_lanes = _mm512_setr_epi64(0, 2, 4, 6, 0, 2, 4, 6);
     std::uint32_t candidates = 0;
     std::int64_t i = first;
     for (; i + 4 <= last; i += 4) {
-        auto* const doubles = reinterpret_cast<double*>(particles + i);
-        const __m512d a = _mm512_loadu_pd(doubles);
-        const __m512d b = _mm512_loadu_pd(doubles + 8);
-        const __m512d c = _mm512_loadu_pd(doubles + 16);
-        const __m512d where =
-            _mm512_mask_permutexvar_pd(_mm512_permutex2var_pd(a, positions_from_ab, b), 0xC0, last_from_c, c);
-        const __m512d speed =
-            _mm512_mask_permutexvar_pd(_mm512_permutex2var_pd(a, velocities_from_ab, b), 0xC0, velocity_from_c, c);
+        const FourParticles loaded = FourParticles::load(particles + i);
         // A collided particle, resolved already, moves for +0.0.
         const __mmask8 free =
             _mm_cmpeq_epi32_mask(_mm_loadu_si128(reinterpret_cast<const __m128i*>(partner + i)), none);
         const __m512d flight = _mm512_maskz_mov_pd(static_cast<__mmask8>(pairs_of_lanes(free)), whole_step);
-        FourInLanes four{where, speed};
+        FourInLanes four{loaded.positions(), loaded.velocities()};
         lanes.fly(four, flight);
         const __m512d earliest = lanes.wall_time(four);
-        const __m512d at = four.where;
         candidates += static_cast<std::uint32_t>(
             std::popcount(static_cast<unsigned>(_mm512_cmp_pd_mask(earliest, whole_step, _CMP_LE_OQ) & 0x55U)));
         _mm512_mask_storeu_pd(wall_time + i, 0x0F, _mm512_maskz_permutexvar_pd(0x0F, even_lanes, earliest));
-        _mm512_storeu_pd(doubles, _mm512_mask_permutexvar_pd(a, 0xC3, back_to_a, at));
-        _mm512_storeu_pd(doubles + 8, _mm512_mask_permutexvar_pd(b, 0x30, back_to_b, at));
-        _mm512_storeu_pd(doubles + 16, _mm512_mask_permutexvar_pd(c, 0x0C, back_to_c, at));
+        loaded.store_with_positions(particles + i, four.where);
         _mm_storeu_si128(reinterpret_cast<__m128i*>(partner + i), none);
     }
     wall_candidates += candidates;
