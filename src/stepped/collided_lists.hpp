@@ -2,7 +2,7 @@
 // The list of a block's particles that collided this step, which the
 // resolution works through: sixteen particles at a time where the processor
 // has AVX-512 (compressed into the lists), else one at a time without a
-// branch on each (which collide follows no pattern, and a branch on it was
+// branch on each (which collide follows no pattern, and a branch on it is
 // mispredicted for most that do). The same lists either way.
 
 #include <cstddef>

@@ -2,9 +2,10 @@
 // The wall candidates of a block of particles, eight particles at a time in
 // AVX-512 lanes: their wall times compared with the step's end, those at or
 // before it compressed together with their indices and written as whole
-// Collision records, three vectors for eight. One at a time, every
-// particle's record was written, and only a hit's kept; a quarter of a
-// sparse scene's particles hit a wall in a step.
+// Collision records, three vectors for eight. One at a time (the portable
+// form, and a block's last few particles), every particle's record is
+// written and only a hit's kept; a quarter of a sparse scene's particles
+// hit a wall in a step.
 
 #include "core/collision.hpp"
 
