@@ -447,13 +447,6 @@ void PathLines::arrange(std::span<const Particle> particles, std::span<const std
     arranged_end_ = whole_groups(first_new_slot_ + new_lines.size());
     particle_in_slot_.resize(arranged_end_);
     std::uint32_t slot = 0;
-    // Padding: lines at rest at the origin, no particle's.
-    const auto pad_to = [&](std::size_t end) {
-        for (; slot < end; ++slot) {
-            x_[slot] = y_[slot] = vx_[slot] = vy_[slot] = 0.0f;
-            particle_in_slot_[slot] = no_particle;
-        }
-    };
     Largest largest = largest_;
     const auto place = [&](std::span<const std::uint32_t> lines) {
         for (const std::uint32_t i : lines) {
@@ -462,10 +455,18 @@ void PathLines::arrange(std::span<const Particle> particles, std::span<const std
         }
     };
     place(old_lines);
-    pad_to(first_new_slot_);
+    pad(slot, first_new_slot_);
+    slot = static_cast<std::uint32_t>(first_new_slot_);
     place(new_lines);
-    pad_to(arranged_end_);
+    pad(slot, arranged_end_);
     largest_ = largest;
+}
+
+void PathLines::pad(std::size_t from, std::size_t end) {
+    for (std::size_t slot = from; slot < end; ++slot) {
+        x_[slot] = y_[slot] = vx_[slot] = vy_[slot] = 0.0f;
+        particle_in_slot_[slot] = no_particle;
+    }
 }
 
 void PathLines::arrange_changed(std::span<const Particle> particles, std::span<std::uint64_t> counts, bool all_new,
@@ -563,13 +564,12 @@ void PathLines::arrange_changed(std::span<const Particle> particles, std::span<s
         const std::uint64_t total = p.particle_collisions + p.wall_collisions;
         const bool fresh = all_new || total != counts[i];
         counts[i] = total;
+        // Scaled into the slot past the old lines: kept there, or set aside.
+        store_line(static_cast<std::uint32_t>(kept), p.position, p.velocity, largest);
         if (!fresh) {
-            store_line(static_cast<std::uint32_t>(kept), p.position, p.velocity, largest);
             particle_in_slot_[kept++] = static_cast<std::uint32_t>(i);
             continue;
         }
-        // Scaled into the first padding slot past the old lines, then set aside.
-        store_line(static_cast<std::uint32_t>(kept), p.position, p.velocity, largest);
         new_x_[changed] = x_[kept];
         new_y_[changed] = y_[kept];
         new_vx_[changed] = vx_[kept];
@@ -579,12 +579,6 @@ void PathLines::arrange_changed(std::span<const Particle> particles, std::span<s
     largest_ = largest;
     first_new_slot_ = whole_groups(kept);
     arranged_end_ = whole_groups(first_new_slot_ + changed);
-    const auto pad = [&](std::size_t from, std::size_t end) {
-        for (std::size_t slot = from; slot < end; ++slot) {
-            x_[slot] = y_[slot] = vx_[slot] = vy_[slot] = 0.0f;
-            particle_in_slot_[slot] = no_particle;
-        }
-    };
     pad(kept, first_new_slot_);
     std::copy_n(new_x_.begin(), changed, x_.begin() + static_cast<std::ptrdiff_t>(first_new_slot_));
     std::copy_n(new_y_.begin(), changed, y_.begin() + static_cast<std::ptrdiff_t>(first_new_slot_));

@@ -109,6 +109,8 @@ private:
     // arrange_changed() four particles at a time.
     void arrange_changed_in_lanes(std::span<const Particle> particles, std::span<std::uint64_t> counts, bool all_new,
                                   std::vector<std::uint32_t>& new_lines);
+    // Slots [from, end) as padding: lines at rest at the origin, no particle's.
+    void pad(std::size_t from, std::size_t end);
     // The test's terms for the lines stored now (line_test.hpp).
     [[nodiscard]] LineTerms terms() const;
     [[nodiscard]] LineQuery query_for(std::uint32_t i, const LineTerms& terms) const;
