@@ -323,41 +323,45 @@ template <int queries>
     }
 }
 
-// gather_lanes_block() in sixteen lanes.
+// gather_lanes_block() in sixteen lanes. Each group's bits for all the
+// queries (sixteen each) are written to a short list at every group, and
+// the list's end moves on only where one is set: a group with a passing
+// line then costs no mispredicted branch (a branch on each group's bits
+// left the default scene's step at 1.04 times its time now).
 template <int queries>
 [[gnu::target("avx512f,fma")]] void gather_sixteen_block(const float* x, const float* y, const float* vx,
                                                          const float* vy, const SlotScan& scan, const LineQuery* query,
                                                          std::vector<std::uint32_t>* const* near) {
+    static_assert(16 * queries <= 64, "the queries' bits fit one word");
+    constexpr std::size_t chunk_groups = 64;
     LineQuery q[queries];
     for (int k = 0; k < queries; ++k) q[k] = query[k];
     const OwnGroups own = own_groups(scan, 16);
-    PassingGroups<__mmask16, queries> passing;
+    std::uint32_t firsts[chunk_groups];
+    std::uint64_t words[chunk_groups];
     for (const auto& range : scan.ranges) {
         for (std::size_t j = range[0]; j < range[1];) {
-            for (; j < range[1]; j += 16) {
+            const std::size_t chunk_end = std::min(range[1], j + 16 * chunk_groups);
+            std::size_t noted = 0;
+            for (; j < chunk_end; j += 16) {
                 LineGroup<SixteenFloats> group;
                 load_group(x, y, vx, vy, j, group);
-                // The masks stay in mask registers, tested at once: nearly
-                // every group has no close line, and moving each to a general
-                // register first cost the loop a sixth of its time.
-                __mmask16 bits[queries];
-                for (int k = 0; k < queries; ++k) bits[k] = close_bits_sixteen(group, q[k]);
+                std::uint64_t word = 0;
+                for (int k = 0; k < queries; ++k)
+                    word |= std::uint64_t{_cvtmask16_u32(close_bits_sixteen(group, q[k]))} << (16 * k);
                 if (j - own.first <= own.span) [[unlikely]] {
                     for (int k = 0; k < queries; ++k) {
-                        bits[k] =
-                            static_cast<__mmask16>(without_own(_cvtmask16_u32(bits[k]), j, 16, scan.own_first + k));
+                        if (scan.own_first + k - j < 16)
+                            word &= ~(std::uint64_t{1} << (16 * k + scan.own_first + k - j));
                     }
                 }
-                __mmask16 any = bits[0];
-                for (int k = 1; k < queries; ++k) any = _kor_mask16(any, bits[k]);
-                if (_kortestz_mask16_u8(any, any) != 0) [[likely]]
-                    continue;
-                if (passing.note(j, bits)) {
-                    j += 16;
-                    break;
-                }
+                firsts[noted] = static_cast<std::uint32_t>(j);
+                words[noted] = word;
+                noted += word != 0 ? 1 : 0;
             }
-            passing.append_to(near);
+            for (std::size_t n = 0; n < noted; ++n) {
+                for (int k = 0; k < queries; ++k) append_lanes((words[n] >> (16 * k)) & 0xffffU, firsts[n], *near[k]);
+            }
         }
     }
 }
