@@ -5,16 +5,18 @@ round). The original (ariadn3/DiscreteParticleSimulator, openmp/sequential,
 built with `gcc -O3 -fopenmp -o sim *.c -lm`) reads the scene on stdin.
 Prints CSV: per program the median, lowest and highest time, and the
 original's median over the program's. With --cpu=K, every run is pinned to
-CPU K (simcli_runs.py), and only the one-thread programs run.
+CPU K (simcli_runs.py), and only the one-thread programs run. With --busy,
+one busy process (sh -c 'while :; do :; done') runs beside them throughout,
+on another CPU than K.
 
-    bench/against_original.py ORIGINAL_SIM BUILD_DIR [SCENE [ROUNDS]] [--cpu=K] > bench/results/<machine>/against_original.csv
+    bench/against_original.py ORIGINAL_SIM BUILD_DIR [SCENE [ROUNDS]] [--cpu=K] [--busy] > bench/results/<machine>/against_original.csv
 """
 import os
 import statistics
 import subprocess
 import time
 
-from simcli_runs import command_line, pin_to_cpu_option
+from simcli_runs import beside_busy_process, command_line, pin_to_cpu_option
 
 arguments, options = command_line(__doc__, 2)
 original = arguments[0]
@@ -32,15 +34,16 @@ programs = {
 if cpu is not None:
     del programs["simcli -t 2"], programs["simcli"]
 times = {name: [] for name in programs}
-for round_number in range(rounds):
-    names = list(programs) if round_number % 2 == 0 else list(reversed(programs))
-    for name in names:
-        command, on_stdin = programs[name]
-        with open(scene) as stdin:
-            start = time.perf_counter()
-            subprocess.run(command, stdin=stdin if on_stdin else subprocess.DEVNULL, stdout=subprocess.DEVNULL,
-                           stderr=subprocess.DEVNULL, check=True)
-            times[name].append(time.perf_counter() - start)
+with beside_busy_process("--busy" in options, cpu):
+    for round_number in range(rounds):
+        names = list(programs) if round_number % 2 == 0 else list(reversed(programs))
+        for name in names:
+            command, on_stdin = programs[name]
+            with open(scene) as stdin:
+                start = time.perf_counter()
+                subprocess.run(command, stdin=stdin if on_stdin else subprocess.DEVNULL, stdout=subprocess.DEVNULL,
+                               stderr=subprocess.DEVNULL, check=True)
+                times[name].append(time.perf_counter() - start)
 reference = statistics.median(times["original sequential"])
 print("scene,program,rounds,median_s,min_s,max_s,original_over_this")
 for name, values in times.items():

@@ -326,8 +326,8 @@ template <int queries>
 // gather_lanes_block() in sixteen lanes. Each group's bits for all the
 // queries (sixteen each) are written to a short list at every group, and
 // the list's end moves on only where one is set: a group with a passing
-// line then costs no mispredicted branch (a branch on each group's bits
-// left the default scene's step at 1.04 times its time now).
+// line then costs no mispredicted branch (with a branch on each group's
+// bits the default scene's step took 1.04 times as long; docs/benchmarks.md).
 template <int queries>
 [[gnu::target("avx512f,fma")]] void gather_sixteen_block(const float* x, const float* y, const float* vx,
                                                          const float* vy, const SlotScan& scan, const LineQuery* query,
