@@ -44,6 +44,13 @@ template <typename Mask>
 [[gnu::always_inline]] inline std::uint32_t lane_bits(const Mask& mask) {
     constexpr std::size_t lanes = sizeof(Mask) / sizeof(float);
     std::uint32_t bits = 0;
+#if defined(__x86_64__)
+    if constexpr (lanes == 8) {
+        EightFloats eight;
+        std::memcpy(&eight, &mask, sizeof eight);
+        return static_cast<std::uint32_t>(__builtin_ia32_movmskps256(eight));
+    }
+#endif
 #if defined(__SSE__)
     for (std::size_t quarter = 0; quarter < lanes / 4; ++quarter) {
         FourFloats four;
@@ -171,6 +178,49 @@ private:
     std::size_t noted_ = 0;
 };
 
+// The groups of a block's scan with a passing line, for `queries` queries
+// of `lanes` lines a group: each group's bits for all the queries (query
+// k's from bit lanes * k) in one word, written with the group's first slot
+// at every group; the list's end moves on only where a bit is set, so that
+// a passing group costs no mispredicted branch (with a branch on each
+// group's bits the default scene's step took 1.04 times as long;
+// docs/benchmarks.md). At most `capacity` groups between two append_to().
+template <std::size_t lanes, int queries>
+class NotedWords {
+public:
+    static_assert(lanes * queries <= 64, "the queries' bits fit one word");
+    static constexpr std::size_t capacity = 64;
+
+    [[gnu::always_inline]] void note(std::size_t first, std::uint64_t word) {
+        firsts_[noted_] = static_cast<std::uint32_t>(first);
+        words_[noted_] = word;
+        noted_ += word != 0 ? 1 : 0;
+    }
+    // The group's word with each query's own line cleared (query k's is the
+    // slot own_first + k).
+    [[gnu::always_inline]] static std::uint64_t without_own_lines(std::uint64_t word, std::size_t group,
+                                                                  std::size_t own_first) {
+        for (int k = 0; k < queries; ++k) {
+            const std::size_t own = own_first + static_cast<std::size_t>(k);
+            if (own - group < lanes) word &= ~(std::uint64_t{1} << (lanes * static_cast<std::size_t>(k) + own - group));
+        }
+        return word;
+    }
+    void append_to(std::vector<std::uint32_t>* const* near) {
+        constexpr std::uint64_t lane_mask = lanes == 64 ? ~std::uint64_t{0} : (std::uint64_t{1} << lanes) - 1;
+        for (std::size_t n = 0; n < noted_; ++n) {
+            for (int k = 0; k < queries; ++k)
+                append_lanes((words_[n] >> (lanes * static_cast<std::size_t>(k))) & lane_mask, firsts_[n], *near[k]);
+        }
+        noted_ = 0;
+    }
+
+private:
+    std::uint32_t firsts_[capacity];
+    std::uint64_t words_[capacity];
+    std::size_t noted_ = 0;
+};
+
 // Appends to `near` every line of the scan that passes lines_close(),
 // `Floats` lines (four or eight) to a group, two groups at a time:
 // nearly every pair of groups has no close line, so one test of all their
@@ -217,45 +267,36 @@ template <typename Floats>
 
 // gather_lanes() for `queries` lines at once (2 to 4), one group at a time,
 // each group loaded once for all of them (two groups' temporaries for four
-// queries would not fit AVX2's sixteen registers).
+// queries would not fit AVX2's sixteen registers); the passing groups
+// noted without a branch (NotedWords).
 template <typename Floats, int queries>
 [[gnu::always_inline]] inline void gather_lanes_block(const float* x, const float* y, const float* vx, const float* vy,
                                                       const SlotScan& scan, const LineQuery* query,
                                                       std::vector<std::uint32_t>* const* near) {
     using Mask = decltype(Floats{} < Floats{});
     constexpr std::size_t lanes = sizeof(Floats) / sizeof(float);
+    using Noted = NotedWords<lanes, queries>;
     LineQuery q[queries];
     for (int k = 0; k < queries; ++k) q[k] = query[k];
     const OwnGroups own = own_groups(scan, lanes);
-    PassingGroups<std::uint32_t, queries> passing;
+    Noted noted;
     for (const auto& range : scan.ranges) {
         for (std::size_t j = range[0]; j < range[1];) {
-            for (; j < range[1]; j += lanes) {
+            const std::size_t run_end = std::min(range[1], j + lanes * Noted::capacity);
+            for (; j < run_end; j += lanes) {
                 LineGroup<Floats> group;
                 load_group(x, y, vx, vy, j, group);
-                Mask close[queries];
-                for (int k = 0; k < queries; ++k) lines_close(group, q[k], close[k]);
-                std::uint32_t bits[queries];
-                if (j - own.first <= own.span) [[unlikely]] {
-                    std::uint32_t any = 0;
-                    for (int k = 0; k < queries; ++k) {
-                        bits[k] =
-                            static_cast<std::uint32_t>(without_own(lane_bits(close[k]), j, lanes, scan.own_first + k));
-                        any |= bits[k];
-                    }
-                    if (any == 0) continue;
-                } else {
-                    Mask any = close[0];
-                    for (int k = 1; k < queries; ++k) any |= close[k];
-                    if (!any_lane(any)) continue;
-                    for (int k = 0; k < queries; ++k) bits[k] = lane_bits(close[k]);
+                std::uint64_t word = 0;
+                for (int k = 0; k < queries; ++k) {
+                    Mask close;
+                    lines_close(group, q[k], close);
+                    word |= std::uint64_t{lane_bits(close)} << (lanes * static_cast<std::size_t>(k));
                 }
-                if (passing.note(j, bits)) {
-                    j += lanes;
-                    break;
-                }
+                if (j - own.first <= own.span) [[unlikely]]
+                    word = Noted::without_own_lines(word, j, scan.own_first);
+                noted.note(j, word);
             }
-            passing.append_to(near);
+            noted.append_to(near);
         }
     }
 }
@@ -323,45 +364,31 @@ template <int queries>
     }
 }
 
-// gather_lanes_block() in sixteen lanes. Each group's bits for all the
-// queries (sixteen each) are written to a short list at every group, and
-// the list's end moves on only where one is set: a group with a passing
-// line then costs no mispredicted branch (with a branch on each group's
-// bits the default scene's step took 1.04 times as long; docs/benchmarks.md).
+// gather_lanes_block() in sixteen lanes, its bits taken from the mask
+// registers.
 template <int queries>
 [[gnu::target("avx512f,fma")]] void gather_sixteen_block(const float* x, const float* y, const float* vx,
                                                          const float* vy, const SlotScan& scan, const LineQuery* query,
                                                          std::vector<std::uint32_t>* const* near) {
-    static_assert(16 * queries <= 64, "the queries' bits fit one word");
-    constexpr std::size_t chunk_groups = 64;
+    using Noted = NotedWords<16, queries>;
     LineQuery q[queries];
     for (int k = 0; k < queries; ++k) q[k] = query[k];
     const OwnGroups own = own_groups(scan, 16);
-    std::uint32_t firsts[chunk_groups];
-    std::uint64_t words[chunk_groups];
+    Noted noted;
     for (const auto& range : scan.ranges) {
         for (std::size_t j = range[0]; j < range[1];) {
-            const std::size_t chunk_end = std::min(range[1], j + 16 * chunk_groups);
-            std::size_t noted = 0;
-            for (; j < chunk_end; j += 16) {
+            const std::size_t run_end = std::min(range[1], j + 16 * Noted::capacity);
+            for (; j < run_end; j += 16) {
                 LineGroup<SixteenFloats> group;
                 load_group(x, y, vx, vy, j, group);
                 std::uint64_t word = 0;
                 for (int k = 0; k < queries; ++k)
                     word |= std::uint64_t{_cvtmask16_u32(close_bits_sixteen(group, q[k]))} << (16 * k);
-                if (j - own.first <= own.span) [[unlikely]] {
-                    for (int k = 0; k < queries; ++k) {
-                        if (scan.own_first + k - j < 16)
-                            word &= ~(std::uint64_t{1} << (16 * k + scan.own_first + k - j));
-                    }
-                }
-                firsts[noted] = static_cast<std::uint32_t>(j);
-                words[noted] = word;
-                noted += word != 0 ? 1 : 0;
+                if (j - own.first <= own.span) [[unlikely]]
+                    word = Noted::without_own_lines(word, j, scan.own_first);
+                noted.note(j, word);
             }
-            for (std::size_t n = 0; n < noted; ++n) {
-                for (int k = 0; k < queries; ++k) append_lanes((words[n] >> (16 * k)) & 0xffffU, firsts[n], *near[k]);
-            }
+            noted.append_to(near);
         }
     }
 }
