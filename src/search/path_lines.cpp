@@ -44,13 +44,6 @@ template <typename Mask>
 [[gnu::always_inline]] inline std::uint32_t lane_bits(const Mask& mask) {
     constexpr std::size_t lanes = sizeof(Mask) / sizeof(float);
     std::uint32_t bits = 0;
-#if defined(__x86_64__)
-    if constexpr (lanes == 8) {
-        EightFloats eight;
-        std::memcpy(&eight, &mask, sizeof eight);
-        return static_cast<std::uint32_t>(__builtin_ia32_movmskps256(eight));
-    }
-#endif
 #if defined(__SSE__)
     for (std::size_t quarter = 0; quarter < lanes / 4; ++quarter) {
         FourFloats four;
@@ -313,11 +306,42 @@ void gather_four(const float* x, const float* y, const float* vx, const float* v
     gather_lanes<EightFloats>(x, y, vx, vy, scan, q, near);
 }
 
+// gather_lanes_block() in eight lanes (AVX2), each group's bits for a
+// query taken by one vmovmskps of the whole comparison: the generic loop
+// moves the two halves and shifts one, which cost most of what the notes
+// without a branch gain (docs/benchmarks.md). Written out here, since an AVX builtin
+// cannot be called from the generic template (GCC and clang both refuse).
 template <int queries>
 [[gnu::target("avx2,fma")]] void gather_eight_block(const float* x, const float* y, const float* vx, const float* vy,
-                                                    const SlotScan& scan, const LineQuery* q,
+                                                    const SlotScan& scan, const LineQuery* query,
                                                     std::vector<std::uint32_t>* const* near) {
-    gather_lanes_block<EightFloats, queries>(x, y, vx, vy, scan, q, near);
+    using Noted = NotedWords<8, queries>;
+    LineQuery q[queries];
+    for (int k = 0; k < queries; ++k) q[k] = query[k];
+    const OwnGroups own = own_groups(scan, 8);
+    Noted noted;
+    for (const auto& range : scan.ranges) {
+        for (std::size_t j = range[0]; j < range[1];) {
+            const std::size_t run_end = std::min(range[1], j + 8 * Noted::capacity);
+            for (; j < run_end; j += 8) {
+                LineGroup<EightFloats> group;
+                load_group(x, y, vx, vy, j, group);
+                std::uint64_t word = 0;
+                for (int k = 0; k < queries; ++k) {
+                    EightFloats cross_sq, bound;
+                    line_test_sides(group, q[k], cross_sq, bound);
+                    const auto close = cross_sq <= bound;
+                    EightFloats signs;
+                    std::memcpy(&signs, &close, sizeof signs);
+                    word |= std::uint64_t{static_cast<std::uint32_t>(__builtin_ia32_movmskps256(signs))} << (8 * k);
+                }
+                if (j - own.first <= own.span) [[unlikely]]
+                    word = Noted::without_own_lines(word, j, scan.own_first);
+                noted.note(j, word);
+            }
+            noted.append_to(near);
+        }
+    }
 }
 
 // AVX-512 compares into mask registers, and GCC's vector extension takes a
