@@ -133,61 +133,32 @@ struct OwnGroups {
     return {first, (scan.own_first + scan.queries - 1) / lanes * lanes - first};
 }
 
-// The bits of the group of `lanes` from slot `group`, the lane of slot `own` cleared.
-[[gnu::always_inline]] inline std::uint64_t without_own(std::uint64_t bits, std::size_t group, std::size_t lanes,
-                                                        std::size_t own) {
-    return own - group < lanes ? bits & ~(std::uint64_t{1} << (own - group)) : bits;
-}
-
-// The groups with a passing line, noted by a scan's loop and appended to
-// the near lists after it: with no call in the loop, its queries stay in
-// registers instead of being saved around each append (no vector register
-// survives a call), 0.95 of the default scene's time.
-template <typename Bits, int queries>
-class PassingGroups {
-public:
-    // Notes the group of lanes from slot `first`; true when the notes are
-    // full, and append_to() must come before the next.
-    [[gnu::always_inline]] bool note(std::size_t first, const Bits* bits) {
-        Group& group = groups_[noted_];
-        group.first = static_cast<std::uint32_t>(first);
-        for (int k = 0; k < queries; ++k) group.bits[k] = bits[k];
-        return ++noted_ == capacity;
-    }
-    void append_to(std::vector<std::uint32_t>* const* near) {
-        for (std::size_t n = 0; n < noted_; ++n) {
-            for (int k = 0; k < queries; ++k) append_lanes(groups_[n].bits[k], groups_[n].first, *near[k]);
-        }
-        noted_ = 0;
-    }
-
-private:
-    static constexpr std::size_t capacity = 64;
-    struct Group {
-        std::uint32_t first;
-        Bits bits[queries];
-    };
-    Group groups_[capacity];
-    std::size_t noted_ = 0;
-};
-
-// The groups of a block's scan with a passing line, for `queries` queries
-// of `lanes` lines a group: each group's bits for all the queries (query
-// k's from bit lanes * k) in one word, written with the group's first slot
-// at every group; the list's end moves on only where a bit is set, so that
-// a passing group costs no mispredicted branch (with a branch on each
-// group's bits the default scene's step took 1.04 times as long;
-// docs/benchmarks.md). At most `capacity` groups between two append_to().
+// The groups of a scan with a passing line, noted by its loop and appended
+// to the near lists after it (or when `capacity` are noted): with no
+// call in the loop, its queries stay in registers instead of being saved
+// around each append (no vector register survives a call), 0.95 of the
+// default scene's time. For `queries` queries of `lanes` lines a group,
+// each group's bits for all the queries (query k's from bit lanes * k) are
+// one word. A block's scans note every group, and the list's end moves on
+// only where a bit is set, so that a passing group costs no mispredicted
+// branch (with a branch on each group's bits the default scene's step took
+// 1.04 times as long; docs/benchmarks.md), in runs of at most `capacity`
+// groups; the one-query scans note only the groups with a passing line,
+// and append when the notes are full (runs of their own cost the exact
+// engine's line search 1.02 to 1.05 of its time).
 template <std::size_t lanes, int queries>
 class NotedWords {
 public:
     static_assert(lanes * queries <= 64, "the queries' bits fit one word");
     static constexpr std::size_t capacity = 64;
 
-    [[gnu::always_inline]] void note(std::size_t first, std::uint64_t word) {
+    // Notes the group from slot `first` if a bit of its word is set; true
+    // when the notes are full, and append_to() must come before the next.
+    [[gnu::always_inline]] bool note(std::size_t first, std::uint64_t word) {
         firsts_[noted_] = static_cast<std::uint32_t>(first);
         words_[noted_] = word;
         noted_ += word != 0 ? 1 : 0;
+        return noted_ == capacity;
     }
     // The group's word with each query's own line cleared (query k's is the
     // slot own_first + k).
@@ -227,8 +198,9 @@ template <typename Floats>
     constexpr std::size_t lanes = sizeof(Floats) / sizeof(float);
     // A copy: `near` could alias the query as far as the compiler knows.
     const LineQuery q = query;
+    using Noted = NotedWords<2 * lanes, 1>;
     const OwnGroups own = own_groups(scan, 2 * lanes);
-    PassingGroups<std::uint64_t, 1> passing;
+    Noted noted;
     std::vector<std::uint32_t>* const nears[1] = {&near};
     for (const auto& range : scan.ranges) {
         for (std::size_t j = range[0]; j < range[1];) {
@@ -239,21 +211,21 @@ template <typename Floats>
                     load_group(x, y, vx, vy, j + g * lanes, group);
                     lines_close(group, q, close[g]);
                 }
-                std::uint64_t bits[1];
+                std::uint64_t bits;
                 if (j - own.first <= own.span) [[unlikely]] {
-                    bits[0] = without_own(lane_bits(close[0]) | std::uint64_t{lane_bits(close[1])} << lanes, j,
-                                          2 * lanes, scan.own_first);
-                    if (bits[0] == 0) continue;
+                    bits = Noted::without_own_lines(lane_bits(close[0]) | std::uint64_t{lane_bits(close[1])} << lanes,
+                                                    j, scan.own_first);
+                    if (bits == 0) continue;
                 } else {
                     if (!any_lane(close[0] | close[1])) continue;
-                    bits[0] = lane_bits(close[0]) | std::uint64_t{lane_bits(close[1])} << lanes;
+                    bits = lane_bits(close[0]) | std::uint64_t{lane_bits(close[1])} << lanes;
                 }
-                if (passing.note(j, bits)) {
+                if (noted.note(j, bits)) {
                     j += 2 * lanes;
                     break;
                 }
             }
-            passing.append_to(nears);
+            noted.append_to(nears);
         }
     }
 }
@@ -362,8 +334,9 @@ template <int queries>
                                                    const SlotScan& scan, const LineQuery& query,
                                                    std::vector<std::uint32_t>& near) {
     const LineQuery q = query;  // a copy: `near` could alias the query as far as the compiler knows
+    using Noted = NotedWords<32, 1>;
     const OwnGroups own = own_groups(scan, 32);
-    PassingGroups<std::uint64_t, 1> passing;
+    Noted noted;
     std::vector<std::uint32_t>* const nears[1] = {&near};
     for (const auto& range : scan.ranges) {
         for (std::size_t j = range[0]; j < range[1];) {
@@ -372,18 +345,17 @@ template <int queries>
                 LineGroup<SixteenFloats> second;
                 load_group(x, y, vx, vy, j, first);
                 load_group(x, y, vx, vy, j + 16, second);
-                std::uint64_t bits[1] = {close_bits_sixteen(first, q) | std::uint64_t{close_bits_sixteen(second, q)}
-                                                                            << 16};
+                std::uint64_t bits = close_bits_sixteen(first, q) | std::uint64_t{close_bits_sixteen(second, q)} << 16;
                 if (j - own.first <= own.span) [[unlikely]]
-                    bits[0] = without_own(bits[0], j, 32, scan.own_first);
-                if (bits[0] == 0) [[likely]]
+                    bits = Noted::without_own_lines(bits, j, scan.own_first);
+                if (bits == 0) [[likely]]
                     continue;
-                if (passing.note(j, bits)) {
+                if (noted.note(j, bits)) {
                     j += 32;
                     break;
                 }
             }
-            passing.append_to(nears);
+            noted.append_to(nears);
         }
     }
 }
